@@ -1,0 +1,43 @@
+package hitbox;
+
+/**
+ * A circle: its centre and its radius (the tutorial's, not Processing's diameter; draw it
+ * with {@code circle(x, y, 2 * r)}).
+ *
+ * <p>Open: a point on the outline is not in it. A circle of radius 0 behaves as a point.
+ *
+ * @param x the centre's x
+ * @param y the centre's y
+ * @param r the radius, 0 or more
+ */
+public record Circle(float x, float y, float r) implements Shape {
+
+    /**
+     * Makes a circle, checking its values.
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite, or the radius is negative
+     */
+    public Circle {
+        Check.finite("x", x);
+        Check.finite("y", y);
+        Check.size("radius", r);
+    }
+
+    /** {@inheritDoc} Same as {@link Collide#circlePoint}. */
+    @Override
+    public boolean contains(float px, float py) {
+        return Collide.circlePoint(x, y, r, px, py);
+    }
+
+    /** {@inheritDoc} */
+    @Override
+    public Rect bounds() {
+        return new Rect(x - r, y - r, 2 * r, 2 * r);
+    }
+
+    /** {@inheritDoc} */
+    @Override
+    public Circle translated(float dx, float dy) {
+        return new Circle(x + dx, y + dy, r);
+    }
+}

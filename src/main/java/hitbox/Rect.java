@@ -1,0 +1,93 @@
+package hitbox;
+
+/**
+ * An axis-aligned rectangle: its top-left corner and its size, Processing's {@code CORNER}
+ * mode ({@code rect(x, y, w, h)}).
+ *
+ * <p>Open: a point on an edge is not in it, and rectangles side by side do not overlap. A
+ * rectangle of width or height 0 behaves as a segment (or a point).
+ *
+ * @param x the left edge
+ * @param y the top edge
+ * @param w the width, 0 or more
+ * @param h the height, 0 or more
+ */
+public record Rect(float x, float y, float w, float h) implements Shape {
+
+    /**
+     * Makes a rectangle, checking its values.
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
+     */
+    public Rect {
+        Check.finite("x", x);
+        Check.finite("y", y);
+        Check.size("width", w);
+        Check.size("height", h);
+    }
+
+    /**
+     * A rectangle from its centre and size, Processing's {@code CENTER} mode.
+     *
+     * @param cx the centre's x
+     * @param cy the centre's y
+     * @param w  the width, 0 or more
+     * @param h  the height, 0 or more
+     * @return the rectangle
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
+     */
+    public static Rect centered(float cx, float cy, float w, float h) {
+        Check.size("width", w);
+        Check.size("height", h);
+        return new Rect(cx - w / 2, cy - h / 2, w, h);
+    }
+
+    /** @return the right edge, {@code x + w} */
+    public float right() {
+        return x + w;
+    }
+
+    /** @return the bottom edge, {@code y + h} */
+    public float bottom() {
+        return y + h;
+    }
+
+    /** @return the centre's x */
+    public float centerX() {
+        return x + w / 2;
+    }
+
+    /** @return the centre's y */
+    public float centerY() {
+        return y + h / 2;
+    }
+
+    /** {@inheritDoc} Same as {@link Collide#rectPoint}. */
+    @Override
+    public boolean contains(float px, float py) {
+        return Collide.rectPoint(x, y, w, h, px, py);
+    }
+
+    /** {@inheritDoc} A rectangle is its own bounds. */
+    @Override
+    public Rect bounds() {
+        return this;
+    }
+
+    /** {@inheritDoc} */
+    @Override
+    public Rect translated(float dx, float dy) {
+        return new Rect(x + dx, y + dy, w, h);
+    }
+
+    /**
+     * This rectangle with its top-left corner moved to (x, y), the size kept.
+     *
+     * @param newX the new left edge
+     * @param newY the new top edge
+     * @return the moved rectangle
+     */
+    public Rect at(float newX, float newY) {
+        return new Rect(newX, newY, w, h);
+    }
+}

@@ -1,0 +1,49 @@
+package hitbox;
+
+/**
+ * A line segment between two end points: the tutorial's "line".
+ *
+ * <p>Closed: its end points belong to it, so segments that meet at an end intersect.
+ *
+ * @param x1 the first end's x
+ * @param y1 the first end's y
+ * @param x2 the second end's x
+ * @param y2 the second end's y
+ */
+public record Segment(float x1, float y1, float x2, float y2) implements Shape {
+
+    /**
+     * Makes a segment, checking its values. Both ends may be the same point.
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite
+     */
+    public Segment {
+        Check.finite("x1", x1);
+        Check.finite("y1", y1);
+        Check.finite("x2", x2);
+        Check.finite("y2", y2);
+    }
+
+    /** {@inheritDoc} A point counts when it lies on the segment, end points included. */
+    @Override
+    public boolean contains(float px, float py) {
+        return Lines.segmentPoint(x1, y1, x2, y2, px, py);
+    }
+
+    /** {@inheritDoc} */
+    @Override
+    public Rect bounds() {
+        return new Rect(Math.min(x1, x2), Math.min(y1, y2), Math.abs(x2 - x1), Math.abs(y2 - y1));
+    }
+
+    /** {@inheritDoc} */
+    @Override
+    public Segment translated(float dx, float dy) {
+        return new Segment(x1 + dx, y1 + dy, x2 + dx, y2 + dy);
+    }
+
+    /** @return the segment's length */
+    public float length() {
+        return (float) Math.hypot(x2 - x1, y2 - y1);
+    }
+}

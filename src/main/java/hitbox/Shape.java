@@ -1,0 +1,52 @@
+package hitbox;
+
+/**
+ * A shape in the plane: an immutable value that can be tested against any other shape.
+ *
+ * <p>The family is sealed so that {@link #overlaps} can answer for every pair: circles,
+ * rectangles, segments and polygons. Each pair is decided by the same code as the matching
+ * {@link Collide} method, and by the same <a href="package-summary.html#touching">touching
+ * rule</a>, in either order: {@code a.overlaps(b) == b.overlaps(a)}.
+ */
+public sealed interface Shape permits Circle, Rect, Segment, Polygon {
+
+    /**
+     * Does this shape collide with {@code other}? Touching is not colliding for shapes with
+     * area; segments are closed (see the package documentation).
+     *
+     * @param other the other shape, not null
+     * @return true if the two shapes collide
+     * @throws IllegalArgumentException if {@code other} is null
+     */
+    default boolean overlaps(Shape other) {
+        return Overlaps.test(this, Check.notNull("other", other));
+    }
+
+    /**
+     * Is the point in this shape? For shapes with area the outline does not count; for a
+     * segment, a point on it counts.
+     *
+     * @param x the point's x
+     * @param y the point's y
+     * @return true if the point is in the shape
+     */
+    boolean contains(float x, float y);
+
+    /**
+     * The smallest axis-aligned rectangle that holds this shape: its hit box for a cheap
+     * first test.
+     *
+     * @return the bounding rectangle
+     */
+    Rect bounds();
+
+    /**
+     * This shape moved by (dx, dy).
+     *
+     * @param dx how far to move right
+     * @param dy how far to move down
+     * @return a new shape of the same kind, moved
+     * @throws IllegalArgumentException if the move gives a NaN or infinite coordinate
+     */
+    Shape translated(float dx, float dy);
+}

@@ -1,0 +1,49 @@
+/**
+ * Hitbox: collision detection for Processing sketches and Java 2D games, one idea at a time.
+ *
+ * <h2>Two ways in</h2>
+ * <ul>
+ *   <li>{@link hitbox.Collide}: static tests on plain {@code float}s, written the way the
+ *       tutorial writes its {@code if} statements, for example
+ *       {@code Collide.circleCircle(x1, y1, r1, x2, y2, r2)}. They allocate nothing and check
+ *       nothing, so they are safe to call thousands of times a frame.</li>
+ *   <li>Shapes ({@link hitbox.Circle}, {@link hitbox.Rect}, and the rest of the sealed
+ *       {@link hitbox.Shape} family): immutable values whose constructors reject bad input
+ *       with a message that names the parameter. {@code a.overlaps(b)} answers for every
+ *       pair of shapes, in either order, through the same code as {@code Collide}.</li>
+ * </ul>
+ *
+ * <h2>Units and conventions</h2>
+ * Pixels, with Processing's axes: x grows to the right and y grows <em>down</em>. A
+ * {@link hitbox.Circle} is its centre and its <em>radius</em> (Processing's {@code ellipse}
+ * takes a diameter: draw it with {@code circle(x, y, 2 * r)}). A {@link hitbox.Rect} is its
+ * top-left corner and its size, Processing's {@code CORNER} mode.
+ *
+ * <h2 id="touching">The touching rule</h2>
+ * One rule for every pair, the tutorial's: <strong>touching is not colliding.</strong>
+ * <ul>
+ *   <li>Shapes with area (circles, rectangles, polygons) are open sets: their outline is not
+ *       part of them. Two circles whose distance equals the sum of their radii, two
+ *       rectangles side by side, a point exactly on an edge: none of them collide. In the
+ *       tutorial's words this is {@code dist < r1 + r2} and
+ *       {@code px > rx && px < rx + rw && py > ry && py < ry + rh}, strict inequalities.</li>
+ *   <li>Segments and points are closed: a segment collides with what it touches, so two
+ *       segments meeting at an end point intersect, and so does a segment that reaches the
+ *       inside of a shape. A segment lying along a rectangle's edge does not collide with
+ *       it, because it never reaches the inside.</li>
+ *   <li>A zero-size shape (radius 0, width or height 0) has no inside of its own: a circle
+ *       of radius 0 behaves as a point, a rectangle of width 0 as a segment. It collides
+ *       only by reaching into the inside of a shape that has one, so two zero-size shapes
+ *       never collide with each other.</li>
+ * </ul>
+ * Comparisons are exact, with no hidden epsilon: for whole-number coordinates of modest
+ * size (up to about a million) every answer, touching cases included, is exact.
+ *
+ * <h2>Bad input</h2>
+ * Shape constructors throw {@link java.lang.IllegalArgumentException} for NaN, infinite
+ * values and negative sizes, naming the parameter and the value, for example
+ * {@code "radius must be >= 0, was -1.0"}. The static {@code Collide} methods do not check
+ * (they are the hot path): any comparison with NaN is false, so NaN input gives "no
+ * collision".
+ */
+package hitbox;
