@@ -1,0 +1,53 @@
+package hitbox;
+
+/**
+ * A 2D vector: a velocity, a direction or a point, as an immutable value.
+ *
+ * <p>Processing sketches keep their own {@code PVector}s; this is what the library hands back
+ * when an answer has two parts, such as the velocity after a bounce.
+ *
+ * @param x the x component
+ * @param y the y component (down is positive, as in Processing)
+ */
+public record Vec(float x, float y) {
+
+    /** The zero vector. */
+    public static final Vec ZERO = new Vec(0, 0);
+
+    /**
+     * @param other the vector to add
+     * @return this + other
+     */
+    public Vec plus(Vec other) {
+        return new Vec(x + other.x, y + other.y);
+    }
+
+    /**
+     * @param other the vector to subtract
+     * @return this - other
+     */
+    public Vec minus(Vec other) {
+        return new Vec(x - other.x, y - other.y);
+    }
+
+    /**
+     * @param k the factor
+     * @return this vector scaled by k
+     */
+    public Vec times(float k) {
+        return new Vec(x * k, y * k);
+    }
+
+    /**
+     * @param other the other vector
+     * @return the dot product
+     */
+    public float dot(Vec other) {
+        return x * other.x + y * other.y;
+    }
+
+    /** @return the length */
+    public float length() {
+        return (float) Math.hypot(x, y);
+    }
+}
