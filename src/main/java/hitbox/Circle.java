@@ -15,6 +15,10 @@ public record Circle(float x, float y, float r) implements Shape {
     /**
      * Makes a circle, checking its values.
      *
+     * @param x the centre's x
+     * @param y the centre's y
+     * @param r the radius, 0 or more
+     *
      * @throws IllegalArgumentException if a value is NaN or infinite, or the radius is negative
      */
     public Circle {

@@ -17,6 +17,11 @@ public record Rect(float x, float y, float w, float h) implements Shape {
     /**
      * Makes a rectangle, checking its values.
      *
+     * @param x the left edge
+     * @param y the top edge
+     * @param w the width, 0 or more
+     * @param h the height, 0 or more
+     *
      * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
      */
     public Rect {

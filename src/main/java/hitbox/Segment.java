@@ -15,6 +15,11 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
     /**
      * Makes a segment, checking its values. Both ends may be the same point.
      *
+     * @param x1 the first end's x
+     * @param y1 the first end's y
+     * @param x2 the second end's x
+     * @param y2 the second end's y
+     *
      * @throws IllegalArgumentException if a value is NaN or infinite
      */
     public Segment {

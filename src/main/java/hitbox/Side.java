@@ -19,12 +19,20 @@ public enum Side {
     /** The obstacle's right edge: the mover came from the right and hit a wall. */
     RIGHT;
 
-    /** Returns true for {@link #TOP}: the mover stands on the obstacle and may jump. */
+    /**
+     * Did the mover land? True for {@link #TOP}: it stands on the obstacle and may jump again.
+     *
+     * @return true for {@link #TOP}
+     */
     public boolean landed() {
         return this == TOP;
     }
 
-    /** Returns true for {@link #LEFT} or {@link #RIGHT}. */
+    /**
+     * Did the mover run into a wall?
+     *
+     * @return true for {@link #LEFT} or {@link #RIGHT}
+     */
     public boolean isWall() {
         return this == LEFT || this == RIGHT;
     }

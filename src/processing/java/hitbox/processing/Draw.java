@@ -1,0 +1,67 @@
+package hitbox.processing;
+
+import hitbox.Circle;
+import hitbox.Polygon;
+import hitbox.Rect;
+import hitbox.Segment;
+import hitbox.Shape;
+import processing.core.PConstants;
+import processing.core.PGraphics;
+
+/**
+ * Draws library shapes with the current fill and stroke, the way Processing's own
+ * {@code circle}, {@code rect}, {@code line} and {@code beginShape} would.
+ */
+public final class Draw {
+    private Draw() {
+    }
+
+    /**
+     * Draws any shape: a circle by its radius, a rect in CORNER mode, a segment as a line, a
+     * polygon as a closed shape.
+     *
+     * @param g     where to draw, e.g. the sketch's {@code g}
+     * @param shape the shape
+     */
+    public static void shape(PGraphics g, Shape shape) {
+        if (shape instanceof Circle c) {
+            g.ellipseMode(PConstants.CENTER);
+            g.ellipse(c.x(), c.y(), 2 * c.r(), 2 * c.r());
+        } else if (shape instanceof Rect r) {
+            g.rectMode(PConstants.CORNER);
+            g.rect(r.x(), r.y(), r.w(), r.h());
+        } else if (shape instanceof Segment s) {
+            g.line(s.x1(), s.y1(), s.x2(), s.y2());
+        } else if (shape instanceof Polygon p) {
+            g.beginShape();
+            for (int i = 0; i < p.size(); i++) {
+                g.vertex(p.x(i), p.y(i));
+            }
+            g.endShape(PConstants.CLOSE);
+        }
+    }
+
+    /**
+     * Draws an arrow from (x, y) along (dx, dy), for normals and velocities.
+     *
+     * @param g  where to draw
+     * @param x  the tail's x
+     * @param y  the tail's y
+     * @param dx the arrow's x extent
+     * @param dy the arrow's y extent
+     */
+    public static void arrow(PGraphics g, float x, float y, float dx, float dy) {
+        float len = (float) Math.hypot(dx, dy);
+        g.line(x, y, x + dx, y + dy);
+        if (len < 1e-3f) {
+            return;
+        }
+        float ux = dx / len;
+        float uy = dy / len;
+        float head = Math.min(10, len / 2);
+        float tx = x + dx;
+        float ty = y + dy;
+        g.line(tx, ty, tx - head * (ux - uy * 0.5f), ty - head * (uy + ux * 0.5f));
+        g.line(tx, ty, tx - head * (ux + uy * 0.5f), ty - head * (uy - ux * 0.5f));
+    }
+}

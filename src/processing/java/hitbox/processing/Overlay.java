@@ -1,0 +1,168 @@
+package hitbox.processing;
+
+import java.util.Locale;
+
+import processing.core.PConstants;
+import processing.core.PGraphics;
+
+/**
+ * The "show the maths" overlay: the numbers a collision test compares, drawn where they live,
+ * with the comparison written out ("150.0 &lt; 175.0: colliding").
+ *
+ * <p>Every sketch shows it on the {@code d} key; this class keeps its look the same in all of
+ * them. Numbers are written with one decimal.
+ */
+public final class Overlay {
+    /** Text colour of the overlay. */
+    public static final int TEXT = 0xFFFFFFFF;
+    /** Colour for a test that says "colliding". */
+    public static final int HIT = 0xFFFF6B6B;
+    /** Colour for a test that says "not colliding". */
+    public static final int MISS = 0xFF7CE38B;
+    /** Colour of the guide lines the overlay draws. */
+    public static final int GUIDE = 0xFFFFD23F;
+    /** The label box behind overlay text. */
+    private static final int BOX = 0xC8141820;
+
+    private Overlay() {
+    }
+
+    /**
+     * Writes a number as the overlay does: one decimal, a dot whatever the locale.
+     *
+     * @param v the number
+     * @return e.g. "150.0"
+     */
+    public static String number(float v) {
+        return String.format(Locale.ROOT, "%.1f", v);
+    }
+
+    /**
+     * Writes out a comparison and its verdict, e.g. {@code "150.0 < 175.0: colliding"}.
+     *
+     * @param left   the left side's value
+     * @param op     the operator, e.g. "&lt;"
+     * @param right  the right side's value
+     * @param result whether the comparison is true
+     * @return the sentence
+     */
+    public static String comparison(float left, String op, float right, boolean result) {
+        return number(left) + " " + op + " " + number(right) + ": " + (result ? "true" : "false");
+    }
+
+    /**
+     * Writes out a test that decides a collision, e.g. {@code "150.0 < 175.0: colliding"}.
+     *
+     * @param left      the left side's value
+     * @param op        the operator
+     * @param right     the right side's value
+     * @param colliding the test's answer
+     * @return the sentence
+     */
+    public static String verdict(float left, String op, float right, boolean colliding) {
+        return number(left) + " " + op + " " + number(right) + ": " + (colliding ? "colliding" : "not colliding");
+    }
+
+    /**
+     * Draws text on a dark box with its top-left at (x, y), kept inside the window.
+     *
+     * @param g      where to draw
+     * @param x      the box's left
+     * @param y      the box's top
+     * @param text   the text; several lines are fine
+     * @param colour the text colour, e.g. {@link #TEXT}, {@link #HIT} or {@link #MISS}
+     */
+    public static void label(PGraphics g, float x, float y, String text, int colour) {
+        g.pushStyle();
+        g.textSize(12);
+        g.textAlign(PConstants.LEFT, PConstants.TOP);
+        String[] lines = text.split("\n");
+        float w = 0;
+        for (String line : lines) {
+            w = Math.max(w, g.textWidth(line));
+        }
+        float lineH = 15;
+        float boxW = w + 8;
+        float boxH = lines.length * lineH + 4;
+        float bx = Math.max(2, Math.min(x, g.width - boxW - 2));
+        float by = Math.max(2, Math.min(y, g.height - boxH - 2));
+        g.noStroke();
+        g.fill(BOX);
+        g.rect(bx, by, boxW, boxH, 3);
+        g.fill(colour);
+        for (int i = 0; i < lines.length; i++) {
+            g.text(lines[i], bx + 4, by + 2 + i * lineH);
+        }
+        g.popStyle();
+    }
+
+    /**
+     * Draws a label in the overlay's plain text colour.
+     *
+     * @param g    where to draw
+     * @param x    the box's left
+     * @param y    the box's top
+     * @param text the text
+     */
+    public static void label(PGraphics g, float x, float y, String text) {
+        label(g, x, y, text, TEXT);
+    }
+
+    /**
+     * Draws a guide line (dashed) between two points with its length written at its middle:
+     * the distance a circle test compares.
+     *
+     * @param g  where to draw
+     * @param x1 one end's x
+     * @param y1 one end's y
+     * @param x2 the other end's x
+     * @param y2 the other end's y
+     * @param name what the length is called, e.g. "distance"
+     */
+    public static void measure(PGraphics g, float x1, float y1, float x2, float y2, String name) {
+        guide(g, x1, y1, x2, y2);
+        float len = (float) Math.hypot(x2 - x1, y2 - y1);
+        label(g, (x1 + x2) / 2 + 6, (y1 + y2) / 2 + 6, name + " = " + number(len), GUIDE);
+    }
+
+    /**
+     * Draws a dashed guide line.
+     *
+     * @param g  where to draw
+     * @param x1 one end's x
+     * @param y1 one end's y
+     * @param x2 the other end's x
+     * @param y2 the other end's y
+     */
+    public static void guide(PGraphics g, float x1, float y1, float x2, float y2) {
+        g.pushStyle();
+        g.stroke(GUIDE);
+        g.strokeWeight(1.5f);
+        float len = (float) Math.hypot(x2 - x1, y2 - y1);
+        int dashes = Math.max(1, (int) (len / 6));
+        for (int i = 0; i < dashes; i += 2) {
+            float a = (float) i / dashes;
+            float b = Math.min(1, (float) (i + 1) / dashes);
+            g.line(x1 + (x2 - x1) * a, y1 + (y2 - y1) * a, x1 + (x2 - x1) * b, y1 + (y2 - y1) * b);
+        }
+        g.popStyle();
+    }
+
+    /**
+     * Draws the key hint along the bottom of the window, e.g. "d: show the maths".
+     *
+     * @param g    where to draw
+     * @param text the hint
+     */
+    public static void hint(PGraphics g, String text) {
+        g.pushStyle();
+        g.textSize(11);
+        g.textAlign(PConstants.LEFT, PConstants.BOTTOM);
+        g.fill(0x99000000);
+        g.noStroke();
+        g.rect(0, g.height - 18, g.width, 18);
+        g.fill(0xFFDDDDDD);
+        g.text(text, 6, g.height - 3);
+        g.popStyle();
+    }
+}

@@ -1,0 +1,162 @@
+package hitbox.sketchkit;
+
+import java.io.File;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Optional;
+import java.util.stream.Collectors;
+
+import processing.core.PApplet;
+
+/**
+ * The sketches there are: every folder {@code sketches/<Name>/} that holds {@code <Name>.pde},
+ * in folder-name order (section numbers are zero-padded, so that is tutorial order).
+ *
+ * <p>Found from the folders, never from a list, so a new sketch appears by being added.
+ */
+public final class Catalog {
+    /** The system property that names the sketches folder; the build sets it. */
+    public static final String SKETCHES_PROPERTY = "hitbox.sketches";
+
+    private final File root;
+    private final List<SketchInfo> sketches;
+
+    private Catalog(File root, List<SketchInfo> sketches) {
+        this.root = root;
+        this.sketches = sketches;
+    }
+
+    /**
+     * Reads the sketches folder named by the {@value #SKETCHES_PROPERTY} system property, or
+     * {@code sketches} in the working directory.
+     *
+     * @return the catalog
+     * @throws IllegalStateException if the folder does not exist
+     */
+    public static Catalog load() {
+        return load(new File(System.getProperty(SKETCHES_PROPERTY, "sketches")));
+    }
+
+    /**
+     * Reads a sketches folder.
+     *
+     * @param root the folder that holds one folder per sketch
+     * @return the catalog
+     * @throws IllegalStateException if the folder does not exist
+     */
+    public static Catalog load(File root) {
+        File[] folders = root.listFiles(File::isDirectory);
+        if (folders == null) {
+            throw new IllegalStateException("No sketches folder at " + root.getAbsolutePath()
+                    + ": run from the project folder, or set -D" + SKETCHES_PROPERTY + "=<folder>");
+        }
+        List<SketchInfo> found = new ArrayList<>();
+        Arrays.sort(folders, Comparator.comparing(File::getName));
+        for (File folder : folders) {
+            File main = new File(folder, folder.getName() + ".pde");
+            if (main.isFile()) {
+                found.add(SketchInfo.read(folder, main));
+            }
+        }
+        return new Catalog(root, List.copyOf(found));
+    }
+
+    /** @return every sketch, in tutorial order */
+    public List<SketchInfo> sketches() {
+        return sketches;
+    }
+
+    /** @return the sketches folder */
+    public File root() {
+        return root;
+    }
+
+    /**
+     * @param name a sketch's folder name, e.g. {@code S01_EdgeBounce}
+     * @return that sketch, if there is one
+     */
+    public Optional<SketchInfo> find(String name) {
+        return sketches.stream().filter(s -> s.name().equals(name)).findFirst();
+    }
+
+    /** @return the sketch names, comma-separated, for messages */
+    public String names() {
+        return sketches.stream().map(SketchInfo::name).collect(Collectors.joining(", "));
+    }
+
+    /**
+     * A sketch folder and what its header comment says about it.
+     *
+     * @param name    the folder name, which is also the class name
+     * @param folder  the sketch folder
+     * @param title   the header's first line, e.g. "Circle/Point"
+     * @param section the header's "Tutorial section ..." line, or "" if there is none
+     */
+    public record SketchInfo(String name, File folder, String title, String section) {
+
+        static SketchInfo read(File folder, File mainTab) {
+            List<String> lines;
+            try {
+                lines = Files.readAllLines(mainTab.toPath(), StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                throw new UncheckedIOException("cannot read " + mainTab, e);
+            }
+            String title = folder.getName();
+            String section = "";
+            boolean inHeader = false;
+            boolean titleSeen = false;
+            for (String raw : lines) {
+                String line = raw.trim();
+                if (!inHeader) {
+                    if (line.startsWith("/**") || line.startsWith("/*")) {
+                        inHeader = true;
+                    } else if (!line.isEmpty()) {
+                        break;  // the header comment must come first
+                    }
+                    continue;
+                }
+                if (line.startsWith("*/")) {
+                    break;
+                }
+                String text = line.replaceFirst("^\\*\\s?", "").trim();
+                if (!titleSeen && !text.isEmpty()) {
+                    title = text;
+                    titleSeen = true;
+                } else if (text.startsWith("Tutorial section") || text.startsWith("Homework")) {
+                    section = text;
+                }
+            }
+            return new SketchInfo(folder.getName(), folder, title, section);
+        }
+
+        /** @return the sketch's screenshot, which may not exist yet */
+        public File screenshot() {
+            return new File(folder, "screenshot.png");
+        }
+
+        /** @return the scripted input for its screenshot, which may not exist */
+        public File screenshotScript() {
+            return new File(folder, "screenshot.txt");
+        }
+
+        /**
+         * Makes a fresh instance of the compiled sketch.
+         *
+         * @return the sketch, not yet running
+         * @throws IllegalStateException if the sketch was not compiled
+         */
+        public PApplet newInstance() {
+            try {
+                return (PApplet) Class.forName("sketches." + name).getDeclaredConstructor().newInstance();
+            } catch (ReflectiveOperationException e) {
+                throw new IllegalStateException("sketch " + name + " is not compiled: run it through gradle", e);
+            }
+        }
+    }
+}

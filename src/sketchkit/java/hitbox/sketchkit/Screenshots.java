@@ -1,0 +1,44 @@
+package hitbox.sketchkit;
+
+import java.util.List;
+
+/**
+ * What {@code gradle screenshots} starts: runs each sketch with the scripted input in its
+ * {@code screenshot.txt} (see {@link Script}) and saves its last frame as
+ * {@code screenshot.png} beside it.
+ */
+public final class Screenshots {
+    private Screenshots() {
+    }
+
+    /**
+     * Saves the screenshots.
+     *
+     * @param args nothing for every sketch, or sketch names
+     */
+    public static void main(String[] args) {
+        if (!SketchRun.displayAvailable()) {
+            System.err.println("No display to open a window on. Run it under a virtual one: xvfb-run -a gradle screenshots");
+            System.exit(2);
+        }
+        Catalog catalog = Catalog.load();
+        List<Catalog.SketchInfo> chosen = args.length == 0 ? catalog.sketches()
+                : List.of(args).stream().map(n -> catalog.find(n).orElseThrow(() -> new IllegalArgumentException(
+                        "No sketch named \"" + n + "\". The sketches are: " + catalog.names()))).toList();
+        int failures = 0;
+        for (Catalog.SketchInfo info : chosen) {
+            Script script = info.screenshotScript().isFile() ? Script.read(info.screenshotScript()) : new Script();
+            try {
+                SketchRun.of(info.newInstance()).script(script)
+                        .saveFrame(script.frames(), info.screenshot())
+                        .run();
+                System.out.println("saved " + info.screenshot().getPath());
+            } catch (AssertionError | RuntimeException e) {
+                failures++;
+                System.err.println(info.name() + ": " + e.getMessage());
+            }
+        }
+        // Closed sketch windows leave AWT threads behind; end the JVM explicitly.
+        System.exit(failures == 0 ? 0 : 1);
+    }
+}
