@@ -1,0 +1,72 @@
+package hitbox.sketchkit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class CatalogTest {
+    @TempDir
+    Path root;
+
+    private void sketch(String name, String mainTab) throws IOException {
+        Path folder = Files.createDirectories(root.resolve(name));
+        Files.writeString(folder.resolve(name + ".pde"), mainTab);
+    }
+
+    @Test
+    void load_findsSketchFoldersInNameOrder_andReadsTheirHeaders() throws IOException {
+        sketch("S02_CirclePoint", """
+                /**
+                 * Circle/Point
+                 * Tutorial section 2: Circle/Point
+                 *
+                 * Try this: move the mouse.
+                 */
+                import hitbox.*;
+                """);
+        sketch("H02_Bouncers", "/**\n * Bouncers\n * Homework 2: 100 bouncers\n */\n");
+        sketch("S01_EdgeBounce", "// no header\nint x;\n");
+        Files.createDirectories(root.resolve("notASketch"));  // no notASketch.pde inside
+        Files.writeString(root.resolve("README.md"), "not a folder");
+
+        Catalog catalog = Catalog.load(root.toFile());
+
+        List<Catalog.SketchInfo> s = catalog.sketches();
+        assertEquals(List.of("H02_Bouncers", "S01_EdgeBounce", "S02_CirclePoint"),
+                s.stream().map(Catalog.SketchInfo::name).toList());
+        assertEquals("Circle/Point", s.get(2).title());
+        assertEquals("Tutorial section 2: Circle/Point", s.get(2).section());
+        assertEquals("Homework 2: 100 bouncers", s.get(0).section());
+        assertEquals("S01_EdgeBounce", s.get(1).title(), "no header: the folder name is the title");
+        assertEquals("", s.get(1).section());
+        assertEquals(new File(root.toFile(), "S02_CirclePoint/screenshot.png"), s.get(2).screenshot());
+        assertTrue(catalog.find("S01_EdgeBounce").isPresent());
+        assertTrue(catalog.find("S99_Nothing").isEmpty());
+        assertEquals("H02_Bouncers, S01_EdgeBounce, S02_CirclePoint", catalog.names());
+    }
+
+    @Test
+    void load_missingFolder_saysWhereItLooked() {
+        File missing = root.resolve("nope").toFile();
+        IllegalStateException e = assertThrows(IllegalStateException.class, () -> Catalog.load(missing));
+        assertTrue(e.getMessage().contains(missing.getAbsolutePath()), e.getMessage());
+    }
+
+    @Test
+    void theRealSketchesFolder_everySketchHasATitleAndSection() {
+        Catalog catalog = Catalog.load();
+        for (Catalog.SketchInfo info : catalog.sketches()) {
+            assertTrue(!info.title().equals(info.name()), info.name() + " has no header title");
+            assertTrue(!info.section().isEmpty(), info.name() + " has no \"Tutorial section\" or \"Homework\" line");
+        }
+    }
+}
