@@ -36,7 +36,7 @@ class AllSketchesTest {
         Script script = info.screenshotScript().isFile() ? Script.read(info.screenshotScript()) : new Script();
         script.frames(300).key(100, 'd').key(200, 'd');
         SketchRun.Result<?> result = SketchRun.of(info.newInstance()).script(script).run();
-        assertEquals(300, result.sketch().frameCount, "frames drawn");
+        assertEquals(300, result.framesDrawn(), "frames drawn");
     }
 
     @ParameterizedTest(name = "{0}")

@@ -162,7 +162,7 @@ public final class SketchRun<S extends PApplet> {
         } finally {
             close(sketch);
         }
-        return new Result<>(sketch, hooks.images, hooks.last);
+        return new Result<>(sketch, hooks.framesDone, hooks.images, hooks.last);
     }
 
     private static void close(PApplet sketch) {
@@ -310,12 +310,13 @@ public final class SketchRun<S extends PApplet> {
     /**
      * What a run saw.
      *
-     * @param sketch    the sketch, stopped, with its fields as the last frame left them
+     * @param sketch      the sketch, stopped, with its fields as the last frame left them
+     * @param framesDrawn how many times draw() ran
      * @param images    the frames kept with {@link #capture(int)}, by frame number
      * @param lastFrame what the last frame drew
      * @param <S>       the sketch's class
      */
-    public record Result<S extends PApplet>(S sketch, Map<Integer, PImage> images, PImage lastFrame) {
+    public record Result<S extends PApplet>(S sketch, int framesDrawn, Map<Integer, PImage> images, PImage lastFrame) {
 
         /**
          * @param frame a frame kept with {@link SketchRun#capture(int)}
