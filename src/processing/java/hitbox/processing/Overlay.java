@@ -97,6 +97,61 @@ public final class Overlay {
     }
 
     /**
+     * Draws text on a dark box centred on (x, y), kept inside the window: for a label that
+     * belongs beside an edge or over a line, whatever its length.
+     *
+     * @param g      where to draw
+     * @param x      the box's centre x
+     * @param y      the box's centre y
+     * @param text   the text; several lines are fine
+     * @param colour the text colour
+     */
+    public static void labelCentered(PGraphics g, float x, float y, String text, int colour) {
+        labelBeside(g, x, y, 0, 0, text, colour);
+    }
+
+    /**
+     * Draws text on a dark box just beside the point (x, y), on the side the direction
+     * (dx, dy) points to, whatever the text's length: for a label beside a line (give the
+     * line's sideways direction) or outside an edge (give the edge's outward direction).
+     * A zero direction centres the box on the point. The box is kept inside the window.
+     *
+     * @param g      where to draw
+     * @param x      the point's x
+     * @param y      the point's y
+     * @param dx     the direction's x, any length
+     * @param dy     the direction's y, any length
+     * @param text   the text; several lines are fine
+     * @param colour the text colour
+     */
+    public static void labelBeside(PGraphics g, float x, float y, float dx, float dy, String text, int colour) {
+        g.pushStyle();
+        g.textSize(12);
+        String[] lines = text.split("\n");
+        float w = 0;
+        for (String line : lines) {
+            w = Math.max(w, g.textWidth(line));
+        }
+        g.popStyle();
+        // The same box as label(): text width + 8 across, 15 a line + 4 down.
+        float halfW = (w + 8) / 2;
+        float halfH = (lines.length * 15 + 4) / 2f;
+        float len = (float) Math.hypot(dx, dy);
+        float cx = x;
+        float cy = y;
+        if (len > 0) {
+            float ux = dx / len;
+            float uy = dy / len;
+            // How far the box's centre must be from the point for the box to just clear it
+            // in that direction, plus a small gap.
+            float reach = halfW * Math.abs(ux) + halfH * Math.abs(uy) + 4;
+            cx += ux * reach;
+            cy += uy * reach;
+        }
+        label(g, cx - halfW, cy - halfH, text, colour);
+    }
+
+    /**
      * Draws a label in the overlay's plain text colour.
      *
      * @param g    where to draw
