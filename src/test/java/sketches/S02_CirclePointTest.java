@@ -1,0 +1,85 @@
+package sketches;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+import hitbox.processing.Palette;
+import hitbox.sketchkit.Script;
+import hitbox.sketchkit.SketchRun;
+import processing.core.PImage;
+
+/** S02_CirclePoint: the circle is red while the mouse is inside it, green otherwise. */
+class S02_CirclePointTest {
+
+    @BeforeAll
+    static void needsDisplay() {
+        assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
+    }
+
+    /** Points well inside the circle (centre 300, 200, radius 100), away from the mouse dot. */
+    private static final int[][] INSIDE = {{250, 150}, {350, 150}, {250, 250}, {350, 250}, {230, 200}};
+
+    private static SketchRun.Result<S02_CirclePoint> runWithMouseAt(int x, int y) {
+        return SketchRun.of(new S02_CirclePoint()).script(new Script().frames(5).mouse(1, x, y)).run();
+    }
+
+    private static void assertCircleColour(PImage frame, int expected, String what) {
+        for (int[] p : INSIDE) {
+            assertEquals(Integer.toHexString(expected), Integer.toHexString(frame.get(p[0], p[1])),
+                    what + " at (" + p[0] + ", " + p[1] + ")");
+        }
+    }
+
+    @Test
+    void circle_isRed_withTheMouseAtItsCentre() {
+        SketchRun.Result<S02_CirclePoint> r = runWithMouseAt(300, 200);
+        assertTrue(r.sketch().inside);
+        assertCircleColour(r.lastFrame(), Palette.HIT, "circle colour with the mouse at its centre");
+    }
+
+    @Test
+    void circle_isGreen_withTheMouseInACorner() {
+        SketchRun.Result<S02_CirclePoint> r = runWithMouseAt(5, 5);
+        assertFalse(r.sketch().inside);
+        assertCircleColour(r.lastFrame(), Palette.MISS, "circle colour with the mouse in a corner");
+    }
+
+    @Test
+    void circle_isGreen_withTheMouseExactlyOnTheOutline() {
+        // (360, 280) is 60, 80 from the centre: distance 100, the radius. Touching is not inside.
+        SketchRun.Result<S02_CirclePoint> r = runWithMouseAt(360, 280);
+        assertFalse(r.sketch().inside);
+        assertCircleColour(r.lastFrame(), Palette.MISS, "circle colour with the mouse on the outline");
+        // One pixel further in, it is inside.
+        SketchRun.Result<S02_CirclePoint> in = runWithMouseAt(359, 280);
+        assertCircleColour(in.lastFrame(), Palette.HIT, "circle colour with the mouse just inside the outline");
+    }
+
+    @Test
+    void overlayKey_changesWhatIsDrawn_andPressingAgainHidesIt() {
+        Script script = new Script().frames(12).mouse(1, 355, 268).key(3, 'd').key(8, 'd');
+        SketchRun.Result<S02_CirclePoint> r = SketchRun.of(new S02_CirclePoint()).script(script)
+                .capture(2).capture(6).run();
+        PImage off = r.frame(2);
+        PImage on = r.frame(6);
+        assertTrue(differingPixels(off, on) > 500, "the overlay draws the distance, radius and verdict");
+        assertEquals(0, differingPixels(off, r.lastFrame()), "pressing d again hides the overlay");
+    }
+
+    static int differingPixels(PImage a, PImage b) {
+        a.loadPixels();
+        b.loadPixels();
+        int n = 0;
+        for (int i = 0; i < a.pixels.length; i++) {
+            if (a.pixels[i] != b.pixels[i]) {
+                n++;
+            }
+        }
+        return n;
+    }
+}
