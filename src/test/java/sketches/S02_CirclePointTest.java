@@ -30,8 +30,7 @@ class S02_CirclePointTest {
 
     private static void assertCircleColour(PImage frame, int expected, String what) {
         for (int[] p : INSIDE) {
-            assertEquals(Integer.toHexString(expected), Integer.toHexString(frame.get(p[0], p[1])),
-                    what + " at (" + p[0] + ", " + p[1] + ")");
+            SketchPixels.assertColour(frame, p[0], p[1], expected, what);
         }
     }
 
@@ -67,19 +66,7 @@ class S02_CirclePointTest {
                 .capture(2).capture(6).run();
         PImage off = r.frame(2);
         PImage on = r.frame(6);
-        assertTrue(differingPixels(off, on) > 500, "the overlay draws the distance, radius and verdict");
-        assertEquals(0, differingPixels(off, r.lastFrame()), "pressing d again hides the overlay");
-    }
-
-    static int differingPixels(PImage a, PImage b) {
-        a.loadPixels();
-        b.loadPixels();
-        int n = 0;
-        for (int i = 0; i < a.pixels.length; i++) {
-            if (a.pixels[i] != b.pixels[i]) {
-                n++;
-            }
-        }
-        return n;
+        assertTrue(SketchPixels.differing(off, on) > 500, "the overlay draws the distance, radius and verdict");
+        assertEquals(0, SketchPixels.differing(off, r.lastFrame()), "pressing d again hides the overlay");
     }
 }
