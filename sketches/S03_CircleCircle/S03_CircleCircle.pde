@@ -1,0 +1,106 @@
+/**
+ * Circle/Circle
+ * Tutorial section 3: Circle/Circle
+ *
+ * Two circles overlap when the distance between their centres is less than the sum of their
+ * radii: Collide.circleCircle(x1, y1, r1, x2, y2, r2). Move the blue circle with the mouse;
+ * the centre circle turns red while they overlap. Circles that only touch do not collide.
+ *
+ * Try this: change the radii; give the mouse circle radius 0 and it behaves as a point
+ * (section 2); put circles in an array and test every pair.
+ * Keys: d shows the maths (the line between the centres, both radii, dist < r1 + r2).
+ */
+import hitbox.*;
+import hitbox.processing.*;
+
+// Circle 1 follows the mouse; circle 2 stays in the middle of the window.
+float r1 = 75;
+float x2 = 300;
+float y2 = 200;
+float r2 = 100;
+
+boolean colliding;    // the answer for this frame, kept for the tests
+boolean showMaths;    // the 'd' overlay
+
+public void settings() {
+  size(600, 400);
+}
+
+public void setup() {
+  textFont(createFont("SansSerif", 14));
+}
+
+public void draw() {
+  background(Palette.BACKGROUND);
+  float x1 = mouseX;
+  float y1 = mouseY;
+
+  // The whole idea in one line: do the two circles overlap?
+  colliding = Collide.circleCircle(x1, y1, r1, x2, y2, r2);
+
+  noStroke();
+  fill(colliding ? Palette.HIT : Palette.MISS);
+  circle(x2, y2, 2 * r2);
+
+  // The mouse circle, see-through so the overlap shows.
+  stroke(Palette.PLAYER);
+  strokeWeight(2);
+  fill(Palette.PLAYER, 150);
+  circle(x1, y1, 2 * r1);
+
+  if (showMaths) {
+    drawMaths(x1, y1);
+  }
+  Overlay.hint(g, "move the blue circle onto the other one     d: show the maths");
+}
+
+/** The line between the centres with its length, each radius along it, and dist < r1 + r2. */
+void drawMaths(float x1, float y1) {
+  float d = dist(x1, y1, x2, y2);
+  // The direction from circle 1 to circle 2 (to the right when the centres coincide).
+  float ux = d > 0.5f ? (x2 - x1) / d : 1;
+  float uy = d > 0.5f ? (y2 - y1) / d : 0;
+  // Sideways: radius 1 is drawn on one side of the line, radius 2 on the other.
+  float px = -uy;
+  float py = ux;
+
+  radiusBar(x1, y1, ux, uy, r1, px, py, "r1");
+  radiusBar(x2, y2, -ux, -uy, r2, -px, -py, "r2");
+
+  // The distance between the centres: a dashed line.
+  Overlay.guide(g, x1, y1, x2, y2);
+  noStroke();
+  fill(Overlay.GUIDE);
+  circle(x1, y1, 6);
+  circle(x2, y2, 6);
+  // Its label goes beside the middle, outside radius 2's bar, so the place where the bars meet
+  // or pass each other stays visible.
+  Overlay.labelBeside(g, (x1 + x2) / 2 - px * 18, (y1 + y2) / 2 - py * 18, -px, -py, "dist = " + Overlay.number(d), Overlay.GUIDE);
+
+  // The test itself, written out at the top, or at the bottom while the mouse circle is up there.
+  int colour = colliding ? Overlay.HIT : Overlay.MISS;
+  float verdictY = y1 - r1 < 50 ? height - 46 : 28;
+  Overlay.labelCentered(g, width / 2, verdictY, "dist < r1 + r2\n" + Overlay.verdict(d, "<", r1 + r2, colliding), colour);
+}
+
+/** A radius drawn as a solid bar from a centre along (ux, uy), 12 pixels to the side (sx, sy). */
+void radiusBar(float x, float y, float ux, float uy, float r, float sx, float sy, String name) {
+  float ox = sx * 12;
+  float oy = sy * 12;
+  float ex = x + ux * r;
+  float ey = y + uy * r;
+  stroke(Overlay.TEXT);
+  strokeWeight(2);
+  line(x + ox, y + oy, ex + ox, ey + oy);
+  strokeWeight(1.5f);
+  line(x + ox - sx * 5, y + oy - sy * 5, x + ox + sx * 5, y + oy + sy * 5);
+  line(ex + ox - sx * 5, ey + oy - sy * 5, ex + ox + sx * 5, ey + oy + sy * 5);
+  // The label sits by the bar's start, behind the centre, away from the other circle.
+  Overlay.labelBeside(g, x + ox, y + oy, sx - ux, sy - uy, name + " = " + Overlay.number(r), Overlay.TEXT);
+}
+
+public void keyPressed() {
+  if (key == 'd') {
+    showMaths = !showMaths;
+  }
+}
