@@ -1,0 +1,87 @@
+package sketches;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+import hitbox.processing.Palette;
+import hitbox.sketchkit.Script;
+import hitbox.sketchkit.SketchRun;
+import processing.core.PImage;
+
+/**
+ * S04_RectPoint: the button (200, 150, 200 x 100) is red while hovered and counts only the
+ * clicks that land inside it; the edges are not inside.
+ */
+class S04_RectPointTest {
+
+    @BeforeAll
+    static void needsDisplay() {
+        assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
+    }
+
+    @ParameterizedTest(name = "mouse ({0}, {1}): hovered {2}")
+    @CsvSource({
+            "300, 200, true",
+            "201, 151, true",    // just inside the top-left corner
+            "399, 249, true",    // just inside the bottom-right corner
+            "100, 100, false",
+            "200, 200, false",   // on the left edge
+            "400, 200, false",   // on the right edge
+            "300, 150, false",   // on the top edge
+            "300, 250, false",   // on the bottom edge
+            "300, 260, false",   // below
+    })
+    void button_isRedOnlyWhileHovered(int mx, int my, boolean hovered) {
+        SketchRun.Result<S04_RectPoint> r = SketchRun.of(new S04_RectPoint())
+                .script(new Script().frames(5).mouse(1, mx, my)).run();
+        assertEquals(hovered, r.sketch().hovered, "hovered");
+        // A pixel of the button away from the mouse dot, the edges and the counter's text.
+        int px = mx < 300 ? 380 : 220;
+        SketchPixels.assertColour(r.lastFrame(), px, 235, hovered ? Palette.HIT : Palette.MISS, "button");
+    }
+
+    @Test
+    void clicks_countOnlyInsideTheButton() {
+        Script script = new Script().frames(60)
+                .click(2, 250, 200)     // inside: counts
+                .click(6, 100, 100)     // outside
+                .click(10, 200, 200)    // on the left edge
+                .click(14, 400, 200)    // on the right edge
+                .click(18, 300, 150)    // on the top edge
+                .click(22, 300, 250)    // on the bottom edge
+                .click(26, 200, 150)    // on the top-left corner
+                .click(30, 399, 249)    // inside, by the bottom-right corner: counts
+                .click(34, 520, 330)    // outside
+                .click(38, 300, 200)    // inside: counts
+                .mouse(45, 50, 50);
+        SketchRun.Result<S04_RectPoint> r = SketchRun.of(new S04_RectPoint()).script(script).run();
+        assertEquals(3, r.sketch().clicks, "clicks counted");
+    }
+
+    @Test
+    void clickCount_isWrittenOnTheButton() {
+        // Same mouse, no clicks vs one click: the counter's text changes what is drawn.
+        SketchRun.Result<S04_RectPoint> none = SketchRun.of(new S04_RectPoint())
+                .script(new Script().frames(80).mouse(1, 50, 50)).run();
+        SketchRun.Result<S04_RectPoint> one = SketchRun.of(new S04_RectPoint())
+                .script(new Script().frames(80).click(2, 250, 200).mouse(5, 50, 50)).run();
+        assertEquals(1, one.sketch().clicks);
+        assertTrue(SketchPixels.differing(none.lastFrame(), one.lastFrame()) > 20, "the counter is drawn");
+    }
+
+    @Test
+    void overlayKey_changesWhatIsDrawn_andPressingAgainHidesIt() {
+        Script script = new Script().frames(12).mouse(1, 250, 185).key(3, 'd').key(8, 'd');
+        SketchRun.Result<S04_RectPoint> r = SketchRun.of(new S04_RectPoint()).script(script)
+                .capture(2).capture(6).run();
+        PImage off = r.frame(2);
+        assertTrue(SketchPixels.differing(off, r.frame(6)) > 500, "the overlay draws the four comparisons and the verdict");
+        assertEquals(0, SketchPixels.differing(off, r.lastFrame()), "pressing d again hides the overlay");
+    }
+}
