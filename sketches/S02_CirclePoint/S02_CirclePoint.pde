@@ -56,29 +56,13 @@ void drawMaths() {
   // The direction from the centre to the mouse (to the right when the mouse is on the centre).
   float ux = d > 0.5f ? (mouseX - cx) / d : 1;
   float uy = d > 0.5f ? (mouseY - cy) / d : 0;
-  // A sideways direction, pointing up or left, to draw the radius beside the distance line.
-  float px = -uy;
-  float py = ux;
-  if (px + py > 0) {
-    px = -px;
-    py = -py;
-  }
-
-  // The radius: a solid line from the centre to the outline, beside the distance line.
-  float ox = px * 12;
-  float oy = py * 12;
-  stroke(Overlay.TEXT);
-  strokeWeight(2);
-  line(cx + ox, cy + oy, cx + ux * r + ox, cy + uy * r + oy);
-  strokeWeight(1.5f);
-  line(cx + ox - px * 5, cy + oy - py * 5, cx + ox + px * 5, cy + oy + py * 5);
-  line(cx + ux * r + ox - px * 5, cy + uy * r + oy - py * 5, cx + ux * r + ox + px * 5, cy + uy * r + oy + py * 5);
-  Overlay.labelBeside(g, cx + ux * r / 2 + ox, cy + uy * r / 2 + oy, px, py, "r = " + Overlay.number(r), Overlay.TEXT);
+  // The radius, along the same direction, set to one side (-uy, ux) of the distance line.
+  Overlay.radius(g, cx, cy, ux, uy, r, "r");
 
   // The distance: a dashed line from the centre to the mouse, its length written beside it
   // on the other side.
   Overlay.guide(g, cx, cy, mouseX, mouseY);
-  Overlay.labelBeside(g, (cx + mouseX) / 2, (cy + mouseY) / 2, -px, -py, "dist = " + Overlay.number(d), Overlay.GUIDE);
+  Overlay.labelBeside(g, (cx + mouseX) / 2, (cy + mouseY) / 2, uy, -ux, "dist = " + Overlay.number(d), Overlay.GUIDE);
 
   // The centre, where both lines start.
   noStroke();

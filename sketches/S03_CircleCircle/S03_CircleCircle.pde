@@ -60,12 +60,12 @@ void drawMaths(float x1, float y1) {
   // The direction from circle 1 to circle 2 (to the right when the centres coincide).
   float ux = d > 0.5f ? (x2 - x1) / d : 1;
   float uy = d > 0.5f ? (y2 - y1) / d : 0;
-  // Sideways: radius 1 is drawn on one side of the line, radius 2 on the other.
+  // Sideways: radius 1 is drawn on this side of the line, radius 2 on the other.
   float px = -uy;
   float py = ux;
 
-  radiusBar(x1, y1, ux, uy, r1, px, py, "r1");
-  radiusBar(x2, y2, -ux, -uy, r2, -px, -py, "r2");
+  Overlay.radius(g, x1, y1, ux, uy, r1, "r1");
+  Overlay.radius(g, x2, y2, -ux, -uy, r2, "r2");
 
   // The distance between the centres: a dashed line.
   Overlay.guide(g, x1, y1, x2, y2);
@@ -81,22 +81,6 @@ void drawMaths(float x1, float y1) {
   int colour = colliding ? Overlay.HIT : Overlay.MISS;
   float verdictY = y1 - r1 < 50 ? height - 46 : 28;
   Overlay.labelCentered(g, width / 2, verdictY, "dist < r1 + r2\n" + Overlay.verdict(d, "<", r1 + r2, colliding), colour);
-}
-
-/** A radius drawn as a solid bar from a centre along (ux, uy), 12 pixels to the side (sx, sy). */
-void radiusBar(float x, float y, float ux, float uy, float r, float sx, float sy, String name) {
-  float ox = sx * 12;
-  float oy = sy * 12;
-  float ex = x + ux * r;
-  float ey = y + uy * r;
-  stroke(Overlay.TEXT);
-  strokeWeight(2);
-  line(x + ox, y + oy, ex + ox, ey + oy);
-  strokeWeight(1.5f);
-  line(x + ox - sx * 5, y + oy - sy * 5, x + ox + sx * 5, y + oy + sy * 5);
-  line(ex + ox - sx * 5, ey + oy - sy * 5, ex + ox + sx * 5, ey + oy + sy * 5);
-  // The label sits by the bar's start, behind the centre, away from the other circle.
-  Overlay.labelBeside(g, x + ox, y + oy, sx - ux, sy - uy, name + " = " + Overlay.number(r), Overlay.TEXT);
 }
 
 public void keyPressed() {

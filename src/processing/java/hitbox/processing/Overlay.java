@@ -181,6 +181,44 @@ public final class Overlay {
     }
 
     /**
+     * Draws a circle's radius as a dimension bar: a solid line as long as the radius, from the
+     * centre along a direction, with a tick at each end, labelled {@code "r = 100.0"} by the
+     * centre. The bar is set 12 pixels to the side {@code (-dy, dx)} of the direction, so it
+     * does not hide a distance line drawn from the same centre; two circles that draw their
+     * radii towards each other get them on opposite sides.
+     *
+     * @param g    where to draw
+     * @param cx   the circle's centre x
+     * @param cy   the circle's centre y
+     * @param dx   the direction's x, any length (a zero direction draws it to the right)
+     * @param dy   the direction's y, any length
+     * @param r    the radius
+     * @param name what the radius is called, e.g. "r1"
+     */
+    public static void radius(PGraphics g, float cx, float cy, float dx, float dy, float r, String name) {
+        float len = (float) Math.hypot(dx, dy);
+        float ux = len > 0 ? dx / len : 1;
+        float uy = len > 0 ? dy / len : 0;
+        float sx = -uy;
+        float sy = ux;
+        float x1 = cx + sx * 12;
+        float y1 = cy + sy * 12;
+        float x2 = x1 + ux * r;
+        float y2 = y1 + uy * r;
+        g.pushStyle();
+        g.stroke(TEXT);
+        g.strokeWeight(2);
+        g.line(x1, y1, x2, y2);
+        g.strokeWeight(1.5f);
+        g.line(x1 - sx * 5, y1 - sy * 5, x1 + sx * 5, y1 + sy * 5);
+        g.line(x2 - sx * 5, y2 - sy * 5, x2 + sx * 5, y2 + sy * 5);
+        g.popStyle();
+        // By the centre, behind it and to the bar's side: clear of the bar and of whatever
+        // the bar points at.
+        labelBeside(g, x1, y1, sx - ux, sy - uy, name + " = " + number(r), TEXT);
+    }
+
+    /**
      * Draws a dashed guide line.
      *
      * @param g  where to draw
