@@ -107,6 +107,9 @@ public final class Snap {
         /**
          * Makes a push result.
          *
+         * @param x    the mover's new left edge
+         * @param y    the mover's new top edge
+         * @param side the side of the obstacle the mover touches, or {@link Side#NONE}
          * @throws IllegalArgumentException if {@code side} is null
          */
         public Push {
