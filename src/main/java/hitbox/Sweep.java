@@ -510,7 +510,7 @@ public final class Sweep {
      *                                  is NaN or infinite
      */
     public static Move move(Rect mover, float vx, float vy, Iterable<Rect> obstacles) {
-        checkArgs(mover, vx, vy, obstacles);
+        checkArgs(mover, vx, vy, "obstacles", obstacles);
         for (Rect o : obstacles) {
             Check.notNull("every obstacle", o);
         }
@@ -806,10 +806,14 @@ public final class Sweep {
     }
 
     private static void checkArgs(Object mover, float vx, float vy, Object obstacle) {
+        checkArgs(mover, vx, vy, "obstacle", obstacle);
+    }
+
+    private static void checkArgs(Object mover, float vx, float vy, String obstacleName, Object obstacle) {
         Check.notNull("mover", mover);
         Check.finite("vx", vx);
         Check.finite("vy", vy);
-        Check.notNull(obstacle instanceof Iterable ? "obstacles" : "obstacle", obstacle);
+        Check.notNull(obstacleName, obstacle);
     }
 
     /** The hit seen from the other shape: same time, the normal turned round. */
