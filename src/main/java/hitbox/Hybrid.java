@@ -88,8 +88,42 @@ public final class Hybrid {
     public static Result check(Shape a, Shape b) {
         Check.notNull("a", a);
         Check.notNull("b", b);
-        double al = left(a), at = top(a), ar = right(a), ab = bottom(a);
-        double bl = left(b), bt = top(b), br = right(b), bb = bottom(b);
+        // Each shape's bounding box in double, without making a Rect (Circle.bounds()
+        // allocates, and rounds x - r to a float, which could cut the box a hair short).
+        if (a instanceof Circle c) {
+            return against(b, (double) c.x() - c.r(), (double) c.y() - c.r(), (double) c.x() + c.r(), (double) c.y() + c.r(), a);
+        }
+        if (a instanceof Rect r) {
+            return against(b, r.x(), r.y(), (double) r.x() + r.w(), (double) r.y() + r.h(), a);
+        }
+        if (a instanceof Segment g) {
+            return against(b, Math.min(g.x1(), g.x2()), Math.min(g.y1(), g.y2()), Math.max(g.x1(), g.x2()), Math.max(g.y1(), g.y2()), a);
+        }
+        Rect p = a.bounds();
+        return against(b, p.x(), p.y(), polygonEnd(p.x(), p.w()), polygonEnd(p.y(), p.h()), a);
+    }
+
+    private static Result against(Shape b, double al, double at, double ar, double ab, Shape a) {
+        if (b instanceof Circle c) {
+            return stages(al, at, ar, ab, (double) c.x() - c.r(), (double) c.y() - c.r(), (double) c.x() + c.r(), (double) c.y() + c.r(), a, b);
+        }
+        if (b instanceof Rect r) {
+            return stages(al, at, ar, ab, r.x(), r.y(), (double) r.x() + r.w(), (double) r.y() + r.h(), a, b);
+        }
+        if (b instanceof Segment g) {
+            return stages(al, at, ar, ab, Math.min(g.x1(), g.x2()), Math.min(g.y1(), g.y2()), Math.max(g.x1(), g.x2()), Math.max(g.y1(), g.y2()), a, b);
+        }
+        Rect p = b.bounds();
+        return stages(al, at, ar, ab, p.x(), p.y(), polygonEnd(p.x(), p.w()), polygonEnd(p.y(), p.h()), a, b);
+    }
+
+    /** A polygon's cached bounds hold a float width, rounded: widen by one unit in its last place. */
+    private static double polygonEnd(float start, float size) {
+        return (double) start + size + Math.ulp(size);
+    }
+
+    private static Result stages(double al, double at, double ar, double ab,
+                                 double bl, double bt, double br, double bb, Shape a, Shape b) {
         if (circlesApart(al, at, ar, ab, bl, bt, br, bb)) {
             return APART_BY_CIRCLES;
         }
@@ -235,70 +269,23 @@ public final class Hybrid {
 
     // ---------------------------------------------------------------- the stages
 
-    /** Are the circles around the two boxes (l, t, r, b) apart, with room to spare for rounding? */
+    /** 1 / (1 + CIRCLE_SLACK)^2: the squared distance is shrunk by this before comparing. */
+    private static final double SHRINK = 1 / ((1 + CIRCLE_SLACK) * (1 + CIRCLE_SLACK));
+
+    /**
+     * Are the circles around the two boxes (l, t, r, b) apart, with room to spare for
+     * rounding? With D the distance between the centres doubled and A, B the diagonals
+     * (the radii doubled), apart means D > A + B; squared twice, so no square root is
+     * taken: L = D^2 - A^2 - B^2 > 2AB, that is L > 0 and L^2 > 4 A^2 B^2. D^2 is first
+     * shrunk by the slack, so a pair that touches is never called apart.
+     */
     static boolean circlesApart(double al, double at, double ar, double ab,
                                 double bl, double bt, double br, double bb) {
-        double dx = (bl + br) / 2 - (al + ar) / 2;
-        double dy = (bt + bb) / 2 - (at + ab) / 2;
-        double reach = (Math.hypot(ar - al, ab - at) + Math.hypot(br - bl, bb - bt)) / 2 * (1 + CIRCLE_SLACK);
-        return dx * dx + dy * dy > reach * reach;
-    }
-
-    // A shape's bounding box in double, without making a Rect (Circle.bounds() allocates, and
-    // rounds x - r to a float, which could cut the box a hair short).
-
-    private static double left(Shape s) {
-        if (s instanceof Circle c) {
-            return (double) c.x() - c.r();
-        }
-        if (s instanceof Rect r) {
-            return r.x();
-        }
-        if (s instanceof Segment g) {
-            return Math.min(g.x1(), g.x2());
-        }
-        return s.bounds().x();
-    }
-
-    private static double top(Shape s) {
-        if (s instanceof Circle c) {
-            return (double) c.y() - c.r();
-        }
-        if (s instanceof Rect r) {
-            return r.y();
-        }
-        if (s instanceof Segment g) {
-            return Math.min(g.y1(), g.y2());
-        }
-        return s.bounds().y();
-    }
-
-    private static double right(Shape s) {
-        if (s instanceof Circle c) {
-            return (double) c.x() + c.r();
-        }
-        if (s instanceof Rect r) {
-            return (double) r.x() + r.w();
-        }
-        if (s instanceof Segment g) {
-            return Math.max(g.x1(), g.x2());
-        }
-        // A polygon's cached bounds hold a float width, rounded: widen by one unit in its last place.
-        Rect b = s.bounds();
-        return (double) b.x() + b.w() + Math.ulp(b.w());
-    }
-
-    private static double bottom(Shape s) {
-        if (s instanceof Circle c) {
-            return (double) c.y() + c.r();
-        }
-        if (s instanceof Rect r) {
-            return (double) r.y() + r.h();
-        }
-        if (s instanceof Segment g) {
-            return Math.max(g.y1(), g.y2());
-        }
-        Rect b = s.bounds();
-        return (double) b.y() + b.h() + Math.ulp(b.h());
+        double dx = (bl + br) - (al + ar);
+        double dy = (bt + bb) - (at + ab);
+        double wa = ar - al, ha = ab - at, wb = br - bl, hb = bb - bt;
+        double qa = wa * wa + ha * ha, qb = wb * wb + hb * hb;
+        double l = (dx * dx + dy * dy) * SHRINK - qa - qb;
+        return l > 0 && l * l > 4 * qa * qb;
     }
 }

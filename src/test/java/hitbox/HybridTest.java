@@ -37,6 +37,8 @@ class HybridTest {
             "rect 5 5 0 0, rect 5 5 0 0, false, PRECISE, two zero-size boxes never collide",
             "rect 10 10 0 0, rect 0 0 10 10, false, PRECISE, a point on the corner",
             "circle 0 0 5, rect 20 20 10 10, false, CIRCLES, circle and box far apart",
+            "rect -3 -4 6 8, rect 7 -4 6 8, false, BOXES, bounding circles exactly touching are not apart",
+            "rect -3 -4 6 8, rect 7.5 -4 6 8, false, CIRCLES, bounding circles just apart",
     })
     void check_shapes(String a, String b, boolean overlaps, Hybrid.Stage stage, String scenario) {
         Shape sa = shape(a), sb = shape(b);
