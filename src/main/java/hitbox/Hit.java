@@ -29,6 +29,11 @@ public record Hit(float t, float nx, float ny, Side side) {
     /**
      * Makes a hit, checking its values.
      *
+     * @param t the fraction of the motion done at impact, from 0 to 1
+     * @param nx the obstacle's surface normal at the impact, x part (unit length, or 0)
+     * @param ny the obstacle's surface normal at the impact, y part (unit length, or 0)
+     * @param side the side of the obstacle that was hit, {@link Side#NONE} if the shapes already overlapped
+     *
      * @throws IllegalArgumentException if {@code t} is not between 0 and 1, the normal is
      *                                  NaN or infinite, or the side is null
      */

@@ -56,6 +56,9 @@ public final class Hybrid {
         /**
          * Makes a result, checking that it could happen.
          *
+         * @param overlaps do the shapes (or masks) overlap?
+         * @param decidedBy the stage that decided; an overlap is always decided by {@link Stage#PRECISE}
+         *
          * @throws IllegalArgumentException if the stage is null, or an overlap is said to be
          *                                  decided before the precise stage
          */

@@ -39,6 +39,12 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
     /**
      * Makes a ray, checking its values.
      *
+     * @param ox the origin's x
+     * @param oy the origin's y
+     * @param dx the direction's x part
+     * @param dy the direction's y part
+     * @param maxDistance how far the ray reaches, in pixels: 0 or more, and may be {@link Float#POSITIVE_INFINITY}. When it is the direction's own length (as {@link #between} makes it) the ray ends exactly at {@code (ox + dx, oy + dy)}.
+     *
      * @throws IllegalArgumentException if a value is NaN, the origin or direction is
      *                                  infinite, the direction is (0, 0), or maxDistance is
      *                                  negative

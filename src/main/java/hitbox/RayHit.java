@@ -18,6 +18,12 @@ public record RayHit(float distance, float x, float y, float nx, float ny) {
     /**
      * Makes a ray hit, checking its values.
      *
+     * @param distance how far along the ray the hit is, in pixels (0 or more)
+     * @param x the hit point's x
+     * @param y the hit point's y
+     * @param nx the surface normal at the hit point, x part (unit length)
+     * @param ny the surface normal at the hit point, y part (unit length)
+     *
      * @throws IllegalArgumentException if a value is NaN or infinite, or the distance is
      *                                  negative
      */

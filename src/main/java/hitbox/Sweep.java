@@ -585,6 +585,12 @@ public final class Sweep {
         /**
          * Makes a move result, checking its values.
          *
+         * @param x the box's left edge after the move
+         * @param y the box's top edge after the move
+         * @param vx the velocity to keep, x part: the one passed in, or 0 if a wall stopped it
+         * @param vy the velocity to keep, y part: the one passed in, or 0 if it landed or hit its head
+         * @param sides the obstacle sides hit, one bit {@code 1 << side.ordinal()} per {@link Side}; read it with {@link #hit(Side)}
+         *
          * @throws IllegalArgumentException if a value is NaN or infinite, or {@code sides}
          *                                  has a bit that names no side
          */
