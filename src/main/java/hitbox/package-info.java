@@ -31,10 +31,12 @@
  *       segments meeting at an end point intersect, and so does a segment that reaches the
  *       inside of a shape. A segment lying along a rectangle's edge does not collide with
  *       it, because it never reaches the inside.</li>
- *   <li>A zero-size shape (radius 0, width or height 0) has no inside of its own: a circle
- *       of radius 0 behaves as a point, a rectangle of width 0 as a segment. It collides
- *       only by reaching into the inside of a shape that has one, so two zero-size shapes
- *       never collide with each other.</li>
+ *   <li>A zero-size shape has no inside of its own: a circle of radius 0 behaves as a
+ *       point, a rectangle of width or height 0 as a segment without its end points. It
+ *       collides with a shape that has area only by reaching into that shape's inside.
+ *       Between two zero-size shapes the same formulas give: a point never collides with a
+ *       point or a flat rectangle, and two flat rectangles collide only when they cross
+ *       (like a plus sign), never when they lie along each other or meet at an end.</li>
  * </ul>
  * Comparisons are exact, with no hidden epsilon: for whole-number coordinates of modest
  * size (up to about a million) every answer, touching cases included, is exact.

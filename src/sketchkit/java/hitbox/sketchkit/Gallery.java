@@ -4,6 +4,7 @@ import java.io.File;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Consumer;
 
 import processing.core.PApplet;
 import processing.core.PImage;
@@ -26,15 +27,29 @@ public final class Gallery extends PApplet {
     private static final int MARGIN = 16;
 
     private final Catalog catalog;
+    private final Consumer<Catalog.SketchInfo> opener;
     private final List<PImage> thumbs = new ArrayList<>();
     private float scroll;
     private String status = "Click a sketch to open it. Close its window to come back.";
 
     /**
+     * A gallery that opens each clicked sketch in a JVM of its own.
+     *
      * @param catalog the sketches to show
      */
     public Gallery(Catalog catalog) {
+        this(catalog, null);
+    }
+
+    /**
+     * A gallery with its own way of opening a sketch (tests use this to see what a click does).
+     *
+     * @param catalog the sketches to show
+     * @param opener  what a click on a sketch does; null to start it in a JVM of its own
+     */
+    public Gallery(Catalog catalog, Consumer<Catalog.SketchInfo> opener) {
         this.catalog = catalog;
+        this.opener = opener != null ? opener : this::launch;
     }
 
     /**
@@ -114,6 +129,17 @@ public final class Gallery extends PApplet {
         text(status, MARGIN, 38);
     }
 
+    /**
+     * Where a sketch's thumbnail is drawn, for tests that click it.
+     *
+     * @param index the sketch's place in the catalog
+     * @return the thumbnail's centre, {x, y}, before any scrolling
+     */
+    public static int[] thumbnailCentre(int index) {
+        return new int[] {MARGIN + (index % COLUMNS) * CELL_W + 6 + THUMB_W / 2,
+                TOP + (index / COLUMNS) * CELL_H + 6 + THUMB_H / 2};
+    }
+
     private int indexAt(float mx, float my) {
         if (my < TOP) {
             return -1;
@@ -130,7 +156,7 @@ public final class Gallery extends PApplet {
     public void mousePressed() {
         int i = indexAt(mouseX, mouseY);
         if (i >= 0) {
-            launch(catalog.sketches().get(i));
+            opener.accept(catalog.sketches().get(i));
         }
     }
 

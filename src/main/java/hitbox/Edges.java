@@ -1,0 +1,375 @@
+package hitbox;
+
+/**
+ * The window's edges: which ones a shape has crossed, and the three things a sketch does about
+ * it: bounce back, wrap around to the other side, or stay inside.
+ *
+ * <p>The window runs from 0 to {@code width} across and from 0 to {@code height} down
+ * (Processing's {@code width} and {@code height}). Every method is static, takes plain
+ * {@code float}s, allocates nothing and checks nothing, so it is safe to call every frame:
+ * <pre>{@code
+ * x += vx;
+ * y += vy;
+ * int crossed = Edges.circleCrossed(x, y, r, width, height);
+ * vx = Edges.bounceX(crossed, vx);
+ * vy = Edges.bounceY(crossed, vy);
+ * }</pre>
+ *
+ * <p>Crossing follows the <a href="package-summary.html#touching">touching rule</a>: a shape
+ * that only touches an edge (a ball of radius 10 at {@code x = 10}) has not crossed it; one
+ * that reaches past it, even by a little, has. The answer is a set of bit flags,
+ * {@link #LEFT}, {@link #RIGHT}, {@link #TOP} and {@link #BOTTOM}, or {@link #NONE}; test one
+ * with {@link #has(int, int)} or {@code (crossed & Edges.LEFT) != 0}. A shape bigger than the
+ * window crosses both opposite edges at once.
+ *
+ * <p>Circles are centre and radius, rectangles top-left corner and size, as everywhere in
+ * Hitbox; for a point use {@link #pointCrossed}, or a circle of radius 0 with the others.
+ * Nothing is checked: with a NaN argument the crossing tests answer {@link #NONE}, and the
+ * other methods answer NaN or hand the value back unchanged.
+ */
+public final class Edges {
+    private Edges() {
+    }
+
+    /** No edge crossed: the shape is inside the window (touching an edge is inside). */
+    public static final int NONE = 0;
+    /** The left edge, {@code x = 0}. */
+    public static final int LEFT = 1;
+    /** The right edge, {@code x = width}. */
+    public static final int RIGHT = 2;
+    /** The top edge, {@code y = 0}. */
+    public static final int TOP = 4;
+    /** The bottom edge, {@code y = height}. */
+    public static final int BOTTOM = 8;
+
+    /**
+     * Has the point gone past a window edge? A point exactly on an edge has not.
+     *
+     * @param px     the point's x
+     * @param py     the point's y
+     * @param width  the window's width
+     * @param height the window's height
+     * @return the crossed edges, a combination of {@link #LEFT}, {@link #RIGHT}, {@link #TOP}
+     *         and {@link #BOTTOM}, or {@link #NONE}
+     */
+    public static int pointCrossed(float px, float py, float width, float height) {
+        return crossed(px, px, py, py, width, height);
+    }
+
+    /**
+     * Which window edges has the circle crossed? The tutorial's bouncing ball test,
+     * {@code x < r || x > width - r}, for each edge; a circle touching an edge has not crossed
+     * it.
+     *
+     * @param cx     the circle's centre x
+     * @param cy     the circle's centre y
+     * @param r      the circle's radius (not its diameter)
+     * @param width  the window's width
+     * @param height the window's height
+     * @return the crossed edges, a combination of {@link #LEFT}, {@link #RIGHT}, {@link #TOP}
+     *         and {@link #BOTTOM}, or {@link #NONE}
+     */
+    public static int circleCrossed(float cx, float cy, float r, float width, float height) {
+        return crossed((double) cx - r, (double) cx + r, (double) cy - r, (double) cy + r, width, height);
+    }
+
+    /**
+     * Which window edges has the rectangle crossed? A rectangle touching an edge has not
+     * crossed it.
+     *
+     * @param x      the rectangle's left edge
+     * @param y      the rectangle's top edge
+     * @param w      the rectangle's width
+     * @param h      the rectangle's height
+     * @param width  the window's width
+     * @param height the window's height
+     * @return the crossed edges, a combination of {@link #LEFT}, {@link #RIGHT}, {@link #TOP}
+     *         and {@link #BOTTOM}, or {@link #NONE}
+     */
+    public static int rectCrossed(float x, float y, float w, float h, float width, float height) {
+        return crossed(x, (double) x + w, y, (double) y + h, width, height);
+    }
+
+    /**
+     * Which window edges has the shape crossed? A circle is tested as a circle; any other
+     * shape by its {@link Shape#bounds() bounds}, which reach exactly as far as the shape.
+     *
+     * @param shape  the shape, not null
+     * @param width  the window's width
+     * @param height the window's height
+     * @return the crossed edges, a combination of {@link #LEFT}, {@link #RIGHT}, {@link #TOP}
+     *         and {@link #BOTTOM}, or {@link #NONE}
+     * @throws IllegalArgumentException if {@code shape} is null
+     */
+    public static int crossed(Shape shape, float width, float height) {
+        if (Check.notNull("shape", shape) instanceof Circle c) {
+            return circleCrossed(c.x(), c.y(), c.r(), width, height);
+        }
+        Rect b = shape.bounds();
+        return rectCrossed(b.x(), b.y(), b.w(), b.h(), width, height);
+    }
+
+    /** The one crossing rule: strictly beyond an edge, in double so touching is exact. */
+    private static int crossed(double left, double right, double top, double bottom, float width, float height) {
+        int edges = NONE;
+        if (left < 0) {
+            edges |= LEFT;
+        }
+        if (right > width) {
+            edges |= RIGHT;
+        }
+        if (top < 0) {
+            edges |= TOP;
+        }
+        if (bottom > height) {
+            edges |= BOTTOM;
+        }
+        return edges;
+    }
+
+    /**
+     * Is this edge among the crossed ones? Reads better than {@code (crossed & edge) != 0}.
+     *
+     * @param crossed the edges from one of the crossing tests
+     * @param edge    the edge to ask about: {@link #LEFT}, {@link #RIGHT}, {@link #TOP} or
+     *                {@link #BOTTOM}
+     * @return true if {@code crossed} includes {@code edge}
+     */
+    public static boolean has(int crossed, int edge) {
+        return (crossed & edge) != 0;
+    }
+
+    /**
+     * The crossed edges as words, for printing: {@code "LEFT|TOP"}, or {@code "NONE"}.
+     *
+     * @param crossed the edges from one of the crossing tests
+     * @return the names of the edges in {@code crossed}, joined by {@code |}
+     */
+    public static String describe(int crossed) {
+        StringBuilder s = new StringBuilder();
+        String[] names = {"LEFT", "RIGHT", "TOP", "BOTTOM"};
+        for (int i = 0; i < names.length; i++) {
+            if ((crossed & (1 << i)) != 0) {
+                s.append(s.length() == 0 ? "" : "|").append(names[i]);
+            }
+        }
+        return s.length() == 0 ? "NONE" : s.toString();
+    }
+
+    /**
+     * The horizontal speed after bouncing off the left or right edge: pointing right (back
+     * inside) after crossing the left edge, pointing left after crossing the right edge, and
+     * unchanged otherwise.
+     *
+     * <p>Why not the tutorial's {@code vx *= -1}: a ball that is still beyond the edge on the
+     * next frame (it went far past, the window shrank, or it was placed there) gets its speed
+     * flipped again, back outwards, then again inwards, and jitters at the edge forever. Setting
+     * the direction instead of flipping it can only ever send the ball back inside. A shape
+     * wider than the window crosses both sides at once and has no inside direction; its speed
+     * is left as it is.
+     *
+     * @param crossed the edges from one of the crossing tests
+     * @param vx      the horizontal speed
+     * @return {@code |vx|} if only {@link #LEFT} was crossed, {@code -|vx|} if only
+     *         {@link #RIGHT} was, {@code vx} otherwise
+     */
+    public static float bounceX(int crossed, float vx) {
+        return bounce(crossed & (LEFT | RIGHT), LEFT, RIGHT, vx);
+    }
+
+    /**
+     * The vertical speed after bouncing off the top or bottom edge: pointing down (back
+     * inside) after crossing the top edge, pointing up after crossing the bottom edge, and
+     * unchanged otherwise. See {@link #bounceX} for why this sets the direction instead of
+     * flipping it.
+     *
+     * @param crossed the edges from one of the crossing tests
+     * @param vy      the vertical speed (down is positive)
+     * @return {@code |vy|} if only {@link #TOP} was crossed, {@code -|vy|} if only
+     *         {@link #BOTTOM} was, {@code vy} otherwise
+     */
+    public static float bounceY(int crossed, float vy) {
+        return bounce(crossed & (TOP | BOTTOM), TOP, BOTTOM, vy);
+    }
+
+    /** Points v away from the one crossed edge of a pair (low edge: positive; high: negative). */
+    private static float bounce(int pair, int low, int high, float v) {
+        if (pair == low) {
+            return Math.abs(v);
+        }
+        if (pair == high) {
+            return -Math.abs(v);
+        }
+        return v;
+    }
+
+    /**
+     * The circle's centre x after wrapping around the left and right edges, like Pac-Man: once
+     * the circle has completely left through one side, it comes back in through the other.
+     *
+     * <p>The two sides are joined with a gap the size of the circle, so the circle is never
+     * drawn half on each side, and its motion stays smooth: the moment it has fully left on
+     * the left (touching the edge from outside) is the moment it starts to come in on the
+     * right (touching from outside), and whatever it moved beyond that it keeps. The result
+     * always lies in {@code [-r, width + r]}, however far out the circle was. A centre already
+     * in that range is returned unchanged.
+     *
+     * @param cx    the circle's centre x
+     * @param r     the circle's radius
+     * @param width the window's width
+     * @return the wrapped centre x
+     */
+    public static float circleWrapX(float cx, float r, float width) {
+        return wrap(cx, r, r, width);
+    }
+
+    /**
+     * The circle's centre y after wrapping around the top and bottom edges; see
+     * {@link #circleWrapX}. The result always lies in {@code [-r, height + r]}.
+     *
+     * @param cy     the circle's centre y
+     * @param r      the circle's radius
+     * @param height the window's height
+     * @return the wrapped centre y
+     */
+    public static float circleWrapY(float cy, float r, float height) {
+        return wrap(cy, r, r, height);
+    }
+
+    /**
+     * The rectangle's left edge after wrapping around the left and right edges; see
+     * {@link #circleWrapX}. The result always lies in {@code [-w, width]}: once the rectangle
+     * has completely left on one side it comes back in on the other.
+     *
+     * @param x     the rectangle's left edge
+     * @param w     the rectangle's width
+     * @param width the window's width
+     * @return the wrapped left edge
+     */
+    public static float rectWrapX(float x, float w, float width) {
+        return wrap(x, 0, w, width);
+    }
+
+    /**
+     * The rectangle's top edge after wrapping around the top and bottom edges; see
+     * {@link #circleWrapX}. The result always lies in {@code [-h, height]}.
+     *
+     * @param y      the rectangle's top edge
+     * @param h      the rectangle's height
+     * @param height the window's height
+     * @return the wrapped top edge
+     */
+    public static float rectWrapY(float y, float h, float height) {
+        return wrap(y, 0, h, height);
+    }
+
+    /**
+     * Wraps a position whose shape reaches {@code before} behind it and {@code after} ahead of
+     * it. The shape's far end, {@code pos + after}, lives on a loop of length
+     * {@code window + before + after} starting at 0 (the shape has just left on the low side);
+     * 0 and the loop's length are the same place, so both are kept as they are.
+     */
+    private static float wrap(float pos, float before, float after, float window) {
+        double end = (double) pos + after;
+        double loop = (double) window + before + after;
+        if (end >= 0 && end <= loop || !(loop > 0)) {
+            return pos;
+        }
+        double wrapped = end - Math.floor(end / loop) * loop;
+        // Rounding, in the remainder for far-away positions and in the final float, can land
+        // a hair outside [0, loop]; pull it back so the promised range always holds.
+        wrapped = Math.min(Math.max(wrapped, 0), loop);
+        float result = (float) (wrapped - after);
+        if ((double) result + after > loop) {
+            result = Math.nextDown(result);
+        } else if ((double) result + after < 0) {
+            result = Math.nextUp(result);
+        }
+        return result;
+    }
+
+    /**
+     * The circle's centre x moved the least so the circle lies inside the window, between the
+     * left and right edges (it may touch them). A circle wider than the window cannot fit; it is
+     * centred instead, sticking out equally on both sides.
+     *
+     * @param cx    the circle's centre x
+     * @param r     the circle's radius
+     * @param width the window's width
+     * @return the centre x, kept in {@code [r, width - r]}
+     */
+    public static float circleClampX(float cx, float r, float width) {
+        return clamp(cx, r, r, width);
+    }
+
+    /**
+     * The circle's centre y moved the least so the circle lies inside the window, between the
+     * top and bottom edges; see {@link #circleClampX}.
+     *
+     * @param cy     the circle's centre y
+     * @param r      the circle's radius
+     * @param height the window's height
+     * @return the centre y, kept in {@code [r, height - r]}
+     */
+    public static float circleClampY(float cy, float r, float height) {
+        return clamp(cy, r, r, height);
+    }
+
+    /**
+     * The rectangle's left edge moved the least so the rectangle lies inside the window,
+     * between the left and right edges (it may touch them). A rectangle wider than the window
+     * is centred instead.
+     *
+     * @param x     the rectangle's left edge
+     * @param w     the rectangle's width
+     * @param width the window's width
+     * @return the left edge, kept in {@code [0, width - w]}
+     */
+    public static float rectClampX(float x, float w, float width) {
+        return clamp(x, 0, w, width);
+    }
+
+    /**
+     * The rectangle's top edge moved the least so the rectangle lies inside the window, between
+     * the top and bottom edges; see {@link #rectClampX}.
+     *
+     * @param y      the rectangle's top edge
+     * @param h      the rectangle's height
+     * @param height the window's height
+     * @return the top edge, kept in {@code [0, height - h]}
+     */
+    public static float rectClampY(float y, float h, float height) {
+        return clamp(y, 0, h, height);
+    }
+
+    /**
+     * Clamps a position whose shape reaches {@code before} behind and {@code after} ahead of it.
+     * The bounds are rounded towards the inside, so the float answer never crosses an edge
+     * (the crossing tests say {@link #NONE} for it).
+     */
+    private static float clamp(float pos, float before, float after, float window) {
+        double lo = before;
+        double hi = (double) window - after;
+        if (lo > hi) {
+            return (float) ((lo + hi) / 2);
+        }
+        if (pos < lo) {
+            return inward((float) lo, lo, true);
+        }
+        if (pos > hi) {
+            return inward((float) hi, hi, false);
+        }
+        return pos;
+    }
+
+    /** {@code f}, the float nearest to {@code exact}, nudged one step inside if it rounded out. */
+    private static float inward(float f, double exact, boolean low) {
+        if (low && f < exact) {
+            return Math.nextUp(f);
+        }
+        if (!low && f > exact) {
+            return Math.nextDown(f);
+        }
+        return f;
+    }
+}

@@ -1,0 +1,721 @@
+package hitbox;
+
+import java.util.Arrays;
+import java.util.Random;
+
+/**
+ * A grid of cells, each holding a terrain number: the tutorial's tile map, for maze and
+ * platform games.
+ *
+ * <p>The grid has {@code cols} columns and {@code rows} rows of cells, each
+ * {@code cellWidth} by {@code cellHeight} pixels, with cell (0, 0) at the top-left corner of
+ * the window, so cell ({@code col}, {@code row}) covers the pixels from
+ * ({@link #cellX cellX(col)}, {@link #cellY cellY(row)}) to the next cell's corner. A cell's
+ * terrain is an {@code int}: {@link #EMPTY} (0) is open floor, {@link #SOLID} (1) is wall,
+ * and any other number is a terrain type of your own (water, a door, the goal), solid unless
+ * you name it in {@link #passable(int...)}.
+ *
+ * <p>Two ways to move through it:
+ * <ul>
+ *   <li>Cell by cell, like a maze game's player: {@link #canMove(int, int, int, int)} says
+ *       whether the step to a neighbouring cell is free.</li>
+ *   <li>In pixels, the tutorial's hybrid check: {@link #rectOverlapsSolid} says whether a
+ *       rectangle anywhere on screen overlaps a solid cell, testing only the cells it covers,
+ *       by the <a href="package-summary.html#touching">touching rule</a> (standing right
+ *       against a wall is not hitting it).</li>
+ * </ul>
+ *
+ * <p><b>Outside the grid counts as solid</b>, as if the map had a wall all around it:
+ * {@link #isSolid} says true for a cell beyond the edges, {@link #canMove} will not step off
+ * the map, and a shape that reaches past the grid's edges overlaps solid.
+ *
+ * <p>A map can be written as text and read with {@link #parse(String, float)}:
+ * <pre>{@code
+ * Grid maze = Grid.parse("""
+ *     #########
+ *     #..#....#
+ *     #..#.##.#
+ *     #....#..#
+ *     #########
+ *     """, 32);
+ * }</pre>
+ * Or filled at random, reproducibly, with {@link #fillRandom(float, long, int, int)}.
+ *
+ * <p>A grid is the sketch's level, not a value: {@link #set} and the fill methods change it.
+ * It is not safe to change from one thread while another reads it.
+ */
+public final class Grid {
+
+    /** The terrain of an empty cell: open floor. Never solid. */
+    public static final int EMPTY = 0;
+    /** The terrain of a wall. Always solid. */
+    public static final int SOLID = 1;
+
+    private static final int MAX_CELLS = Integer.MAX_VALUE - 8;
+
+    private final int cols;
+    private final int rows;
+    private final float cellWidth;
+    private final float cellHeight;
+    private final int[] cells;
+    private int[] passable = new int[0];
+
+    /**
+     * Makes an empty grid: every cell {@link #EMPTY}.
+     *
+     * @param cols       the number of columns, 1 or more
+     * @param rows       the number of rows, 1 or more
+     * @param cellWidth  a cell's width in pixels, more than 0
+     * @param cellHeight a cell's height in pixels, more than 0
+     * @throws IllegalArgumentException if a count is 0 or less, the grid would have more than
+     *                                  about two billion cells, or a cell size is not a
+     *                                  finite number more than 0
+     */
+    public Grid(int cols, int rows, float cellWidth, float cellHeight) {
+        if (cols <= 0) {
+            throw new IllegalArgumentException("cols must be > 0, was " + cols);
+        }
+        if (rows <= 0) {
+            throw new IllegalArgumentException("rows must be > 0, was " + rows);
+        }
+        if ((long) cols * rows > MAX_CELLS) {
+            throw new IllegalArgumentException("a grid of " + cols + " x " + rows + " cells is too big: at most "
+                    + MAX_CELLS + " cells fit in one grid");
+        }
+        this.cols = cols;
+        this.rows = rows;
+        this.cellWidth = Check.positive("cellWidth", cellWidth);
+        this.cellHeight = Check.positive("cellHeight", cellHeight);
+        this.cells = new int[cols * rows];
+    }
+
+    /**
+     * Makes an empty grid of square cells: every cell {@link #EMPTY}.
+     *
+     * @param cols     the number of columns, 1 or more
+     * @param rows     the number of rows, 1 or more
+     * @param cellSize a cell's width and height in pixels, more than 0
+     * @throws IllegalArgumentException if a count is 0 or less, or the cell size is not a
+     *                                  finite number more than 0
+     */
+    public Grid(int cols, int rows, float cellSize) {
+        this(cols, rows, checkedCellSize(cellSize), cellSize);
+    }
+
+    private static float checkedCellSize(float cellSize) {
+        return Check.positive("cellSize", cellSize);
+    }
+
+    // ---- reading a map from text ------------------------------------------------------
+
+    /**
+     * Reads a map from text, with cells 1 pixel in size (so pixels and cells are the same
+     * numbers); see {@link #parse(String, float, float)} for the format.
+     *
+     * @param map the map, one line per row
+     * @return a new grid holding the map
+     * @throws IllegalArgumentException if the map is null or empty, its rows are not all the
+     *                                  same width, or it holds an unknown character; the
+     *                                  message names the line and column
+     */
+    public static Grid parse(String map) {
+        return parse(map, 1, 1);
+    }
+
+    /**
+     * Reads a map from text, with square cells; see {@link #parse(String, float, float)} for
+     * the format.
+     *
+     * @param map      the map, one line per row
+     * @param cellSize a cell's width and height in pixels, more than 0
+     * @return a new grid holding the map
+     * @throws IllegalArgumentException if the map is null or empty, its rows are not all the
+     *                                  same width, it holds an unknown character (the message
+     *                                  names the line and column), or the cell size is bad
+     */
+    public static Grid parse(String map, float cellSize) {
+        return parse(map, checkedCellSize(cellSize), cellSize);
+    }
+
+    /**
+     * Reads a map from text: one line per row, one character per cell.
+     *
+     * <ul>
+     *   <li>{@code '#'} is {@link #SOLID};</li>
+     *   <li>{@code '.'} and {@code ' '} (a space) are {@link #EMPTY};</li>
+     *   <li>a digit {@code '0'} to {@code '9'} is that terrain number ({@code '0'} is empty,
+     *       {@code '1'} is solid, the others are your own types).</li>
+     * </ul>
+     * Line ends may be {@code \n}, {@code \r\n} or {@code \r}. Empty lines before the first row
+     * and after the last are ignored, so a Java text block works as it is; every other line is
+     * a row, and all rows must have the same width. Prefer {@code '.'} to spaces at the end of
+     * a row: editors and text blocks often strip trailing spaces.
+     *
+     * @param map        the map, one line per row
+     * @param cellWidth  a cell's width in pixels, more than 0
+     * @param cellHeight a cell's height in pixels, more than 0
+     * @return a new grid holding the map
+     * @throws IllegalArgumentException if the map is null or empty, its rows are not all the
+     *                                  same width, it holds an unknown character (the message
+     *                                  names the line and column, counting from 1), or a cell
+     *                                  size is bad
+     */
+    public static Grid parse(String map, float cellWidth, float cellHeight) {
+        Check.notNull("map", map);
+        String[] lines = map.split("\r\n|\r|\n", -1);
+        int first = 0;
+        int last = lines.length - 1;
+        while (first <= last && lines[first].isEmpty()) {
+            first++;
+        }
+        while (last >= first && lines[last].isEmpty()) {
+            last--;
+        }
+        if (first > last) {
+            throw new IllegalArgumentException("map has no rows: write one line of cells per row, "
+                    + "'#' for solid and '.' for empty");
+        }
+        int width = lines[first].length();
+        Grid grid = new Grid(width, last - first + 1, cellWidth, cellHeight);
+        for (int i = first; i <= last; i++) {
+            String line = lines[i];
+            if (line.length() != width) {
+                throw new IllegalArgumentException("map line " + (i + 1) + " has " + line.length()
+                        + " cells, but line " + (first + 1) + " has " + width
+                        + ": every row needs the same width (use '.' for empty cells; editors and"
+                        + " text blocks may strip spaces at the end of a line)");
+            }
+            for (int col = 0; col < width; col++) {
+                grid.cells[(i - first) * width + col] = terrainOf(line.charAt(col), i + 1, col + 1);
+            }
+        }
+        return grid;
+    }
+
+    private static int terrainOf(char c, int line, int column) {
+        if (c == '#') {
+            return SOLID;
+        }
+        if (c == '.' || c == ' ') {
+            return EMPTY;
+        }
+        if (c >= '0' && c <= '9') {
+            return c - '0';
+        }
+        String shown = Character.isISOControl(c) || Character.isWhitespace(c) || Character.isSpaceChar(c)
+                ? "(code " + (int) c + ", a tab or other invisible character)" : "'" + c + "'";
+        throw new IllegalArgumentException("map line " + line + ", column " + column + ": unknown character "
+                + shown + "; use '#' for solid, '.' or ' ' for empty, or a digit 0-9 for a terrain type");
+    }
+
+    /**
+     * The map as text, in the format {@link #parse(String, float, float)} reads: {@code '.'}
+     * for {@link #EMPTY}, {@code '#'} for {@link #SOLID}, the digit for terrains 2 to 9 and
+     * {@code '?'} for any other number; rows separated by {@code \n}.
+     *
+     * @return the map, one line per row
+     */
+    public String toMap() {
+        StringBuilder s = new StringBuilder((cols + 1) * rows);
+        for (int row = 0; row < rows; row++) {
+            if (row > 0) {
+                s.append('\n');
+            }
+            for (int col = 0; col < cols; col++) {
+                int t = cells[row * cols + col];
+                s.append(t == EMPTY ? '.' : t == SOLID ? '#' : t >= 2 && t <= 9 ? (char) ('0' + t) : '?');
+            }
+        }
+        return s.toString();
+    }
+
+    /** @return the grid's size and its map, for printing */
+    @Override
+    public String toString() {
+        return "Grid " + cols + " x " + rows + ", cells " + cellWidth + " x " + cellHeight + " px\n" + toMap();
+    }
+
+    // ---- size -------------------------------------------------------------------------
+
+    /** @return the number of columns */
+    public int cols() {
+        return cols;
+    }
+
+    /** @return the number of rows */
+    public int rows() {
+        return rows;
+    }
+
+    /** @return a cell's width in pixels */
+    public float cellWidth() {
+        return cellWidth;
+    }
+
+    /** @return a cell's height in pixels */
+    public float cellHeight() {
+        return cellHeight;
+    }
+
+    /** @return the grid's width in pixels, {@code cellX(cols())} */
+    public float width() {
+        return cellX(cols);
+    }
+
+    /** @return the grid's height in pixels, {@code cellY(rows())} */
+    public float height() {
+        return cellY(rows);
+    }
+
+    // ---- cells ------------------------------------------------------------------------
+
+    /**
+     * Is (col, row) a cell of this grid?
+     *
+     * @param col the column
+     * @param row the row
+     * @return true if {@code 0 <= col < cols()} and {@code 0 <= row < rows()}
+     */
+    public boolean inGrid(int col, int row) {
+        return col >= 0 && col < cols && row >= 0 && row < rows;
+    }
+
+    /**
+     * The terrain of a cell.
+     *
+     * @param col the column, from 0 to {@code cols() - 1}
+     * @param row the row, from 0 to {@code rows() - 1}
+     * @return the cell's terrain number
+     * @throws IndexOutOfBoundsException if the cell is not in the grid; the message names the
+     *                                   cell and the grid's size
+     */
+    public int get(int col, int row) {
+        return cells[index(col, row)];
+    }
+
+    /**
+     * Sets the terrain of a cell.
+     *
+     * @param col     the column, from 0 to {@code cols() - 1}
+     * @param row     the row, from 0 to {@code rows() - 1}
+     * @param terrain the terrain number: {@link #EMPTY}, {@link #SOLID} or one of your own
+     * @throws IndexOutOfBoundsException if the cell is not in the grid; the message names the
+     *                                   cell and the grid's size
+     */
+    public void set(int col, int row, int terrain) {
+        cells[index(col, row)] = terrain;
+    }
+
+    private int index(int col, int row) {
+        if (!inGrid(col, row)) {
+            throw new IndexOutOfBoundsException("cell (col " + col + ", row " + row + ") is outside the "
+                    + cols + " x " + rows + " grid: col goes from 0 to " + (cols - 1)
+                    + " and row from 0 to " + (rows - 1));
+        }
+        return row * cols + col;
+    }
+
+    /**
+     * Is the cell solid? A cell outside the grid is: the map has a wall all around it.
+     *
+     * @param col the column, any number
+     * @param row the row, any number
+     * @return true if the cell is outside the grid or its terrain is solid (see
+     *         {@link #isSolidTerrain})
+     */
+    public boolean isSolid(int col, int row) {
+        return !inGrid(col, row) || isSolidTerrain(cells[row * cols + col]);
+    }
+
+    /**
+     * Is this terrain number solid in this grid? {@link #EMPTY} never is, {@link #SOLID}
+     * always is, and any other number is unless it was named in {@link #passable(int...)}.
+     *
+     * @param terrain the terrain number
+     * @return true if a cell with this terrain blocks movement
+     */
+    public boolean isSolidTerrain(int terrain) {
+        if (terrain == EMPTY) {
+            return false;
+        }
+        for (int p : passable) {
+            if (p == terrain) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Names the terrain types, besides {@link #EMPTY}, that can be walked through, such as a
+     * goal or an open door. Replaces any earlier list; with no arguments, every non-empty
+     * terrain is solid again.
+     *
+     * @param terrains the terrain numbers that are not solid
+     * @return this grid, for chaining
+     * @throws IllegalArgumentException if {@code terrains} is null or includes {@link #SOLID}
+     */
+    public Grid passable(int... terrains) {
+        Check.notNull("terrains", terrains);
+        for (int t : terrains) {
+            if (t == SOLID) {
+                throw new IllegalArgumentException("SOLID (1) is always solid; give your passable terrain types "
+                        + "other numbers, such as 2 for water");
+            }
+        }
+        passable = terrains.clone();
+        return this;
+    }
+
+    /**
+     * May a player that moves cell by cell step from (col, row) by (dCol, dRow)? It may when
+     * the cell it steps into is in the grid and not solid. The cell it stands on is not
+     * checked. A diagonal step is checked only at its target, so it may squeeze between two
+     * solid cells that meet at a corner; check the two straight steps as well if your game
+     * forbids that.
+     *
+     * @param col  the player's column
+     * @param row  the player's row
+     * @param dCol the step across: -1 for left, 1 for right, 0 for none
+     * @param dRow the step down: -1 for up, 1 for down, 0 for none
+     * @return true if the target cell is free
+     */
+    public boolean canMove(int col, int row, int dCol, int dRow) {
+        long c = (long) col + dCol;
+        long r = (long) row + dRow;
+        // A sum outside the int range is far outside the grid, and outside is solid.
+        return c == (int) c && r == (int) r && !isSolid((int) c, (int) r);
+    }
+
+    /** @return how many cells of the grid are solid */
+    public int countSolid() {
+        int count = 0;
+        for (int t : cells) {
+            if (isSolidTerrain(t)) {
+                count++;
+            }
+        }
+        return count;
+    }
+
+    /**
+     * Sets every cell to the same terrain.
+     *
+     * @param terrain the terrain number for every cell
+     * @return this grid, for chaining
+     */
+    public Grid fill(int terrain) {
+        Arrays.fill(cells, terrain);
+        return this;
+    }
+
+    /**
+     * Fills the grid at random: a given fraction of the cells become {@link #SOLID}, the rest
+     * {@link #EMPTY}; see {@link #fillRandom(float, long, int, int)}, which also keeps a start
+     * cell free.
+     *
+     * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
+     * @param seed     the random seed: the same seed gives the same grid
+     * @return this grid, for chaining
+     * @throws IllegalArgumentException if {@code fraction} is not between 0 and 1
+     */
+    public Grid fillRandom(float fraction, long seed) {
+        return fill(fraction, seed, -1);
+    }
+
+    /**
+     * Fills the grid at random, keeping a start cell free: exactly
+     * {@code Math.round(fraction * cols() * rows())} cells become {@link #SOLID} (at most every
+     * cell but the free one), chosen at random, and all the others {@link #EMPTY}, the free
+     * cell among them.
+     *
+     * <p>The same seed and size give the same grid on every run and every Java version, since
+     * {@link java.util.Random}'s algorithm is fixed by its specification. The tutorial's
+     * 20 x 20 grid with 20% obstacles and the player at the top-left is
+     * {@code new Grid(20, 20, cellSize).fillRandom(0.2f, seed, 0, 0)}: 80 solid cells.
+     *
+     * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
+     * @param seed     the random seed: the same seed gives the same grid
+     * @param freeCol  the column of the cell to keep empty
+     * @param freeRow  the row of the cell to keep empty
+     * @return this grid, for chaining
+     * @throws IllegalArgumentException  if {@code fraction} is not between 0 and 1
+     * @throws IndexOutOfBoundsException if the free cell is not in the grid
+     */
+    public Grid fillRandom(float fraction, long seed, int freeCol, int freeRow) {
+        return fill(fraction, seed, index(freeCol, freeRow));
+    }
+
+    /** Partial Fisher-Yates shuffle: the first {@code solid} indices of a shuffle are solid. */
+    private Grid fill(float fraction, long seed, int free) {
+        if (!(fraction >= 0 && fraction <= 1)) {
+            throw new IllegalArgumentException("fraction must be between 0 and 1, was " + fraction
+                    + " (for 20% solid cells write 0.2)");
+        }
+        int n = cells.length;
+        int[] order = new int[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+        }
+        int candidates = n;
+        if (free >= 0) {
+            // Move the free cell to the end and shuffle only the others.
+            order[free] = n - 1;
+            order[n - 1] = free;
+            candidates = n - 1;
+        }
+        int solid = (int) Math.min(Math.round((double) fraction * n), candidates);
+        Random random = new Random(seed);
+        Arrays.fill(cells, EMPTY);
+        for (int i = 0; i < solid; i++) {
+            int j = i + random.nextInt(candidates - i);
+            int t = order[i];
+            order[i] = order[j];
+            order[j] = t;
+            cells[order[i]] = SOLID;
+        }
+        return this;
+    }
+
+    // ---- pixels and cells -------------------------------------------------------------
+
+    /**
+     * The column under a pixel x. A pixel exactly on the line between two columns belongs to
+     * the one on its right, so {@code colAt(cellX(col)) == col}. The answer may be outside the
+     * grid (negative, or {@code cols()} or more), where {@link #isSolid} says solid.
+     *
+     * @param px the x in pixels
+     * @return the column whose cell spans px: {@code cellX(col) <= px < cellX(col + 1)}; -1
+     *         for NaN
+     */
+    public int colAt(float px) {
+        return cellIndex(px, cellWidth);
+    }
+
+    /**
+     * The row under a pixel y. A pixel exactly on the line between two rows belongs to the
+     * one below it, so {@code rowAt(cellY(row)) == row}. The answer may be outside the grid.
+     *
+     * @param py the y in pixels
+     * @return the row whose cell spans py: {@code cellY(row) <= py < cellY(row + 1)}; -1 for
+     *         NaN
+     */
+    public int rowAt(float py) {
+        return cellIndex(py, cellHeight);
+    }
+
+    /**
+     * The left edge of a column's cells, in pixels; works for columns outside the grid too.
+     *
+     * @param col the column
+     * @return {@code col * cellWidth()}
+     */
+    public float cellX(int col) {
+        return edge(col, cellWidth);
+    }
+
+    /**
+     * The top edge of a row's cells, in pixels; works for rows outside the grid too.
+     *
+     * @param row the row
+     * @return {@code row * cellHeight()}
+     */
+    public float cellY(int row) {
+        return edge(row, cellHeight);
+    }
+
+    /**
+     * The x of the centre of a column's cells, in pixels: where to draw a player that stands in
+     * that column.
+     *
+     * @param col the column
+     * @return {@code (col + 0.5) * cellWidth()}
+     */
+    public float cellCenterX(int col) {
+        return (float) ((col + 0.5) * cellWidth);
+    }
+
+    /**
+     * The y of the centre of a row's cells, in pixels.
+     *
+     * @param row the row
+     * @return {@code (row + 0.5) * cellHeight()}
+     */
+    public float cellCenterY(int row) {
+        return (float) ((row + 0.5) * cellHeight);
+    }
+
+    /**
+     * A cell as a rectangle in pixels, for drawing or for testing against shapes. Works for
+     * cells outside the grid too.
+     *
+     * @param col the column
+     * @param row the row
+     * @return the rectangle the cell covers
+     */
+    public Rect cellRect(int col, int row) {
+        float x = cellX(col);
+        float y = cellY(row);
+        return new Rect(x, y, cellX(col + 1) - x, cellY(row + 1) - y);
+    }
+
+    /** Cell boundaries: the float nearest i * size. Every pixel test goes through this. */
+    private static float edge(long i, float size) {
+        return (float) (i * (double) size);
+    }
+
+    /** The cell index i with edge(i) <= p < edge(i + 1), saturated to the int range. */
+    private static int cellIndex(float p, float size) {
+        if (Float.isNaN(p)) {
+            return -1;
+        }
+        double guess = Math.floor(p / (double) size);
+        if (guess >= Integer.MAX_VALUE) {
+            return Integer.MAX_VALUE;
+        }
+        if (guess <= Integer.MIN_VALUE) {
+            return Integer.MIN_VALUE;
+        }
+        long i = (long) guess;
+        // The division's rounding can be a cell off next to a boundary: settle it with the
+        // same float boundaries that cellX draws.
+        while (i > Integer.MIN_VALUE && edge(i, size) > p) {
+            i--;
+        }
+        while (i < Integer.MAX_VALUE && edge(i + 1, size) <= p) {
+            i++;
+        }
+        return (int) i;
+    }
+
+    // ---- shapes in pixels against solid cells -----------------------------------------
+
+    /**
+     * Does a rectangle in pixels overlap a solid cell? The tutorial's hybrid check, visiting
+     * only the cells the rectangle covers.
+     *
+     * <p>Each solid cell is tested with {@link Collide#rectRect}, so touching a solid cell's
+     * edge does not count: a player standing exactly on a floor of solid cells, or right
+     * against a wall, is not overlapping it. Reaching past the grid's edges counts as
+     * overlapping solid. Allocates nothing; a NaN gives false.
+     *
+     * @param x the rectangle's left edge
+     * @param y the rectangle's top edge
+     * @param w the rectangle's width
+     * @param h the rectangle's height
+     * @return true if the rectangle overlaps a solid cell or the outside of the grid
+     */
+    public boolean rectOverlapsSolid(float x, float y, float w, float h) {
+        double right = (double) x + w;
+        double bottom = (double) y + h;
+        if (reachesOutside(x, right, y, bottom)) {
+            return true;
+        }
+        int c0 = clampCol(colAt(x));
+        int c1 = clampCol(colAt(Math.nextUp((float) right)));
+        int r0 = clampRow(rowAt(y));
+        int r1 = clampRow(rowAt(Math.nextUp((float) bottom)));
+        for (int row = r0; row <= r1; row++) {
+            float cy = cellY(row);
+            float ch = cellY(row + 1) - cy;
+            for (int col = c0; col <= c1; col++) {
+                if (isSolidTerrain(cells[row * cols + col])) {
+                    float cx = cellX(col);
+                    if (Collide.rectRect(x, y, w, h, cx, cy, cellX(col + 1) - cx, ch)) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Does a circle in pixels overlap a solid cell? Visits only the cells under the circle's
+     * bounds, testing each solid one with {@link Collide#circleRect}, so touching does not
+     * count. Reaching past the grid's edges counts as overlapping solid. Allocates nothing; a
+     * NaN gives false.
+     *
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param r  the circle's radius
+     * @return true if the circle overlaps a solid cell or the outside of the grid
+     */
+    public boolean circleOverlapsSolid(float cx, float cy, float r) {
+        double left = (double) cx - r;
+        double right = (double) cx + r;
+        double top = (double) cy - r;
+        double bottom = (double) cy + r;
+        if (reachesOutside(left, right, top, bottom)) {
+            return true;
+        }
+        int c0 = clampCol(colAt(Math.nextDown((float) left)));
+        int c1 = clampCol(colAt(Math.nextUp((float) right)));
+        int r0 = clampRow(rowAt(Math.nextDown((float) top)));
+        int r1 = clampRow(rowAt(Math.nextUp((float) bottom)));
+        for (int row = r0; row <= r1; row++) {
+            float y = cellY(row);
+            float h = cellY(row + 1) - y;
+            for (int col = c0; col <= c1; col++) {
+                if (isSolidTerrain(cells[row * cols + col])) {
+                    float x = cellX(col);
+                    if (Collide.circleRect(cx, cy, r, x, y, cellX(col + 1) - x, h)) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Does a shape in pixels overlap a solid cell? Circles and rectangles go to
+     * {@link #circleOverlapsSolid} and {@link #rectOverlapsSolid}; other shapes are tested with
+     * {@link Shape#overlaps} against each solid cell under their bounds (so they work for the
+     * pairs {@code overlaps} answers). Reaching past the grid's edges counts as overlapping
+     * solid.
+     *
+     * @param shape the shape, not null
+     * @return true if the shape overlaps a solid cell or the outside of the grid
+     * @throws IllegalArgumentException if {@code shape} is null
+     */
+    public boolean overlapsSolid(Shape shape) {
+        Check.notNull("shape", shape);
+        if (shape instanceof Circle c) {
+            return circleOverlapsSolid(c.x(), c.y(), c.r());
+        }
+        if (shape instanceof Rect r) {
+            return rectOverlapsSolid(r.x(), r.y(), r.w(), r.h());
+        }
+        // Any other shape reaches exactly as far as its bounds, so the outside test is theirs.
+        Rect b = shape.bounds();
+        if (reachesOutside(b.x(), (double) b.x() + b.w(), b.y(), (double) b.y() + b.h())) {
+            return true;
+        }
+        int c0 = clampCol(colAt(b.x()));
+        int c1 = clampCol(colAt(Math.nextUp(b.right())));
+        int r0 = clampRow(rowAt(b.y()));
+        int r1 = clampRow(rowAt(Math.nextUp(b.bottom())));
+        for (int row = r0; row <= r1; row++) {
+            for (int col = c0; col <= c1; col++) {
+                if (isSolidTerrain(cells[row * cols + col]) && shape.overlaps(cellRect(col, row))) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /** Does a shape spanning [left, right] x [top, bottom] reach past the grid's edges? */
+    private boolean reachesOutside(double left, double right, double top, double bottom) {
+        return left < 0 || right > width() || top < 0 || bottom > height();
+    }
+
+    private int clampCol(int col) {
+        return Math.max(0, Math.min(cols - 1, col));
+    }
+
+    private int clampRow(int row) {
+        return Math.max(0, Math.min(rows - 1, row));
+    }
+}

@@ -1,0 +1,67 @@
+package hitbox;
+
+/**
+ * Where a moving shape first runs into an obstacle: the answer of every
+ * {@code Sweep.timeOfImpact} method.
+ *
+ * <p>{@code t} is the fraction of this frame's motion done at the moment of impact: move the
+ * mover by {@code (t * vx, t * vy)} and it touches the obstacle without overlapping it. The
+ * normal is the obstacle's outward surface normal where it was hit, a unit vector pointing
+ * back towards the mover (y grows down, so landing on a floor gives {@code (0, -1)}).
+ * {@link #side()} names the side of the <em>obstacle</em> that was hit, as in
+ * {@link Side}: for a round or slanted surface it is the side the normal mostly faces (a
+ * normal exactly at 45 degrees counts as {@link Side#TOP} or {@link Side#BOTTOM}).
+ *
+ * <p>When the two shapes already overlap at the start of the motion there is no moment of
+ * impact to report: {@code t} is 0, the normal is {@code (0, 0)} and the side is
+ * {@link Side#NONE} (see {@link #alreadyOverlapping()}); push them apart with a contact
+ * test instead. A mover that only touches the obstacle at the start and moves into it gets
+ * {@code t = 0} with a real normal and side.
+ *
+ * @param t    the fraction of the motion done at impact, from 0 to 1
+ * @param nx   the obstacle's surface normal at the impact, x part (unit length, or 0)
+ * @param ny   the obstacle's surface normal at the impact, y part (unit length, or 0)
+ * @param side the side of the obstacle that was hit, {@link Side#NONE} if the shapes
+ *             already overlapped
+ */
+public record Hit(float t, float nx, float ny, Side side) {
+
+    /**
+     * Makes a hit, checking its values.
+     *
+     * @param t the fraction of the motion done at impact, from 0 to 1
+     * @param nx the obstacle's surface normal at the impact, x part (unit length, or 0)
+     * @param ny the obstacle's surface normal at the impact, y part (unit length, or 0)
+     * @param side the side of the obstacle that was hit, {@link Side#NONE} if the shapes already overlapped
+     *
+     * @throws IllegalArgumentException if {@code t} is not between 0 and 1, the normal is
+     *                                  NaN or infinite, or the side is null
+     */
+    public Hit {
+        if (!(t >= 0 && t <= 1)) {
+            throw new IllegalArgumentException("t must be between 0 and 1, was " + t);
+        }
+        Check.finite("nx", nx);
+        Check.finite("ny", ny);
+        Check.notNull("side", side);
+    }
+
+    /**
+     * Did the shapes already overlap when the motion started?
+     *
+     * @return true if there was no moment of impact because the shapes overlapped at
+     *         {@code t = 0} (then the side is {@link Side#NONE} and the normal is zero)
+     */
+    public boolean alreadyOverlapping() {
+        return side == Side.NONE;
+    }
+
+    /**
+     * Did the mover land on top of the obstacle? Same as {@code side().landed()}.
+     *
+     * @return true if the obstacle's top side was hit
+     */
+    public boolean landed() {
+        return side.landed();
+    }
+}

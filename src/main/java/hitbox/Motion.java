@@ -1,0 +1,400 @@
+package hitbox;
+
+import java.util.List;
+
+/**
+ * Moving objects: the tutorial's next-position check, one axis at a time, so a sketch knows
+ * which speeds to reverse before it moves.
+ *
+ * <p>Before moving a shape by its speed {@code (vx, vy)}, ask whether it would run into an
+ * obstacle: on the {@link #X} axis if the shape moved to {@code (x + vx, y)} would overlap it,
+ * on the {@link #Y} axis if the shape moved to {@code (x, y + vy)} would. The answer is a set
+ * of bit flags, so the sketch reverses exactly those speeds:
+ * <pre>{@code
+ * int blocked = Motion.rectBlocked(x, y, w, h, vx, vy, walls);
+ * vx = Motion.reverseX(blocked, vx);
+ * vy = Motion.reverseY(blocked, vy);
+ * x += vx;
+ * y += vy;
+ * }</pre>
+ *
+ * <p><b>The corner case.</b> Heading straight at an obstacle's corner, the mover can miss it
+ * on each axis alone and still hit it moving diagonally. The tutorial's two tests would both
+ * say "free" and let it sink into the corner. Here, when neither axis alone is blocked but
+ * the whole move is, <em>both</em> axes are reported: reversing both sends the mover back
+ * the way it came, like a ball bouncing straight back off a corner.
+ *
+ * <p><b>What this guarantees.</b> For one obstacle, a mover that starts outside it and
+ * reverses the reported speeds every frame never ends a frame overlapping it (touching is
+ * allowed, by the <a href="package-summary.html#touching">touching rule</a>). It is a check of
+ * the next position, not of the path: a mover faster than an obstacle is thick can jump over
+ * it in one frame (use a swept test for bullets). It assumes the mover starts outside: one
+ * that already overlaps the obstacle usually gets {@link #BOTH} every frame and jitters in
+ * place; push it out first with {@link Snap#pushOut(Rect, Rect)}. With several obstacles the
+ * answer is the OR over them, and a reversed speed can carry the mover into another obstacle
+ * that lies closer than one frame's move.
+ *
+ * <p>Obstacles are rectangles; movers are rectangles or circles. The next positions are
+ * computed as a sketch does, {@code x + vx} in {@code float}, and tested with
+ * {@link Collide#rectRect} and {@link Collide#circleRect}. The raw-float methods allocate
+ * nothing and check nothing (a NaN gives {@link #NONE}); the array and list overloads check
+ * that the obstacles are there.
+ */
+public final class Motion {
+    private Motion() {
+    }
+
+    /** Neither axis is blocked: move freely. */
+    public static final int NONE = 0;
+    /** The horizontal move is blocked: reverse (or stop) {@code vx}. */
+    public static final int X = 1;
+    /** The vertical move is blocked: reverse (or stop) {@code vy}. */
+    public static final int Y = 2;
+    /** Both axes are blocked, {@code X | Y}: reverse both speeds. */
+    public static final int BOTH = X | Y;
+
+    // ---- rectangle mover --------------------------------------------------------------
+
+    /**
+     * Which axes of a moving rectangle's next move would run into the obstacle? {@link #X}
+     * if the rectangle at {@code (x + vx, y)} would overlap it, {@link #Y} if the rectangle at
+     * {@code (x, y + vy)} would, and {@link #BOTH} for a diagonal hit on a corner (see the
+     * class description).
+     *
+     * @param x  the mover's left edge
+     * @param y  the mover's top edge
+     * @param w  the mover's width
+     * @param h  the mover's height
+     * @param vx the mover's horizontal speed, pixels per frame
+     * @param vy the mover's vertical speed, pixels per frame (down is positive)
+     * @param ox the obstacle's left edge
+     * @param oy the obstacle's top edge
+     * @param ow the obstacle's width
+     * @param oh the obstacle's height
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     */
+    public static int rectBlocked(float x, float y, float w, float h, float vx, float vy,
+                                  float ox, float oy, float ow, float oh) {
+        float nx = x + vx;
+        float ny = y + vy;
+        int blocked = (Collide.rectRect(nx, y, w, h, ox, oy, ow, oh) ? X : NONE)
+                | (Collide.rectRect(x, ny, w, h, ox, oy, ow, oh) ? Y : NONE);
+        if (blocked == NONE && Collide.rectRect(nx, ny, w, h, ox, oy, ow, oh)) {
+            return BOTH;
+        }
+        return blocked;
+    }
+
+    /**
+     * Which axes of a moving rectangle's next move would run into the obstacle? See
+     * {@link #rectBlocked(float, float, float, float, float, float, float, float, float, float)}.
+     *
+     * @param x        the mover's left edge
+     * @param y        the mover's top edge
+     * @param w        the mover's width
+     * @param h        the mover's height
+     * @param vx       the mover's horizontal speed
+     * @param vy       the mover's vertical speed
+     * @param obstacle the obstacle, not null
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code obstacle} is null
+     */
+    public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, Rect obstacle) {
+        Check.notNull("obstacle", obstacle);
+        return rectBlocked(x, y, w, h, vx, vy, obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
+    }
+
+    /**
+     * Which axes of a moving rectangle's next move would run into any of the obstacles: the
+     * OR of the answers for each one.
+     *
+     * @param x         the mover's left edge
+     * @param y         the mover's top edge
+     * @param w         the mover's width
+     * @param h         the mover's height
+     * @param vx        the mover's horizontal speed
+     * @param vy        the mover's vertical speed
+     * @param obstacles the obstacles, not null and with no null element
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
+     */
+    public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, Rect[] obstacles) {
+        Check.notNull("obstacles", obstacles);
+        int blocked = NONE;
+        for (int i = 0; i < obstacles.length && blocked != BOTH; i++) {
+            blocked |= rectBlocked(x, y, w, h, vx, vy, Hits.element(obstacles, i, "obstacles"));
+        }
+        return blocked;
+    }
+
+    /**
+     * Which axes of a moving rectangle's next move would run into any of the obstacles: the
+     * OR of the answers for each one.
+     *
+     * @param x         the mover's left edge
+     * @param y         the mover's top edge
+     * @param w         the mover's width
+     * @param h         the mover's height
+     * @param vx        the mover's horizontal speed
+     * @param vy        the mover's vertical speed
+     * @param obstacles the obstacles, not null and with no null element
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
+     */
+    public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, List<Rect> obstacles) {
+        Check.notNull("obstacles", obstacles);
+        int blocked = NONE;
+        for (int i = 0, n = obstacles.size(); i < n && blocked != BOTH; i++) {
+            blocked |= rectBlocked(x, y, w, h, vx, vy, Hits.element(obstacles, i, "obstacles"));
+        }
+        return blocked;
+    }
+
+    // ---- circle mover -----------------------------------------------------------------
+
+    /**
+     * Which axes of a moving circle's next move would run into the rectangular obstacle?
+     * {@link #X} if the circle centred at {@code (cx + vx, cy)} would overlap it, {@link #Y} if
+     * the circle centred at {@code (cx, cy + vy)} would, and {@link #BOTH} for a diagonal hit
+     * (see the class description).
+     *
+     * @param cx the mover's centre x
+     * @param cy the mover's centre y
+     * @param r  the mover's radius
+     * @param vx the mover's horizontal speed, pixels per frame
+     * @param vy the mover's vertical speed, pixels per frame (down is positive)
+     * @param ox the obstacle's left edge
+     * @param oy the obstacle's top edge
+     * @param ow the obstacle's width
+     * @param oh the obstacle's height
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     */
+    public static int circleBlocked(float cx, float cy, float r, float vx, float vy,
+                                    float ox, float oy, float ow, float oh) {
+        float nx = cx + vx;
+        float ny = cy + vy;
+        int blocked = (Collide.circleRect(nx, cy, r, ox, oy, ow, oh) ? X : NONE)
+                | (Collide.circleRect(cx, ny, r, ox, oy, ow, oh) ? Y : NONE);
+        if (blocked == NONE && Collide.circleRect(nx, ny, r, ox, oy, ow, oh)) {
+            return BOTH;
+        }
+        return blocked;
+    }
+
+    /**
+     * Which axes of a moving circle's next move would run into the obstacle? See
+     * {@link #circleBlocked(float, float, float, float, float, float, float, float, float)}.
+     *
+     * @param cx       the mover's centre x
+     * @param cy       the mover's centre y
+     * @param r        the mover's radius
+     * @param vx       the mover's horizontal speed
+     * @param vy       the mover's vertical speed
+     * @param obstacle the obstacle, not null
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code obstacle} is null
+     */
+    public static int circleBlocked(float cx, float cy, float r, float vx, float vy, Rect obstacle) {
+        Check.notNull("obstacle", obstacle);
+        return circleBlocked(cx, cy, r, vx, vy, obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
+    }
+
+    /**
+     * Which axes of a moving circle's next move would run into any of the obstacles: the OR
+     * of the answers for each one.
+     *
+     * @param cx        the mover's centre x
+     * @param cy        the mover's centre y
+     * @param r         the mover's radius
+     * @param vx        the mover's horizontal speed
+     * @param vy        the mover's vertical speed
+     * @param obstacles the obstacles, not null and with no null element
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
+     */
+    public static int circleBlocked(float cx, float cy, float r, float vx, float vy, Rect[] obstacles) {
+        Check.notNull("obstacles", obstacles);
+        int blocked = NONE;
+        for (int i = 0; i < obstacles.length && blocked != BOTH; i++) {
+            blocked |= circleBlocked(cx, cy, r, vx, vy, Hits.element(obstacles, i, "obstacles"));
+        }
+        return blocked;
+    }
+
+    /**
+     * Which axes of a moving circle's next move would run into any of the obstacles: the OR
+     * of the answers for each one.
+     *
+     * @param cx        the mover's centre x
+     * @param cy        the mover's centre y
+     * @param r         the mover's radius
+     * @param vx        the mover's horizontal speed
+     * @param vy        the mover's vertical speed
+     * @param obstacles the obstacles, not null and with no null element
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
+     */
+    public static int circleBlocked(float cx, float cy, float r, float vx, float vy, List<Rect> obstacles) {
+        Check.notNull("obstacles", obstacles);
+        int blocked = NONE;
+        for (int i = 0, n = obstacles.size(); i < n && blocked != BOTH; i++) {
+            blocked |= circleBlocked(cx, cy, r, vx, vy, Hits.element(obstacles, i, "obstacles"));
+        }
+        return blocked;
+    }
+
+    // ---- shape movers -----------------------------------------------------------------
+
+    /**
+     * Which axes of the rectangle's next move would run into the obstacle? Same as
+     * {@link #rectBlocked(float, float, float, float, float, float, Rect)}.
+     *
+     * @param mover    the moving rectangle, not null
+     * @param vx       its horizontal speed
+     * @param vy       its vertical speed
+     * @param obstacle the obstacle, not null
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code mover} or {@code obstacle} is null
+     */
+    public static int blocked(Rect mover, float vx, float vy, Rect obstacle) {
+        Check.notNull("mover", mover);
+        return rectBlocked(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy, obstacle);
+    }
+
+    /**
+     * Which axes of the rectangle's next move would run into any of the obstacles? Same as
+     * {@link #rectBlocked(float, float, float, float, float, float, Rect[])}.
+     *
+     * @param mover     the moving rectangle, not null
+     * @param vx        its horizontal speed
+     * @param vy        its vertical speed
+     * @param obstacles the obstacles, not null and with no null element
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
+     *                                  elements is null
+     */
+    public static int blocked(Rect mover, float vx, float vy, Rect[] obstacles) {
+        Check.notNull("mover", mover);
+        return rectBlocked(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy, obstacles);
+    }
+
+    /**
+     * Which axes of the rectangle's next move would run into any of the obstacles? Same as
+     * {@link #rectBlocked(float, float, float, float, float, float, List)}.
+     *
+     * @param mover     the moving rectangle, not null
+     * @param vx        its horizontal speed
+     * @param vy        its vertical speed
+     * @param obstacles the obstacles, not null and with no null element
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
+     *                                  elements is null
+     */
+    public static int blocked(Rect mover, float vx, float vy, List<Rect> obstacles) {
+        Check.notNull("mover", mover);
+        return rectBlocked(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy, obstacles);
+    }
+
+    /**
+     * Which axes of the circle's next move would run into the obstacle? Same as
+     * {@link #circleBlocked(float, float, float, float, float, Rect)}.
+     *
+     * @param mover    the moving circle, not null
+     * @param vx       its horizontal speed
+     * @param vy       its vertical speed
+     * @param obstacle the obstacle, not null
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code mover} or {@code obstacle} is null
+     */
+    public static int blocked(Circle mover, float vx, float vy, Rect obstacle) {
+        Check.notNull("mover", mover);
+        return circleBlocked(mover.x(), mover.y(), mover.r(), vx, vy, obstacle);
+    }
+
+    /**
+     * Which axes of the circle's next move would run into any of the obstacles? Same as
+     * {@link #circleBlocked(float, float, float, float, float, Rect[])}.
+     *
+     * @param mover     the moving circle, not null
+     * @param vx        its horizontal speed
+     * @param vy        its vertical speed
+     * @param obstacles the obstacles, not null and with no null element
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
+     *                                  elements is null
+     */
+    public static int blocked(Circle mover, float vx, float vy, Rect[] obstacles) {
+        Check.notNull("mover", mover);
+        return circleBlocked(mover.x(), mover.y(), mover.r(), vx, vy, obstacles);
+    }
+
+    /**
+     * Which axes of the circle's next move would run into any of the obstacles? Same as
+     * {@link #circleBlocked(float, float, float, float, float, List)}.
+     *
+     * @param mover     the moving circle, not null
+     * @param vx        its horizontal speed
+     * @param vy        its vertical speed
+     * @param obstacles the obstacles, not null and with no null element
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
+     *                                  elements is null
+     */
+    public static int blocked(Circle mover, float vx, float vy, List<Rect> obstacles) {
+        Check.notNull("mover", mover);
+        return circleBlocked(mover.x(), mover.y(), mover.r(), vx, vy, obstacles);
+    }
+
+    // ---- reading the answer -----------------------------------------------------------
+
+    /**
+     * Is this axis among the blocked ones? Reads better than {@code (blocked & axis) != 0}.
+     *
+     * @param blocked the axes from one of the checks
+     * @param axis    {@link #X} or {@link #Y}
+     * @return true if {@code blocked} includes {@code axis}
+     */
+    public static boolean has(int blocked, int axis) {
+        return (blocked & axis) != 0;
+    }
+
+    /**
+     * The horizontal speed to use this frame: reversed if the {@link #X} axis is blocked,
+     * unchanged otherwise.
+     *
+     * @param blocked the axes from one of the checks
+     * @param vx      the horizontal speed
+     * @return {@code -vx} if {@code blocked} includes {@link #X}, else {@code vx}
+     */
+    public static float reverseX(int blocked, float vx) {
+        return has(blocked, X) ? -vx : vx;
+    }
+
+    /**
+     * The vertical speed to use this frame: reversed if the {@link #Y} axis is blocked,
+     * unchanged otherwise.
+     *
+     * @param blocked the axes from one of the checks
+     * @param vy      the vertical speed
+     * @return {@code -vy} if {@code blocked} includes {@link #Y}, else {@code vy}
+     */
+    public static float reverseY(int blocked, float vy) {
+        return has(blocked, Y) ? -vy : vy;
+    }
+
+    /**
+     * The blocked axes as words, for printing: {@code "NONE"}, {@code "X"}, {@code "Y"} or
+     * {@code "BOTH"}.
+     *
+     * @param blocked the axes from one of the checks
+     * @return the name of the answer
+     */
+    public static String describe(int blocked) {
+        return switch (blocked & BOTH) {
+            case X -> "X";
+            case Y -> "Y";
+            case BOTH -> "BOTH";
+            default -> "NONE";
+        };
+    }
+}

@@ -1,0 +1,294 @@
+package hitbox;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import net.jqwik.api.Assume;
+import net.jqwik.api.ForAll;
+import net.jqwik.api.Property;
+import net.jqwik.api.constraints.IntRange;
+import net.jqwik.api.constraints.Size;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+class MotionTest {
+
+    // ---- rectangle mover --------------------------------------------------------------
+
+    @ParameterizedTest(name = "[{0},{1},{2},{3}] moving ({4},{5}) at [{6},{7},{8},{9}]: {10}")
+    @CsvSource({
+            // mover          speed    obstacle          blocked
+            "0, 0, 10, 10,   5, 0,    20, 0, 10, 10,    NONE",   // not there yet
+            "0, 0, 10, 10,  10, 0,    20, 0, 10, 10,    NONE",   // would touch: allowed
+            "0, 0, 10, 10,  11, 0,    20, 0, 10, 10,    X",
+            "0, 0, 10, 10, -11, 0,    20, 0, 10, 10,    NONE",   // moving away
+            "30, 0, 10, 10, -11, 0,   20, 0, 0, 10,     X",      // zero-width wall
+            "0, 0, 10, 10,   0, 11,   0, 20, 10, 10,    Y",
+            "0, 0, 10, 10,   0, 10,   0, 20, 10, 10,    NONE",
+            "0, 0, 10, 10,   5, 3,  -100, 10, 300, 10,  Y",      // on the floor: slide along it
+            "0, 0, 10, 10,   5, 5,    12, 12, 10, 10,   BOTH",   // straight at the corner
+            "0, 0, 10, 10,   2, 2,    12, 12, 10, 10,   NONE",   // stops touching the corner
+            "0, 0, 10, 10,   5, 5,  -100, 12, 300, 10,  Y",
+            "5, 5, 0, 0,    10, 0,    10, 0, 10, 10,    X",      // a point mover
+            "0, 0, 0, 0,    15, 5,    10, 0, 10, 10,    BOTH",   // a point missing both axes
+            "0, 0, 10, 10,  15, 0,    20, 5, 0, 0,      X",      // a point obstacle
+            "0, 0, 10, 10,  15, 0,    20, 0, 0, 0,      NONE",   // a point on the mover's edge
+            "0, 0, 10, 10,   0, 0,    10, 0, 10, 10,    NONE",   // at rest, touching
+            "1000000, 1000000, 10, 10, 11, 0, 1000020, 1000000, 10, 10, X",
+    })
+    void rectBlocked_table(float x, float y, float w, float h, float vx, float vy,
+                           float ox, float oy, float ow, float oh, String expected) {
+        assertEquals(expected, Motion.describe(Motion.rectBlocked(x, y, w, h, vx, vy, ox, oy, ow, oh)));
+        Rect mover = new Rect(x, y, w, h);
+        Rect obstacle = new Rect(ox, oy, ow, oh);
+        assertEquals(expected, Motion.describe(Motion.rectBlocked(x, y, w, h, vx, vy, obstacle)));
+        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, obstacle)));
+        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, new Rect[] {obstacle})));
+        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, List.of(obstacle))));
+        // The other order: the obstacle moving back at the mover sees the same axes.
+        assertEquals(expected, Motion.describe(Motion.blocked(obstacle, -vx, -vy, mover)));
+    }
+
+    @Test
+    void rectBlocked_cornerHitTheTutorialsTwoChecksMiss() {
+        // Why BOTH is reported: the tutorial's two single-axis tests both say "free" ...
+        float x = 0, y = 0, vx = 5, vy = 5;
+        assertFalse(Collide.rectRect(x + vx, y, 10, 10, 12, 12, 10, 10));
+        assertFalse(Collide.rectRect(x, y + vy, 10, 10, 12, 12, 10, 10));
+        // ... yet moving would put the mover inside the obstacle.
+        assertTrue(Collide.rectRect(x + vx, y + vy, 10, 10, 12, 12, 10, 10));
+        int blocked = Motion.rectBlocked(x, y, 10, 10, vx, vy, 12, 12, 10, 10);
+        assertEquals(Motion.BOTH, blocked);
+        x += Motion.reverseX(blocked, vx);
+        y += Motion.reverseY(blocked, vy);
+        assertFalse(Collide.rectRect(x, y, 10, 10, 12, 12, 10, 10));
+    }
+
+    @Test
+    void rectBlocked_alreadyInside_reportsBoth() {
+        // Documented: the check assumes the mover starts outside.
+        assertEquals(Motion.BOTH, Motion.rectBlocked(5, 5, 10, 10, 1, 1, 0, 0, 20, 20));
+    }
+
+    @Test
+    void rectBlocked_nan_isNone() {
+        assertEquals(Motion.NONE, Motion.rectBlocked(0, 0, 10, 10, Float.NaN, Float.NaN, 5, 0, 10, 10));
+        assertEquals(Motion.NONE, Motion.circleBlocked(0, 0, 10, Float.NaN, Float.NaN, 5, 0, 10, 10));
+    }
+
+    // ---- circle mover -----------------------------------------------------------------
+
+    @ParameterizedTest(name = "circle ({0},{1}) r={2} moving ({3},{4}) at [{5},{6},{7},{8}]: {9}")
+    @CsvSource({
+            "0, 0, 5,   5, 0,   10, -20, 10, 40,  NONE",   // would touch the wall
+            "0, 0, 5,   6, 0,   10, -20, 10, 40,  X",
+            "0, 0, 5,   0, 6,  -20, 10, 40, 10,   Y",
+            "0, 0, 5,   3, 3,   8, 8, 10, 10,     NONE",   // passes the rounded corner
+            "0, 0, 5,   5, 5,   8, 8, 10, 10,     BOTH",   // into the corner diagonally
+            "0, 0, 5,   4, 6,  -20, 10, 40, 10,   Y",      // falls onto a floor: slide
+            "0, 5, 0,   11, 0,  10, 0, 10, 10,    X",      // radius 0: a point
+            "0, 5, 0,   10, 0,  10, 0, 10, 10,    NONE",   // point lands on the edge
+            "0, 0, 0,   11, 5,  10, 0, 10, 10,    BOTH",   // a point missing both single axes
+            "1000000, 0, 5, 6, 0, 1000010, -20, 10, 40, X",
+    })
+    void circleBlocked_table(float cx, float cy, float r, float vx, float vy,
+                             float ox, float oy, float ow, float oh, String expected) {
+        assertEquals(expected, Motion.describe(Motion.circleBlocked(cx, cy, r, vx, vy, ox, oy, ow, oh)));
+        Circle mover = new Circle(cx, cy, r);
+        Rect obstacle = new Rect(ox, oy, ow, oh);
+        assertEquals(expected, Motion.describe(Motion.circleBlocked(cx, cy, r, vx, vy, obstacle)));
+        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, obstacle)));
+        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, new Rect[] {obstacle})));
+        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, List.of(obstacle))));
+    }
+
+    // ---- many obstacles ---------------------------------------------------------------
+
+    @Test
+    void blocked_severalObstacles_isTheOr() {
+        Rect wall = new Rect(20, -50, 10, 100);
+        Rect floor = new Rect(-50, 20, 100, 10);
+        Rect far = new Rect(500, 500, 10, 10);
+        Rect mover = new Rect(0, 0, 10, 10);
+        assertEquals(Motion.X, Motion.blocked(mover, 15, 15, List.of(wall)) & Motion.X);
+        assertEquals(Motion.BOTH, Motion.blocked(mover, 15, 15, List.of(far, wall, floor)));
+        assertEquals(Motion.BOTH, Motion.rectBlocked(0, 0, 10, 10, 15, 15, new Rect[] {wall, floor}));
+        assertEquals(Motion.NONE, Motion.blocked(mover, 15, 15, new Rect[] {far}));
+        assertEquals(Motion.NONE, Motion.blocked(mover, 15, 15, List.of()));
+        assertEquals(Motion.BOTH, Motion.circleBlocked(5, 5, 5, 15, 15, List.of(wall, floor)));
+        assertEquals(Motion.X, Motion.circleBlocked(5, 5, 5, 15, 0, new Rect[] {far, wall}));
+    }
+
+    @Property
+    void blocked_listIsTheOrOfEachObstacle(@ForAll @IntRange(min = -100, max = 100) int x,
+                                           @ForAll @IntRange(min = -100, max = 100) int y,
+                                           @ForAll @IntRange(min = -30, max = 30) int vx,
+                                           @ForAll @IntRange(min = -30, max = 30) int vy,
+                                           @ForAll @Size(max = 6) List<@IntRange(min = -100, max = 100) Integer> corners) {
+        List<Rect> obstacles = new ArrayList<>();
+        int rects = 0, circles = 0;
+        for (int i = 0; i + 1 < corners.size(); i += 2) {
+            Rect o = new Rect(corners.get(i), corners.get(i + 1), 25, 15);
+            obstacles.add(o);
+            rects |= Motion.rectBlocked(x, y, 20, 10, vx, vy, o);
+            circles |= Motion.circleBlocked(x, y, 8, vx, vy, o);
+        }
+        assertEquals(rects, Motion.rectBlocked(x, y, 20, 10, vx, vy, obstacles));
+        assertEquals(rects, Motion.rectBlocked(x, y, 20, 10, vx, vy, obstacles.toArray(new Rect[0])));
+        assertEquals(circles, Motion.circleBlocked(x, y, 8, vx, vy, obstacles));
+        assertEquals(circles, Motion.blocked(new Circle(x, y, 8), vx, vy, obstacles.toArray(new Rect[0])));
+    }
+
+    @Test
+    void blocked_nullArguments_nameTheParameter() {
+        Rect r = new Rect(0, 0, 10, 10);
+        assertEquals("obstacle must not be null",
+                assertThrows(IllegalArgumentException.class, () -> Motion.blocked(r, 1, 1, (Rect) null)).getMessage());
+        assertEquals("mover must not be null",
+                assertThrows(IllegalArgumentException.class, () -> Motion.blocked((Rect) null, 1, 1, r)).getMessage());
+        assertEquals("mover must not be null",
+                assertThrows(IllegalArgumentException.class, () -> Motion.blocked((Circle) null, 1, 1, r)).getMessage());
+        assertEquals("obstacles must not be null",
+                assertThrows(IllegalArgumentException.class, () -> Motion.blocked(r, 1, 1, (List<Rect>) null)).getMessage());
+        assertEquals("obstacles must not be null",
+                assertThrows(IllegalArgumentException.class, () -> Motion.circleBlocked(0, 0, 1, 1, 1, (Rect[]) null)).getMessage());
+        List<Rect> withHole = Arrays.asList(r, null);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> Motion.rectBlocked(100, 100, 1, 1, 1, 1, withHole));
+        assertTrue(e.getMessage().startsWith("obstacles[1] is null"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class,
+                () -> Motion.circleBlocked(100, 100, 1, 1, 1, new Rect[] {null}));
+        assertTrue(e.getMessage().startsWith("obstacles[0] is null"), e.getMessage());
+    }
+
+    // ---- reading the answer -----------------------------------------------------------
+
+    @ParameterizedTest(name = "reverse({0}) of (3, -4)")
+    @CsvSource({
+            "0, 3, -4",
+            "1, -3, -4",
+            "2, 3, 4",
+            "3, -3, 4",
+    })
+    void reverse_table(int blocked, float vx, float vy) {
+        assertEquals(vx, Motion.reverseX(blocked, 3));
+        assertEquals(vy, Motion.reverseY(blocked, -4));
+    }
+
+    @Test
+    void constantsAndDescribe() {
+        assertEquals(0, Motion.NONE);
+        assertEquals(Motion.BOTH, Motion.X | Motion.Y);
+        assertEquals(0, Motion.X & Motion.Y);
+        assertTrue(Motion.has(Motion.BOTH, Motion.X));
+        assertTrue(Motion.has(Motion.Y, Motion.Y));
+        assertFalse(Motion.has(Motion.Y, Motion.X));
+        assertEquals("NONE", Motion.describe(Motion.NONE));
+        assertEquals("X", Motion.describe(Motion.X));
+        assertEquals("Y", Motion.describe(Motion.Y));
+        assertEquals("BOTH", Motion.describe(Motion.BOTH));
+    }
+
+    // ---- properties -------------------------------------------------------------------
+
+    @Property
+    void rectBlocked_symmetric_obstacleMovingBackSeesTheSameAxes(
+            @ForAll @IntRange(min = -60, max = 60) int x, @ForAll @IntRange(min = -60, max = 60) int y,
+            @ForAll @IntRange(min = 0, max = 40) int w, @ForAll @IntRange(min = 0, max = 40) int h,
+            @ForAll @IntRange(min = -30, max = 30) int vx, @ForAll @IntRange(min = -30, max = 30) int vy,
+            @ForAll @IntRange(min = 0, max = 40) int ow, @ForAll @IntRange(min = 0, max = 40) int oh) {
+        assertEquals(Motion.rectBlocked(x, y, w, h, vx, vy, 0, 0, ow, oh),
+                Motion.rectBlocked(0, 0, ow, oh, -vx, -vy, x, y, w, h));
+    }
+
+    @Property
+    void blocked_translationInvariant(
+            @ForAll @IntRange(min = -60, max = 60) int x, @ForAll @IntRange(min = -60, max = 60) int y,
+            @ForAll @IntRange(min = -30, max = 30) int vx, @ForAll @IntRange(min = -30, max = 30) int vy,
+            @ForAll @IntRange(min = 0, max = 30) int r,
+            @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dx,
+            @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dy) {
+        assertEquals(Motion.rectBlocked(x, y, 20, 15, vx, vy, 0, 0, 30, 25),
+                Motion.rectBlocked(x + dx, y + dy, 20, 15, vx, vy, dx, dy, 30, 25));
+        assertEquals(Motion.circleBlocked(x, y, r, vx, vy, 0, 0, 30, 25),
+                Motion.circleBlocked(x + dx, y + dy, r, vx, vy, dx, dy, 30, 25));
+    }
+
+    @Property
+    void blocked_agreesWithTheTutorialsChecksPlusTheCorner(
+            @ForAll @IntRange(min = -60, max = 60) int x, @ForAll @IntRange(min = -60, max = 60) int y,
+            @ForAll @IntRange(min = -30, max = 30) int vx, @ForAll @IntRange(min = -30, max = 30) int vy) {
+        // Slow reference, straight from the tutorial's description.
+        Rect obstacle = new Rect(0, 0, 30, 20);
+        Rect mover = new Rect(x, y, 12, 9);
+        boolean bx = mover.translated(vx, 0).overlaps(obstacle);
+        boolean by = mover.translated(0, vy).overlaps(obstacle);
+        boolean both = mover.translated(vx, vy).overlaps(obstacle);
+        int expected = bx || by ? (bx ? Motion.X : 0) | (by ? Motion.Y : 0) : (both ? Motion.BOTH : Motion.NONE);
+        assertEquals(expected, Motion.blocked(mover, vx, vy, obstacle));
+    }
+
+    /** A box that moves like a sketch's: bounce off the window, then the obstacle check, then move. */
+    @Property(tries = 500)
+    void rectSimulation_reversingTheReportedAxesNeverEndsInside(
+            @ForAll @IntRange(min = 0, max = 200) int x, @ForAll @IntRange(min = 0, max = 200) int y,
+            @ForAll @IntRange(min = 0, max = 40) int w, @ForAll @IntRange(min = 0, max = 40) int h,
+            @ForAll @IntRange(min = -25, max = 25) int startVx, @ForAll @IntRange(min = -25, max = 25) int startVy,
+            @ForAll @IntRange(min = 20, max = 150) int ox, @ForAll @IntRange(min = 20, max = 150) int oy,
+            @ForAll @IntRange(min = 0, max = 80) int ow, @ForAll @IntRange(min = 0, max = 80) int oh) {
+        Assume.that(!Collide.rectRect(x, y, w, h, ox, oy, ow, oh));
+        float px = x, py = y, vx = startVx, vy = startVy;
+        for (int frame = 0; frame < 300; frame++) {
+            int crossed = Edges.rectCrossed(px, py, w, h, 240, 240);
+            vx = Edges.bounceX(crossed, vx);
+            vy = Edges.bounceY(crossed, vy);
+            int blocked = Motion.rectBlocked(px, py, w, h, vx, vy, ox, oy, ow, oh);
+            vx = Motion.reverseX(blocked, vx);
+            vy = Motion.reverseY(blocked, vy);
+            px += vx;
+            py += vy;
+            assertFalse(Collide.rectRect(px, py, w, h, ox, oy, ow, oh),
+                    "frame " + frame + ": mover at (" + px + ", " + py + ") went into the obstacle");
+        }
+    }
+
+    @Property(tries = 500)
+    void circleSimulation_reversingTheReportedAxesNeverEndsInside(
+            @ForAll @IntRange(min = 0, max = 200) int x, @ForAll @IntRange(min = 0, max = 200) int y,
+            @ForAll @IntRange(min = 0, max = 25) int r,
+            @ForAll @IntRange(min = -25, max = 25) int startVx, @ForAll @IntRange(min = -25, max = 25) int startVy,
+            @ForAll @IntRange(min = 20, max = 150) int ox, @ForAll @IntRange(min = 20, max = 150) int oy,
+            @ForAll @IntRange(min = 0, max = 80) int ow, @ForAll @IntRange(min = 0, max = 80) int oh) {
+        Assume.that(!Collide.circleRect(x, y, r, ox, oy, ow, oh));
+        float cx = x, cy = y, vx = startVx, vy = startVy;
+        for (int frame = 0; frame < 300; frame++) {
+            int crossed = Edges.circleCrossed(cx, cy, r, 240, 240);
+            vx = Edges.bounceX(crossed, vx);
+            vy = Edges.bounceY(crossed, vy);
+            int blocked = Motion.circleBlocked(cx, cy, r, vx, vy, ox, oy, ow, oh);
+            vx = Motion.reverseX(blocked, vx);
+            vy = Motion.reverseY(blocked, vy);
+            cx += vx;
+            cy += vy;
+            assertFalse(Collide.circleRect(cx, cy, r, ox, oy, ow, oh),
+                    "frame " + frame + ": mover at (" + cx + ", " + cy + ") went into the obstacle");
+        }
+    }
+
+    @Test
+    void simulation_withoutTheCornerRuleTheMoverGetsIn() {
+        // The property above can fail: the tutorial's two checks alone let this box in.
+        float x = 0, y = 0, vx = 5, vy = 5;
+        boolean bx = Collide.rectRect(x + vx, y, 10, 10, 12, 12, 10, 10);
+        boolean by = Collide.rectRect(x, y + vy, 10, 10, 12, 12, 10, 10);
+        x += bx ? -vx : vx;
+        y += by ? -vy : vy;
+        assertTrue(Collide.rectRect(x, y, 10, 10, 12, 12, 10, 10));
+    }
+}
