@@ -170,10 +170,16 @@ class SweepPropertiesTest {
             assertFalse(s < t - 1e-6 && overlap);
         }
         if (hit != null && !hit.alreadyOverlapping() && hit.t() < 0.999) {
-            // Just after the impact the shapes do overlap (searched finely, the overlap can be short).
+            // Just after the impact the shapes do overlap. The overlap can be very short (a
+            // segment's end crossing a box's corner), so search evenly and also ever closer to
+            // t, halving the gap each time.
             boolean found = false;
             for (int k = 1; k <= 4096 && !found; k++) {
                 double s = hit.t() + k * (1 - hit.t()) / 4096;
+                found = SweepReference.openBoxSegment(x + s * vx, y + s * vy, w, h, ax, ay, bx, by);
+            }
+            for (int k = 1; k <= 60 && !found; k++) {
+                double s = hit.t() + (1 - hit.t()) / Math.pow(2, k);
                 found = SweepReference.openBoxSegment(x + s * vx, y + s * vy, w, h, ax, ay, bx, by);
             }
             assertTrue(found, () -> "no overlap after t = " + hit.t());

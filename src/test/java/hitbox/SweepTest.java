@@ -18,6 +18,18 @@ import org.junit.jupiter.params.provider.CsvSource;
  */
 class SweepTest {
 
+    @Test
+    void rectSegmentHit_segmentEndCrossesTheBoxCornerBriefly_isAHit() {
+        // Found by SweepPropertiesTest: the end (4, -4.5) is strictly inside the moving box
+        // only for t in (3/44, 4/58.5), a window of 0.0002 of the frame. Still a hit.
+        Hit hit = Sweep.rectSegmentHit(0, -8, 0.5f, 0.5f, 58.5f, 44, 0, 0, 4, -4.5f);
+        assertNotNull(hit);
+        assertEquals(3 / 44f, hit.t(), 1e-6f);
+        float t = (3 / 44f + 4 / 58.5f) / 2;
+        assertTrue(Collide.rectPoint(58.5f * t, -8 + 44 * t, 0.5f, 0.5f, 4, -4.5f), "inside in the window");
+    }
+
+
     private static final float FAR = 1_000_000f;
 
     // ------------------------------------------------------------------ rect and rect
