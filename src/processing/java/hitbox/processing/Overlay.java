@@ -38,7 +38,10 @@ public final class Overlay {
     }
 
     /**
-     * Writes out a comparison and its verdict, e.g. {@code "150.0 < 175.0: colliding"}.
+     * Writes out a comparison and whether it holds, e.g. {@code "150.0 < 175.0: true"}.
+     *
+     * <p>Two different numbers that one decimal would show as equal ("100.0 &lt; 100.0") get
+     * more decimals, so the text never looks like it contradicts the answer.
      *
      * @param left   the left side's value
      * @param op     the operator, e.g. "&lt;"
@@ -47,11 +50,13 @@ public final class Overlay {
      * @return the sentence
      */
     public static String comparison(float left, String op, float right, boolean result) {
-        return number(left) + " " + op + " " + number(right) + ": " + (result ? "true" : "false");
+        return sides(left, op, right) + ": " + (result ? "true" : "false");
     }
 
     /**
-     * Writes out a test that decides a collision, e.g. {@code "150.0 < 175.0: colliding"}.
+     * Writes out a test that decides a collision: {@code "150.0 < 175.0: colliding"} when it
+     * holds, {@code "264.0 < 100.0 is false: not colliding"} when it does not, so the line
+     * always reads as a true statement.
      *
      * @param left      the left side's value
      * @param op        the operator
@@ -60,7 +65,19 @@ public final class Overlay {
      * @return the sentence
      */
     public static String verdict(float left, String op, float right, boolean colliding) {
-        return number(left) + " " + op + " " + number(right) + ": " + (colliding ? "colliding" : "not colliding");
+        return sides(left, op, right) + (colliding ? ": colliding" : " is false: not colliding");
+    }
+
+    /** "left op right", with enough decimals that different numbers look different. */
+    private static String sides(float left, String op, float right) {
+        String l = number(left);
+        String r = number(right);
+        for (int decimals = 2; l.equals(r) && left != right && decimals <= 6; decimals++) {
+            String format = "%." + decimals + "f";
+            l = String.format(Locale.ROOT, format, left);
+            r = String.format(Locale.ROOT, format, right);
+        }
+        return l + " " + op + " " + r;
     }
 
     /**
