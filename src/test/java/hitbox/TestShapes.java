@@ -28,12 +28,29 @@ final class TestShapes {
     static final float[] DOUBLE_V = {0, 0, 3, 6, 6, 0, 9, 6, 12, 0, 12, 10, 0, 10};
     /** The square with an extra vertex in the middle of its top edge (a straight corner). */
     static final float[] SQUARE_WITH_MIDPOINT = {0, 0, 5, 0, 10, 0, 10, 10, 0, 10};
+    /** A 6-8-10 right triangle: the hypotenuse 3x + 4y = 24 has whole-number tangent circles. */
+    static final float[] TRIANGLE_345 = {0, 0, 8, 0, 0, 6};
     /** A right triangle, legs along the axes. */
     static final float[] TRIANGLE = {0, 0, 10, 0, 0, 10};
 
     static final Map<String, float[]> NAMED = Map.of(
             "square", SQUARE, "diamond", DIAMOND, "crown", CROWN, "ell", ELL, "cup", CUP,
-            "doubleV", DOUBLE_V, "squareWithMidpoint", SQUARE_WITH_MIDPOINT, "triangle", TRIANGLE);
+            "doubleV", DOUBLE_V, "squareWithMidpoint", SQUARE_WITH_MIDPOINT, "triangle", TRIANGLE,
+            "triangle345", TRIANGLE_345);
+
+    /** A named shape, or coordinates written out with spaces: {@code "0 0 10 0 0 10"}. */
+    static float[] get(String nameOrCoordinates) {
+        String s = nameOrCoordinates.trim();
+        if (Character.isLetter(s.charAt(0))) {
+            return named(s);
+        }
+        String[] parts = s.split("\\s+");
+        float[] xy = new float[parts.length];
+        for (int i = 0; i < parts.length; i++) {
+            xy[i] = Float.parseFloat(parts[i]);
+        }
+        return xy;
+    }
 
     static float[] named(String name) {
         float[] xy = NAMED.get(name);
