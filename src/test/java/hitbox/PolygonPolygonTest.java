@@ -9,6 +9,7 @@ import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
+import net.jqwik.api.statistics.Statistics;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -106,7 +107,13 @@ class PolygonPolygonTest {
                                                  @ForAll @IntRange(min = -4, max = 4) int dx,
                                                  @ForAll @IntRange(min = -4, max = 4) int dy) {
         float[] moved = GeometryReference.translated(b, dx, dy);
-        assertEquals(GeometryReference.polygonsMeet(a, moved), Collide.polygonPolygon(a, moved));
+        boolean expected = GeometryReference.polygonsMeet(a, moved);
+        assertEquals(expected, Collide.polygonPolygon(a, moved));
+        Statistics.collect(expected);
+        Statistics.coverage(c -> {
+            c.check(true).percentage(p -> p > 20);
+            c.check(false).percentage(p -> p > 20);
+        });
     }
 
     /** Shifted copies of one polygon share edges and corners with it often: the hard cases. */
