@@ -145,7 +145,8 @@ public final class Collide {
      * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}: any simple polygon,
      *           convex or concave, in either winding (a polygon that crosses itself is read
      *           even-odd). Fewer than 3 vertices never contain a point; an odd last
-     *           coordinate is ignored. Not checked: {@link Polygon#of} checks it.
+     *           coordinate is ignored; a vertex repeated (such as the first one again at
+     *           the end) changes nothing. Not checked ({@link Polygon#of} checks), not null.
      * @param px the point's x
      * @param py the point's y
      * @return true if the point is strictly inside

@@ -219,6 +219,18 @@ final class Polygons {
     }
 
     /**
+     * {@link #cornerContains} at vertex i, between its neighbours; a neighbour at the same
+     * place (a repeated vertex, such as the first vertex repeated at the end) is skipped, so
+     * raw arrays with repeats answer as they would without them.
+     */
+    static boolean cornerContains(int w, float[] xy, int i, double dx, double dy) {
+        int n = xy.length / 2;
+        int h = distinctNeighbour(xy, i, n - 1);
+        int k = distinctNeighbour(xy, i, 1);
+        return cornerContains(w, xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1], dx, dy);
+    }
+
+    /**
      * Standing at point p (anywhere), does a small step in direction d land strictly inside
      * the polygon? Inside already: yes. On a vertex: the corner's wedge decides. Inside an
      * edge: the side of the edge decides. Elsewhere outside: no. Exact.
@@ -234,8 +246,7 @@ final class Polygons {
             double bx = xy[2 * k];
             double by = xy[2 * k + 1];
             if (ax == px && ay == py) {
-                int h = (i + n - 1) % n;
-                return cornerContains(w, xy[2 * h], xy[2 * h + 1], ax, ay, bx, by, dx, dy);
+                return cornerContains(w, xy, i, dx, dy);
             }
             if (Lines.orient(ax, ay, bx, by, px, py) == 0 && Lines.inBox(ax, ay, bx, by, px, py)
                     && !(bx == px && by == py)) {
@@ -259,8 +270,6 @@ final class Polygons {
         int n = xy.length / 2;
         double dx = x2 - x1;
         double dy = y2 - y1;
-        double prevX = xy[2 * n - 2];
-        double prevY = xy[2 * n - 1];
         for (int i = 0; i < n; i++) {
             double ax = xy[2 * i];
             double ay = xy[2 * i + 1];
@@ -285,13 +294,10 @@ final class Polygons {
             if (oa == 0 && Lines.inBox(x1, y1, x2, y2, ax, ay)) {
                 boolean atStart = ax == x1 && ay == y1;
                 boolean atEnd = ax == x2 && ay == y2;
-                if ((!atEnd && cornerContains(w, prevX, prevY, ax, ay, bx, by, dx, dy))
-                        || (!atStart && cornerContains(w, prevX, prevY, ax, ay, bx, by, -dx, -dy))) {
+                if ((!atEnd && cornerContains(w, xy, i, dx, dy)) || (!atStart && cornerContains(w, xy, i, -dx, -dy))) {
                     return true;
                 }
             }
-            prevX = ax;
-            prevY = ay;
         }
         return false;
     }

@@ -52,7 +52,8 @@
  * circles and rectangles, a polygon is open: polygons that share an edge or a corner do not
  * overlap, one wholly inside another does, and so do two with the same outline. The
  * {@code Collide.polygon...} methods take the raw {@code float[]} and check nothing: fewer than
- * 3 vertices never collide, an odd last coordinate is ignored, and an outline that crosses
+ * 3 vertices never collide, an odd last coordinate is ignored, a repeated vertex (the first one
+ * written again at the end, say) changes nothing, and an outline that crosses
  * itself is read even-odd by {@code polygonPoint} and gives unspecified answers elsewhere (but
  * never an exception). The tests work on concave
  * polygons without splitting them into triangles, and answer exactly, by orientation signs.
