@@ -356,10 +356,11 @@ public final class Collide {
      * Does the segment reach into the polygon? Running along an edge, touching a vertex, or
      * crossing a concave notch through its corners does not; a segment wholly inside does.
      *
-     * <p>An end inside the polygon, or else a place where the segment meets the outline and
-     * goes on into the inside: a proper crossing of an edge, an end sitting on an edge with the
-     * rest of the segment on the inside side, or a vertex on the segment where the segment's
-     * direction points into the corner. All exact orientation signs, no crossing points. A
+     * <p>Walk the segment from its first end to its second: it reaches the inside when its
+     * first end is inside, or when it steps in somewhere along the way, which can only happen
+     * where it meets the outline: crossing an edge properly, starting on an edge and heading
+     * for the inside side, or passing a vertex heading into the corner's wedge. All exact
+     * orientation signs, no crossing points; the answer is the same walked either way. A
      * segment of length 0 is a point.
      *
      * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}, as in {@link #polygonPoint}
@@ -373,7 +374,7 @@ public final class Collide {
         if (Float.isNaN(x1) || Float.isNaN(y1) || Float.isNaN(x2) || Float.isNaN(y2)) {
             return false;
         }
-        if (Polygons.contains(xy, x1, y1) || Polygons.contains(xy, x2, y2)) {
+        if (Polygons.contains(xy, x1, y1)) {
             return true;
         }
         int w = Polygons.winding(xy);

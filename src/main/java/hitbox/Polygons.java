@@ -257,12 +257,15 @@ final class Polygons {
     }
 
     /**
-     * Does the closed segment reach the polygon's inside anywhere except at its two end points?
-     * (The caller tests the end points.) It does exactly when, somewhere the segment meets the
-     * outline, the segment goes on into the inside: it crosses an edge properly; or one end
-     * sits inside an edge and the other end is on the inside side; or it passes a vertex and
-     * one of its directions from there points into the corner's wedge. Touching the outline,
-     * running along an edge, or slipping through a notch past its corners does not count.
+     * Walking the segment from (x1, y1) to (x2, y2), does it step into the polygon's inside
+     * somewhere before its far end? Together with "is (x1, y1) inside", that decides whether
+     * the closed segment reaches the inside: if it does, take the first point of the walk
+     * that is inside; unless it is (x1, y1) itself, the walk steps in just there, from a
+     * point of the outline that is not the far end. That point is inside an edge, and the
+     * segment crosses the edge properly, or starts on it and heads for the inside side; or it
+     * is a vertex, and the walking direction points into the corner's wedge. Touching the
+     * outline, running along an edge, or slipping through a notch past its corners is none
+     * of these.
      *
      * @param w the polygon's {@link #winding}, not 0
      */
@@ -281,22 +284,14 @@ final class Polygons {
             double oa = Lines.orient(x1, y1, x2, y2, ax, ay);
             double ob = Lines.orient(x1, y1, x2, y2, bx, by);
             if (Lines.opposite(o1, o2) && Lines.opposite(oa, ob)) {
-                return true; // a proper crossing, away from every vertex: one side is inside
+                return true; // a proper crossing, away from every vertex: one way is in
             }
-            // An end point strictly inside edge ab, the segment leaving it to one side.
             if (o1 == 0 && o2 != 0 && strictlyBetween(ax, ay, bx, by, x1, y1) && w * o2 > 0) {
-                return true;
+                return true; // starts inside edge ab and heads for the inside side
             }
-            if (o2 == 0 && o1 != 0 && strictlyBetween(ax, ay, bx, by, x2, y2) && w * o1 > 0) {
-                return true;
-            }
-            // Vertex a on the segment: try each direction the segment goes on in from a.
-            if (oa == 0 && Lines.inBox(x1, y1, x2, y2, ax, ay)) {
-                boolean atStart = ax == x1 && ay == y1;
-                boolean atEnd = ax == x2 && ay == y2;
-                if ((!atEnd && cornerContains(w, xy, i, dx, dy)) || (!atStart && cornerContains(w, xy, i, -dx, -dy))) {
-                    return true;
-                }
+            if (oa == 0 && Lines.inBox(x1, y1, x2, y2, ax, ay) && !(ax == x2 && ay == y2)
+                    && cornerContains(w, xy, i, dx, dy)) {
+                return true; // passes vertex a (or starts there) heading into its corner
             }
         }
         return false;
