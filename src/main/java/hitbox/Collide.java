@@ -77,8 +77,9 @@ public final class Collide {
      * Do two rectangles overlap? Rectangles side by side, sharing an edge, do not.
      *
      * <p>The tutorial's four comparisons: {@code x1 + w1 > x2 && x1 < x2 + w2 &&
-     * y1 + h1 > y2 && y1 < y2 + h2}. A rectangle of size 0 behaves as a point (or a segment)
-     * and collides only when it reaches into the other's inside.
+     * y1 + h1 > y2 && y1 < y2 + h2}. A rectangle of size 0 behaves as a point (or a segment
+     * without its ends) and collides with a real rectangle only when it reaches into its
+     * inside; two flat rectangles collide only when they cross like a plus sign.
      *
      * @param x1 the first rectangle's left edge
      * @param y1 the first rectangle's top edge
