@@ -10,9 +10,10 @@
  * back up or down. Edges does the same for the window.
  *
  * Try this: pause (p) just before the box reaches the block and step (n) frame by frame with
- * the maths on (d): one of the two next-position boxes turns red a frame before the bounce.
- * Make the speed bigger than the block is thick and watch it jump through (section 6's
- * warning; Sweep is the cure).
+ * the maths on (d): when one of the two next-position boxes turns red, that speed reverses.
+ * Set vx to 250, more than the block and the box are wide together: now and then the box
+ * jumps clean over the block between two frames, because the check only looks where the
+ * box lands, not at the path (Sweep looks at the path).
  * Keys: d shows the maths, p pauses, n steps one frame while paused.
  */
 import hitbox.*;
