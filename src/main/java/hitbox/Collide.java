@@ -77,8 +77,9 @@ public final class Collide {
      * Do two rectangles overlap? Rectangles side by side, sharing an edge, do not.
      *
      * <p>The tutorial's four comparisons: {@code x1 + w1 > x2 && x1 < x2 + w2 &&
-     * y1 + h1 > y2 && y1 < y2 + h2}. A rectangle of size 0 behaves as a point (or a segment)
-     * and collides only when it reaches into the other's inside.
+     * y1 + h1 > y2 && y1 < y2 + h2}. A rectangle of size 0 behaves as a point (or a segment
+     * without its ends) and collides with a real rectangle only when it reaches into its
+     * inside; two flat rectangles collide only when they cross like a plus sign.
      *
      * @param x1 the first rectangle's left edge
      * @param y1 the first rectangle's top edge
@@ -131,9 +132,22 @@ public final class Collide {
     }
 
     /**
-     * Is the point inside the polygon? A point on an edge is not inside.
+     * Is the point inside the polygon? A point on an edge or at a vertex is not inside.
      *
-     * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}
+     * <p>The tutorial's crossing test (count the edges a ray to the right crosses; odd is
+     * inside), made exact: each edge counts by the half-open rule (one end below the point,
+     * the other at or above it), so a ray through a vertex is counted by rule, and which side
+     * of an edge the point lies on is an orientation sign, so vertical edges and points on an
+     * edge are exact cases too. On a rectangle's four corners it answers exactly as
+     * {@link #rectPoint}.
+     *
+     * <p>Reference: E. Haines, "Point in Polygon Strategies", Graphics Gems IV (1994).
+     *
+     * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}: any simple polygon,
+     *           convex or concave, in either winding (a polygon that crosses itself is read
+     *           even-odd). Fewer than 3 vertices never contain a point; an odd last
+     *           coordinate is ignored; a vertex repeated (such as the first one again at
+     *           the end) changes nothing. Not checked ({@link Polygon#of} checks), not null.
      * @param px the point's x
      * @param py the point's y
      * @return true if the point is strictly inside
@@ -145,5 +159,295 @@ public final class Collide {
     /** Clamps {@code v} into [lo, hi]; used for the closest point of a rectangle. */
     static double clamp(double v, double lo, double hi) {
         return v < lo ? lo : (v > hi ? hi : v);
+    }
+
+    /**
+     * Do two line segments meet? Segments are closed: touching at an end counts, and so do
+     * two collinear segments that overlap.
+     *
+     * <p>Instead of the tutorial's division for the crossing point (which fails for parallel
+     * and vertical lines), four orientation signs: the segments cross when each one's ends lie
+     * on opposite sides of the other's line. A zero sign means an end lies on the other's
+     * line, and then it is a meeting point exactly when it is also within the other's extent.
+     * A segment of length 0 is a point, so it meets a segment through it, and another
+     * zero-length segment at the same place.
+     *
+     * <p>Reference: T. Cormen, C. Leiserson, R. Rivest, C. Stein, Introduction to Algorithms,
+     * section 33.1 (SEGMENTS-INTERSECT).
+     *
+     * @param x1 the first segment's first end x
+     * @param y1 the first segment's first end y
+     * @param x2 the first segment's second end x
+     * @param y2 the first segment's second end y
+     * @param x3 the second segment's first end x
+     * @param y3 the second segment's first end y
+     * @param x4 the second segment's second end x
+     * @param y4 the second segment's second end y
+     * @return true if the segments have a point in common
+     */
+    public static boolean lineLine(float x1, float y1, float x2, float y2,
+                                   float x3, float y3, float x4, float y4) {
+        double d1 = Lines.orient(x3, y3, x4, y4, x1, y1);
+        double d2 = Lines.orient(x3, y3, x4, y4, x2, y2);
+        double d3 = Lines.orient(x1, y1, x2, y2, x3, y3);
+        double d4 = Lines.orient(x1, y1, x2, y2, x4, y4);
+        if (Lines.opposite(d1, d2) && Lines.opposite(d3, d4)) {
+            return true;
+        }
+        return (d1 == 0 && Lines.inBox(x3, y3, x4, y4, x1, y1))
+                || (d2 == 0 && Lines.inBox(x3, y3, x4, y4, x2, y2))
+                || (d3 == 0 && Lines.inBox(x1, y1, x2, y2, x3, y3))
+                || (d4 == 0 && Lines.inBox(x1, y1, x2, y2, x4, y4));
+    }
+
+    /**
+     * Does the segment reach into the circle? It must come closer to the centre than the
+     * radius: a segment that only touches the outline (a tangent) does not collide.
+     *
+     * <p>The tutorial's method: an end inside the circle, or else the point of the segment
+     * closest to the centre inside it. The closest point is not computed (that would divide):
+     * whether it lies between the ends is the sign of a dot product, and its distance is
+     * compared as {@code cross^2 < r^2 * length^2} with an exact product difference. A circle
+     * of radius 0 has no inside, so no segment reaches it (a segment and a zero-size shape
+     * never collide); a negative radius also gives false. A segment of length 0 is a point.
+     *
+     * <p>Reference: J. Thompson, Collision Detection, "Line/Circle".
+     *
+     * @param x1 the segment's first end x
+     * @param y1 the segment's first end y
+     * @param x2 the segment's second end x
+     * @param y2 the segment's second end y
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param r  the circle's radius
+     * @return true if some point of the segment is strictly inside the circle
+     */
+    public static boolean lineCircle(float x1, float y1, float x2, float y2, float cx, float cy, float r) {
+        if (!(r > 0)) {
+            return false;
+        }
+        if (circlePoint(cx, cy, r, x1, y1) || circlePoint(cx, cy, r, x2, y2)) {
+            return true;
+        }
+        double dx = (double) x2 - x1;
+        double dy = (double) y2 - y1;
+        double fx = (double) cx - x1;
+        double fy = (double) cy - y1;
+        double along = fx * dx + fy * dy;
+        double length2 = dx * dx + dy * dy;
+        if (!(along > 0 && along < length2)) {
+            return false; // the closest point is an end, and both ends are outside
+        }
+        double cross = dx * fy - dy * fx; // distance to the line times the length
+        return Lines.signOfProductDifference(cross, cross, (double) r * r, length2) < 0;
+    }
+
+    /**
+     * Does the segment reach into the rectangle? Running along an edge or touching a corner
+     * does not; a segment wholly inside does (the tutorial's four line/line tests miss that
+     * case, since it crosses no edge).
+     *
+     * <p>A separating-axis test: the segment misses the rectangle's open inside exactly when
+     * it lies, end points included, on or beyond one side of the rectangle (left, right, top
+     * or bottom), or when all four corners lie on or beyond one side of the segment's line.
+     * A rectangle of width or height 0 has no inside, so no segment reaches it. A segment of
+     * length 0 is a point and collides when strictly inside.
+     *
+     * <p>Reference: C. Ericson, Real-Time Collision Detection (2005), section 5.2.1
+     * (separating-axis test).
+     *
+     * @param x1 the segment's first end x
+     * @param y1 the segment's first end y
+     * @param x2 the segment's second end x
+     * @param y2 the segment's second end y
+     * @param rx the rectangle's left edge
+     * @param ry the rectangle's top edge
+     * @param rw the rectangle's width
+     * @param rh the rectangle's height
+     * @return true if some point of the segment is strictly inside the rectangle
+     */
+    public static boolean lineRect(float x1, float y1, float x2, float y2,
+                                   float rx, float ry, float rw, float rh) {
+        if (!(rw > 0 && rh > 0)) {
+            return false;
+        }
+        double right = (double) rx + rw;
+        double bottom = (double) ry + rh;
+        if (!(Math.max(x1, x2) > rx && Math.min(x1, x2) < right
+                && Math.max(y1, y2) > ry && Math.min(y1, y2) < bottom)) {
+            return false;
+        }
+        if (x1 == x2 && y1 == y2) {
+            return true; // a point, and the test above put it strictly inside
+        }
+        double o1 = Lines.orient(x1, y1, x2, y2, rx, ry);
+        double o2 = Lines.orient(x1, y1, x2, y2, right, ry);
+        double o3 = Lines.orient(x1, y1, x2, y2, right, bottom);
+        double o4 = Lines.orient(x1, y1, x2, y2, rx, bottom);
+        return (o1 > 0 || o2 > 0 || o3 > 0 || o4 > 0) && (o1 < 0 || o2 < 0 || o3 < 0 || o4 < 0);
+    }
+
+    /**
+     * Does the circle overlap the polygon? Touching the outline is not overlapping; a circle
+     * wholly inside the polygon, or a polygon wholly inside the circle, overlaps.
+     *
+     * <p>Either an edge reaches into the circle ({@link #lineCircle}), or no edge does and the
+     * circle is then wholly inside or wholly outside, which its centre settles
+     * ({@link #polygonPoint}). A circle of radius 0 behaves as a point: it collides when
+     * strictly inside. A negative or NaN radius gives false.
+     *
+     * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}, as in {@link #polygonPoint}
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param r  the circle's radius
+     * @return true if the insides of the circle and the polygon overlap
+     */
+    public static boolean polygonCircle(float[] xy, float cx, float cy, float r) {
+        int n = xy.length / 2;
+        if (!(r >= 0) || n < 3) {
+            return false;
+        }
+        for (int i = 0, h = n - 1; i < n; h = i++) {
+            if (lineCircle(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], cx, cy, r)) {
+                return true;
+            }
+        }
+        return Polygons.contains(xy, cx, cy);
+    }
+
+    /**
+     * Does the rectangle overlap the polygon? Sharing an edge or touching at a corner is not
+     * overlapping; one wholly inside the other overlaps, and so do a polygon and a rectangle
+     * with the same outline.
+     *
+     * <p>Either an edge reaches into the rectangle ({@link #lineRect}), or no edge does and the
+     * rectangle is wholly inside or wholly outside: a step from its top-left corner into it
+     * settles which, exactly, even when that corner sits on the outline. A rectangle of width
+     * or height 0 behaves as a segment (or a point), as in {@link #polygonLine}. A negative or
+     * NaN size gives false.
+     *
+     * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}, as in {@link #polygonPoint}
+     * @param rx the rectangle's left edge
+     * @param ry the rectangle's top edge
+     * @param rw the rectangle's width
+     * @param rh the rectangle's height
+     * @return true if the insides of the rectangle and the polygon overlap
+     */
+    public static boolean polygonRect(float[] xy, float rx, float ry, float rw, float rh) {
+        if (!(rw >= 0 && rh >= 0)) {
+            return false;
+        }
+        if (rw == 0 || rh == 0) {
+            return polygonLine(xy, rx, ry, rx + rw, ry + rh);
+        }
+        int w = Polygons.winding(xy);
+        if (w == 0) {
+            return false;
+        }
+        int n = xy.length / 2;
+        for (int i = 0, h = n - 1; i < n; h = i++) {
+            if (lineRect(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], rx, ry, rw, rh)) {
+                return true;
+            }
+        }
+        return Polygons.stepsInside(xy, w, rx, ry, 1, 1);
+    }
+
+    /**
+     * Does the segment reach into the polygon? Running along an edge, touching a vertex, or
+     * crossing a concave notch through its corners does not; a segment wholly inside does.
+     *
+     * <p>Walk the segment from its first end to its second: it reaches the inside when its
+     * first end is inside, or when it steps in somewhere along the way, which can only happen
+     * where it meets the outline: crossing an edge properly, starting on an edge and heading
+     * for the inside side, or passing a vertex heading into the corner's wedge. All exact
+     * orientation signs, no crossing points; the answer is the same walked either way. A
+     * segment of length 0 is a point.
+     *
+     * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}, as in {@link #polygonPoint}
+     * @param x1 the segment's first end x
+     * @param y1 the segment's first end y
+     * @param x2 the segment's second end x
+     * @param y2 the segment's second end y
+     * @return true if some point of the segment is strictly inside the polygon
+     */
+    public static boolean polygonLine(float[] xy, float x1, float y1, float x2, float y2) {
+        if (Float.isNaN(x1) || Float.isNaN(y1) || Float.isNaN(x2) || Float.isNaN(y2)) {
+            return false;
+        }
+        if (Polygons.contains(xy, x1, y1)) {
+            return true;
+        }
+        int w = Polygons.winding(xy);
+        return w != 0 && Polygons.segmentCrossesInto(xy, w, x1, y1, x2, y2);
+    }
+
+    /**
+     * Do two polygons overlap? Sharing an edge or touching at a vertex is not overlapping; a
+     * polygon wholly inside the other overlaps, and so do two polygons with the same outline.
+     *
+     * <p>Either some edge of {@code a} reaches into {@code b} (as in {@link #polygonLine}), or
+     * none does and {@code b} is then wholly inside {@code a} or wholly outside it: a step from
+     * {@code b}'s leftmost corner into {@code b} settles which, exactly. This works for concave
+     * polygons too, where the separating-axis test does not. Time grows with the product of
+     * the two vertex counts; far-apart polygons are rejected by their bounds first.
+     *
+     * @param a the first polygon's vertices, {@code x0, y0, x1, y1, ...}, as in {@link #polygonPoint}
+     * @param b the second polygon's vertices, the same way
+     * @return true if the insides of the polygons overlap
+     */
+    public static boolean polygonPolygon(float[] a, float[] b) {
+        int wa = Polygons.winding(a);
+        int wb = Polygons.winding(b);
+        if (wa == 0 || wb == 0 || Polygons.boundsApart(a, b)) {
+            return false;
+        }
+        int n = a.length / 2;
+        for (int i = 0; i < n; i++) {
+            if (Polygons.contains(b, a[2 * i], a[2 * i + 1])) {
+                return true;
+            }
+        }
+        for (int i = 0, h = n - 1; i < n; h = i++) {
+            if (Polygons.segmentCrossesInto(b, wb, a[2 * h], a[2 * h + 1], a[2 * i], a[2 * i + 1])) {
+                return true;
+            }
+        }
+        // No point of a's outline is inside b: b is wholly inside a, or wholly outside it.
+        int m = Polygons.leftmost(b);
+        int prev = Polygons.distinctNeighbour(b, m, b.length / 2 - 1);
+        int next = Polygons.distinctNeighbour(b, m, 1);
+        double vx = b[2 * m];
+        double vy = b[2 * m + 1];
+        // The leftmost corner is convex, so the sum of its two edge directions points inside.
+        double dx = (b[2 * prev] - vx) + (b[2 * next] - vx);
+        double dy = (b[2 * prev + 1] - vy) + (b[2 * next + 1] - vy);
+        return Polygons.stepsInside(a, wa, vx, vy, dx, dy);
+    }
+
+    /**
+     * Is the point inside the triangle? A point on an edge or at a corner is not. Same answer
+     * as {@link #polygonPoint} for the three corners, without an array.
+     *
+     * <p>The point is inside when it lies on the same side of all three edges: three
+     * orientation signs, all positive or all negative (either winding). Exact, unlike the
+     * tutorial's sum of areas, which rounds. A flat triangle contains no point.
+     *
+     * @param x1 the first corner's x
+     * @param y1 the first corner's y
+     * @param x2 the second corner's x
+     * @param y2 the second corner's y
+     * @param x3 the third corner's x
+     * @param y3 the third corner's y
+     * @param px the point's x
+     * @param py the point's y
+     * @return true if the point is strictly inside the triangle
+     */
+    public static boolean trianglePoint(float x1, float y1, float x2, float y2, float x3, float y3,
+                                        float px, float py) {
+        double o1 = Lines.orient(x1, y1, x2, y2, px, py);
+        double o2 = Lines.orient(x2, y2, x3, y3, px, py);
+        double o3 = Lines.orient(x3, y3, x1, y1, px, py);
+        return (o1 > 0 && o2 > 0 && o3 > 0) || (o1 < 0 && o2 < 0 && o3 < 0);
     }
 }

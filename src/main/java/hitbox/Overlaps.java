@@ -3,6 +3,20 @@ package hitbox;
 /**
  * The one table behind {@link Shape#overlaps}: every pair of shape kinds, in either order,
  * routed to the {@link Collide} method for that pair.
+ *
+ * <p>The kinds are taken in a fixed order (circle, rectangle, segment, polygon): the pair is
+ * handed to the method of its earlier kind, with the arguments swapped if they came the
+ * other way round, so each unordered pair has exactly one line of code and
+ * {@code a.overlaps(b) == b.overlaps(a)} holds by construction.
+ *
+ * <table>
+ *   <caption>Which Collide method answers each pair</caption>
+ *   <tr><th></th><th>Circle</th><th>Rect</th><th>Segment</th><th>Polygon</th></tr>
+ *   <tr><th>Circle</th><td>circleCircle</td><td>circleRect</td><td>lineCircle</td><td>polygonCircle</td></tr>
+ *   <tr><th>Rect</th><td></td><td>rectRect</td><td>lineRect</td><td>polygonRect</td></tr>
+ *   <tr><th>Segment</th><td></td><td></td><td>lineLine</td><td>polygonLine</td></tr>
+ *   <tr><th>Polygon</th><td></td><td></td><td></td><td>polygonPolygon</td></tr>
+ * </table>
  */
 final class Overlaps {
     private Overlaps() {
@@ -15,11 +29,19 @@ final class Overlaps {
         if (b instanceof Circle c) {
             return circleWith(c, a);
         }
-        if (a instanceof Rect r && b instanceof Rect s) {
-            return Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
+        if (a instanceof Rect r) {
+            return rectWith(r, b);
         }
-        throw new IllegalStateException("no overlap test yet for " + a.getClass().getSimpleName()
-                + " and " + b.getClass().getSimpleName());
+        if (b instanceof Rect r) {
+            return rectWith(r, a);
+        }
+        if (a instanceof Segment s) {
+            return segmentWith(s, b);
+        }
+        if (b instanceof Segment s) {
+            return segmentWith(s, a);
+        }
+        return Collide.polygonPolygon(((Polygon) a).raw(), ((Polygon) b).raw());
     }
 
     private static boolean circleWith(Circle c, Shape other) {
@@ -29,6 +51,28 @@ final class Overlaps {
         if (other instanceof Rect r) {
             return Collide.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
         }
-        throw new IllegalStateException("no overlap test yet for Circle and " + other.getClass().getSimpleName());
+        if (other instanceof Segment s) {
+            return Collide.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
+        }
+        return Collide.polygonCircle(((Polygon) other).raw(), c.x(), c.y(), c.r());
+    }
+
+    /** A rectangle with anything but a circle. */
+    private static boolean rectWith(Rect r, Shape other) {
+        if (other instanceof Rect s) {
+            return Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
+        }
+        if (other instanceof Segment s) {
+            return Collide.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), r.x(), r.y(), r.w(), r.h());
+        }
+        return Collide.polygonRect(((Polygon) other).raw(), r.x(), r.y(), r.w(), r.h());
+    }
+
+    /** A segment with a segment or a polygon. */
+    private static boolean segmentWith(Segment s, Shape other) {
+        if (other instanceof Segment t) {
+            return Collide.lineLine(s.x1(), s.y1(), s.x2(), s.y2(), t.x1(), t.y1(), t.x2(), t.y2());
+        }
+        return Collide.polygonLine(((Polygon) other).raw(), s.x1(), s.y1(), s.x2(), s.y2());
     }
 }

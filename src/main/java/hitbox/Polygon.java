@@ -5,7 +5,14 @@ import java.util.Arrays;
 /**
  * A simple polygon, convex or concave, in either winding: its vertices in order.
  *
- * <p>Open, like every shape with area: a point on an edge is not in it.
+ * <p>Open, like every shape with area: a point on an edge is not in it, and polygons that
+ * only share an edge do not overlap. "Simple" means the outline never crosses or touches
+ * itself: edges meet only at the corner two neighbouring edges share. {@link #of} checks
+ * that, so every {@code Polygon} is a valid shape for {@link Collide}'s polygon tests.
+ *
+ * <p>Edge i runs from vertex i to vertex i + 1; the last edge closes the outline back to
+ * vertex 0, so do not repeat the first vertex at the end. Immutable: moving a polygon makes
+ * a new one ({@link #translated}).
  */
 public final class Polygon implements Shape {
     private final float[] xy;
@@ -19,11 +26,17 @@ public final class Polygon implements Shape {
     /**
      * Makes a polygon from its vertices, {@code x0, y0, x1, y1, ...}, in either winding.
      *
+     * <p>Checking the outline for crossings compares every pair of edges, so it takes time
+     * proportional to the square of the vertex count: make polygons once (in
+     * {@code setup()}) and move them with {@link #translated}.
+     *
      * @param xy the vertices' coordinates, in pairs
      * @return the polygon
      * @throws IllegalArgumentException if there are fewer than 3 vertices, an odd number of
-     *                                  coordinates, a NaN or infinite value, or the polygon
-     *                                  has no area or crosses itself
+     *                                  coordinates, a NaN or infinite value, a vertex equal to
+     *                                  the next one (or the last equal to the first), no area
+     *                                  (all vertices on one line), or two edges that cross or
+     *                                  touch; the message names the vertices or edges
      */
     public static Polygon of(float... xy) {
         Check.notNull("xy", xy);
@@ -32,25 +45,158 @@ public final class Polygon implements Shape {
         return new Polygon(copy);
     }
 
+    /**
+     * The rectangle as a polygon: its corners top-left, top-right, bottom-right, bottom-left.
+     *
+     * @param rect the rectangle, with width and height above 0
+     * @return the polygon with the rectangle's four corners
+     * @throws IllegalArgumentException if {@code rect} is null or has width or height 0
+     */
+    public static Polygon of(Rect rect) {
+        Check.notNull("rect", rect);
+        if (rect.w() == 0 || rect.h() == 0) {
+            throw new IllegalArgumentException("a polygon needs area, but the rectangle's width and height are "
+                    + rect.w() + " and " + rect.h() + " (both must be > 0)");
+        }
+        return of(rect.x(), rect.y(), rect.right(), rect.y(), rect.right(), rect.bottom(), rect.x(), rect.bottom());
+    }
+
+    /**
+     * A triangle from its three corners, in either order.
+     *
+     * @param x1 the first corner's x
+     * @param y1 the first corner's y
+     * @param x2 the second corner's x
+     * @param y2 the second corner's y
+     * @param x3 the third corner's x
+     * @param y3 the third corner's y
+     * @return the triangle
+     * @throws IllegalArgumentException if a value is NaN or infinite, or the corners lie on
+     *                                  one line
+     */
+    public static Polygon triangle(float x1, float y1, float x2, float y2, float x3, float y3) {
+        return of(x1, y1, x2, y2, x3, y3);
+    }
+
+    /**
+     * A rectangle turned about its centre, as Processing draws
+     * {@code translate(cx, cy); rotate(angle); rect(-w/2, -h/2, w, h);}.
+     *
+     * <p>The angle is in radians, like Processing's {@code rotate}: with y growing down, a
+     * positive angle turns clockwise on screen. The vertices are the corners that start at
+     * top-left, top-right, bottom-right and bottom-left, in that order.
+     *
+     * @param cx    the centre's x
+     * @param cy    the centre's y
+     * @param w     the width, above 0
+     * @param h     the height, above 0
+     * @param angle the turn, in radians
+     * @return the turned rectangle
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is 0 or less
+     */
+    public static Polygon rotatedRect(float cx, float cy, float w, float h, float angle) {
+        Check.finite("cx", cx);
+        Check.finite("cy", cy);
+        Check.positive("width", w);
+        Check.positive("height", h);
+        Check.finite("angle", angle);
+        double cos = Math.cos(angle);
+        double sin = Math.sin(angle);
+        double hx = w / 2.0;
+        double hy = h / 2.0;
+        double[] corners = {-hx, -hy, hx, -hy, hx, hy, -hx, hy};
+        float[] xy = new float[8];
+        for (int i = 0; i < 8; i += 2) {
+            xy[i] = (float) (cx + corners[i] * cos - corners[i + 1] * sin);
+            xy[i + 1] = (float) (cy + corners[i] * sin + corners[i + 1] * cos);
+        }
+        return of(xy);
+    }
+
+    /**
+     * A regular polygon (equal sides, equal angles) with its corners on a circle, the first
+     * one straight to the right of the centre, like Processing's "Regular Polygon" example.
+     *
+     * @param cx     the centre's x
+     * @param cy     the centre's y
+     * @param radius the distance from the centre to each corner, above 0
+     * @param sides  how many sides, 3 or more
+     * @return the regular polygon
+     * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
+     *                                  or there are fewer than 3 sides
+     */
+    public static Polygon regular(float cx, float cy, float radius, int sides) {
+        return regular(cx, cy, radius, sides, 0);
+    }
+
+    /**
+     * A regular polygon turned by {@code angle}: its first corner is at that angle from the
+     * centre (radians, clockwise on screen as with Processing's {@code rotate}).
+     *
+     * @param cx     the centre's x
+     * @param cy     the centre's y
+     * @param radius the distance from the centre to each corner, above 0
+     * @param sides  how many sides, 3 or more
+     * @param angle  the direction of the first corner, in radians
+     * @return the regular polygon
+     * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
+     *                                  or there are fewer than 3 sides
+     */
+    public static Polygon regular(float cx, float cy, float radius, int sides, float angle) {
+        Check.finite("cx", cx);
+        Check.finite("cy", cy);
+        Check.positive("radius", radius);
+        Check.finite("angle", angle);
+        if (sides < 3) {
+            throw new IllegalArgumentException("sides must be >= 3, was " + sides);
+        }
+        float[] xy = new float[2 * sides];
+        for (int i = 0; i < sides; i++) {
+            double a = angle + 2 * Math.PI * i / sides;
+            xy[2 * i] = (float) (cx + radius * Math.cos(a));
+            xy[2 * i + 1] = (float) (cy + radius * Math.sin(a));
+        }
+        return of(xy);
+    }
+
     /** @return how many vertices the polygon has */
     public int size() {
+        return xy.length / 2;
+    }
+
+    /** @return how many edges the polygon has: as many as vertices, since it is closed */
+    public int edgeCount() {
         return xy.length / 2;
     }
 
     /**
      * @param i the vertex index, from 0 to {@code size() - 1}
      * @return vertex i's x
+     * @throws IllegalArgumentException if {@code i} is out of range
      */
     public float x(int i) {
-        return xy[2 * i];
+        return xy[2 * index("vertex index", i)];
     }
 
     /**
      * @param i the vertex index, from 0 to {@code size() - 1}
      * @return vertex i's y
+     * @throws IllegalArgumentException if {@code i} is out of range
      */
     public float y(int i) {
-        return xy[2 * i + 1];
+        return xy[2 * index("vertex index", i) + 1];
+    }
+
+    /**
+     * Edge i, from vertex i to vertex i + 1 (the last edge goes back to vertex 0).
+     *
+     * @param i the edge index, from 0 to {@code edgeCount() - 1}
+     * @return the edge as a segment
+     * @throws IllegalArgumentException if {@code i} is out of range
+     */
+    public Segment edge(int i) {
+        int k = (index("edge index", i) + 1) % size();
+        return new Segment(xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]);
     }
 
     /** @return a copy of the coordinates, {@code x0, y0, x1, y1, ...} */
@@ -61,6 +207,65 @@ public final class Polygon implements Shape {
     /** The coordinates without a copy, for the library's own loops; never handed out. */
     float[] raw() {
         return xy;
+    }
+
+    /**
+     * The area enclosed, always positive whatever the winding.
+     *
+     * <p>Reference: the shoelace formula (Gauss's area formula).
+     *
+     * @return the area, in square pixels
+     */
+    public float area() {
+        return (float) (Math.abs(Polygons.doubleSignedArea(xy)) / 2);
+    }
+
+    /**
+     * The centroid: the balance point of the enclosed area (for a concave polygon it may lie
+     * outside the polygon).
+     *
+     * <p>Reference: the centroid of a polygon from the signed areas of the triangles fanned
+     * out from vertex 0, each weighted at its own centroid.
+     *
+     * @return the centroid
+     */
+    public Vec centroid() {
+        double ox = xy[0];
+        double oy = xy[1];
+        double sumX = 0;
+        double sumY = 0;
+        double twiceArea = 0;
+        for (int i = 1; i + 1 < size(); i++) {
+            double ax = xy[2 * i] - ox;
+            double ay = xy[2 * i + 1] - oy;
+            double bx = xy[2 * i + 2] - ox;
+            double by = xy[2 * i + 3] - oy;
+            double t = ax * by - ay * bx; // twice the signed area of triangle (0, a, b)
+            twiceArea += t;
+            sumX += t * (ax + bx); // the triangle's centroid is (0 + a + b) / 3
+            sumY += t * (ay + by);
+        }
+        return new Vec((float) (ox + sumX / (3 * twiceArea)), (float) (oy + sumY / (3 * twiceArea)));
+    }
+
+    /**
+     * Is the polygon convex: does every corner turn the same way? Corners on a straight line
+     * (a vertex in the middle of a side) do not make it concave.
+     *
+     * @return true if convex, false if it has a corner that points inwards
+     */
+    public boolean isConvex() {
+        int w = Polygons.winding(xy);
+        int n = size();
+        for (int i = 0; i < n; i++) {
+            int h = (i + n - 1) % n;
+            int k = (i + 1) % n;
+            double turn = Lines.orient(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]);
+            if (w * turn < 0) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** {@inheritDoc} Same as {@link Collide#polygonPoint}. */
@@ -75,15 +280,32 @@ public final class Polygon implements Shape {
         return bounds;
     }
 
-    /** {@inheritDoc} */
+    /**
+     * {@inheritDoc}
+     *
+     * <p>When every coordinate moves exactly (whole numbers do), the moved outline is as
+     * valid as this one and is not checked again; when rounding shifted a vertex, the new
+     * polygon is checked as in {@link #of}.
+     *
+     * @throws IllegalArgumentException if the move gives a NaN or infinite coordinate, or
+     *                                  rounding made the outline touch itself
+     */
     @Override
     public Polygon translated(float dx, float dy) {
         float[] moved = xy.clone();
+        boolean exact = true;
         for (int i = 0; i < moved.length; i += 2) {
             moved[i] += dx;
             moved[i + 1] += dy;
+            exact &= moved[i] == (double) xy[i] + dx && moved[i + 1] == (double) xy[i + 1] + dy;
         }
-        return of(moved);
+        if (!exact) {
+            return of(moved);
+        }
+        for (int i = 0; i < moved.length; i++) {
+            Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2), moved[i]);
+        }
+        return new Polygon(moved);
     }
 
     /** Two polygons are equal when they have the same vertices in the same order. */
@@ -92,13 +314,22 @@ public final class Polygon implements Shape {
         return o instanceof Polygon p && Arrays.equals(xy, p.xy);
     }
 
+    /** @return a hash of the vertices, consistent with {@link #equals} */
     @Override
     public int hashCode() {
         return Arrays.hashCode(xy);
     }
 
+    /** @return the vertices, for printing: {@code Polygon[x0, y0, x1, y1, ...]} */
     @Override
     public String toString() {
         return "Polygon" + Arrays.toString(xy);
+    }
+
+    private int index(String name, int i) {
+        if (i < 0 || i >= size()) {
+            throw new IllegalArgumentException(name + " must be 0 to " + (size() - 1) + ", was " + i);
+        }
+        return i;
     }
 }

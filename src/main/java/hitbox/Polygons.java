@@ -1,20 +1,80 @@
 package hitbox;
 
-/** Polygon maths behind {@link Collide} and {@link Polygon}; {@code xy} is x0, y0, x1, y1, .... */
+/**
+ * Polygon maths behind {@link Collide} and {@link Polygon}; {@code xy} is x0, y0, x1, y1, ....
+ *
+ * <p>Edge i runs from vertex i to vertex i + 1, and the last edge closes the polygon back to
+ * vertex 0. Every decision is an exact orientation sign ({@link Lines#orient}), never a
+ * computed crossing point, so the answers on whole-number coordinates are exact.
+ *
+ * <p>The collision tests rest on one fact about open sets. The inside of a simple polygon is
+ * connected, so if no point of a polygon's outline lies inside another shape S (itself
+ * connected), then S is wholly inside the polygon or wholly outside it, and one point of S
+ * settles which. Hence "polygon meets S" is "an edge reaches into S, or a point of S is
+ * inside the polygon"; the edge tests and the one-point test below are exact, so the whole
+ * answer is.
+ */
 final class Polygons {
     private Polygons() {
     }
 
-    /** Throws with a learner's message if {@code xy} is not a valid simple polygon. */
+    /**
+     * Throws with a learner's message if {@code xy} is not a valid simple polygon: pairs of
+     * finite coordinates, at least 3 vertices, no vertex repeating its neighbour, some area,
+     * and no two edges meeting anywhere but at the corner they share.
+     */
     static void validate(float[] xy) {
         if (xy.length % 2 != 0) {
-            throw new IllegalArgumentException("a polygon needs x, y pairs, but got an odd number of coordinates (" + xy.length + ")");
+            throw new IllegalArgumentException("a polygon needs x, y pairs, but got an odd number of coordinates ("
+                    + xy.length + ")");
         }
-        if (xy.length < 6) {
-            throw new IllegalArgumentException("a polygon needs at least 3 vertices, got " + xy.length / 2);
+        int n = xy.length / 2;
+        if (n < 3) {
+            throw new IllegalArgumentException("a polygon needs at least 3 vertices, got " + n);
         }
         for (int i = 0; i < xy.length; i++) {
             Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2), xy[i]);
+        }
+        for (int i = 0; i < n; i++) {
+            int k = (i + 1) % n;
+            if (xy[2 * i] == xy[2 * k] && xy[2 * i + 1] == xy[2 * k + 1]) {
+                String point = "(" + xy[2 * i] + ", " + xy[2 * i + 1] + ")";
+                throw new IllegalArgumentException(k == 0
+                        ? "vertices " + i + " and 0 are the same point " + point
+                        + ": a polygon closes itself, so do not repeat the first vertex at the end"
+                        : "vertices " + i + " and " + k + " are the same point " + point
+                        + ": remove the repeated vertex");
+            }
+        }
+        boolean flat = true;
+        for (int i = 2; i < n && flat; i++) {
+            flat = orient(xy, 0, 1, i) == 0; // vertex 1 differs from vertex 0, checked above
+        }
+        if (flat) {
+            throw new IllegalArgumentException("the polygon has no area: all its vertices lie on one line");
+        }
+        for (int i = 0; i < n; i++) {
+            // Neighbouring edges i and i + 1 share vertex i + 1; they may not fold back over
+            // each other (the third vertex going back along the same line).
+            int b = (i + 1) % n;
+            int c = (i + 2) % n;
+            if (orient(xy, i, b, c) == 0 && dot(xy, b, i, c) > 0) {
+                throw new IllegalArgumentException("edges " + i + " and " + b + " overlap (the outline folds back on"
+                        + " itself at vertex " + b + "): a polygon's edges may only meet at the corner they share");
+            }
+            for (int j = i + 2; j < n; j++) {
+                if (i == 0 && j == n - 1) {
+                    continue; // edges n-1 and 0 are neighbours: checked above
+                }
+                int d = (j + 1) % n;
+                if (segmentsMeet(xy, i, b, j, d)) {
+                    boolean cross = Lines.opposite(orient(xy, i, b, j), orient(xy, i, b, d))
+                            && Lines.opposite(orient(xy, j, d, i), orient(xy, j, d, b));
+                    throw new IllegalArgumentException("edges " + i + " and " + j + (cross ? " cross" : " touch")
+                            + ": a polygon's edges may only meet at the corner they share"
+                            + " (edge i runs from vertex i to vertex i + 1)");
+                }
+            }
         }
     }
 
@@ -30,16 +90,248 @@ final class Polygons {
         return new Rect(minX, minY, maxX - minX, maxY - minY);
     }
 
-    /** Crossing-number point in polygon (placeholder until the exact version lands). */
-    static boolean contains(float[] xy, float px, float py) {
-        boolean inside = false;
+    /**
+     * Is the point strictly inside? On an edge or at a vertex is not. Even-odd crossing count
+     * along a ray to the right, with the half-open rule: an edge counts when one end is below
+     * the point's y and the other is at or above it (the comparison {@code y > py} differs at
+     * its ends), so a ray through a vertex counts that vertex exactly once, or not at all at
+     * a spike, by rule and not by luck. Which side of the edge the point is on is an exact
+     * orientation sign, with no crossing x computed. Fewer than 3 vertices: false.
+     *
+     * <p>Reference: E. Haines, "Point in Polygon Strategies", Graphics Gems IV (1994), and
+     * W. R. Franklin's PNPOLY, made exact with an orientation test.
+     */
+    static boolean contains(float[] xy, double px, double py) {
         int n = xy.length / 2;
-        for (int i = 0, j = n - 1; i < n; j = i++) {
-            float xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
-            if ((yi > py) != (yj > py) && px < (xj - xi) * (py - yi) / (yj - yi) + xi) {
-                inside = !inside;
+        if (n < 3) {
+            return false;
+        }
+        boolean inside = false;
+        double ax = xy[2 * n - 2];
+        double ay = xy[2 * n - 1];
+        for (int i = 0; i < n; i++) {
+            double bx = xy[2 * i];
+            double by = xy[2 * i + 1];
+            if ((ay > py) != (by > py)) {
+                double o = Lines.orient(ax, ay, bx, by, px, py);
+                if (o == 0) {
+                    return false; // on the edge: its y range holds py, and it is on the line
+                }
+                // The ray to the right crosses the edge when the point is left of the crossing;
+                // which sign of o that is depends on whether the edge goes up or down.
+                if (by > ay ? o > 0 : o < 0) {
+                    inside = !inside;
+                }
+            } else if (ay == py && (by == py ? px >= Math.min(ax, bx) && px <= Math.max(ax, bx) : ax == px)) {
+                return false; // on a horizontal edge at the point's level, or on vertex a
             }
+            ax = bx;
+            ay = by;
         }
         return inside;
+    }
+
+    /**
+     * Which way the vertices go: +1 or -1 (the sign of {@link Lines#orient} for a point inside
+     * next to any edge, when walking from vertex i to vertex i + 1), or 0 for no area. Read at
+     * the leftmost (then topmost) vertex, which is always a convex corner, so one exact
+     * orientation decides it, with no area sum that could round.
+     */
+    static int winding(float[] xy) {
+        int n = xy.length / 2;
+        if (n < 3) {
+            return 0;
+        }
+        int m = leftmost(xy);
+        int prev = distinctNeighbour(xy, m, n - 1);
+        int next = distinctNeighbour(xy, m, 1);
+        double o = orient(xy, prev, m, next);
+        // 0 only for input Polygon.of refuses (all on one line, or folding back on itself).
+        return o > 0 ? 1 : (o < 0 ? -1 : 0);
+    }
+
+    /** The index of the leftmost vertex (the topmost of those, then the first). */
+    static int leftmost(float[] xy) {
+        int m = 0;
+        for (int i = 1; i < xy.length / 2; i++) {
+            if (xy[2 * i] < xy[2 * m] || (xy[2 * i] == xy[2 * m] && xy[2 * i + 1] < xy[2 * m + 1])) {
+                m = i;
+            }
+        }
+        return m;
+    }
+
+    /** The first vertex from m, stepping by {@code step} (1 or n - 1), that is not at m's place. */
+    static int distinctNeighbour(float[] xy, int m, int step) {
+        int n = xy.length / 2;
+        int k = (m + step) % n;
+        while (k != m && xy[2 * k] == xy[2 * m] && xy[2 * k + 1] == xy[2 * m + 1]) {
+            k = (k + step) % n;
+        }
+        return k;
+    }
+
+    /**
+     * Are the two polygons' bounding boxes apart (touching counts as apart, since polygons
+     * are open)? A cheap first test; false means "maybe".
+     */
+    static boolean boundsApart(float[] a, float[] b) {
+        return max(a, 0) <= min(b, 0) || max(b, 0) <= min(a, 0)
+                || max(a, 1) <= min(b, 1) || max(b, 1) <= min(a, 1);
+    }
+
+    /** The largest x ({@code axis} 0) or y (1) of the vertices. */
+    private static float max(float[] xy, int axis) {
+        float m = xy[axis];
+        for (int i = axis + 2; i < xy.length - 1 + axis; i += 2) {
+            m = Math.max(m, xy[i]);
+        }
+        return m;
+    }
+
+    /** The smallest x ({@code axis} 0) or y (1) of the vertices. */
+    private static float min(float[] xy, int axis) {
+        float m = xy[axis];
+        for (int i = axis + 2; i < xy.length - 1 + axis; i += 2) {
+            m = Math.min(m, xy[i]);
+        }
+        return m;
+    }
+
+    /**
+     * Standing at vertex v, does a small step in direction d go strictly inside? The inside
+     * next to v is the open wedge between the edges prev-v and v-next: at a convex corner the
+     * directions inside both edges, at a reflex corner those inside either. Directions along
+     * an edge are on the outline, so not inside.
+     *
+     * @param w the polygon's {@link #winding}
+     */
+    static boolean cornerContains(int w, double prevX, double prevY, double vx, double vy,
+                                  double nextX, double nextY, double dx, double dy) {
+        double inX = vx - prevX;
+        double inY = vy - prevY;
+        double outX = nextX - vx;
+        double outY = nextY - vy;
+        double turn = w * (inX * outY - inY * outX);
+        boolean insideIn = w * (inX * dy - inY * dx) > 0;
+        boolean insideOut = w * (outX * dy - outY * dx) > 0;
+        return turn >= 0 ? insideIn && insideOut : insideIn || insideOut;
+    }
+
+    /**
+     * {@link #cornerContains} at vertex i, between its neighbours; a neighbour at the same
+     * place (a repeated vertex, such as the first vertex repeated at the end) is skipped, so
+     * raw arrays with repeats answer as they would without them.
+     */
+    static boolean cornerContains(int w, float[] xy, int i, double dx, double dy) {
+        int n = xy.length / 2;
+        int h = distinctNeighbour(xy, i, n - 1);
+        int k = distinctNeighbour(xy, i, 1);
+        return cornerContains(w, xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1], dx, dy);
+    }
+
+    /**
+     * Standing at point p (anywhere), does a small step in direction d land strictly inside
+     * the polygon? Inside already: yes. On a vertex: the corner's wedge decides. Inside an
+     * edge: the side of the edge decides. Elsewhere outside: no. Exact.
+     *
+     * @param w the polygon's {@link #winding}, not 0
+     */
+    static boolean stepsInside(float[] xy, int w, double px, double py, double dx, double dy) {
+        int n = xy.length / 2;
+        for (int i = 0; i < n; i++) {
+            double ax = xy[2 * i];
+            double ay = xy[2 * i + 1];
+            int k = (i + 1) % n;
+            double bx = xy[2 * k];
+            double by = xy[2 * k + 1];
+            if (ax == px && ay == py) {
+                return cornerContains(w, xy, i, dx, dy);
+            }
+            if (Lines.orient(ax, ay, bx, by, px, py) == 0 && Lines.inBox(ax, ay, bx, by, px, py)
+                    && !(bx == px && by == py)) {
+                return w * ((bx - ax) * dy - (by - ay) * dx) > 0;
+            }
+        }
+        return contains(xy, px, py);
+    }
+
+    /**
+     * Walking the segment from (x1, y1) to (x2, y2), does it step into the polygon's inside
+     * somewhere before its far end? Together with "is (x1, y1) inside", that decides whether
+     * the closed segment reaches the inside: if it does, take the first point of the walk
+     * that is inside; unless it is (x1, y1) itself, the walk steps in just there, from a
+     * point of the outline that is not the far end. That point is inside an edge, and the
+     * segment crosses the edge properly, or starts on it and heads for the inside side; or it
+     * is a vertex, and the walking direction points into the corner's wedge. Touching the
+     * outline, running along an edge, or slipping through a notch past its corners is none
+     * of these.
+     *
+     * @param w the polygon's {@link #winding}, not 0
+     */
+    static boolean segmentCrossesInto(float[] xy, int w, double x1, double y1, double x2, double y2) {
+        int n = xy.length / 2;
+        double dx = x2 - x1;
+        double dy = y2 - y1;
+        for (int i = 0; i < n; i++) {
+            double ax = xy[2 * i];
+            double ay = xy[2 * i + 1];
+            int k = (i + 1) % n;
+            double bx = xy[2 * k];
+            double by = xy[2 * k + 1];
+            double o1 = Lines.orient(ax, ay, bx, by, x1, y1);
+            double o2 = Lines.orient(ax, ay, bx, by, x2, y2);
+            double oa = Lines.orient(x1, y1, x2, y2, ax, ay);
+            double ob = Lines.orient(x1, y1, x2, y2, bx, by);
+            if (Lines.opposite(o1, o2) && Lines.opposite(oa, ob)) {
+                return true; // a proper crossing, away from every vertex: one way is in
+            }
+            if (o1 == 0 && o2 != 0 && strictlyBetween(ax, ay, bx, by, x1, y1) && w * o2 > 0) {
+                return true; // starts inside edge ab and heads for the inside side
+            }
+            if (oa == 0 && Lines.inBox(x1, y1, x2, y2, ax, ay) && !(ax == x2 && ay == y2)
+                    && cornerContains(w, xy, i, dx, dy)) {
+                return true; // passes vertex a (or starts there) heading into its corner
+            }
+        }
+        return false;
+    }
+
+    /** Is p, known to be on the line ab, on the segment ab but at neither end? */
+    private static boolean strictlyBetween(double ax, double ay, double bx, double by, double px, double py) {
+        return Lines.inBox(ax, ay, bx, by, px, py) && !(px == ax && py == ay) && !(px == bx && py == by);
+    }
+
+    /** Orientation of vertices i, j, k. */
+    private static double orient(float[] xy, int i, int j, int k) {
+        return Lines.orient(xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1], xy[2 * k], xy[2 * k + 1]);
+    }
+
+    /** Dot product of (vertex i - vertex o) and (vertex j - vertex o). */
+    private static double dot(float[] xy, int o, int i, int j) {
+        double ox = xy[2 * o];
+        double oy = xy[2 * o + 1];
+        return ((double) xy[2 * i] - ox) * ((double) xy[2 * j] - ox) + ((double) xy[2 * i + 1] - oy) * ((double) xy[2 * j + 1] - oy);
+    }
+
+    /** Do the closed edges a-b and c-d (given by vertex indices) have a point in common? */
+    private static boolean segmentsMeet(float[] xy, int a, int b, int c, int d) {
+        return Collide.lineLine(xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1],
+                xy[2 * c], xy[2 * c + 1], xy[2 * d], xy[2 * d + 1]);
+    }
+
+    /**
+     * Twice the signed area (shoelace formula), measured from vertex 0 so that large but
+     * nearby coordinates keep their precision. Its sign follows {@link Lines#orient}.
+     */
+    static double doubleSignedArea(float[] xy) {
+        int n = xy.length / 2;
+        double ox = xy[0];
+        double oy = xy[1];
+        double sum = 0;
+        for (int i = 1; i + 1 < n; i++) {
+            sum += Lines.orient(ox, oy, xy[2 * i], xy[2 * i + 1], xy[2 * i + 2], xy[2 * i + 3]);
+        }
+        return sum;
     }
 }

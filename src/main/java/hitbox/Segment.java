@@ -3,7 +3,12 @@ package hitbox;
 /**
  * A line segment between two end points: the tutorial's "line".
  *
- * <p>Closed: its end points belong to it, so segments that meet at an end intersect.
+ * <p>Closed: its end points belong to it, so segments that meet at an end intersect, and so do
+ * collinear segments that overlap ({@link Collide#lineLine}). Like a point, it has no inside:
+ * it collides with a circle, rectangle or polygon only by reaching into that shape's inside
+ * ({@link Collide#lineCircle}, {@link Collide#lineRect}, {@link Collide#polygonLine}), so
+ * running along an edge does not count, and it never collides with a circle of radius 0 or a
+ * rectangle of width or height 0. A segment of length 0 is a point.
  *
  * @param x1 the first end's x
  * @param y1 the first end's y

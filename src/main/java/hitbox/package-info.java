@@ -38,8 +38,27 @@
  *       point or a flat rectangle, and two flat rectangles collide only when they cross
  *       (like a plus sign), never when they lie along each other or meet at an end.</li>
  * </ul>
+ * A segment of length 0 is a point, and closed like every segment: it meets a segment through
+ * it. Segments and points have no inside, so a segment never collides with a zero-size shape
+ * (a circle of radius 0, a rectangle of width or height 0).
  * Comparisons are exact, with no hidden epsilon: for whole-number coordinates of modest
  * size (up to about a million) every answer, touching cases included, is exact.
+ *
+ * <h2 id="polygons">Polygons</h2>
+ * A {@link hitbox.Polygon} is its vertices in order, {@code x0, y0, x1, y1, ...}; edge i runs
+ * from vertex i to vertex i + 1 and the last edge closes the outline back to vertex 0, so the
+ * first vertex is not repeated at the end. Either winding works (clockwise or anticlockwise on
+ * screen), and so does any <em>simple</em> polygon, convex or concave: one whose outline never
+ * crosses or touches itself, edges meeting only at the corner two neighbours share.
+ * {@link hitbox.Polygon#of} checks that and says which vertices or edges are wrong. Like
+ * circles and rectangles, a polygon is open: polygons that share an edge or a corner do not
+ * overlap, one wholly inside another does, and so do two with the same outline. The
+ * {@code Collide.polygon...} methods take the raw {@code float[]} and check nothing: fewer than
+ * 3 vertices never collide, an odd last coordinate is ignored, a repeated vertex (the first one
+ * written again at the end, say) changes nothing, and an outline that crosses
+ * itself is read even-odd by {@code polygonPoint} and gives unspecified answers elsewhere (but
+ * never an exception). The tests work on concave
+ * polygons without splitting them into triangles, and answer exactly, by orientation signs.
  *
  * <h2>Bad input</h2>
  * Shape constructors throw {@link java.lang.IllegalArgumentException} for NaN, infinite

@@ -1,0 +1,125 @@
+package sketches;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+import hitbox.Edges;
+import hitbox.Hits;
+import hitbox.Motion;
+import hitbox.sketchkit.Script;
+import hitbox.sketchkit.SketchRun;
+import processing.core.PImage;
+
+/** 100 bouncers among 100 obstacles: never inside one, a new colour on every hit, the same run every time. */
+class H02_BouncersTest {
+
+    @BeforeAll
+    static void needsDisplay() {
+        assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
+    }
+
+    @Test
+    void aHundredOfEach_startingInFreeSpots() {
+        H02_Bouncers s = SketchRun.of(new H02_Bouncers()).frames(1).run().sketch();
+        assertEquals(100, s.obstacles.size());
+        assertEquals(100, s.bouncers.size());
+    }
+
+    @Test
+    void threeThousandFrames_noBouncerEndsAFrameInsideAnObstacle_orOutsideTheWindow() {
+        int[] moving = new int[1];
+        SketchRun.of(new H02_Bouncers()).frames(3000).everyFrame(s -> {
+            for (int i = 0; i < s.bouncers.size(); i++) {
+                H02_Bouncers.Bouncer b = s.bouncers.get(i);
+                int inside = Hits.first(b.x, b.y, s.size, s.size, s.obstacles);
+                assertEquals(-1, inside, "bouncer " + i + " at (" + b.x + ", " + b.y + ") is inside obstacle " + inside);
+                assertEquals(Edges.NONE, Edges.rectCrossed(b.x, b.y, s.size, s.size, s.width, s.height),
+                        "bouncer " + i + " left the window at (" + b.x + ", " + b.y + ")");
+            }
+            if (s.frameCount == 3000) {
+                for (H02_Bouncers.Bouncer b : s.bouncers) {
+                    moving[0] += b.vx != 0 && b.vy != 0 ? 1 : 0;
+                }
+            }
+        }).run();
+        assertEquals(100, moving[0], "every bouncer still has a speed on both axes");
+    }
+
+    @Test
+    void colour_changesExactlyOnHits() {
+        int[][] before = new int[1][];
+        int[] changes = new int[1];
+        int[] hits = new int[1];
+        SketchRun.of(new H02_Bouncers()).frames(1000).everyFrame(s -> {
+            int counted = 0;
+            for (int i = 0; i < s.bouncers.size(); i++) {
+                H02_Bouncers.Bouncer b = s.bouncers.get(i);
+                boolean hit = b.blocked != Motion.NONE;
+                counted += hit ? 1 : 0;
+                if (before[0] != null) {
+                    boolean changed = b.colour != before[0][i];
+                    assertEquals(hit, changed, "bouncer " + i + ": a new colour if and only if it hit an obstacle");
+                    changes[0] += changed ? 1 : 0;
+                }
+            }
+            assertEquals(counted, s.hitsThisFrame, "hits this frame");
+            hits[0] += counted;
+            int[] colours = new int[s.bouncers.size()];
+            for (int i = 0; i < colours.length; i++) {
+                colours[i] = s.bouncers.get(i).colour;
+            }
+            before[0] = colours;
+        }).run();
+        assertTrue(changes[0] > 1000, "colours changed on many hits: " + changes[0]);
+    }
+
+    @Test
+    void sameSeed_sameRun() {
+        H02_Bouncers a = SketchRun.of(new H02_Bouncers()).frames(200).run().sketch();
+        H02_Bouncers b = SketchRun.of(new H02_Bouncers()).frames(200).run().sketch();
+        assertEquals(a.obstacles, b.obstacles, "the same obstacles");
+        for (int i = 0; i < 100; i++) {
+            assertEquals(a.bouncers.get(i).x, b.bouncers.get(i).x, "bouncer " + i + " x");
+            assertEquals(a.bouncers.get(i).y, b.bouncers.get(i).y, "bouncer " + i + " y");
+            assertEquals(a.bouncers.get(i).colour, b.bouncers.get(i).colour, "bouncer " + i + " colour");
+        }
+        assertEquals(a.totalHits, b.totalHits, "the same hits");
+    }
+
+    @Test
+    void overlay_showsCountsAndBouncerZerosBoxes() {
+        SketchRun.Result<H02_Bouncers> off = SketchRun.of(new H02_Bouncers()).frames(158).run();
+        SketchRun.Result<H02_Bouncers> on = SketchRun.of(new H02_Bouncers()).script(new Script().frames(158).key(2, 'd')).run();
+        PImage a = off.lastFrame();
+        PImage b = on.lastFrame();
+        assertTrue(differing(a, b) > 1000, "the overlay changes what is drawn");
+        // The counts label sits in the top-left corner, drawn over whatever is there.
+        assertTrue(differing(a, b, 8, 8, 200, 40) > 200, "the counts are written top left");
+        H02_Bouncers.Bouncer zero = on.sketch().bouncers.get(0);
+        int cx = (int) (zero.x + on.sketch().size / 2);
+        int cy = (int) (zero.y + on.sketch().size / 2);
+        assertTrue(differing(a, b, cx - 20, cy - 20, cx + 20, cy + 20) > 50, "bouncer 0 is ringed");
+        assertFalse(on.sketch().bouncers.get(0).x != off.sketch().bouncers.get(0).x, "the overlay does not change the run");
+    }
+
+    private static int differing(PImage a, PImage b) {
+        return differing(a, b, 0, 0, a.width - 1, a.height - 1);
+    }
+
+    private static int differing(PImage a, PImage b, int x0, int y0, int x1, int y1) {
+        int n = 0;
+        for (int x = Math.max(0, x0); x <= Math.min(a.width - 1, x1); x++) {
+            for (int y = Math.max(0, y0); y <= Math.min(a.height - 1, y1); y++) {
+                if (a.get(x, y) != b.get(x, y)) {
+                    n++;
+                }
+            }
+        }
+        return n;
+    }
+}

@@ -1,0 +1,107 @@
+package sketches;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+import hitbox.Collide;
+import hitbox.Edges;
+import hitbox.Motion;
+import hitbox.Rect;
+import hitbox.processing.Overlay;
+import hitbox.sketchkit.Script;
+import hitbox.sketchkit.SketchRun;
+import processing.core.PImage;
+
+/** The box looks one frame ahead on each axis, so it bounces off the block's side it hits and never enters it. */
+class S06_MovingObjectsTest {
+
+    @BeforeAll
+    static void needsDisplay() {
+        assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
+    }
+
+    @Test
+    void tenThousandFrames_neverOverlapsTheBlock_andStaysInTheWindow() {
+        SketchRun.of(new S06_MovingObjects()).frames(10_000).everyFrame(s -> {
+            Rect b = s.block;
+            assertFalse(Collide.rectRect(s.x, s.y, s.w, s.h, b.x(), b.y(), b.w(), b.h()),
+                    "the box overlaps the block at (" + s.x + ", " + s.y + ")");
+            assertEquals(Edges.NONE, Edges.rectCrossed(s.x, s.y, s.w, s.h, s.width, s.height),
+                    "the box left the window at (" + s.x + ", " + s.y + ")");
+        }).run();
+    }
+
+    @Test
+    void bouncesOffTheBlock_reversingOnlyTheBlockedSpeed_nextToIt() {
+        float[] prev = new float[4];  // x, y, vx, vy after the previous frame
+        int[] bounces = new int[2];   // off a left/right side, off the top/bottom
+        SketchRun.of(new S06_MovingObjects()).frames(3000).everyFrame(s -> {
+            if (s.frameCount > 1 && s.blocked != Motion.NONE) {
+                float px = prev[0], py = prev[1], pvx = Math.abs(prev[2]), pvy = Math.abs(prev[3]);
+                Rect b = s.block;
+                // Within one frame's move of the block: the box grown by its speed reaches into it.
+                assertTrue(Collide.rectRect(px - pvx, py - pvy, s.w + 2 * pvx, s.h + 2 * pvy, b.x(), b.y(), b.w(), b.h()),
+                        "a bounce far from the block, at (" + px + ", " + py + ")");
+                if (Motion.has(s.blocked, Motion.X)) {
+                    assertEquals(-prev[2], s.vx, "vx reversed");
+                    bounces[0]++;
+                } else {
+                    assertEquals(prev[2], s.vx, "vx kept when only y is blocked");
+                }
+                if (Motion.has(s.blocked, Motion.Y)) {
+                    assertEquals(-prev[3], s.vy, "vy reversed");
+                    bounces[1]++;
+                } else {
+                    assertEquals(prev[3], s.vy, "vy kept when only x is blocked");
+                }
+            }
+            prev[0] = s.x;
+            prev[1] = s.y;
+            prev[2] = s.vx;
+            prev[3] = s.vy;
+        }).run();
+        assertTrue(bounces[0] > 0, "it bounced off a left or right side of the block");
+        assertTrue(bounces[1] > 0, "it bounced off the top or bottom of the block");
+    }
+
+    @Test
+    void overlay_drawsTheNextPositionBoxes() {
+        // Paused from frame 11, so frames 20 (maths off) and 22 (maths on) show the same state.
+        SketchRun.Result<S06_MovingObjects> r = SketchRun.of(new S06_MovingObjects())
+                .script(new Script().frames(22).key(10, 'p').key(20, 'd'))
+                .capture(20).capture(22).run();
+        PImage off = r.frame(20);
+        PImage on = r.frame(22);
+        assertTrue(differing(off, on) > 500, "the overlay changes what is drawn");
+        assertEquals(0, count(off, Overlay.MISS), "no 'not colliding' green without the overlay");
+        assertTrue(count(on, Overlay.MISS) > 100, "the free next-position boxes and their labels are green");
+    }
+
+    private static int differing(PImage a, PImage b) {
+        a.loadPixels();
+        b.loadPixels();
+        int n = 0;
+        for (int i = 0; i < a.pixels.length; i++) {
+            if (a.pixels[i] != b.pixels[i]) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    private static int count(PImage image, int colour) {
+        image.loadPixels();
+        int n = 0;
+        for (int p : image.pixels) {
+            if ((p | 0xFF000000) == (colour | 0xFF000000)) {
+                n++;
+            }
+        }
+        return n;
+    }
+}
