@@ -77,8 +77,9 @@ public final class Collide {
      * Do two rectangles overlap? Rectangles side by side, sharing an edge, do not.
      *
      * <p>The tutorial's four comparisons: {@code x1 + w1 > x2 && x1 < x2 + w2 &&
-     * y1 + h1 > y2 && y1 < y2 + h2}. A rectangle of size 0 behaves as a point (or a segment)
-     * and collides only when it reaches into the other's inside.
+     * y1 + h1 > y2 && y1 < y2 + h2}. A rectangle of width or height 0 behaves as a segment (or
+     * a point) and collides only when it reaches into the other's inside, so two of them never
+     * collide, even when they cross like a plus sign.
      *
      * @param x1 the first rectangle's left edge
      * @param y1 the first rectangle's top edge
@@ -93,7 +94,10 @@ public final class Collide {
     public static boolean rectRect(float x1, float y1, float w1, float h1,
                                    float x2, float y2, float w2, float h2) {
         return (double) x1 + w1 > x2 && x1 < (double) x2 + w2
-                && (double) y1 + h1 > y2 && y1 < (double) y2 + h2;
+                && (double) y1 + h1 > y2 && y1 < (double) y2 + h2
+                // The four comparisons alone would let a zero-width and a zero-height
+                // rectangle that cross collide, though neither has an inside to reach into.
+                && (w1 > 0 && h1 > 0 || w2 > 0 && h2 > 0);
     }
 
     /**
