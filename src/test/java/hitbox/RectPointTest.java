@@ -100,7 +100,8 @@ class RectPointTest {
     @ParameterizedTest(name = "NaN as {0}")
     @CsvSource({"rx, 0", "ry, 1", "rw, 2", "rh, 3", "px, 4", "py, 5"})
     void rectPoint_nanArgumentGivesFalse(String name, int position) {
-        float[][] collidingCases = {{0, 0, 10, 10, 5, 5}, {-20, 30, 40, 5, -19, 34}, {1e6f, 1e6f, 2, 2, 1e6f + 1, 1e6f + 1}};
+        float[][] collidingCases = {
+                {0, 0, 10, 10, 5, 5}, {-20, 30, 40, 5, -19, 34}, {1e6f, 1e6f, 2, 2, 1e6f + 1, 1e6f + 1}};
         for (float[] a : collidingCases) {
             assertTrue(Collide.rectPoint(a[0], a[1], a[2], a[3], a[4], a[5]), "the case must collide without NaN");
             a[position] = Float.NaN;
