@@ -47,27 +47,20 @@ class Bouncer {
   }
 
   void step() {
-    blocked = Motion.rectBlocked(x, y, size, size, vx, vy, obstacles);
-    if (blocked != Motion.NONE) {
+    // Sections 6 and 8 for each bouncer: reverse what is blocked, bounce off the window,
+    // and move only where it is free (see Motion.bounce).
+    Motion.Step next = Motion.bounce(x, y, size, size, vx, vy, obstacles, width, height);
+    blocked = next.blocked();
+    if (next.hitObstacle()) {
       colour = newColour(colour);
       colourChanges++;
       hitsThisFrame++;
       lightUp();
     }
-    vx = Motion.reverseX(blocked, vx);
-    vy = Motion.reverseY(blocked, vy);
-    int crossed = Edges.rectCrossed(x + vx, y + vy, size, size, width, height);
-    vx = Edges.bounceX(crossed, vx);
-    vy = Edges.bounceY(crossed, vy);
-    // As in section 8: the new speeds may point at something closer than one move, so ask
-    // again and move only along the free axes.
-    int still = Motion.rectBlocked(x, y, size, size, vx, vy, obstacles);
-    if (!Motion.has(still, Motion.X)) {
-      x += vx;
-    }
-    if (!Motion.has(still, Motion.Y)) {
-      y += vy;
-    }
+    x = next.x();
+    y = next.y();
+    vx = next.vx();
+    vy = next.vy();
   }
 
   // Which obstacles it ran into: the ones its next-position boxes overlap.

@@ -9,8 +9,8 @@
  *
  * With many obstacles there is one new trap: reversing can point the box straight at
  * ANOTHER obstacle that is closer than one frame's move (squeeze two obstacles together and
- * watch). So after reversing, the sketch asks Motion once more and only moves along the axes
- * that are free; on a blocked axis it waits a frame.
+ * watch). So Motion.bounce, after reversing, asks once more and only moves along the axes
+ * that are free; on a blocked axis the box waits a frame.
  *
  * A click on top of the box is refused: the check only looks one move ahead, so an obstacle
  * placed over the box would have it stuck inside from the start.
@@ -108,19 +108,12 @@ public void draw() {
 }
 
 void move() {
-  vx = Motion.reverseX(blocked, vx);
-  vy = Motion.reverseY(blocked, vy);
-  int crossed = Edges.rectCrossed(x + vx, y + vy, w, h, width, height);
-  vx = Edges.bounceX(crossed, vx);
-  vy = Edges.bounceY(crossed, vy);
-  // The new speeds may point at something closer than one move: ask again, move only where free.
-  int still = Motion.rectBlocked(x, y, w, h, vx, vy, obstacles);
-  if (!Motion.has(still, Motion.X)) {
-    x += vx;
-  }
-  if (!Motion.has(still, Motion.Y)) {
-    y += vy;
-  }
+  // Section 6's reverse-and-move, made safe for many obstacles: see Motion.bounce.
+  Motion.Step step = Motion.bounce(x, y, w, h, vx, vy, obstacles, width, height);
+  x = step.x();
+  y = step.y();
+  vx = step.vx();
+  vy = step.vy();
 }
 
 void lightUp(int[] indices) {

@@ -118,15 +118,11 @@ public final class Collide {
         double dy = cy - clamp(cy, ry, (double) ry + rh);
         double d2 = dx * dx + dy * dy;
         if (d2 == 0) {
-            // The centre is in the closed rectangle. A real circle's inside covers it, so the
-            // two meet (even for a zero-size rectangle); a point must be strictly inside. This
-            // also keeps a tiny radius whose square underflows to 0 from reading as a miss.
-            // The closed-rectangle test is spelled out because clamping against NaN also gives
-            // 0, and NaN must answer "no collision".
-            if (r > 0) {
-                return cx >= rx && cx <= (double) rx + rw && cy >= ry && cy <= (double) ry + rh;
-            }
-            return r == 0 && rectPoint(rx, ry, rw, rh, cx, cy);
+            // The centre is in the closed rectangle (NaN cannot get here: clamp passes it on,
+            // and NaN is not 0). A real circle's inside covers the centre, so the two meet,
+            // even for a zero-size rectangle; a circle of radius 0 is a point, which must be
+            // strictly inside. A NaN radius fails both tests.
+            return r > 0 || (r == 0 && rectPoint(rx, ry, rw, rh, cx, cy));
         }
         return d2 < (double) r * r;
     }
@@ -156,9 +152,13 @@ public final class Collide {
         return Polygons.contains(xy, px, py);
     }
 
-    /** Clamps {@code v} into [lo, hi]; used for the closest point of a rectangle. */
+    /**
+     * Clamps {@code v} into [lo, hi]; used for the closest point of a rectangle. NaN in any
+     * argument gives NaN (Math.min and Math.max pass it on), so a NaN rectangle edge cannot
+     * be clamped away into a false "collision".
+     */
     static double clamp(double v, double lo, double hi) {
-        return v < lo ? lo : (v > hi ? hi : v);
+        return Math.max(lo, Math.min(v, hi));
     }
 
     /**

@@ -397,4 +397,60 @@ public final class Motion {
             default -> "NONE";
         };
     }
+
+    /**
+     * One frame of the tutorial's bouncing box among many obstacles, made safe: reverse the
+     * speeds {@link #rectBlocked} reports, bounce off the window's edges, then move only along
+     * the axes that are still free.
+     *
+     * <p>Why the last step: with several obstacles, a reversed speed can point straight at a
+     * second obstacle less than one move away (a box squeezed between two). Asking again with
+     * the new speeds, and waiting a frame on an axis that is still blocked, means the box never
+     * ends a frame inside an obstacle it started outside of, nor outside the window it started
+     * inside of.
+     *
+     * @param x         the box's left edge
+     * @param y         the box's top edge
+     * @param w         the box's width
+     * @param h         the box's height
+     * @param vx        its speed across, pixels per frame
+     * @param vy        its speed down, pixels per frame
+     * @param obstacles the obstacles, none of them null
+     * @param width     the window's width
+     * @param height    the window's height
+     * @return where the box is after this frame, its new speeds, and what blocked it
+     * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
+     */
+    public static Step bounce(float x, float y, float w, float h, float vx, float vy,
+                              List<Rect> obstacles, float width, float height) {
+        int blocked = rectBlocked(x, y, w, h, vx, vy, obstacles);
+        vx = reverseX(blocked, vx);
+        vy = reverseY(blocked, vy);
+        int crossed = Edges.rectCrossed(x + vx, y + vy, w, h, width, height);
+        vx = Edges.bounceX(crossed, vx);
+        vy = Edges.bounceY(crossed, vy);
+        int still = rectBlocked(x, y, w, h, vx, vy, obstacles);
+        float nx = has(still, X) ? x : x + vx;
+        float ny = has(still, Y) ? y : y + vy;
+        return new Step(nx, ny, vx, vy, blocked, crossed);
+    }
+
+    /**
+     * What one {@link #bounce} frame did.
+     *
+     * @param x       the box's new left edge
+     * @param y       the box's new top edge
+     * @param vx      its new speed across
+     * @param vy      its new speed down
+     * @param blocked the axes an obstacle blocked before the move ({@link #X}, {@link #Y},
+     *                {@link #BOTH} or {@link #NONE}): non-zero means it hit an obstacle
+     * @param crossed the window edges the move would have crossed ({@link Edges} flags)
+     */
+    public record Step(float x, float y, float vx, float vy, int blocked, int crossed) {
+
+        /** @return true if an obstacle blocked the box this frame */
+        public boolean hitObstacle() {
+            return blocked != NONE;
+        }
+    }
 }

@@ -42,6 +42,10 @@ public record Rect(float x, float y, float w, float h) implements Shape {
      * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
      */
     public static Rect centered(float cx, float cy, float w, float h) {
+        // Checked here, not left to the constructor, so the message names the centre the
+        // caller passed rather than the corner computed from it.
+        Check.finite("cx", cx);
+        Check.finite("cy", cy);
         Check.size("width", w);
         Check.size("height", h);
         return new Rect(cx - w / 2, cy - h / 2, w, h);
@@ -91,6 +95,7 @@ public record Rect(float x, float y, float w, float h) implements Shape {
      * @param newX the new left edge
      * @param newY the new top edge
      * @return the moved rectangle
+     * @throws IllegalArgumentException if a value is NaN or infinite
      */
     public Rect at(float newX, float newY) {
         return new Rect(newX, newY, w, h);

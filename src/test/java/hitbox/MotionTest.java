@@ -291,4 +291,62 @@ class MotionTest {
         y += by ? -vy : vy;
         assertTrue(Collide.rectRect(x, y, 10, 10, 12, 12, 10, 10));
     }
+
+    // ---------------------------------------------------------------- bounce: one safe frame
+
+    @Test
+    void bounce_freePath_movesByItsSpeed() {
+        Motion.Step step = Motion.bounce(10, 10, 8, 8, 3, 2, List.of(new Rect(100, 100, 10, 10)), 200, 200);
+        assertEquals(new Motion.Step(13, 12, 3, 2, Motion.NONE, Edges.NONE), step);
+        assertFalse(step.hitObstacle());
+    }
+
+    @Test
+    void bounce_wallAhead_reversesTheBlockedSpeedAndMovesAway() {
+        // The next x (16..24) overlaps the wall at 20; y is free.
+        Motion.Step step = Motion.bounce(10, 10, 8, 8, 6, 2, List.of(new Rect(20, 0, 10, 100)), 200, 200);
+        assertEquals(new Motion.Step(4, 12, -6, 2, Motion.X, Edges.NONE), step);
+        assertTrue(step.hitObstacle());
+    }
+
+    @Test
+    void bounce_squeezedBetweenTwoObstacles_waitsInsteadOfMovingIntoTheOther() {
+        // 2 px free on each side: reversing the blocked speed points at the other obstacle.
+        List<Rect> obstacles = List.of(new Rect(0, 0, 10, 100), new Rect(30, 0, 10, 100));
+        Motion.Step step = Motion.bounce(12, 50, 16, 8, 5, 1, obstacles, 200, 200);
+        assertEquals(12f, step.x(), "waits across");
+        assertEquals(-5f, step.vx(), "but its speed is reversed");
+        assertEquals(51f, step.y(), "and it still moves down");
+        assertEquals(Motion.X, step.blocked());
+    }
+
+    @Test
+    void bounce_windowEdgeAhead_bouncesBackInside() {
+        Motion.Step step = Motion.bounce(190, 50, 8, 8, 5, 0, List.of(), 200, 200);
+        assertEquals(-5f, step.vx());
+        assertEquals(185f, step.x());
+        assertEquals(Edges.RIGHT, step.crossed());
+    }
+
+    @Property(tries = 300)
+    void bounce_manyFrames_neverEndsInsideAnObstacleOrOutsideTheWindow(
+            @ForAll @Size(max = 12) List<@IntRange(min = 0, max = 180) Integer> corners,
+            @ForAll @IntRange(min = 0, max = 190) int x0, @ForAll @IntRange(min = 0, max = 190) int y0,
+            @ForAll @IntRange(min = -9, max = 9) int vx0, @ForAll @IntRange(min = -9, max = 9) int vy0) {
+        List<Rect> obstacles = new ArrayList<>();
+        for (int i = 0; i + 1 < corners.size(); i += 2) {
+            obstacles.add(new Rect(corners.get(i), corners.get(i + 1), 6 + i, 14 - i));
+        }
+        Assume.that(Hits.first(x0, y0, 8, 8, obstacles) < 0);
+        float x = x0, y = y0, vx = vx0, vy = vy0;
+        for (int frame = 1; frame <= 400; frame++) {
+            Motion.Step step = Motion.bounce(x, y, 8, 8, vx, vy, obstacles, 200, 200);
+            x = step.x();
+            y = step.y();
+            vx = step.vx();
+            vy = step.vy();
+            assertEquals(-1, Hits.first(x, y, 8, 8, obstacles), "inside an obstacle on frame " + frame);
+            assertEquals(Edges.NONE, Edges.rectCrossed(x, y, 8, 8, 200, 200), "outside the window on frame " + frame);
+        }
+    }
 }

@@ -16,13 +16,21 @@ import processing.core.PApplet;
 
 /**
  * The sketches there are: every folder {@code sketches/<Name>/} that holds {@code <Name>.pde},
- * in folder-name order (section numbers are zero-padded, so that is tutorial order).
+ * in tutorial order: sections by folder name (their numbers are zero-padded), then homework.
  *
  * <p>Found from the folders, never from a list, so a new sketch appears by being added.
  */
 public final class Catalog {
     /** The system property that names the sketches folder; the build sets it. */
     public static final String SKETCHES_PROPERTY = "hitbox.sketches";
+
+    /**
+     * Tutorial order: the sections ({@code S01_...}, {@code S03b_...}) by name, then the
+     * homework ({@code H01_...}), which comes after the tutorial.
+     */
+    private static final Comparator<File> TUTORIAL_ORDER = Comparator
+            .comparing((File f) -> f.getName().startsWith("H"))
+            .thenComparing(File::getName);
 
     private final File root;
     private final List<SketchInfo> sketches;
@@ -57,7 +65,7 @@ public final class Catalog {
                     + ": run from the project folder, or set -D" + SKETCHES_PROPERTY + "=<folder>");
         }
         List<SketchInfo> found = new ArrayList<>();
-        Arrays.sort(folders, Comparator.comparing(File::getName));
+        Arrays.sort(folders, TUTORIAL_ORDER);
         for (File folder : folders) {
             File main = new File(folder, folder.getName() + ".pde");
             if (main.isFile()) {

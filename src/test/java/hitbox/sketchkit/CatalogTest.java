@@ -23,7 +23,7 @@ class CatalogTest {
     }
 
     @Test
-    void load_findsSketchFoldersInNameOrder_andReadsTheirHeaders() throws IOException {
+    void load_findsSketchFoldersInTutorialOrder_andReadsTheirHeaders() throws IOException {
         sketch("S02_CirclePoint", """
                 /**
                  * Circle/Point
@@ -41,17 +41,17 @@ class CatalogTest {
         Catalog catalog = Catalog.load(root.toFile());
 
         List<Catalog.SketchInfo> s = catalog.sketches();
-        assertEquals(List.of("H02_Bouncers", "S01_EdgeBounce", "S02_CirclePoint"),
+        assertEquals(List.of("S01_EdgeBounce", "S02_CirclePoint", "H02_Bouncers"),
                 s.stream().map(Catalog.SketchInfo::name).toList());
-        assertEquals("Circle/Point", s.get(2).title());
-        assertEquals("Tutorial section 2: Circle/Point", s.get(2).section());
-        assertEquals("Homework 2: 100 bouncers", s.get(0).section());
-        assertEquals("S01_EdgeBounce", s.get(1).title(), "no header: the folder name is the title");
-        assertEquals("", s.get(1).section());
-        assertEquals(new File(root.toFile(), "S02_CirclePoint/screenshot.png"), s.get(2).screenshot());
+        assertEquals("Circle/Point", s.get(1).title());
+        assertEquals("Tutorial section 2: Circle/Point", s.get(1).section());
+        assertEquals("Homework 2: 100 bouncers", s.get(2).section());
+        assertEquals("S01_EdgeBounce", s.get(0).title(), "no header: the folder name is the title");
+        assertEquals("", s.get(0).section());
+        assertEquals(new File(root.toFile(), "S02_CirclePoint/screenshot.png"), s.get(1).screenshot());
         assertTrue(catalog.find("S01_EdgeBounce").isPresent());
         assertTrue(catalog.find("S99_Nothing").isEmpty());
-        assertEquals("H02_Bouncers, S01_EdgeBounce, S02_CirclePoint", catalog.names());
+        assertEquals("S01_EdgeBounce, S02_CirclePoint, H02_Bouncers", catalog.names());
     }
 
     @Test
