@@ -1,0 +1,99 @@
+package sketches;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+import hitbox.Collide;
+import hitbox.processing.Palette;
+import hitbox.sketchkit.Script;
+import hitbox.sketchkit.SketchRun;
+import processing.core.PImage;
+
+/**
+ * S10b_PointInPolygon: the crown (corners at y = 70 and y = 140 level with each other, a
+ * notch at the bottom) is red while the mouse is inside; the ray to the right shows the
+ * crossings, whose count is odd exactly when the point is inside.
+ */
+class S10b_PointInPolygonTest {
+
+    @BeforeAll
+    static void needsDisplay() {
+        assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
+    }
+
+    @ParameterizedTest(name = "mouse ({0}, {1}): inside {2}, {3} crossings")
+    @CsvSource({
+            // mouse x, y, inside, crossings counted, corners touched but not crossed
+            "300, 180, true,  1, 0",
+            "160, 140, true,  1, 2",   // level with both valley corners: they are touched, not crossed
+            "100, 70,  false, 6, 0",   // level with the peaks: each peak is counted twice
+            "60,  190, false, 2, 0",   // level with the left corner: it is passed through, counted once
+            "300, 280, false, 2, 0",   // in the notch
+            "200, 260, true,  3, 0",   // in the lower left lobe: out across the notch and back in
+            "560, 140, false, 0, 0",   // right of everything
+            "300, 40,  false, 0, 0",   // above the middle peak
+    })
+    void crown_isRedWhileTheMouseIsInside_andTheCountIsOddExactlyThen(int mx, int my, boolean inside,
+                                                                       int crossings, int touched) {
+        SketchRun.Result<S10b_PointInPolygon> r = SketchRun.of(new S10b_PointInPolygon())
+                .script(new Script().frames(4).mouse(1, mx, my)).run();
+        S10b_PointInPolygon s = r.sketch();
+        assertEquals(Collide.polygonPoint(s.crown.coordinates(), mx, my), s.inside, "the sketch's answer is the library's");
+        assertEquals(inside, s.inside, "inside");
+        assertEquals(crossings, s.crossings, "crossings");
+        assertEquals(touched, s.touched.size(), "corners touched");
+        assertFalse(s.onOutline);
+        SketchPixels.assertColour(r.lastFrame(), 300, 200, inside ? Palette.HIT : Palette.MISS, "the crown");
+    }
+
+    @ParameterizedTest(name = "mouse ({0}, {1})")
+    @CsvSource({
+            "220, 140",   // a valley corner
+            "90,  190",   // the left corner
+            "170, 105",   // the middle of edge e0, from (120, 70) to (220, 140)
+    })
+    void pointOnTheOutline_isNotInside(int mx, int my) {
+        S10b_PointInPolygon s = SketchRun.of(new S10b_PointInPolygon())
+                .script(new Script().frames(3).mouse(1, mx, my)).run().sketch();
+        assertFalse(s.inside, "polygons are open: the outline is not inside");
+        assertTrue(s.onOutline, "the ray starts on an edge");
+    }
+
+    @Test
+    void crossingCount_isOddExactlyWhenInside_allOverTheWindow() {
+        Script script = new Script();
+        int frame = 1;
+        for (int y = 5; y < 400; y += 9) {
+            for (int x = 3; x < 600; x += 9) {
+                script.mouse(frame++, x, y);
+            }
+        }
+        // The row y = 5 + 9 * 15 = 140 is level with the two valley corners.
+        int[] checked = {0, 0};
+        SketchRun.of(new S10b_PointInPolygon()).script(script.frames(frame - 1)).everyFrame(s -> {
+            if (!s.onOutline) {
+                assertEquals(s.inside, s.crossings % 2 == 1,
+                        "at (" + s.px + ", " + s.py + "): " + s.crossings + " crossings, inside " + s.inside);
+                checked[s.inside ? 1 : 0]++;
+            }
+        }).run();
+        assertTrue(checked[0] > 500 && checked[1] > 500, "points inside and outside, " + checked[1] + " and " + checked[0]);
+    }
+
+    @Test
+    void overlayKey_changesWhatIsDrawn_andPressingAgainHidesIt() {
+        Script script = new Script().frames(12).mouse(1, 160, 140).key(3, 'd').key(8, 'd');
+        SketchRun.Result<S10b_PointInPolygon> r = SketchRun.of(new S10b_PointInPolygon()).script(script)
+                .capture(2).capture(6).run();
+        PImage off = r.frame(2);
+        assertTrue(SketchPixels.differing(off, r.frame(6)) > 2000, "the overlay numbers the edges and writes out the rule");
+        assertEquals(0, SketchPixels.differing(off, r.lastFrame()), "pressing d again hides the overlay");
+    }
+}
