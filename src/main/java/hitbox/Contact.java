@@ -61,6 +61,9 @@ public record Contact(float nx, float ny, float depth) {
      *                                  {@link #UNIT_TOLERANCE})
      */
     public Contact {
+        // -0 becomes 0, so that a flipped or computed normal equals one written by hand.
+        nx += 0.0f;
+        ny += 0.0f;
         Check.finite("nx", nx);
         Check.finite("ny", ny);
         Check.positive("depth", depth);
