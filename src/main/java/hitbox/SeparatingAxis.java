@@ -61,6 +61,13 @@ public final class SeparatingAxis {
          *                                  (within {@link Contact#UNIT_TOLERANCE})
          */
         public Axis {
+            // -0 becomes 0, so that computed axes equal ones written by hand.
+            nx += 0.0f;
+            ny += 0.0f;
+            minA += 0.0f;
+            maxA += 0.0f;
+            minB += 0.0f;
+            maxB += 0.0f;
             Check.finite("nx", nx);
             Check.finite("ny", ny);
             Check.finite("minA", minA);
