@@ -131,11 +131,11 @@ final class Contacts {
      */
     static Contact closestFeature(float cx, float cy, float r, float[] xy) {
         int n = xy.length / 2;
-        double turn = Math.signum(SeparatingAxis.area2(xy));
-        // The nearest feature: an edge (its interior) or a vertex, with its squared distance.
-        double bestD2 = Double.POSITIVE_INFINITY;
-        int bestEdge = -1;
-        int bestVertex = -1;
+        // Each edge's nearest point to the centre: its interior (distance^2, edge) or its
+        // first vertex. The second vertex is the next edge's first, so it is not repeated.
+        double[] d2 = new double[n];
+        boolean[] interior = new boolean[n];
+        double min = Double.POSITIVE_INFINITY;
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
             // Relative to the centre: differences of floats are exact in double.
@@ -145,45 +145,45 @@ final class Contacts {
             double len2 = ex * ex + ey * ey;
             double along = -(px * ex + py * ey);
             if (len2 == 0 || along <= 0) {
-                double d2 = px * px + py * py;
-                if (d2 < bestD2) {
-                    bestD2 = d2;
-                    bestVertex = i;
-                    bestEdge = -1;
-                }
+                d2[i] = px * px + py * py;
             } else if (along < len2) {
                 double cross = ex * (-py) - ey * (-px);
-                double d2 = cross * cross / len2;
-                if (d2 < bestD2) {
-                    bestD2 = d2;
-                    bestEdge = i;
-                    bestVertex = -1;
-                }
+                d2[i] = cross * cross / len2;
+                interior[i] = true;
+            } else {
+                // The far vertex is nearest; the next edge offers it (or something nearer).
+                d2[i] = Double.POSITIVE_INFINITY;
             }
-            // along >= len2: the next vertex is nearest, and its own edge will offer it.
+            min = Math.min(min, d2[i]);
         }
         boolean inside = Collide.polygonPoint(xy, cx, cy);
-        double dist = Math.sqrt(bestD2);
+        double dist = Math.sqrt(min);
         double depth = inside ? r + dist : r - dist;
         if (!(depth > 0)) {
             return null;
         }
+        // Every feature at the least distance is offered, so ties follow the rule in Best.
+        double turn = Math.signum(SeparatingAxis.area2(xy));
         Best best = new Best();
-        if (bestEdge >= 0) {
-            // The circle leaves along the edge's outward normal; the polygon goes the other way.
-            double[] out = outwardNormal(xy, bestEdge, turn);
-            best.offer(-out[0], -out[1], depth);
-        } else if (dist > 0) {
-            double vx = (double) xy[2 * bestVertex] - cx, vy = (double) xy[2 * bestVertex + 1] - cy;
-            double sign = inside ? -1 : 1;
-            best.offer(sign * vx / dist, sign * vy / dist, depth);
-        } else {
-            // The centre is on a vertex: leave along either neighbouring edge's normal.
-            int prev = (bestVertex + n - 1) % n;
-            for (int e : new int[] {prev, bestVertex}) {
-                double[] out = outwardNormal(xy, e, turn);
-                if (out != null) {
-                    best.offer(-out[0], -out[1], depth);
+        for (int i = 0; i < n; i++) {
+            if (d2[i] != min) {
+                continue;
+            }
+            if (interior[i]) {
+                // The circle leaves along the edge's outward normal; the polygon goes the other way.
+                double[] out = outwardNormal(xy, i, turn);
+                best.offer(-out[0], -out[1], depth);
+            } else if (dist > 0) {
+                double vx = (double) xy[2 * i] - cx, vy = (double) xy[2 * i + 1] - cy;
+                double sign = inside ? -1 : 1;
+                best.offer(sign * vx / dist, sign * vy / dist, depth);
+            } else {
+                // The centre is on vertex i: leave along either neighbouring edge's normal.
+                for (int e : new int[] {(i + n - 1) % n, i}) {
+                    double[] out = outwardNormal(xy, e, turn);
+                    if (out != null) {
+                        best.offer(-out[0], -out[1], depth);
+                    }
                 }
             }
         }
