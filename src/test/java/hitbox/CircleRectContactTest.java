@@ -118,7 +118,7 @@ class CircleRectContactTest {
         assertReversed(a.contact(b), b.contact(a));
     }
 
-    @Property
+    @Property(maxDiscardRatio = 20)
     void normalIsUnit_depthPositive(@ForAll("circle") Circle a, @ForAll("rect") Rect b) {
         Contact c = a.contact(b);
         Assume.that(c != null);
@@ -133,7 +133,7 @@ class CircleRectContactTest {
         assertEquals(a.contact(b), a.translated(dx, dy).contact(b.translated(dx, dy)));
     }
 
-    @Property
+    @Property(maxDiscardRatio = 20)
     void pushingOut_leavesThemTouching(@ForAll("circle") Circle a, @ForAll("rect") Rect b) {
         Contact c = a.contact(b);
         Assume.that(c != null);
@@ -141,7 +141,7 @@ class CircleRectContactTest {
         assertPushOutTouches(b, a, b.contact(a));
     }
 
-    @Property(tries = 300)
+    @Property(tries = 300, maxDiscardRatio = 20)
     void depthIsTheMinimumTranslation(@ForAll("circle") Circle a, @ForAll("rect") Rect b) {
         Contact c = a.contact(b);
         Assume.that(c != null);

@@ -30,8 +30,12 @@ final class ContactFixtures {
      */
     static final double STEP = 1e-3;
 
-    /** Intersection area below which two polygons count as touching, for the Area reference. */
-    static final double AREA_EPS = 1e-9;
+    /**
+     * Intersection area below which two polygons count as touching. Rounding noise in the
+     * area of two touching polygons with coordinates near 100 is about 1e-12; a corner pushed
+     * in by d makes an area of order d^2, so the slow depth reference resolves d to ~1e-5.
+     */
+    static final double AREA_EPS = 1e-10;
 
     // ------------------------------------------------------------------------ references
 
@@ -366,9 +370,14 @@ final class ContactFixtures {
             int j = (i + 1) % n;
             double ax = p[2 * i], ay = p[2 * i + 1], bx = p[2 * j], by = p[2 * j + 1];
             double ex = bx - ax, ey = by - ay;
-            double t = ((x - ax) * ex + (y - ay) * ey) / (ex * ex + ey * ey);
-            t = Math.max(0, Math.min(1, t));
-            best = Math.min(best, Math.hypot(ax + t * ex - x, ay + t * ey - y));
+            double len2 = ex * ex + ey * ey;
+            double dot = (x - ax) * ex + (y - ay) * ey;
+            // The distance to the line from the cross product, exact for whole numbers, so a
+            // point on an edge is at distance 0, not at a rounded foot point's 1e-15.
+            double d = len2 == 0 || dot <= 0 ? Math.hypot(x - ax, y - ay)
+                    : dot >= len2 ? Math.hypot(x - bx, y - by)
+                    : Math.abs(ex * (y - ay) - ey * (x - ax)) / Math.sqrt(len2);
+            best = Math.min(best, d);
         }
         return best;
     }

@@ -105,7 +105,7 @@ class RectRectContactTest {
         assertEquals(a.overlaps(b), a.contact(b) != null);
     }
 
-    @Property
+    @Property(maxDiscardRatio = 20)
     void reversedOrder_sameDepth_oppositeNormalUnlessSymmetric(@ForAll("rect") Rect a, @ForAll("rect") Rect b) {
         Contact ab = a.contact(b), ba = b.contact(a);
         Assume.that(ab != null);
@@ -127,14 +127,14 @@ class RectRectContactTest {
         assertEquals(a.contact(b), a.translated(dx, dy).contact(b.translated(dx, dy)));
     }
 
-    @Property
+    @Property(maxDiscardRatio = 20)
     void pushingOut_leavesThemTouching(@ForAll("rect") Rect a, @ForAll("rect") Rect b) {
         Contact c = a.contact(b);
         Assume.that(c != null);
         assertPushOutTouches(a, b, c);
     }
 
-    @Property(tries = 200)
+    @Property(tries = 200, maxDiscardRatio = 20)
     void depthIsTheMinimumTranslation(@ForAll("rect") Rect a, @ForAll("rect") Rect b) {
         Contact c = a.contact(b);
         Assume.that(c != null);

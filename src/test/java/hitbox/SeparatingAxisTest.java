@@ -254,7 +254,7 @@ class SeparatingAxisTest {
         assertEquals(sat, ContactFixtures.overlapsRef(a, b));
     }
 
-    @Property
+    @Property(maxDiscardRatio = 20)
     void contact_reversedOrder_translationInvariant_unitNormal(@ForAll("rotatedRect") Polygon a, @ForAll("rotatedRect") Polygon b,
                                                                 @ForAll @IntRange(min = -1000, max = 1000) int dx,
                                                                 @ForAll @IntRange(min = -1000, max = 1000) int dy) {
@@ -279,14 +279,14 @@ class SeparatingAxisTest {
         assertEquals(SeparatingAxis.contact(a, b), SeparatingAxis.contact(a.translated(dx, dy), b.translated(dx, dy)));
     }
 
-    @Property
+    @Property(maxDiscardRatio = 20)
     void contact_pushingOut_leavesThemTouching(@ForAll("rotatedRect") Polygon a, @ForAll("rotatedRect") Polygon b) {
         Contact c = SeparatingAxis.contact(a, b);
         Assume.that(c != null);
         assertPushOutTouches(a, b, c);
     }
 
-    @Property(tries = 60)
+    @Property(tries = 60, maxDiscardRatio = 20)
     void contact_isTheMinimumTranslation(@ForAll("convex") Polygon a, @ForAll("convex") Polygon b) {
         Contact c = SeparatingAxis.contact(a, b);
         Assume.that(c != null);
