@@ -18,8 +18,11 @@ import java.util.List;
  *
  * <ul>
  *   <li>Polygons and rectangles: each is cut into convex pieces (a concave polygon into
- *       triangles, by ear clipping). Two pieces overlap exactly when the move lies inside
- *       their Minkowski difference, a convex polygon; the set is the union of those.</li>
+ *       triangles by ear clipping, merged back where they stay convex). Two pieces overlap
+ *       exactly when the move lies inside their Minkowski difference, a convex polygon; the
+ *       set is the union of those. Its outline is found edge by edge: the parts of each
+ *       region's edge not inside another region, and on each part the point nearest the
+ *       origin (the ends of those parts are where two regions' edges cross).</li>
  *   <li>A circle against a polygon: the centre must end at least r from the polygon, so the
  *       pieces are the polygon's edges pushed out by r and circles of radius r around its
  *       corners.</li>
@@ -27,10 +30,12 @@ import java.util.List;
  *
  * <p>A candidate on an outline is, in exact arithmetic, exactly on the edge of the set; so it
  * counts as inside only when it is inside by more than {@link #TOLERANCE} times the size of
- * the problem. The move found may therefore leave an overlap that small.
+ * the problem. The move found may therefore leave an overlap that small, and candidates
+ * that close in length tie (and go by the tie rule of {@link Contact}).
  *
  * <p>Reference: C. Ericson, <i>Real-Time Collision Detection</i>, 2005, section 3.11
- * (Minkowski sums and differences); D. Eberly, "Triangulation by Ear Clipping", 2002.
+ * (Minkowski sums and differences); D. Eberly, "Triangulation by Ear Clipping", 2002;
+ * S. Hertel, K. Mehlhorn, "Fast triangulation of simple polygons", 1983.
  */
 final class Clearance {
     private Clearance() {
@@ -40,11 +45,11 @@ final class Clearance {
     static final double TOLERANCE = 1e-9;
 
     /**
-     * A shape as convex pieces (x0, y0, x1, y1, ...), the diagonals that cut it (each x0, y0,
-     * x1, y1), and whether it is flat: a rectangle of width or height 0, one piece that is a
+     * A shape as convex pieces (x0, y0, x1, y1, ...), the cuts between them (each x0, y0, x1,
+     * y1), and whether it is flat: a rectangle of width or height 0, one piece that is a
      * segment or a point.
      */
-    record Parts(List<double[]> pieces, List<double[]> diagonals, boolean flat) {
+    record Parts(List<double[]> pieces, List<double[]> cuts, boolean flat) {
 
         static Parts of(Shape s) {
             double[] xy = Contacts.corners(s);
@@ -54,10 +59,81 @@ final class Clearance {
             if (SeparatingAxis.concaveVertex(((Polygon) s).raw()) < 0) {
                 return new Parts(List.of(xy), List.of(), false);
             }
-            List<double[]> diagonals = new ArrayList<>();
-            return new Parts(triangulate(xy, diagonals), diagonals, false);
+            List<int[]> cuts = new ArrayList<>();
+            List<double[]> pieces = new ArrayList<>();
+            for (int[] piece : convexPieces(xy, cuts)) {
+                double[] c = new double[2 * piece.length];
+                for (int k = 0; k < piece.length; k++) {
+                    c[2 * k] = xy[2 * piece[k]];
+                    c[2 * k + 1] = xy[2 * piece[k] + 1];
+                }
+                pieces.add(c);
+            }
+            List<double[]> segments = new ArrayList<>();
+            for (int[] d : cuts) {
+                segments.add(new double[] {xy[2 * d[0]], xy[2 * d[0] + 1], xy[2 * d[1]], xy[2 * d[1] + 1]});
+            }
+            return new Parts(pieces, segments, false);
         }
     }
+
+    /**
+     * A convex region of moves, counter-clockwise, with its edges' lengths and its bounding
+     * box for quick misses.
+     */
+    private record Region(double[] m, double[] lengths, double minX, double minY, double maxX, double maxY) {
+
+        static Region of(double[] m) {
+            int n = m.length / 2;
+            double[] lengths = new double[n];
+            double minX = m[0], minY = m[1], maxX = m[0], maxY = m[1];
+            for (int i = 0; i < n; i++) {
+                int j = (i + 1) % n;
+                lengths[i] = length(m[2 * j] - m[2 * i], m[2 * j + 1] - m[2 * i + 1]);
+                minX = Math.min(minX, m[2 * i]);
+                maxX = Math.max(maxX, m[2 * i]);
+                minY = Math.min(minY, m[2 * i + 1]);
+                maxY = Math.max(maxY, m[2 * i + 1]);
+            }
+            return new Region(m, lengths, minX, minY, maxX, maxY);
+        }
+
+        /**
+         * The open interval of parameters t in which the point e0 + t (e1 - e0) of segment e
+         * (its first four values) is inside this region by more than tol, or null. Each edge
+         * of the region gives one linear condition on t; for whole numbers the conditions at
+         * t = 0 and t = 1 are decided exactly.
+         */
+        double[] span(double[] e, double tol) {
+            if (Math.max(e[0], e[2]) <= minX || Math.min(e[0], e[2]) >= maxX
+                    || Math.max(e[1], e[3]) <= minY || Math.min(e[1], e[3]) >= maxY) {
+                return null;
+            }
+            double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
+            int n = m.length / 2;
+            for (int i = 0; i < n; i++) {
+                int j = (i + 1) % n;
+                double margin = tol * lengths[i];
+                double s0 = Lines.orient(m[2 * i], m[2 * i + 1], m[2 * j], m[2 * j + 1], e[0], e[1]) - margin;
+                double s1 = Lines.orient(m[2 * i], m[2 * i + 1], m[2 * j], m[2 * j + 1], e[2], e[3]) - margin;
+                // Inside this edge's half-plane where s0 + t (s1 - s0) > 0.
+                if (s0 > 0 && s1 > 0) {
+                    continue;
+                }
+                if (s0 <= 0 && s1 <= 0) {
+                    return null;
+                }
+                double t = s0 / (s0 - s1);
+                if (s1 > s0) {
+                    lo = Math.max(lo, t);
+                } else {
+                    hi = Math.min(hi, t);
+                }
+            }
+            return lo < hi && hi > 0 && lo < 1 ? new double[] {lo, hi} : null;
+        }
+    }
+
 
     // ---------------------------------------------------------------- polygons and rectangles
 
@@ -67,25 +143,25 @@ final class Clearance {
      */
     static Contact polygons(Parts a, Parts b) {
         // The moves v of b that overlap piece p of a and piece q of b: inside hull(p - q).
-        List<double[]> regions = new ArrayList<>();
+        List<Region> regions = new ArrayList<>();
         for (double[] p : a.pieces()) {
             for (double[] q : b.pieces()) {
                 double[] m = hull(differences(p, q));
                 if (m.length >= 6) {
-                    regions.add(m);
+                    regions.add(Region.of(m));
                 }
             }
         }
-        // A flat rectangle lying exactly along a diagonal is inside the polygon but inside none
-        // of its open triangles: those moves form a line, added here as a region of its own.
+        // A flat rectangle lying exactly along a cut is inside the polygon but inside none of
+        // its open pieces: those moves form a line, added here as a region of its own.
         List<double[]> lines = new ArrayList<>();
         if (a.flat()) {
-            for (double[] d : b.diagonals()) {
+            for (double[] d : b.cuts()) {
                 addLine(lines, a.pieces().get(0), d);
             }
         }
         if (b.flat()) {
-            for (double[] d : a.diagonals()) {
+            for (double[] d : a.cuts()) {
                 addLine(lines, d, b.pieces().get(0));
             }
         }
@@ -93,112 +169,128 @@ final class Clearance {
             return null;
         }
         double extent = 0;
-        for (double[] m : regions) {
-            for (double v : m) {
-                extent = Math.max(extent, Math.abs(v));
-            }
+        for (Region r : regions) {
+            extent = Math.max(extent, Math.max(Math.max(-r.minX(), r.maxX()), Math.max(-r.minY(), r.maxY())));
         }
         double tol = TOLERANCE * (1 + extent);
 
-        // Every edge of every region, with its distance from the origin (a lower bound for any
-        // candidate on it).
+        // Every edge of every region, nearest first: its distance from the origin is a lower
+        // bound for any candidate on it, so the search stops at the first edge farther away
+        // than the best found.
         List<double[]> edges = new ArrayList<>();
-        List<Integer> owner = new ArrayList<>();
         for (int k = 0; k < regions.size(); k++) {
-            double[] m = regions.get(k);
+            double[] m = regions.get(k).m();
             int n = m.length / 2;
             for (int i = 0; i < n; i++) {
                 int j = (i + 1) % n;
                 edges.add(new double[] {m[2 * i], m[2 * i + 1], m[2 * j], m[2 * j + 1],
-                        segmentDistance(m[2 * i], m[2 * i + 1], m[2 * j], m[2 * j + 1])});
-                owner.add(k);
+                        segmentDistance(m[2 * i], m[2 * i + 1], m[2 * j], m[2 * j + 1]), k});
             }
         }
-        Contacts.Best best = new Contacts.Best();
+        edges.sort((e, f) -> Double.compare(e[4], f[4]));
+        Contacts.Best best = new Contacts.Best(2 * tol);
+        List<double[]> inside = new ArrayList<>();
         for (double[] e : edges) {
-            // The corner at the edge's start (each corner starts one edge of its region).
-            offerPoint(best, e[0], e[1], regions, lines, tol);
-            // The foot of the perpendicular: there the edge's outward normal is the direction.
-            double ex = e[2] - e[0], ey = e[3] - e[1];
-            double len2 = ex * ex + ey * ey;
-            double along = -(e[0] * ex + e[1] * ey);
-            if (along > 0 && along < len2) {
-                double t = along / len2;
-                double px = e[0] + t * ex, py = e[1] + t * ey;
-                if (!covered(px, py, regions, lines, tol)) {
-                    // Regions run counter-clockwise (positive turn): outward is to the right.
-                    double len = Math.sqrt(len2);
-                    double side = Lines.orient(e[0], e[1], e[2], e[3], 0, 0) / len;
-                    if (side > 0) {
-                        best.offer(ey / len, -ex / len, side);
-                    } else if (side < 0) {
-                        best.offer(-ey / len, ex / len, -side);
+            if (best.beyond(e[4])) {
+                break;
+            }
+            // The parts of the edge inside other regions (or along a line), as open intervals
+            // of the edge's parameter t, from 0 at its start to 1 at its end.
+            inside.clear();
+            boolean buried = false;
+            for (int k = 0; k < regions.size() && !buried; k++) {
+                if (k != (int) e[5]) {
+                    double[] span = regions.get(k).span(e, tol);
+                    if (span != null) {
+                        inside.add(span);
+                        // Most edges lie wholly inside another region: nothing to find there.
+                        buried = span[0] < 0 && span[1] > 1;
                     }
                 }
             }
-        }
-        // Crossings of two regions' edges, nearest edges first, stopping once no crossing can
-        // beat the best candidate so far.
-        Integer[] order = new Integer[edges.size()];
-        for (int i = 0; i < order.length; i++) {
-            order[i] = i;
-        }
-        Arrays.sort(order, (i, j) -> Double.compare(edges.get(i)[4], edges.get(j)[4]));
-        for (int x = 0; x < order.length; x++) {
-            double[] e = edges.get(order[x]);
-            if (e[4] > best.depth) {
-                break;
+            if (buried) {
+                continue;
             }
-            for (int y = x + 1; y < order.length; y++) {
-                double[] f = edges.get(order[y]);
-                if (f[4] > best.depth) {
+            for (double[] l : lines) {
+                double[] span = lineSpan(l, e, tol);
+                if (span != null) {
+                    inside.add(span);
+                }
+            }
+            inside.sort((u, w) -> Double.compare(u[0], w[0]));
+            // The closed gaps between those intervals are on the outline; on each, offer the
+            // point nearest the origin.
+            double ex = e[2] - e[0], ey = e[3] - e[1];
+            double foot = -(e[0] * ex + e[1] * ey) / (ex * ex + ey * ey);
+            double from = 0;
+            for (double[] span : inside) {
+                if (span[0] >= from) {
+                    offerGap(best, e, from, Math.min(span[0], 1), foot);
+                }
+                from = Math.max(from, span[1]);
+                if (from > 1) {
                     break;
                 }
-                if (owner.get(order[x]).equals(owner.get(order[y]))) {
-                    continue;
-                }
-                double[] p = segmentCrossing(e, f);
-                if (p != null) {
-                    offerPoint(best, p[0], p[1], regions, lines, tol);
-                }
+            }
+            if (from <= 1) {
+                offerGap(best, e, from, 1, foot);
             }
         }
         return best.contact();
     }
 
-    /** Offers the move (px, py) if it is outside the overlap set: direction and length. */
-    private static void offerPoint(Contacts.Best best, double px, double py,
-                                   List<double[]> regions, List<double[]> lines, double tol) {
-        double d = Math.hypot(px, py);
-        if (d == 0 || d > best.depth || covered(px, py, regions, lines, tol)) {
+    /**
+     * Offers the point of edge e with parameter between lo and hi (a part outside every
+     * region) that is nearest the origin. At the foot of the perpendicular the edge's outward
+     * normal is the direction: better conditioned than the point's own direction.
+     */
+    private static void offerGap(Contacts.Best best, double[] e, double lo, double hi, double foot) {
+        double ex = e[2] - e[0], ey = e[3] - e[1];
+        double t = Math.max(lo, Math.min(hi, foot));
+        if (t == foot && t > 0 && t < 1) {
+            // Regions run counter-clockwise (positive turn): outward is to the right.
+            double len = length(ex, ey);
+            double side = Lines.orient(e[0], e[1], e[2], e[3], 0, 0) / len;
+            if (side > 0) {
+                best.offer(ey / len, -ex / len, side);
+            } else if (side < 0) {
+                best.offer(-ey / len, ex / len, -side);
+            }
             return;
         }
-        best.offer(px / d, py / d, d);
+        // The ends themselves, not e0 + 1 * (e1 - e0), so that corners stay exact.
+        double px = t == 0 ? e[0] : t == 1 ? e[2] : e[0] + t * ex;
+        double py = t == 0 ? e[1] : t == 1 ? e[3] : e[1] + t * ey;
+        double d = length(px, py);
+        if (d > 0) {
+            best.offer(px / d, py / d, d);
+        }
     }
 
-    /** Is the move (px, py) inside a region or on a line, by more than tol? */
-    private static boolean covered(double px, double py, List<double[]> regions, List<double[]> lines, double tol) {
-        for (double[] m : regions) {
-            if (insideConvex(m, px, py, tol)) {
-                return true;
-            }
+    /**
+     * Where segment e (its first four values) runs along line l (a segment of moves), within
+     * tol: the open interval of e's parameter, or null when e does not run along l.
+     */
+    private static double[] lineSpan(double[] l, double[] e, double tol) {
+        double lx = l[2] - l[0], ly = l[3] - l[1];
+        double len = length(lx, ly);
+        if (Math.abs(Lines.orient(l[0], l[1], l[2], l[3], e[0], e[1])) / len > tol
+                || Math.abs(Lines.orient(l[0], l[1], l[2], l[3], e[2], e[3])) / len > tol) {
+            return null;
         }
-        for (double[] l : lines) {
-            double ex = l[2] - l[0], ey = l[3] - l[1];
-            double len = Math.hypot(ex, ey);
-            double across = Math.abs(Lines.orient(l[0], l[1], l[2], l[3], px, py)) / len;
-            double along = ((px - l[0]) * ex + (py - l[1]) * ey) / len;
-            if (across <= tol && along > tol && along < len - tol) {
-                return true;
-            }
-        }
-        return false;
+        double ex = e[2] - e[0], ey = e[3] - e[1];
+        double elen2 = ex * ex + ey * ey;
+        double a = ((l[0] - e[0]) * ex + (l[1] - e[1]) * ey) / elen2;
+        double b = ((l[2] - e[0]) * ex + (l[3] - e[1]) * ey) / elen2;
+        double margin = tol / Math.sqrt(elen2);
+        double lo = Math.min(a, b) + margin, hi = Math.max(a, b) - margin;
+        return lo < hi ? new double[] {lo, hi} : null;
     }
 
     /** Is the origin (no move) strictly inside a region or on a line? Exact, no tolerance. */
-    private static boolean coversOrigin(List<double[]> regions, List<double[]> lines) {
-        for (double[] m : regions) {
-            if (insideConvex(m, 0, 0, 0)) {
+    private static boolean coversOrigin(List<Region> regions, List<double[]> lines) {
+        for (Region r : regions) {
+            if (insideConvex(r.m(), 0, 0, 0)) {
                 return true;
             }
         }
@@ -218,7 +310,7 @@ final class Clearance {
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
             double o = Lines.orient(m[2 * i], m[2 * i + 1], m[2 * j], m[2 * j + 1], px, py);
-            if (!(o > tol * Math.hypot(m[2 * j] - m[2 * i], m[2 * j + 1] - m[2 * i + 1]))) {
+            if (!(o > tol * length(m[2 * j] - m[2 * i], m[2 * j + 1] - m[2 * i + 1]))) {
                 return false;
             }
         }
@@ -292,12 +384,16 @@ final class Clearance {
      */
     static double[] hull(double[] xy) {
         int n = xy.length / 2;
-        Integer[] order = new Integer[n];
+        // By x, then y; insertion sort, as the point sets are small (pieces times pieces).
+        int[] order = new int[n];
         for (int i = 0; i < n; i++) {
-            order[i] = i;
+            int k = i;
+            while (k > 0 && before(xy, i, order[k - 1])) {
+                order[k] = order[k - 1];
+                k--;
+            }
+            order[k] = i;
         }
-        Arrays.sort(order, (i, j) -> xy[2 * i] != xy[2 * j]
-                ? Double.compare(xy[2 * i], xy[2 * j]) : Double.compare(xy[2 * i + 1], xy[2 * j + 1]));
         double[] h = new double[4 * n + 4];
         int k = 0;
         for (int pass = 0; pass < 2; pass++) {
@@ -318,6 +414,18 @@ final class Clearance {
             return new double[0];
         }
         return Arrays.copyOf(h, 2 * k);
+    }
+
+    private static boolean before(double[] xy, int i, int j) {
+        return xy[2 * i] < xy[2 * j] || (xy[2 * i] == xy[2 * j] && xy[2 * i + 1] < xy[2 * j + 1]);
+    }
+
+    /**
+     * The length of (x, y). Not {@code Math.hypot}, which guards against overflow at a high
+     * price: every value here comes from floats, whose squares fit a double easily.
+     */
+    static double length(double x, double y) {
+        return Math.sqrt(x * x + y * y);
     }
 
     // ------------------------------------------------------------------------------ circles
@@ -346,7 +454,7 @@ final class Clearance {
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
             double ex = p[2 * j] - p[2 * i], ey = p[2 * j + 1] - p[2 * i + 1];
-            double len = Math.hypot(ex, ey);
+            double len = length(ex, ey);
             if (len == 0) {
                 continue;
             }
@@ -355,7 +463,7 @@ final class Clearance {
                     p[2 * j] + r * nx, p[2 * j + 1] + r * ny, nx, ny});
         }
 
-        Contacts.Best best = new Contacts.Best();
+        Contacts.Best best = new Contacts.Best(2 * tol);
         for (double[] o : offsets) {
             offerCentre(best, o[0], o[1], p, r, tol);
             double ex = o[2] - o[0], ey = o[3] - o[1];
@@ -374,41 +482,53 @@ final class Clearance {
         }
         for (int i = 0; i < n; i++) {
             double vx = p[2 * i], vy = p[2 * i + 1];
-            double d = Math.hypot(vx, vy);
+            double d = length(vx, vy);
             if (d > 0) {
                 double k = 1 - r / d;
                 offerCentre(best, vx * k, vy * k, p, r, tol);
             }
         }
-        // Crossings of two pieces, skipping pairs that cannot beat the best so far.
+        // Crossings of two pieces, skipping any piece farther away than the best so far (a
+        // crossing lies on both pieces, so it is at least as far as either).
+        double[] offsetNear = new double[offsets.size()];
         for (int i = 0; i < offsets.size(); i++) {
             double[] o = offsets.get(i);
-            if (segmentDistance(o[0], o[1], o[2], o[3]) > best.depth) {
+            offsetNear[i] = segmentDistance(o[0], o[1], o[2], o[3]);
+        }
+        double[] circleNear = new double[n];
+        for (int v = 0; v < n; v++) {
+            circleNear[v] = length(p[2 * v], p[2 * v + 1]) - r;
+        }
+        for (int i = 0; i < offsets.size(); i++) {
+            if (best.beyond(offsetNear[i])) {
                 continue;
             }
+            double[] o = offsets.get(i);
             for (int j = i + 1; j < offsets.size(); j++) {
-                double[] q = offsets.get(j);
-                double[] c = segmentCrossing(o, q);
-                if (c != null) {
-                    offerCentre(best, c[0], c[1], p, r, tol);
+                if (!best.beyond(offsetNear[j])) {
+                    double[] c = segmentCrossing(o, offsets.get(j));
+                    if (c != null) {
+                        offerCentre(best, c[0], c[1], p, r, tol);
+                    }
                 }
             }
             for (int v = 0; v < n; v++) {
-                if (Math.hypot(p[2 * v], p[2 * v + 1]) - r > best.depth) {
-                    continue;
-                }
-                for (double[] c : segmentCircle(o, p[2 * v], p[2 * v + 1], r)) {
-                    offerCentre(best, c[0], c[1], p, r, tol);
+                if (!best.beyond(circleNear[v])) {
+                    for (double[] c : segmentCircle(o, p[2 * v], p[2 * v + 1], r)) {
+                        offerCentre(best, c[0], c[1], p, r, tol);
+                    }
                 }
             }
         }
         for (int u = 0; u < n; u++) {
-            if (Math.hypot(p[2 * u], p[2 * u + 1]) - r > best.depth) {
+            if (best.beyond(circleNear[u])) {
                 continue;
             }
             for (int v = u + 1; v < n; v++) {
-                for (double[] c : circleCircle(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], r)) {
-                    offerCentre(best, c[0], c[1], p, r, tol);
+                if (!best.beyond(circleNear[v])) {
+                    for (double[] c : circleCircle(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], r)) {
+                        offerCentre(best, c[0], c[1], p, r, tol);
+                    }
                 }
             }
         }
@@ -417,8 +537,8 @@ final class Clearance {
 
     /** Offers moving the centre to (qx, qy), if the circle is clear there. */
     private static void offerCentre(Contacts.Best best, double qx, double qy, double[] p, double r, double tol) {
-        double d = Math.hypot(qx, qy);
-        if (d == 0 || d > best.depth || coveredCentre(qx, qy, p, r, tol)) {
+        double d = length(qx, qy);
+        if (d == 0 || best.beyond(d) || coveredCentre(qx, qy, p, r, tol)) {
             return;
         }
         // The centre moves by q; the polygon, seen from the circle, moves by -q.
@@ -469,10 +589,10 @@ final class Clearance {
         double len2 = ex * ex + ey * ey;
         double along = -(x0 * ex + y0 * ey);
         if (len2 == 0 || along <= 0) {
-            return Math.hypot(x0, y0);
+            return length(x0, y0);
         }
         if (along >= len2) {
-            return Math.hypot(x1, y1);
+            return length(x1, y1);
         }
         return Math.abs(x0 * ey - y0 * ex) / Math.sqrt(len2);
     }
@@ -518,7 +638,7 @@ final class Clearance {
     /** Where two circles of the same radius r cross. */
     private static double[][] circleCircle(double ax, double ay, double bx, double by, double r) {
         double dx = bx - ax, dy = by - ay;
-        double d = Math.hypot(dx, dy);
+        double d = length(dx, dy);
         if (d == 0 || d > 2 * r) {
             return new double[0][];
         }
@@ -531,15 +651,93 @@ final class Clearance {
     // ------------------------------------------------------------------------- triangulation
 
     /**
-     * Cuts a simple polygon into triangles by ear clipping, adding each cut (x0, y0, x1, y1)
-     * to {@code diagonals}. Straight vertices (on the line between their neighbours) are
-     * dropped on the way; they change nothing. Orientation tests only, exact for whole
-     * numbers.
+     * Cuts a simple polygon into convex pieces: triangles by ear clipping, then, cut by cut,
+     * the two pieces on either side are merged whenever the union is still convex (Hertel and
+     * Mehlhorn's method: at most four times the fewest pieces possible, usually far fewer
+     * than triangles). Pieces are vertex indices in the polygon's winding; the cuts kept are
+     * added to {@code cuts}, each as two vertex indices.
+     *
+     * <p>Reference: S. Hertel, K. Mehlhorn, "Fast triangulation of simple polygons", 1983.
+     */
+    static List<int[]> convexPieces(double[] xy, List<int[]> cuts) {
+        List<int[]> diagonals = new ArrayList<>();
+        List<int[]> pieces = triangulate(xy, diagonals);
+        double turn = Math.signum(SeparatingAxis.area2(xy));
+        for (int[] d : diagonals) {
+            int p = pieceWithEdge(pieces, d[0], d[1]);
+            int q = pieceWithEdge(pieces, d[1], d[0]);
+            if (p < 0 || q < 0) {
+                cuts.add(d);
+                continue;
+            }
+            int[] merged = merge(pieces.get(p), pieces.get(q), d[0], d[1]);
+            if (convexAt(xy, merged, d[0], turn) && convexAt(xy, merged, d[1], turn)) {
+                pieces.set(p, merged);
+                pieces.remove(q);
+            } else {
+                cuts.add(d);
+            }
+        }
+        return pieces;
+    }
+
+    /** The piece that runs from vertex u straight to vertex w, or -1. */
+    private static int pieceWithEdge(List<int[]> pieces, int u, int w) {
+        for (int k = 0; k < pieces.size(); k++) {
+            int[] p = pieces.get(k);
+            for (int i = 0; i < p.length; i++) {
+                if (p[i] == u && p[(i + 1) % p.length] == w) {
+                    return k;
+                }
+            }
+        }
+        return -1;
+    }
+
+    /** Piece p (with edge u to w) and piece q (with edge w to u) joined along that edge. */
+    private static int[] merge(int[] p, int[] q, int u, int w) {
+        int[] out = new int[p.length + q.length - 2];
+        int i = 0;
+        while (p[i] != w) {
+            i++;
+        }
+        int k = 0;
+        for (int s = 0; s < p.length; s++) {
+            out[k++] = p[(i + s) % p.length]; // w ... u, all of p
+        }
+        int j = 0;
+        while (q[j] != u) {
+            j++;
+        }
+        for (int s = 1; s < q.length - 1; s++) {
+            out[k++] = q[(j + s) % q.length]; // after u, up to before w
+        }
+        return out;
+    }
+
+    /** Does the piece turn with the polygon (or go straight) at vertex v? */
+    private static boolean convexAt(double[] xy, int[] piece, int v, double turn) {
+        int n = piece.length;
+        for (int i = 0; i < n; i++) {
+            if (piece[i] == v) {
+                return orient(xy, piece[(i + n - 1) % n], v, piece[(i + 1) % n]) * turn >= 0;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Cuts a simple polygon into triangles by ear clipping; each triangle is three vertex
+     * indices in the polygon's winding, and each cut (two vertex indices) is added to
+     * {@code diagonals}. Straight vertices (on the line between their neighbours) are dropped
+     * on the way; they change nothing. Orientation tests only, exact for whole numbers.
+     *
+     * <p>Reference: D. Eberly, "Triangulation by Ear Clipping", 2002.
      *
      * @throws IllegalArgumentException if the polygon has no area or crosses itself (then no
      *                                  ear can be found)
      */
-    static List<double[]> triangulate(double[] xy, List<double[]> diagonals) {
+    static List<int[]> triangulate(double[] xy, List<int[]> diagonals) {
         int n = xy.length / 2;
         double turn = Math.signum(SeparatingAxis.area2(xy));
         if (turn == 0) {
@@ -550,7 +748,7 @@ final class Clearance {
             v[i] = i;
         }
         int count = n;
-        List<double[]> triangles = new ArrayList<>(n - 2);
+        List<int[]> triangles = new ArrayList<>(n - 2);
         while (count > 3) {
             boolean cut = false;
             for (int k = 0; k < count && !cut; k++) {
@@ -560,8 +758,8 @@ final class Clearance {
                     // Straight: b lies on the way from a to c, so dropping it changes nothing.
                     cut = true;
                 } else if (o * turn > 0 && isEar(xy, v, count, a, b, c, turn)) {
-                    triangles.add(new double[] {xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1], xy[2 * c], xy[2 * c + 1]});
-                    diagonals.add(new double[] {xy[2 * a], xy[2 * a + 1], xy[2 * c], xy[2 * c + 1]});
+                    triangles.add(new int[] {a, b, c});
+                    diagonals.add(new int[] {a, c});
                     cut = true;
                 }
                 if (cut) {
@@ -574,8 +772,7 @@ final class Clearance {
             }
         }
         if (orient(xy, v[0], v[1], v[2]) != 0) {
-            triangles.add(new double[] {xy[2 * v[0]], xy[2 * v[0] + 1], xy[2 * v[1]], xy[2 * v[1] + 1],
-                    xy[2 * v[2]], xy[2 * v[2] + 1]});
+            triangles.add(new int[] {v[0], v[1], v[2]});
         }
         return triangles;
     }

@@ -19,7 +19,8 @@ package hitbox;
  * exactly equally short (see below).
  *
  * <h2>Ties and degenerate cases</h2>
- * When several directions are equally short, the tie goes to the most vertical one, and
+ * When several directions are equally short (to within {@link #TIE}, so that rounding does
+ * not decide), the tie goes to the most vertical one, and
  * between opposite directions to the one that pushes a up (normal (0, 1), a lands on b's
  * top): a platformer character standing exactly inside a block is lifted onto it, not sunk
  * into it. In full: the larger {@code |ny|} wins, then the larger {@code nx * ny}, then the
@@ -52,6 +53,13 @@ public record Contact(float nx, float ny, float depth) {
      * vector rounded to floats is within about 1e-7 of length 1, far inside this.
      */
     public static final float UNIT_TOLERANCE = 1e-3f;
+
+    /**
+     * How close two candidate depths must be, relative to their size, to count as equally
+     * short for the tie rule: far below a float's precision (about 1e-7), far above the
+     * rounding of the double arithmetic behind them (about 1e-15).
+     */
+    public static final double TIE = 1e-10;
 
     /**
      * Makes a contact, checking its values.

@@ -20,14 +20,46 @@ final class Contacts {
         double nx;
         double ny;
         double depth = Double.POSITIVE_INFINITY;
+        /**
+         * An absolute slack for ties, for searches whose candidates are only placed to within
+         * a tolerance of their own (see {@link Clearance}); 0 for the exact pairs.
+         */
+        final double tolerance;
 
-        /** Keeps (nx, ny, depth) if it is shorter than the best so far, or ties and wins. */
+        Best() {
+            this(0);
+        }
+
+        Best(double tolerance) {
+            this.tolerance = tolerance;
+        }
+
+        /**
+         * Keeps (nx, ny, depth) if it is shorter than the best so far, or ties and wins.
+         * Depths within {@link Contact#TIE} of each other (relative), or within the search's
+         * tolerance, tie: the same distance reached through different arithmetic (a square
+         * root here, a division there) must not let rounding pick the direction.
+         */
         void offer(double nx, double ny, double depth) {
-            if (depth < this.depth || (depth == this.depth && preferred(nx, ny, this.nx, this.ny))) {
+            double slack = slack(Math.min(depth, this.depth));
+            if (depth < this.depth - slack || (depth <= this.depth + slack && preferred(nx, ny, this.nx, this.ny))) {
                 this.nx = nx;
                 this.ny = ny;
                 this.depth = depth;
             }
+        }
+
+        /**
+         * Can nothing at distance {@code bound} or more beat (or tie with) the best so far?
+         * For pruning a search; uses the same slack as the tie rule, so that a candidate that
+         * ties is still looked at.
+         */
+        boolean beyond(double bound) {
+            return bound > depth + slack(depth);
+        }
+
+        private double slack(double d) {
+            return Math.max(Contact.TIE * d, tolerance);
         }
 
         boolean found() {

@@ -155,7 +155,7 @@ class PolygonContactTest {
         // The T's ear clipping cuts along (20, 20)-(40, 20): a zero-height rect exactly there
         // lies inside no open triangle, but inside the T. Up by 20 to the top edge, or 20 to
         // either side onto the bar's underside, tie; up wins.
-        assertEquals(1, Clearance.Parts.of(T).diagonals().stream()
+        assertEquals(1, Clearance.Parts.of(T).cuts().stream()
                 .filter(d -> d[1] == 20 && d[3] == 20 && Math.min(d[0], d[2]) == 20 && Math.max(d[0], d[2]) == 40).count(),
                 "the cut this test is about");
         assertContact(0, -1, 20, checked(T, new Rect(20, 20, 20, 0)));
@@ -345,20 +345,58 @@ class PolygonContactTest {
     @Property(tries = 200)
     void triangles_coverThePolygon(@ForAll("concave") Polygon p) {
         double[] xy = ContactFixtures.vertices(p);
-        List<double[]> diagonals = new ArrayList<>();
-        List<double[]> triangles = Clearance.triangulate(xy, diagonals);
+        List<int[]> diagonals = new ArrayList<>();
+        List<int[]> triangles = Clearance.triangulate(xy, diagonals);
         // n - 2 triangles, fewer where a vertex is dropped for being straight.
         assertTrue(triangles.size() <= p.size() - 2 && triangles.size() >= p.size() - 2 - straightVertices(xy) - 1);
         assertEquals(triangles.size() - 1, diagonals.size());
+        assertCover(xy, triangles);
+    }
+
+    @Property(tries = 200)
+    void convexPieces_areConvex_coverThePolygon_noMoreThanTriangles(@ForAll("concave") Polygon p) {
+        double[] xy = ContactFixtures.vertices(p);
+        List<int[]> cuts = new ArrayList<>();
+        List<int[]> pieces = Clearance.convexPieces(xy, cuts);
+        assertEquals(pieces.size() - 1, cuts.size());
+        assertTrue(pieces.size() <= Clearance.triangulate(xy, new ArrayList<>()).size());
+        assertEquals(SeparatingAxis.concaveVertex(p.raw()) < 0, pieces.size() == 1, "one piece exactly when convex");
+        for (int[] piece : pieces) {
+            assertTrue(ContactFixtures.isConvexRef(coordinates(xy, piece)), "piece is convex");
+        }
+        assertCover(xy, pieces);
+    }
+
+    @Test
+    void convexPieces_ofTheL_areTwo() {
+        List<int[]> cuts = new ArrayList<>();
+        assertEquals(2, Clearance.convexPieces(ContactFixtures.vertices(L), cuts).size());
+        assertEquals(1, cuts.size());
+    }
+
+    /** The pieces' areas add up to the polygon's and each piece's centre is inside it. */
+    private static void assertCover(double[] xy, List<int[]> pieces) {
         double total = 0;
-        for (double[] t : triangles) {
-            total += Math.abs(SeparatingAxis.area2(t)) / 2;
+        for (int[] piece : pieces) {
+            double[] c = coordinates(xy, piece);
+            total += Math.abs(SeparatingAxis.area2(c)) / 2;
+            double cx = 0, cy = 0;
+            for (int i = 0; i < c.length; i += 2) {
+                cx += c[i];
+                cy += c[i + 1];
+            }
+            assertTrue(ContactFixtures.insideRef(xy, cx / piece.length, cy / piece.length), "each piece lies inside the polygon");
         }
         assertEquals(Math.abs(SeparatingAxis.area2(xy)) / 2, total, 1e-9);
-        for (double[] t : triangles) {
-            double cx = (t[0] + t[2] + t[4]) / 3, cy = (t[1] + t[3] + t[5]) / 3;
-            assertTrue(ContactFixtures.insideRef(xy, cx, cy), "each triangle lies inside the polygon");
+    }
+
+    private static double[] coordinates(double[] xy, int[] piece) {
+        double[] c = new double[2 * piece.length];
+        for (int k = 0; k < piece.length; k++) {
+            c[2 * k] = xy[2 * piece[k]];
+            c[2 * k + 1] = xy[2 * piece[k] + 1];
         }
+        return c;
     }
 
     private static int straightVertices(double[] xy) {
