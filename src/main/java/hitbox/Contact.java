@@ -34,12 +34,17 @@ package hitbox;
  * <h2>Which pairs</h2>
  * Every pair of shapes with area: circles, rectangles (zero-size ones included) and
  * polygons, convex or concave, in either order. Convex pairs use the separating axis theorem
- * ({@link SeparatingAxis}); a circle against a convex polygon, its closest edge or corner;
- * concave polygons are split into triangles and the shortest move that clears all of them
- * is found, so the answer is the true minimum translation for them too (up to a rounding
- * tolerance of about 1e-9 of the shapes' size). A {@link Segment} has no area, so it has no
- * contact: use {@link Shape#overlaps} to test it, or a sweep or ray cast to find where a
- * moving shape first touches it.
+ * ({@link SeparatingAxis}); a circle against a convex polygon, its closest edge or corner.
+ * Concave polygons are cut into convex pieces and the shortest move that clears all of them
+ * together is found, so the answer is the true minimum translation for them too (up to a
+ * rounding tolerance of about 1e-9 of the shapes' size), not just a push out of the nearest
+ * edge, which can land a shape in another part of the polygon. That costs more: tens of
+ * microseconds for a concave polygon of a dozen vertices against a circle or a rectangle,
+ * and around a millisecond for two such concave polygons (the work grows with the product
+ * of their numbers of pieces). Test {@link Shape#overlaps} or the bounds first when many
+ * pairs are apart. A {@link Segment} has no area, so it has no contact: use
+ * {@link Shape#overlaps} to test it, or a sweep or ray cast to find where a moving shape
+ * first touches it.
  *
  * @param nx    the normal's x: the normal has length 1 and points from a to b
  * @param ny    the normal's y (y grows down, so ny &gt; 0 means b is below a)
@@ -64,6 +69,9 @@ public record Contact(float nx, float ny, float depth) {
     /**
      * Makes a contact, checking its values.
      *
+     * @param nx    the normal's x
+     * @param ny    the normal's y
+     * @param depth how far apart to move the shapes, greater than 0
      * @throws IllegalArgumentException if a value is NaN or infinite, the depth is not greater
      *                                  than 0, or the normal's length is not 1 (within
      *                                  {@link #UNIT_TOLERANCE})

@@ -56,6 +56,12 @@ public final class SeparatingAxis {
         /**
          * Makes an axis, checking its values.
          *
+         * @param nx   the direction's x (unit length)
+         * @param ny   the direction's y
+         * @param minA where a's shadow starts
+         * @param maxA where a's shadow ends
+         * @param minB where b's shadow starts
+         * @param maxB where b's shadow ends
          * @throws IllegalArgumentException if a value is NaN or infinite, a shadow ends
          *                                  before it starts, or (nx, ny) does not have length 1
          *                                  (within {@link Contact#UNIT_TOLERANCE})
