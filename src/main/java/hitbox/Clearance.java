@@ -225,7 +225,7 @@ final class Clearance {
             double from = 0;
             for (double[] span : inside) {
                 if (span[0] >= from) {
-                    offerGap(best, e, from, Math.min(span[0], 1), foot);
+                    offerGap(best, e, from, Math.min(span[0], 1), foot, lines, tol);
                 }
                 from = Math.max(from, span[1]);
                 if (from > 1) {
@@ -233,7 +233,7 @@ final class Clearance {
                 }
             }
             if (from <= 1) {
-                offerGap(best, e, from, 1, foot);
+                offerGap(best, e, from, 1, foot, lines, tol);
             }
         }
         return best.contact();
@@ -243,10 +243,19 @@ final class Clearance {
      * Offers the point of edge e with parameter between lo and hi (a part outside every
      * region) that is nearest the origin. At the foot of the perpendicular the edge's outward
      * normal is the direction: better conditioned than the point's own direction.
+     *
+     * <p>A point near a line of moves is not offered. Near a region's outline, "within tol"
+     * means an overlap that small; but a line stands for a flat rectangle lying along a cut,
+     * overlapping over its whole length. Next to such a line both sides are covered by the
+     * regions of the two pieces the cut separates, so nothing nearer is lost.
      */
-    private static void offerGap(Contacts.Best best, double[] e, double lo, double hi, double foot) {
+    private static void offerGap(Contacts.Best best, double[] e, double lo, double hi, double foot,
+                                 List<double[]> lines, double tol) {
         double ex = e[2] - e[0], ey = e[3] - e[1];
         double t = Math.max(lo, Math.min(hi, foot));
+        if (!lines.isEmpty() && onLine(lines, e[0] + t * ex, e[1] + t * ey, tol)) {
+            return;
+        }
         if (t == foot && t > 0 && t < 1) {
             // Regions run counter-clockwise (positive turn): outward is to the right.
             double len = length(ex, ey);
@@ -265,6 +274,20 @@ final class Clearance {
         if (d > 0) {
             best.offer(px / d, py / d, d);
         }
+    }
+
+    /** Is (px, py) within 2 tol of a line of moves, away from the line's open ends? */
+    private static boolean onLine(List<double[]> lines, double px, double py, double tol) {
+        for (double[] l : lines) {
+            double lx = l[2] - l[0], ly = l[3] - l[1];
+            double len = length(lx, ly);
+            double across = Math.abs(Lines.orient(l[0], l[1], l[2], l[3], px, py)) / len;
+            double along = ((px - l[0]) * lx + (py - l[1]) * ly) / len;
+            if (across <= 2 * tol && along > tol && along < len - tol) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

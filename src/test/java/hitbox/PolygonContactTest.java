@@ -168,6 +168,17 @@ class PolygonContactTest {
     }
 
     @Test
+    void flatRectAcrossAToothAndAGap_cannotStopOnTheCut() {
+        // A comb: teeth x 0..1, 2..3, 4..5 from y -2 to 2 on a base from y 2 to 4. Between the
+        // middle tooth and the base runs a cut, y = 2 from x 2 to 3; a flat rect moved onto
+        // it still lies inside the comb. Two long, it fits no gap: it must leave the comb,
+        // 3 up or down or right (a tie, vertical first), or 2 to the side for the second.
+        Polygon comb = Polygon.of(0, -2, 1, -2, 1, 2, 2, 2, 2, -2, 3, -2, 3, 2, 4, 2, 4, -2, 5, -2, 5, 4, 0, 4);
+        assertContact(0, 1, 3, checked(new Rect(2, 1, 2, 0), comb));
+        assertContact(1, 0, 2, checked(new Rect(0, 1, 2, 0), comb));
+    }
+
+    @Test
     void flatRectAlongAnEdge_isNull() {
         assertNull(T.contact(new Rect(20, 60, 20, 0)));
         assertNull(T.contact(new Rect(40, 20, 20, 0)));
