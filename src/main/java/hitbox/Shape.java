@@ -23,6 +23,20 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon {
     }
 
     /**
+     * How this shape and {@code other} overlap: the unit normal from this shape to the other
+     * and the depth that separates them, or null when they do not overlap (touching is not
+     * overlapping). Same as {@link Contact#between Contact.between(this, other)}.
+     *
+     * @param other the other shape, not null
+     * @return the contact, or null when the shapes are apart or touching
+     * @throws IllegalArgumentException if {@code other} is null, or either shape is a
+     *                                  {@link Segment} (a segment has no area to push out of)
+     */
+    default Contact contact(Shape other) {
+        return Contact.between(this, Check.notNull("other", other));
+    }
+
+    /**
      * Is the point in this shape? For shapes with area the outline does not count; for a
      * segment, a point on it counts.
      *

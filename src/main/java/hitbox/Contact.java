@@ -1,0 +1,297 @@
+package hitbox;
+
+/**
+ * How two overlapping shapes overlap: the direction and the distance that pull them apart.
+ *
+ * <p>The normal (nx, ny) has length 1 and points <em>from a to b</em>, the first shape to the
+ * second (dyn4j's {@code Penetration} convention). The depth is the minimum translation:
+ * moving b by {@code normal * depth}, or a by {@code -normal * depth}, or each part of the
+ * way (see {@link Response}), leaves the two shapes just touching. No shorter move in any
+ * direction separates them.
+ *
+ * <h2>When there is a contact</h2>
+ * {@link #between(Shape, Shape)} returns null exactly when the shapes do not overlap by the
+ * <a href="package-summary.html#touching">touching rule</a>, which is exactly when the depth
+ * would be 0 or less: shapes that touch have depth 0 and give null, so a returned contact
+ * always has {@code depth > 0}. (A hair's-width overlap that rounds to a depth of 0 gives
+ * the smallest positive float, {@link Float#MIN_VALUE}.) Swapping the shapes gives the same
+ * depth and the opposite normal, {@link #flipped()}, except where the two directions are
+ * exactly equally short (see below).
+ *
+ * <h2>Ties and degenerate cases</h2>
+ * When several directions are equally short (to within {@link #TIE}, so that rounding does
+ * not decide), the tie goes to the most vertical one, and
+ * between opposite directions to the one that pushes a up (normal (0, 1), a lands on b's
+ * top): a platformer character standing exactly inside a block is lifted onto it, not sunk
+ * into it. In full: the larger {@code |ny|} wins, then the larger {@code nx * ny}, then the
+ * larger {@code ny}, then the larger {@code nx}. For the axis-aligned pairs this is the order
+ * (0, 1), (0, -1), (1, 0), (-1, 0). So circles with the same centre get the normal (0, 1)
+ * and depth {@code r1 + r2}; a circle whose centre is exactly in the middle of a square is
+ * pushed out through the square's top. When the two shapes are placed symmetrically (the
+ * same centre, for example) swapping them gives the same normal, not the opposite one: no
+ * rule can tell the two apart.
+ *
+ * <h2>Which pairs</h2>
+ * Every pair of shapes with area: circles, rectangles (zero-size ones included) and
+ * polygons, convex or concave, in either order. Convex pairs use the separating axis theorem
+ * ({@link SeparatingAxis}); a circle against a convex polygon, its closest edge or corner.
+ * Concave polygons are cut into convex pieces and the shortest move that clears all of them
+ * together is found, so the answer is the true minimum translation for them too (up to a
+ * rounding tolerance of about 1e-9 of the shapes' size), not just a push out of the nearest
+ * edge, which can land a shape in another part of the polygon. That costs more: tens of
+ * microseconds for a concave polygon of a dozen vertices against a circle or a rectangle,
+ * and around a millisecond for two such concave polygons (the work grows with the product
+ * of their numbers of pieces). Test {@link Shape#overlaps} or the bounds first when many
+ * pairs are apart. A {@link Segment} has no area, so it has no contact: use
+ * {@link Shape#overlaps} to test it, or a sweep or ray cast to find where a moving shape
+ * first touches it.
+ *
+ * @param nx    the normal's x: the normal has length 1 and points from a to b
+ * @param ny    the normal's y (y grows down, so ny &gt; 0 means b is below a)
+ * @param depth how far apart to move the shapes along the normal so that they just touch,
+ *              greater than 0
+ */
+public record Contact(float nx, float ny, float depth) {
+
+    /**
+     * How far from 1 the normal's length may be when a contact is made by hand. A unit
+     * vector rounded to floats is within about 1e-7 of length 1, far inside this.
+     */
+    public static final float UNIT_TOLERANCE = 1e-3f;
+
+    /**
+     * How close two candidate depths must be, relative to their size, to count as equally
+     * short for the tie rule: far below a float's precision (about 1e-7), far above the
+     * rounding of the double arithmetic behind them (about 1e-15).
+     */
+    public static final double TIE = 1e-10;
+
+    /**
+     * Makes a contact, checking its values.
+     *
+     * @param nx    the normal's x
+     * @param ny    the normal's y
+     * @param depth how far apart to move the shapes, greater than 0
+     * @throws IllegalArgumentException if a value is NaN or infinite, the depth is not greater
+     *                                  than 0, or the normal's length is not 1 (within
+     *                                  {@link #UNIT_TOLERANCE})
+     */
+    public Contact {
+        // -0 becomes 0, so that a flipped or computed normal equals one written by hand.
+        nx += 0.0f;
+        ny += 0.0f;
+        Check.finite("nx", nx);
+        Check.finite("ny", ny);
+        Check.positive("depth", depth);
+        double length = Math.hypot(nx, ny);
+        if (Math.abs(length - 1) > UNIT_TOLERANCE) {
+            throw new IllegalArgumentException("the normal (nx, ny) must have length 1, but ("
+                    + nx + ", " + ny + ") has length " + (float) length);
+        }
+    }
+
+    /**
+     * The contact between two shapes, or null when they do not overlap (touching is not
+     * overlapping). Same as {@code a.contact(b)}.
+     *
+     * @param a the first shape, not null
+     * @param b the second shape, not null
+     * @return the contact, with its normal pointing from a to b, or null when apart
+     * @throws IllegalArgumentException if a shape is null or is a {@link Segment}, which has
+     *                                  no area to push out of
+     */
+    public static Contact between(Shape a, Shape b) {
+        return Contacts.between(Check.notNull("a", a), Check.notNull("b", b));
+    }
+
+    /**
+     * The contact between two circles, or null when they do not overlap.
+     *
+     * <p>The normal points from the first centre to the second; the depth is
+     * {@code r1 + r2 - dist}. Overlap is decided exactly as by {@link Collide#circleCircle}.
+     * Circles with the same centre get the normal (0, 1) (the first is pushed up) and the
+     * depth {@code r1 + r2}.
+     *
+     * @param x1 the first circle's centre x
+     * @param y1 the first circle's centre y
+     * @param r1 the first circle's radius
+     * @param x2 the second circle's centre x
+     * @param y2 the second circle's centre y
+     * @param r2 the second circle's radius
+     * @return the contact, or null when the circles touch or are apart
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a radius is negative
+     */
+    public static Contact circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
+        Check.finite("x1", x1);
+        Check.finite("y1", y1);
+        Check.size("r1", r1);
+        Check.finite("x2", x2);
+        Check.finite("y2", y2);
+        Check.size("r2", r2);
+        if (!Collide.circleCircle(x1, y1, r1, x2, y2, r2)) {
+            return null;
+        }
+        double dx = (double) x2 - x1;
+        double dy = (double) y2 - y1;
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        double reach = (double) r1 + r2;
+        if (dist == 0) {
+            return of(0, 1, reach);
+        }
+        return of(dx / dist, dy / dist, reach - dist);
+    }
+
+    /**
+     * The contact between a circle (first) and a rectangle (second), or null when they do not
+     * overlap.
+     *
+     * <p>With the centre outside the rectangle, the normal points from the centre to the
+     * rectangle's closest point and the depth is {@code r - dist}. With the centre inside (or
+     * on the outline) the circle is pushed out through the nearest edge: the depth is the
+     * centre's distance to that edge plus r. Overlap is decided exactly as by
+     * {@link Collide#circleRect}.
+     *
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param r  the circle's radius
+     * @param rx the rectangle's left edge
+     * @param ry the rectangle's top edge
+     * @param rw the rectangle's width
+     * @param rh the rectangle's height
+     * @return the contact, normal from the circle to the rectangle, or null when apart
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
+     */
+    public static Contact circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
+        Check.finite("cx", cx);
+        Check.finite("cy", cy);
+        Check.size("r", r);
+        Check.finite("rx", rx);
+        Check.finite("ry", ry);
+        Check.size("rw", rw);
+        Check.size("rh", rh);
+        if (!Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
+            return null;
+        }
+        double right = (double) rx + rw;
+        double bottom = (double) ry + rh;
+        double dx = Collide.clamp(cx, rx, right) - cx;
+        double dy = Collide.clamp(cy, ry, bottom) - cy;
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        if (dist > 0) {
+            return of(dx / dist, dy / dist, r - dist);
+        }
+        // The centre is in the closed rectangle: leave through the nearest edge. The circle
+        // going up out of the top means the rectangle moves down, normal (0, 1).
+        Contacts.Best best = new Contacts.Best();
+        best.offer(0, 1, (double) cy - ry + r);
+        best.offer(0, -1, bottom - cy + r);
+        best.offer(1, 0, (double) cx - rx + r);
+        best.offer(-1, 0, right - cx + r);
+        return best.contact();
+    }
+
+    /**
+     * The contact between a rectangle (first) and a circle (second): {@link #circleRect} seen
+     * from the rectangle, with the normal pointing from the rectangle to the circle.
+     *
+     * @param rx the rectangle's left edge
+     * @param ry the rectangle's top edge
+     * @param rw the rectangle's width
+     * @param rh the rectangle's height
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param r  the circle's radius
+     * @return the contact, or null when apart
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
+     */
+    public static Contact rectCircle(float rx, float ry, float rw, float rh, float cx, float cy, float r) {
+        Contact c = circleRect(cx, cy, r, rx, ry, rw, rh);
+        return c == null ? null : c.flipped();
+    }
+
+    /**
+     * The contact between two rectangles, or null when they do not overlap.
+     *
+     * <p>The normal is one of (0, 1), (0, -1), (1, 0), (-1, 0): whichever way the second
+     * rectangle has the least distance to go, so that an edge of one meets the opposite edge
+     * of the other. This is right for containment too (a small rectangle inside a big one
+     * leaves through the big one's nearest edge). Overlap is decided exactly as by
+     * {@link Collide#rectRect}.
+     *
+     * @param x1 the first rectangle's left edge
+     * @param y1 the first rectangle's top edge
+     * @param w1 the first rectangle's width
+     * @param h1 the first rectangle's height
+     * @param x2 the second rectangle's left edge
+     * @param y2 the second rectangle's top edge
+     * @param w2 the second rectangle's width
+     * @param h2 the second rectangle's height
+     * @return the contact, or null when apart
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
+     */
+    public static Contact rectRect(float x1, float y1, float w1, float h1,
+                                   float x2, float y2, float w2, float h2) {
+        Check.finite("x1", x1);
+        Check.finite("y1", y1);
+        Check.size("w1", w1);
+        Check.size("h1", h1);
+        Check.finite("x2", x2);
+        Check.finite("y2", y2);
+        Check.size("w2", w2);
+        Check.size("h2", h2);
+        if (!Collide.rectRect(x1, y1, w1, h1, x2, y2, w2, h2)) {
+            return null;
+        }
+        // Each candidate: how far the second rectangle moves that way until the edges meet.
+        Contacts.Best best = new Contacts.Best();
+        best.offer(0, 1, (double) y1 + h1 - y2);
+        best.offer(0, -1, (double) y2 + h2 - y1);
+        best.offer(1, 0, (double) x1 + w1 - x2);
+        best.offer(-1, 0, (double) x2 + w2 - x1);
+        return best.contact();
+    }
+
+    /**
+     * The same contact seen from b: the normal reversed, the depth kept.
+     *
+     * @return the contact with the normal pointing from b to a
+     */
+    public Contact flipped() {
+        return new Contact(-nx, -ny, depth);
+    }
+
+    /**
+     * The normal as a vector.
+     *
+     * @return (nx, ny), the unit normal from a to b
+     */
+    public Vec normal() {
+        return new Vec(nx, ny);
+    }
+
+    /**
+     * Which side of b the contact is on, for platformers: a normal pointing down (ny &gt; 0)
+     * means b is below a, so a is on b's {@link Side#TOP} (it has landed); pointing up, b's
+     * {@link Side#BOTTOM}; pointing right, a is at b's {@link Side#LEFT}; pointing left, at
+     * b's {@link Side#RIGHT}.
+     *
+     * <p>The larger component decides; at exactly 45 degrees the vertical one wins, so
+     * landing on a corner counts as landing. Never {@link Side#NONE}: a contact means a hit.
+     *
+     * @return the side of b that a is against
+     */
+    public Side side() {
+        if (Math.abs(ny) >= Math.abs(nx)) {
+            return ny > 0 ? Side.TOP : Side.BOTTOM;
+        }
+        return nx > 0 ? Side.LEFT : Side.RIGHT;
+    }
+
+    /**
+     * A contact from double-precision results. The depth is rounded to float and kept above
+     * 0; the normal is a unit vector already.
+     */
+    static Contact of(double nx, double ny, double depth) {
+        return new Contact((float) nx, (float) ny, Math.max((float) depth, Float.MIN_VALUE));
+    }
+}

@@ -1,0 +1,311 @@
+package hitbox;
+
+/**
+ * What to do after a hit, given its {@link Contact}: push the shapes apart, bounce, or slide.
+ *
+ * <p>Positions and velocities belong to the sketch's own objects, so these methods take
+ * plain floats (or a {@link Vec}) and hand back the new value; nothing is changed in place.
+ * The contact's normal points from a to b, so "a" and "b" below are the first and second
+ * shape given to {@link Contact#between}.
+ *
+ * <p>Velocity responses act only when a is moving into b (its velocity has a part along the
+ * normal). A velocity that already moves a away from b is returned unchanged: reflecting it
+ * would turn it back into b, and an object that is still overlapping after its first bounce
+ * (because it went deep in one frame) would then bounce again every frame, trembling inside
+ * the other instead of leaving it.
+ */
+public final class Response {
+    private Response() {
+    }
+
+    /**
+     * Where a goes when it alone is pushed out of b: moved against the normal by the depth,
+     * so the two just touch.
+     *
+     * @param ax      any point that moves with a (its centre or its corner)
+     * @param ay      that point's y
+     * @param contact the contact between a and b, not null
+     * @return the point's new position
+     * @throws IllegalArgumentException if the contact is null or a coordinate is NaN or
+     *                                  infinite
+     */
+    public static Vec pushOutA(float ax, float ay, Contact contact) {
+        return pushOutA(ax, ay, contact, 1);
+    }
+
+    /**
+     * Where a goes when it takes a share of the push out of b: moved against the normal by
+     * {@code share * depth}. Give b the rest with {@link #pushOutB(float, float, Contact, float)
+     * pushOutB(bx, by, contact, 1 - share)} and the two just touch: 0.5 and 0.5 moves each
+     * half way, a light object can take more than a heavy one.
+     *
+     * @param ax      any point that moves with a (its centre or its corner)
+     * @param ay      that point's y
+     * @param contact the contact between a and b, not null
+     * @param share   how much of the depth a moves, from 0 (a stays) to 1 (a moves it all)
+     * @return the point's new position
+     * @throws IllegalArgumentException if the contact is null, a coordinate is NaN or
+     *                                  infinite, or share is outside [0, 1]
+     */
+    public static Vec pushOutA(float ax, float ay, Contact contact, float share) {
+        return moved("ax", ax, "ay", ay, contact, -share, share);
+    }
+
+    /**
+     * Where b goes when it alone is pushed out of a: moved along the normal by the depth, so
+     * the two just touch.
+     *
+     * @param bx      any point that moves with b (its centre or its corner)
+     * @param by      that point's y
+     * @param contact the contact between a and b, not null
+     * @return the point's new position
+     * @throws IllegalArgumentException if the contact is null or a coordinate is NaN or
+     *                                  infinite
+     */
+    public static Vec pushOutB(float bx, float by, Contact contact) {
+        return pushOutB(bx, by, contact, 1);
+    }
+
+    /**
+     * Where b goes when it takes a share of the push out of a: moved along the normal by
+     * {@code share * depth}. See {@link #pushOutA(float, float, Contact, float)}.
+     *
+     * @param bx      any point that moves with b (its centre or its corner)
+     * @param by      that point's y
+     * @param contact the contact between a and b, not null
+     * @param share   how much of the depth b moves, from 0 (b stays) to 1 (b moves it all)
+     * @return the point's new position
+     * @throws IllegalArgumentException if the contact is null, a coordinate is NaN or
+     *                                  infinite, or share is outside [0, 1]
+     */
+    public static Vec pushOutB(float bx, float by, Contact contact, float share) {
+        return moved("bx", bx, "by", by, contact, share, share);
+    }
+
+    /**
+     * Shape a pushed out of b: {@code a.translated} against the normal by the depth. The
+     * result is the same kind of shape as a.
+     *
+     * @param <S>     the kind of shape
+     * @param a       the first shape of the contact, not null
+     * @param contact the contact between a and b, not null
+     * @return a, moved so that it just touches b
+     * @throws IllegalArgumentException if a shape or the contact is null, or the move gives a
+     *                                  coordinate too large for a float
+     */
+    public static <S extends Shape> S pushOutA(S a, Contact contact) {
+        return pushOutA(a, contact, 1);
+    }
+
+    /**
+     * Shape a pushed out of b by its share of the depth (see
+     * {@link #pushOutA(float, float, Contact, float)}).
+     *
+     * @param <S>     the kind of shape
+     * @param a       the first shape of the contact, not null
+     * @param contact the contact between a and b, not null
+     * @param share   how much of the depth a moves, from 0 to 1
+     * @return a, moved
+     * @throws IllegalArgumentException if a shape or the contact is null, share is outside
+     *                                  [0, 1], or the move gives a coordinate too large for a
+     *                                  float
+     */
+    public static <S extends Shape> S pushOutA(S a, Contact contact, float share) {
+        return translated(Check.notNull("a", a), contact, -share, share);
+    }
+
+    /**
+     * Shape b pushed out of a: {@code b.translated} along the normal by the depth.
+     *
+     * @param <S>     the kind of shape
+     * @param b       the second shape of the contact, not null
+     * @param contact the contact between a and b, not null
+     * @return b, moved so that it just touches a
+     * @throws IllegalArgumentException if a shape or the contact is null, or the move gives a
+     *                                  coordinate too large for a float
+     */
+    public static <S extends Shape> S pushOutB(S b, Contact contact) {
+        return pushOutB(b, contact, 1);
+    }
+
+    /**
+     * Shape b pushed out of a by its share of the depth (see
+     * {@link #pushOutA(float, float, Contact, float)}).
+     *
+     * @param <S>     the kind of shape
+     * @param b       the second shape of the contact, not null
+     * @param contact the contact between a and b, not null
+     * @param share   how much of the depth b moves, from 0 to 1
+     * @return b, moved
+     * @throws IllegalArgumentException if a shape or the contact is null, share is outside
+     *                                  [0, 1], or the move gives a coordinate too large for a
+     *                                  float
+     */
+    public static <S extends Shape> S pushOutB(S b, Contact contact, float share) {
+        return translated(Check.notNull("b", b), contact, share, share);
+    }
+
+    /**
+     * a's velocity after bouncing off b: the part along the normal is reversed and scaled by
+     * the restitution, the part along the surface is kept. Only when a moves into b; a
+     * velocity moving a away from b is returned unchanged (see the class notes).
+     *
+     * <p>When b moves too, pass a's velocity relative to b (a's minus b's) and add b's
+     * velocity back to the result. For b's own bounce, use {@link Contact#flipped()}.
+     *
+     * <p>Reference: the reflection {@code v - (1 + e)(v . n) n}; C. Ericson, <i>Real-Time
+     * Collision Detection</i>, 2005, section 3.3 (reflection about a plane).
+     *
+     * @param vx          a's velocity x
+     * @param vy          a's velocity y
+     * @param contact     the contact between a and b, not null
+     * @param restitution how much of the speed into b comes back out, from 0 (a stops
+     *                    against b) to 1 (a perfect mirror bounce)
+     * @return the new velocity
+     * @throws IllegalArgumentException if the contact is null, a velocity part is NaN or
+     *                                  infinite, or restitution is outside [0, 1]
+     */
+    public static Vec bounce(float vx, float vy, Contact contact, float restitution) {
+        Check.notNull("contact", contact);
+        return bounce(vx, vy, contact.nx(), contact.ny(), restitution);
+    }
+
+    /**
+     * a's velocity after a perfect bounce off b (restitution 1): the part along the normal is
+     * reversed, as a ball off a wall. Only when a moves into b.
+     *
+     * @param vx      a's velocity x
+     * @param vy      a's velocity y
+     * @param contact the contact between a and b, not null
+     * @return the new velocity
+     * @throws IllegalArgumentException if the contact is null or a velocity part is NaN or
+     *                                  infinite
+     */
+    public static Vec bounce(float vx, float vy, Contact contact) {
+        return bounce(vx, vy, contact, 1);
+    }
+
+    /**
+     * {@link #bounce(float, float, Contact, float)} for a {@link Vec} velocity.
+     *
+     * @param velocity    a's velocity, not null
+     * @param contact     the contact between a and b, not null
+     * @param restitution from 0 (stop) to 1 (perfect bounce)
+     * @return the new velocity
+     * @throws IllegalArgumentException if an argument is null, the velocity is NaN or
+     *                                  infinite, or restitution is outside [0, 1]
+     */
+    public static Vec bounce(Vec velocity, Contact contact, float restitution) {
+        Check.notNull("velocity", velocity);
+        return bounce(velocity.x(), velocity.y(), contact, restitution);
+    }
+
+    /**
+     * The bounce on plain floats: velocity (vx, vy) against a surface whose normal (nx, ny)
+     * points from the mover into what it hits. The normal need not have length 1 (it is
+     * scaled to 1), so {@code (bx - ax, by - ay)} between two centres will do.
+     *
+     * @param vx          the mover's velocity x
+     * @param vy          the mover's velocity y
+     * @param nx          the normal's x, pointing from the mover to the obstacle
+     * @param ny          the normal's y
+     * @param restitution from 0 (stop) to 1 (perfect bounce)
+     * @return the new velocity; unchanged if the mover is not moving into the obstacle
+     * @throws IllegalArgumentException if a value is NaN or infinite, the normal is (0, 0), or
+     *                                  restitution is outside [0, 1]
+     */
+    public static Vec bounce(float vx, float vy, float nx, float ny, float restitution) {
+        Check.finite("vx", vx);
+        Check.finite("vy", vy);
+        Check.finite("nx", nx);
+        Check.finite("ny", ny);
+        Check.finite("restitution", restitution);
+        if (restitution < 0 || restitution > 1) {
+            throw new IllegalArgumentException("restitution must be between 0 and 1, was " + restitution);
+        }
+        double len = Math.hypot(nx, ny);
+        if (len == 0) {
+            throw new IllegalArgumentException("the normal (nx, ny) must not be (0, 0): it gives the direction of the hit");
+        }
+        double ux = nx / len, uy = ny / len;
+        double into = vx * ux + vy * uy;
+        if (!(into > 0)) {
+            return new Vec(vx, vy);
+        }
+        double k = (1 + (double) restitution) * into;
+        return new Vec((float) (vx - k * ux), (float) (vy - k * uy));
+    }
+
+    /**
+     * a's velocity sliding along b: the part into b removed, the part along the surface
+     * kept, as a character walking along a wall or a box sliding down a slope. Only when a
+     * moves into b; otherwise unchanged. The same as a bounce with restitution 0.
+     *
+     * @param vx      a's velocity x
+     * @param vy      a's velocity y
+     * @param contact the contact between a and b, not null
+     * @return the new velocity
+     * @throws IllegalArgumentException if the contact is null or a velocity part is NaN or
+     *                                  infinite
+     */
+    public static Vec slide(float vx, float vy, Contact contact) {
+        return bounce(vx, vy, contact, 0);
+    }
+
+    /**
+     * {@link #slide(float, float, Contact)} for a {@link Vec} velocity.
+     *
+     * @param velocity a's velocity, not null
+     * @param contact  the contact between a and b, not null
+     * @return the new velocity
+     * @throws IllegalArgumentException if an argument is null or the velocity is NaN or
+     *                                  infinite
+     */
+    public static Vec slide(Vec velocity, Contact contact) {
+        return bounce(velocity, contact, 0);
+    }
+
+    /**
+     * The slide on plain floats: velocity (vx, vy) against a surface whose normal (nx, ny)
+     * points from the mover into the obstacle, any length but 0.
+     *
+     * @param vx the mover's velocity x
+     * @param vy the mover's velocity y
+     * @param nx the normal's x, pointing from the mover to the obstacle
+     * @param ny the normal's y
+     * @return the new velocity; unchanged if the mover is not moving into the obstacle
+     * @throws IllegalArgumentException if a value is NaN or infinite, or the normal is (0, 0)
+     */
+    public static Vec slide(float vx, float vy, float nx, float ny) {
+        return bounce(vx, vy, nx, ny, 0);
+    }
+
+    /** (x, y) moved along the normal by {@code signedShare * depth}, after checking the share. */
+    private static Vec moved(String xName, float x, String yName, float y, Contact contact,
+                             float signedShare, float share) {
+        Check.notNull("contact", contact);
+        Check.finite(xName, x);
+        Check.finite(yName, y);
+        checkShare(share);
+        double d = (double) signedShare * contact.depth();
+        return new Vec((float) (x + d * contact.nx()), (float) (y + d * contact.ny()));
+    }
+
+    /** The shape moved along the normal by {@code signedShare * depth}, after checking the share. */
+    // Every Shape.translated returns a shape of its own kind (the sealed family's contract,
+    // and each record narrows the return type), so the cast back to S is safe.
+    @SuppressWarnings("unchecked")
+    private static <S extends Shape> S translated(S s, Contact contact, float signedShare, float share) {
+        Check.notNull("contact", contact);
+        checkShare(share);
+        double d = (double) signedShare * contact.depth();
+        return (S) s.translated((float) (d * contact.nx()), (float) (d * contact.ny()));
+    }
+
+    private static void checkShare(float share) {
+        Check.finite("share", share);
+        if (share < 0 || share > 1) {
+            throw new IllegalArgumentException("share must be between 0 and 1, was " + share);
+        }
+    }
+}
