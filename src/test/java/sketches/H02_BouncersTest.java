@@ -97,29 +97,15 @@ class H02_BouncersTest {
         SketchRun.Result<H02_Bouncers> on = SketchRun.of(new H02_Bouncers()).script(new Script().frames(158).key(2, 'd')).run();
         PImage a = off.lastFrame();
         PImage b = on.lastFrame();
-        assertTrue(differing(a, b) > 1000, "the overlay changes what is drawn");
+        assertTrue(SketchPixels.differing(a, b) > 1000, "the overlay changes what is drawn");
         // The counts label sits in the top-left corner, drawn over whatever is there.
-        assertTrue(differing(a, b, 8, 8, 200, 40) > 200, "the counts are written top left");
+        assertTrue(SketchPixels.differing(a, b, 8, 8, 200, 40) > 200, "the counts are written top left");
         H02_Bouncers.Bouncer zero = on.sketch().bouncers.get(0);
         int cx = (int) (zero.x + on.sketch().size / 2);
         int cy = (int) (zero.y + on.sketch().size / 2);
-        assertTrue(differing(a, b, cx - 20, cy - 20, cx + 20, cy + 20) > 50, "bouncer 0 is ringed");
+        assertTrue(SketchPixels.differing(a, b, cx - 20, cy - 20, cx + 20, cy + 20) > 50, "bouncer 0 is ringed");
         assertFalse(on.sketch().bouncers.get(0).x != off.sketch().bouncers.get(0).x, "the overlay does not change the run");
     }
 
-    private static int differing(PImage a, PImage b) {
-        return differing(a, b, 0, 0, a.width - 1, a.height - 1);
-    }
 
-    private static int differing(PImage a, PImage b, int x0, int y0, int x1, int y1) {
-        int n = 0;
-        for (int x = Math.max(0, x0); x <= Math.min(a.width - 1, x1); x++) {
-            for (int y = Math.max(0, y0); y <= Math.min(a.height - 1, y1); y++) {
-                if (a.get(x, y) != b.get(x, y)) {
-                    n++;
-                }
-            }
-        }
-        return n;
-    }
 }

@@ -77,31 +77,10 @@ class S06_MovingObjectsTest {
                 .capture(20).capture(22).run();
         PImage off = r.frame(20);
         PImage on = r.frame(22);
-        assertTrue(differing(off, on) > 500, "the overlay changes what is drawn");
-        assertEquals(0, count(off, Overlay.MISS), "no 'not colliding' green without the overlay");
-        assertTrue(count(on, Overlay.MISS) > 100, "the free next-position boxes and their labels are green");
+        assertTrue(SketchPixels.differing(off, on) > 500, "the overlay changes what is drawn");
+        assertEquals(0, SketchPixels.count(off, Overlay.MISS), "no 'not colliding' green without the overlay");
+        assertTrue(SketchPixels.count(on, Overlay.MISS) > 100, "the free next-position boxes and their labels are green");
     }
 
-    private static int differing(PImage a, PImage b) {
-        a.loadPixels();
-        b.loadPixels();
-        int n = 0;
-        for (int i = 0; i < a.pixels.length; i++) {
-            if (a.pixels[i] != b.pixels[i]) {
-                n++;
-            }
-        }
-        return n;
-    }
 
-    private static int count(PImage image, int colour) {
-        image.loadPixels();
-        int n = 0;
-        for (int p : image.pixels) {
-            if ((p | 0xFF000000) == (colour | 0xFF000000)) {
-                n++;
-            }
-        }
-        return n;
-    }
 }

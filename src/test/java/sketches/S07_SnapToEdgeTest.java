@@ -163,7 +163,7 @@ class S07_SnapToEdgeTest {
         SketchRun.Result<S07_SnapToEdge> off = SketchRun.of(new S07_SnapToEdge()).script(plain).run();
         SketchRun.Result<S07_SnapToEdge> on = SketchRun.of(new S07_SnapToEdge()).script(maths).run();
         assertEquals(Side.BOTTOM, on.sketch().ySide, "frame 102 is the head bump");
-        assertTrue(differing(off.lastFrame(), on.lastFrame()) > 500, "the overlay changes what is drawn");
+        assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame()) > 500, "the overlay changes what is drawn");
         int sideY = (int) level.shelf.bottom();
         int midX = (int) (level.shelf.x() + level.shelf.w() / 2) - 30;  // along the shelf, clear of the player
         assertEquals(Overlay.GUIDE, on.lastFrame().get(midX, sideY), "the BOTTOM side is marked");
@@ -172,15 +172,4 @@ class S07_SnapToEdgeTest {
         assertTrue(off.lastFrame().get(midX, sideY) != Overlay.GUIDE, "no mark without the overlay");
     }
 
-    private static int differing(PImage a, PImage b) {
-        a.loadPixels();
-        b.loadPixels();
-        int n = 0;
-        for (int i = 0; i < a.pixels.length; i++) {
-            if (a.pixels[i] != b.pixels[i]) {
-                n++;
-            }
-        }
-        return n;
-    }
 }

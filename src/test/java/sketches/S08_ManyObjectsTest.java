@@ -133,31 +133,10 @@ class S08_ManyObjectsTest {
                 .capture(20).capture(24).run();
         PImage off = r.frame(20);
         PImage on = r.frame(24);
-        assertTrue(differing(off, on) > 1000, "the overlay changes what is drawn");
-        assertEquals(0, count(off, Overlay.MISS), "no green without the overlay");
-        assertTrue(count(on, Overlay.MISS) > 100, "the free next-position boxes are green");
+        assertTrue(SketchPixels.differing(off, on) > 1000, "the overlay changes what is drawn");
+        assertEquals(0, SketchPixels.count(off, Overlay.MISS), "no green without the overlay");
+        assertTrue(SketchPixels.count(on, Overlay.MISS) > 100, "the free next-position boxes are green");
     }
 
-    private static int differing(PImage a, PImage b) {
-        a.loadPixels();
-        b.loadPixels();
-        int n = 0;
-        for (int i = 0; i < a.pixels.length; i++) {
-            if (a.pixels[i] != b.pixels[i]) {
-                n++;
-            }
-        }
-        return n;
-    }
 
-    private static int count(PImage image, int colour) {
-        image.loadPixels();
-        int n = 0;
-        for (int p : image.pixels) {
-            if (p == colour) {
-                n++;
-            }
-        }
-        return n;
-    }
 }

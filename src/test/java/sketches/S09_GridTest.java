@@ -126,40 +126,17 @@ class S09_GridTest {
         Script maths = new Script().frames(5).mouse(1, 254, 172).key(2, 'd');
         SketchRun.Result<S09_Grid> off = SketchRun.of(new S09_Grid()).script(plain).run();
         SketchRun.Result<S09_Grid> on = SketchRun.of(new S09_Grid()).script(maths).run();
-        assertTrue(differing(off.lastFrame(), on.lastFrame()) > 1000, "the overlay changes what is drawn");
+        assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame()) > 1000, "the overlay changes what is drawn");
         Grid grid = on.sketch().grid;
         // The mouse's cell, (12, 8), is outlined; its left edge is at x 240.
         assertEquals(12, grid.colAt(254));
-        assertTrue(count(on.lastFrame(), 238, 165, 243, 175, Overlay.GUIDE) > 0, "the mouse's cell is outlined");
-        assertEquals(0, count(off.lastFrame(), 238, 165, 243, 175, Overlay.GUIDE), "not without the overlay");
+        assertTrue(SketchPixels.count(on.lastFrame(), 238, 165, 243, 175, Overlay.GUIDE) > 0, "the mouse's cell is outlined");
+        assertEquals(0, SketchPixels.count(off.lastFrame(), 238, 165, 243, 175, Overlay.GUIDE), "not without the overlay");
         // The right neighbour of (0, 0) is free: outlined green.
         assertTrue(grid.canMove(0, 0, 1, 0));
-        assertTrue(count(on.lastFrame(), 37, 5, 43, 15, Overlay.MISS) > 0, "the free neighbour (1, 0) is outlined green");
-        assertEquals(0, count(off.lastFrame(), 37, 5, 43, 15, Overlay.MISS), "not without the overlay");
+        assertTrue(SketchPixels.count(on.lastFrame(), 37, 5, 43, 15, Overlay.MISS) > 0, "the free neighbour (1, 0) is outlined green");
+        assertEquals(0, SketchPixels.count(off.lastFrame(), 37, 5, 43, 15, Overlay.MISS), "not without the overlay");
     }
 
-    /** How many pixels in [x0, x1] x [y0, y1] have exactly this colour. */
-    private static int count(PImage image, int x0, int y0, int x1, int y1, int colour) {
-        int n = 0;
-        for (int x = x0; x <= x1; x++) {
-            for (int y = y0; y <= y1; y++) {
-                if (image.get(x, y) == colour) {
-                    n++;
-                }
-            }
-        }
-        return n;
-    }
 
-    private static int differing(PImage a, PImage b) {
-        a.loadPixels();
-        b.loadPixels();
-        int n = 0;
-        for (int i = 0; i < a.pixels.length; i++) {
-            if (a.pixels[i] != b.pixels[i]) {
-                n++;
-            }
-        }
-        return n;
-    }
 }

@@ -41,4 +41,62 @@ final class SketchPixels {
         }
         return n;
     }
+
+    /**
+     * Counts the pixels in a region that differ between two frames of the same size.
+     *
+     * @param a  one frame
+     * @param b  the other
+     * @param x0 the region's left column (clamped to the frame)
+     * @param y0 the region's top row
+     * @param x1 the region's right column, included
+     * @param y1 the region's bottom row, included
+     * @return how many pixels differ there
+     */
+    static int differing(PImage a, PImage b, int x0, int y0, int x1, int y1) {
+        int n = 0;
+        for (int x = Math.max(0, x0); x <= Math.min(a.width - 1, x1); x++) {
+            for (int y = Math.max(0, y0); y <= Math.min(a.height - 1, y1); y++) {
+                if (a.get(x, y) != b.get(x, y)) {
+                    n++;
+                }
+            }
+        }
+        return n;
+    }
+
+    /**
+     * Counts the pixels of one colour (frames are opaque, so alpha is not compared).
+     *
+     * @param image  what a frame drew
+     * @param colour the colour, e.g. Palette.HIT
+     * @return how many pixels have it
+     */
+    static int count(PImage image, int colour) {
+        return count(image, 0, 0, image.width - 1, image.height - 1, colour);
+    }
+
+    /**
+     * Counts the pixels of one colour in a region (alpha is not compared).
+     *
+     * @param image  what a frame drew
+     * @param x0     the region's left column
+     * @param y0     the region's top row
+     * @param x1     the region's right column, included
+     * @param y1     the region's bottom row, included
+     * @param colour the colour
+     * @return how many pixels there have it
+     */
+    static int count(PImage image, int x0, int y0, int x1, int y1, int colour) {
+        image.loadPixels();
+        int n = 0;
+        for (int y = Math.max(0, y0); y <= Math.min(image.height - 1, y1); y++) {
+            for (int x = Math.max(0, x0); x <= Math.min(image.width - 1, x1); x++) {
+                if ((image.pixels[y * image.width + x] | 0xFF000000) == (colour | 0xFF000000)) {
+                    n++;
+                }
+            }
+        }
+        return n;
+    }
 }
