@@ -77,6 +77,25 @@ public record Rect(float x, float y, float w, float h) implements Shape {
         return Collide.rectPoint(x, y, w, h, px, py);
     }
 
+    /**
+     * The region inside both rectangles: what a platformer draws as "the overlap", and the
+     * sizes {@link Snap#pushOut} compares.
+     *
+     * @param other the other rectangle
+     * @return the overlap, or null when they do not overlap ({@link Collide#rectRect} is
+     *         false; rectangles that only touch have no overlap)
+     * @throws IllegalArgumentException if {@code other} is null
+     */
+    public Rect intersection(Rect other) {
+        Check.notNull("other", other);
+        if (!Collide.rectRect(x, y, w, h, other.x, other.y, other.w, other.h)) {
+            return null;
+        }
+        float left = Math.max(x, other.x);
+        float top = Math.max(y, other.y);
+        return new Rect(left, top, Math.min(right(), other.right()) - left, Math.min(bottom(), other.bottom()) - top);
+    }
+
     /** {@inheritDoc} A rectangle is its own bounds. */
     @Override
     public Rect bounds() {

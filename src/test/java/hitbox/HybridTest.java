@@ -34,11 +34,17 @@ class HybridTest {
             "circle 0 0 5, rect 4 4 10 10, false, PRECISE, a circle near a box's corner",
             "circle 0 0 5, rect 3 3 10 10, true, PRECISE, a circle over a box's corner",
             "rect 0 0 0 0, rect -5 -5 10 10, true, PRECISE, a zero-size box inside a box",
-            "rect 5 5 0 0, rect 5 5 0 0, false, PRECISE, two zero-size boxes never collide",
+            "rect 5 5 0 0, rect 5 5 0 0, false, PRECISE, a point on a point does not collide",
             "rect 10 10 0 0, rect 0 0 10 10, false, PRECISE, a point on the corner",
             "circle 0 0 5, rect 20 20 10 10, false, CIRCLES, circle and box far apart",
             "rect -3 -4 6 8, rect 7 -4 6 8, false, BOXES, bounding circles exactly touching are not apart",
             "rect -3 -4 6 8, rect 7.5 -4 6 8, false, CIRCLES, bounding circles just apart",
+            "segment 0 0 10 0, segment 10 0 20 5, true, PRECISE, segments meeting end to end collide",
+            "polygon 0 0 10 0 0 10, polygon 10 10 20 10 20 20, false, PRECISE, triangles whose boxes touch at a corner",
+            "polygon 0 0 10 0 0 10, polygon 6 6 20 6 6 20, false, PRECISE, boxes overlap but the triangles do not",
+            "polygon 0 0 10 0 0 10, polygon 2 2 20 2 2 20, true, PRECISE, overlapping triangles",
+            "polygon 0 0 10 0 0 10, circle 100 100 5, false, CIRCLES, a triangle and a far circle",
+            "segment 0 0 10 10, polygon 20 0 30 0 30 10, false, CIRCLES, a segment and a far triangle",
     })
     void check_shapes(String a, String b, boolean overlaps, Hybrid.Stage stage, String scenario) {
         Shape sa = shape(a), sb = shape(b);
@@ -167,6 +173,11 @@ class HybridTest {
         for (int i = 1; i < p.length; i++) {
             v[i - 1] = Float.parseFloat(p[i]);
         }
-        return p[0].equals("circle") ? new Circle(v[0], v[1], v[2]) : new Rect(v[0], v[1], v[2], v[3]);
+        return switch (p[0]) {
+            case "circle" -> new Circle(v[0], v[1], v[2]);
+            case "segment" -> new Segment(v[0], v[1], v[2], v[3]);
+            case "polygon" -> Polygon.of(v);
+            default -> new Rect(v[0], v[1], v[2], v[3]);
+        };
     }
 }
