@@ -18,11 +18,12 @@ import processing.event.MouseEvent;
  * the Processing IDE) leaves the gallery open.
  */
 public final class Gallery extends PApplet {
-    private static final int COLUMNS = 4;
-    private static final int THUMB_W = 200;
-    private static final int THUMB_H = 150;
-    private static final int CELL_W = 224;
-    private static final int CELL_H = 214;
+    private static final int COLUMNS = 5;
+    // 3:2, the shape of most sketches (600 x 400); other shapes are fitted inside, not squeezed.
+    private static final int THUMB_W = 192;
+    private static final int THUMB_H = 128;
+    private static final int CELL_W = 208;
+    private static final int CELL_H = 212;
     private static final int TOP = 64;
     private static final int MARGIN = 16;
 
@@ -76,7 +77,8 @@ public final class Gallery extends PApplet {
             File png = info.screenshot();
             PImage image = png.isFile() ? loadImage(png.getAbsolutePath()) : null;
             if (image != null) {
-                image.resize(THUMB_W, THUMB_H);
+                float scale = Math.min((float) THUMB_W / image.width, (float) THUMB_H / image.height);
+                image.resize(Math.round(image.width * scale), Math.round(image.height * scale));
             }
             thumbs.add(image);
         }
@@ -99,7 +101,7 @@ public final class Gallery extends PApplet {
             rect(x, y, CELL_W - 12, CELL_H - 12, 6);
             PImage thumb = thumbs.get(i);
             if (thumb != null) {
-                image(thumb, x + 6, y + 6);
+                image(thumb, x + 6 + (THUMB_W - thumb.width) / 2f, y + 6 + (THUMB_H - thumb.height) / 2f);
             } else {
                 fill(60);
                 rect(x + 6, y + 6, THUMB_W, THUMB_H);
@@ -111,22 +113,22 @@ public final class Gallery extends PApplet {
             textAlign(LEFT, TOP);
             fill(235);
             textSize(13);
-            text(info.title(), x + 6, y + THUMB_H + 10, THUMB_W, 18);
+            text(info.title(), x + 6, y + THUMB_H + 10, THUMB_W, 36);
             fill(150);
             textSize(11);
-            text(info.section().isEmpty() ? info.name() : info.section(), x + 6, y + THUMB_H + 28, THUMB_W, 30);
+            text(info.section().isEmpty() ? info.name() : info.section(), x + 6, y + THUMB_H + 46, THUMB_W, 30);
         }
         // The header is drawn last so thumbnails scroll under it.
         noStroke();
         fill(24, 26, 32);
         rect(0, 0, width, TOP - 8);
         fill(255);
-        textAlign(LEFT, TOP);
+        textAlign(LEFT, BASELINE);
         textSize(20);
-        text("Hitbox sketches", MARGIN, 12);
+        text("Hitbox sketches", MARGIN, 32);
         fill(170);
         textSize(12);
-        text(status, MARGIN, 38);
+        text(status, MARGIN, 50);
     }
 
     /**

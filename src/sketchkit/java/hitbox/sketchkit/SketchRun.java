@@ -155,19 +155,36 @@ public final class SketchRun<S extends PApplet> {
         sketch.registerMethod("post", hooks);
         String name = sketch.getClass().getSimpleName();
         PApplet.runSketch(new String[] {PApplet.ARGS_LOCATION + "=40,40", name}, sketch);
-        // Processing's own handler only prints; this one also ends the wait.
-        Thread.setDefaultUncaughtExceptionHandler((t, e) -> hooks.fail(e));
+        // Processing's own handler only prints; this one also ends the wait. Only this run's
+        // animation thread counts (before its first frame, any thread: setup() may throw).
+        Thread.setDefaultUncaughtExceptionHandler((t, e) -> {
+            Thread mine = hooks.thread;
+            if (mine == null || mine == t) {
+                hooks.fail(e);
+            } else {
+                e.printStackTrace();
+            }
+        });
         try {
             hooks.await(name);
         } finally {
-            close(sketch);
+            close(sketch, hooks.thread);
         }
         return new Result<>(sketch, hooks.framesDone, hooks.images, hooks.last);
     }
 
-    private static void close(PApplet sketch) {
+    private static void close(PApplet sketch, Thread animation) {
         sketch.noLoop();
         sketch.dispose();
+        // The animation thread shows one last frame after it is told to stop; the window must
+        // outlive it, or that frame fails on a buffer that is gone.
+        if (animation != null) {
+            try {
+                animation.join(5_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
         if (sketch.getSurface() instanceof PSurfaceAWT surface
                 && surface.getNative() instanceof PSurfaceAWT.SmoothCanvas canvas) {
             Frame frame = canvas.getFrame();
@@ -186,6 +203,7 @@ public final class SketchRun<S extends PApplet> {
         private volatile PImage last;
         private volatile boolean finished;
         private volatile int framesDone;
+        private volatile Thread thread;
         private int mouseX;
         private int mouseY;
         private boolean pressed;
@@ -199,6 +217,7 @@ public final class SketchRun<S extends PApplet> {
             if (finished) {
                 return;
             }
+            thread = Thread.currentThread();
             int frame = sketch.frameCount;  // 1 on the first draw()
             if (frame == 1 && fast) {
                 sketch.frameRate(100_000);
