@@ -52,11 +52,11 @@ final class Clearance {
     record Parts(List<double[]> pieces, List<double[]> cuts, boolean flat) {
 
         static Parts of(Shape s) {
-            double[] xy = Contacts.corners(s);
+            double[] xy = Polygons.corners(s);
             if (s instanceof Rect r) {
                 return new Parts(List.of(xy), List.of(), r.w() == 0 || r.h() == 0);
             }
-            if (SeparatingAxis.concaveVertex(((Polygon) s).raw()) < 0) {
+            if (((Polygon) s).isConvex()) {
                 return new Parts(List.of(xy), List.of(), false);
             }
             List<int[]> cuts = new ArrayList<>();
@@ -469,7 +469,7 @@ final class Clearance {
             extent = Math.max(extent, Math.max(Math.abs(p[2 * i]), Math.abs(p[2 * i + 1])));
         }
         double tol = TOLERANCE * (1 + extent);
-        double turn = Math.signum(SeparatingAxis.area2(p));
+        double turn = Polygons.winding(xy);
 
         // The outline's pieces: each edge pushed out by r (x0, y0, x1, y1, nx, ny), and a
         // circle of radius r around each corner.
@@ -685,7 +685,7 @@ final class Clearance {
     static List<int[]> convexPieces(double[] xy, List<int[]> cuts) {
         List<int[]> diagonals = new ArrayList<>();
         List<int[]> pieces = triangulate(xy, diagonals);
-        double turn = Math.signum(SeparatingAxis.area2(xy));
+        double turn = Math.signum(Polygons.doubleSignedArea(xy));
         for (int[] d : diagonals) {
             int p = pieceWithEdge(pieces, d[0], d[1]);
             int q = pieceWithEdge(pieces, d[1], d[0]);
@@ -762,7 +762,7 @@ final class Clearance {
      */
     static List<int[]> triangulate(double[] xy, List<int[]> diagonals) {
         int n = xy.length / 2;
-        double turn = Math.signum(SeparatingAxis.area2(xy));
+        double turn = Math.signum(Polygons.doubleSignedArea(xy));
         if (turn == 0) {
             throw new IllegalArgumentException("the polygon has no area, so it cannot be cut into triangles");
         }

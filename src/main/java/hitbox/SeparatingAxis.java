@@ -129,7 +129,7 @@ public final class SeparatingAxis {
         double[] pb = convexCorners("b", b);
         List<Axis> axes = new ArrayList<>(pa.length / 2 + pb.length / 2);
         for (double[] owner : new double[][] {pa, pb}) {
-            double turn = Math.signum(area2(owner));
+            double turn = Math.signum(Polygons.doubleSignedArea(owner));
             int n = owner.length / 2;
             for (int i = 0; i < n; i++) {
                 int j = (i + 1) % n;
@@ -245,54 +245,11 @@ public final class SeparatingAxis {
     /** The polygon's vertices in double, after checking it is there and convex. */
     private static double[] convexCorners(String name, Polygon p) {
         Check.notNull(name, p);
-        int v = concaveVertex(p.raw());
+        int v = p.concaveVertex();
         if (v >= 0) {
             throw new IllegalArgumentException("SAT needs convex polygons; polygon " + name
                     + " is concave at vertex " + v + " (" + p.x(v) + ", " + p.y(v) + ")");
         }
-        return Contacts.corners(p);
-    }
-
-    /**
-     * The first vertex where the polygon bends inwards (turns against its own winding), or -1
-     * if it is convex. Straight vertices (three in a line) do not count. Assumes a simple
-     * polygon, as {@link Polygon#of} makes.
-     *
-     * <p>Kept here rather than in {@code Polygons} while polygon validation is being reworked;
-     * one copy should remain once both land.
-     */
-    static int concaveVertex(float[] xy) {
-        double turn = Math.signum(area2(xy));
-        int n = xy.length / 2;
-        for (int i = 0; i < n; i++) {
-            int h = (i + n - 1) % n, j = (i + 1) % n;
-            double o = Lines.orient(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1]);
-            if (o * turn < 0) {
-                return i;
-            }
-        }
-        return -1;
-    }
-
-    /** Twice the signed area (shoelace): its sign is the winding, positive for x-to-y turns. */
-    static double area2(float[] xy) {
-        double s = 0;
-        int n = xy.length / 2;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            s += (double) xy[2 * i] * xy[2 * j + 1] - (double) xy[2 * j] * xy[2 * i + 1];
-        }
-        return s;
-    }
-
-    /** Same for double coordinates. */
-    static double area2(double[] xy) {
-        double s = 0;
-        int n = xy.length / 2;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            s += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
-        }
-        return s;
+        return Polygons.corners(p);
     }
 }
