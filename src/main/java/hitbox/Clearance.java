@@ -52,11 +52,11 @@ final class Clearance {
     record Parts(List<double[]> pieces, List<double[]> cuts, boolean flat) {
 
         static Parts of(Shape s) {
-            double[] xy = Contacts.corners(s);
+            double[] xy = Polygons.corners(s);
             if (s instanceof Rect r) {
                 return new Parts(List.of(xy), List.of(), r.w() == 0 || r.h() == 0);
             }
-            if (SeparatingAxis.concaveVertex(((Polygon) s).raw()) < 0) {
+            if (((Polygon) s).isConvex()) {
                 return new Parts(List.of(xy), List.of(), false);
             }
             List<int[]> cuts = new ArrayList<>();
@@ -469,7 +469,7 @@ final class Clearance {
             extent = Math.max(extent, Math.max(Math.abs(p[2 * i]), Math.abs(p[2 * i + 1])));
         }
         double tol = TOLERANCE * (1 + extent);
-        double turn = Math.signum(SeparatingAxis.area2(p));
+        double turn = Polygons.winding(xy);
 
         // The outline's pieces: each edge pushed out by r (x0, y0, x1, y1, nx, ny), and a
         // circle of radius r around each corner.
@@ -486,9 +486,10 @@ final class Clearance {
                     p[2 * j] + r * nx, p[2 * j + 1] + r * ny, nx, ny});
         }
 
+        Disc disc = new Disc(xy, cx, cy, p, r, tol);
         Contacts.Best best = new Contacts.Best(2 * tol);
         for (double[] o : offsets) {
-            offerCentre(best, o[0], o[1], p, r, tol);
+            offerCentre(best, o[0], o[1], disc);
             double ex = o[2] - o[0], ey = o[3] - o[1];
             double len2 = ex * ex + ey * ey;
             double along = -(o[0] * ex + o[1] * ey);
@@ -497,7 +498,7 @@ final class Clearance {
                 double qx = o[0] + t * ex, qy = o[1] + t * ey;
                 // The centre moves to q, along the edge's normal: the polygon moves against it.
                 double s = o[0] * o[4] + o[1] * o[5];
-                if (s != 0 && !coveredCentre(qx, qy, p, r, tol)) {
+                if (s != 0 && !coveredCentre(qx, qy, disc)) {
                     double sign = Math.signum(s);
                     best.offer(-sign * o[4], -sign * o[5], Math.abs(s));
                 }
@@ -508,7 +509,7 @@ final class Clearance {
             double d = length(vx, vy);
             if (d > 0) {
                 double k = 1 - r / d;
-                offerCentre(best, vx * k, vy * k, p, r, tol);
+                offerCentre(best, vx * k, vy * k, disc);
             }
         }
         // Crossings of two pieces, skipping any piece farther away than the best so far (a
@@ -531,14 +532,14 @@ final class Clearance {
                 if (!best.beyond(offsetNear[j])) {
                     double[] c = segmentCrossing(o, offsets.get(j));
                     if (c != null) {
-                        offerCentre(best, c[0], c[1], p, r, tol);
+                        offerCentre(best, c[0], c[1], disc);
                     }
                 }
             }
             for (int v = 0; v < n; v++) {
                 if (!best.beyond(circleNear[v])) {
                     for (double[] c : segmentCircle(o, p[2 * v], p[2 * v + 1], r)) {
-                        offerCentre(best, c[0], c[1], p, r, tol);
+                        offerCentre(best, c[0], c[1], disc);
                     }
                 }
             }
@@ -550,7 +551,7 @@ final class Clearance {
             for (int v = u + 1; v < n; v++) {
                 if (!best.beyond(circleNear[v])) {
                     for (double[] c : circleCircle(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], r)) {
-                        offerCentre(best, c[0], c[1], p, r, tol);
+                        offerCentre(best, c[0], c[1], disc);
                     }
                 }
             }
@@ -558,50 +559,43 @@ final class Clearance {
         return best.contact();
     }
 
+    /**
+     * The circle search's fixed data: the polygon as given ({@code xy}) and relative to the
+     * circle's centre ({@code p}), the radius and the tolerance.
+     */
+    private record Disc(float[] xy, float cx, float cy, double[] p, double r, double tol) {
+    }
+
     /** Offers moving the centre to (qx, qy), if the circle is clear there. */
-    private static void offerCentre(Contacts.Best best, double qx, double qy, double[] p, double r, double tol) {
+    private static void offerCentre(Contacts.Best best, double qx, double qy, Disc disc) {
         double d = length(qx, qy);
-        if (d == 0 || best.beyond(d) || coveredCentre(qx, qy, p, r, tol)) {
+        if (d == 0 || best.beyond(d) || coveredCentre(qx, qy, disc)) {
             return;
         }
         // The centre moves by q; the polygon, seen from the circle, moves by -q.
         best.offer(-qx / d, -qy / d, d);
     }
 
-    /** Would a circle of radius r centred at (qx, qy) overlap the polygon by more than tol? */
-    private static boolean coveredCentre(double qx, double qy, double[] p, double r, double tol) {
-        if (inside(p, qx, qy)) {
+    /**
+     * Would a circle of radius r centred at (qx, qy) overlap the polygon by more than tol?
+     * The inside test is the exact {@link Polygons#contains}, at the centre's place in the
+     * polygon's own coordinates; rounding that place matters only on the outline, where the
+     * distance test already answers (for r above tol).
+     */
+    private static boolean coveredCentre(double qx, double qy, Disc disc) {
+        if (Polygons.contains(disc.xy(), disc.cx() + qx, disc.cy() + qy)) {
             return true;
         }
+        double[] p = disc.p();
         int n = p.length / 2;
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
-            if (segmentDistance(p[2 * i] - qx, p[2 * i + 1] - qy, p[2 * j] - qx, p[2 * j + 1] - qy) < r - tol) {
+            if (segmentDistance(p[2 * i] - qx, p[2 * i + 1] - qy, p[2 * j] - qx, p[2 * j + 1] - qy)
+                    < disc.r() - disc.tol()) {
                 return true;
             }
         }
         return false;
-    }
-
-    /**
-     * Is the point strictly inside the polygon? Crossing number, with each crossing decided
-     * by the sign of an orientation, so no division. Points on the outline may go either way;
-     * callers only ask about points well away from it.
-     */
-    static boolean inside(double[] p, double x, double y) {
-        boolean in = false;
-        int n = p.length / 2;
-        for (int i = 0, j = n - 1; i < n; j = i++) {
-            double xi = p[2 * i], yi = p[2 * i + 1], xj = p[2 * j], yj = p[2 * j + 1];
-            if ((yi > y) != (yj > y)) {
-                // The edge crosses the horizontal through the point: is the crossing to its right?
-                double o = Lines.orient(xj, yj, xi, yi, x, y);
-                if ((o > 0) == (yi > yj)) {
-                    in = !in;
-                }
-            }
-        }
-        return in;
     }
 
     // ------------------------------------------------------------------------ small geometry
@@ -685,7 +679,7 @@ final class Clearance {
     static List<int[]> convexPieces(double[] xy, List<int[]> cuts) {
         List<int[]> diagonals = new ArrayList<>();
         List<int[]> pieces = triangulate(xy, diagonals);
-        double turn = Math.signum(SeparatingAxis.area2(xy));
+        double turn = Math.signum(Polygons.doubleSignedArea(xy));
         for (int[] d : diagonals) {
             int p = pieceWithEdge(pieces, d[0], d[1]);
             int q = pieceWithEdge(pieces, d[1], d[0]);
@@ -762,7 +756,7 @@ final class Clearance {
      */
     static List<int[]> triangulate(double[] xy, List<int[]> diagonals) {
         int n = xy.length / 2;
-        double turn = Math.signum(SeparatingAxis.area2(xy));
+        double turn = Math.signum(Polygons.doubleSignedArea(xy));
         if (turn == 0) {
             throw new IllegalArgumentException("the polygon has no area, so it cannot be cut into triangles");
         }

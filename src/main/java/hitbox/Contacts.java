@@ -101,7 +101,7 @@ final class Contacts {
             if (b instanceof Rect r) {
                 return Contact.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
             }
-            return circlePolygon(c.x(), c.y(), c.r(), ((Polygon) b).raw());
+            return circlePolygon(c.x(), c.y(), c.r(), (Polygon) b);
         }
         if (b instanceof Circle) {
             Contact c = between(b, a);
@@ -115,26 +115,12 @@ final class Contacts {
 
     /** Rectangles and polygons, at least one of them a polygon. */
     private static Contact polygonal(Shape a, Shape b) {
-        boolean convexA = !(a instanceof Polygon p) || SeparatingAxis.concaveVertex(p.raw()) < 0;
-        boolean convexB = !(b instanceof Polygon p) || SeparatingAxis.concaveVertex(p.raw()) < 0;
+        boolean convexA = !(a instanceof Polygon p) || p.isConvex();
+        boolean convexB = !(b instanceof Polygon p) || p.isConvex();
         if (convexA && convexB) {
-            return SeparatingAxis.contact(corners(a), corners(b));
+            return SeparatingAxis.contact(Polygons.corners(a), Polygons.corners(b));
         }
         return Clearance.polygons(Clearance.Parts.of(a), Clearance.Parts.of(b));
-    }
-
-    /** A rectangle's or polygon's vertices in double; a rectangle's far edges are exact. */
-    static double[] corners(Shape s) {
-        if (s instanceof Rect r) {
-            double x = r.x(), y = r.y(), right = x + r.w(), bottom = y + r.h();
-            return new double[] {x, y, right, y, right, bottom, x, bottom};
-        }
-        float[] xy = ((Polygon) s).raw();
-        double[] d = new double[xy.length];
-        for (int i = 0; i < xy.length; i++) {
-            d[i] = xy[i];
-        }
-        return d;
     }
 
     /**
@@ -144,9 +130,10 @@ final class Contacts {
      * {@link Clearance#circle}, since pushing out of the nearest edge can land the circle in
      * another part of the polygon.
      */
-    static Contact circlePolygon(float cx, float cy, float r, float[] xy) {
+    static Contact circlePolygon(float cx, float cy, float r, Polygon p) {
+        float[] xy = p.raw();
         Contact near = closestFeature(cx, cy, r, xy);
-        if (near == null || r == 0 || SeparatingAxis.concaveVertex(xy) < 0) {
+        if (near == null || r == 0 || p.isConvex()) {
             return near;
         }
         // The search cannot come back empty for shapes that overlap; if rounding ever made it,
@@ -195,7 +182,7 @@ final class Contacts {
             return null;
         }
         // Every feature at the least distance is offered, so ties follow the rule in Best.
-        double turn = Math.signum(SeparatingAxis.area2(xy));
+        double turn = Polygons.winding(xy);
         Best best = new Best();
         for (int i = 0; i < n; i++) {
             if (d2[i] != min) {
@@ -203,7 +190,7 @@ final class Contacts {
             }
             if (interior[i]) {
                 // The circle leaves along the edge's outward normal; the polygon goes the other way.
-                double[] out = outwardNormal(xy, i, turn);
+                double[] out = Polygons.outwardNormal(xy, i, turn);
                 best.offer(-out[0], -out[1], depth);
             } else if (dist > 0) {
                 double vx = (double) xy[2 * i] - cx, vy = (double) xy[2 * i + 1] - cy;
@@ -212,7 +199,7 @@ final class Contacts {
             } else {
                 // The centre is on vertex i: leave along either neighbouring edge's normal.
                 for (int e : new int[] {(i + n - 1) % n, i}) {
-                    double[] out = outwardNormal(xy, e, turn);
+                    double[] out = Polygons.outwardNormal(xy, e, turn);
                     if (out != null) {
                         best.offer(-out[0], -out[1], depth);
                     }
@@ -220,23 +207,5 @@ final class Contacts {
             }
         }
         return best.contact();
-    }
-
-    /**
-     * The unit normal of edge i (vertex i to i + 1) pointing out of the polygon, or null for a
-     * zero-length edge. {@code turn} is the sign of the polygon's signed area: the inside is
-     * on the side where the orientation has that sign.
-     */
-    static double[] outwardNormal(float[] xy, int i, double turn) {
-        int n = xy.length / 2;
-        int j = (i + 1) % n;
-        double ex = (double) xy[2 * j] - xy[2 * i];
-        double ey = (double) xy[2 * j + 1] - xy[2 * i + 1];
-        double len = Math.hypot(ex, ey);
-        if (len == 0) {
-            return null;
-        }
-        // (-ey, ex) is on the positive-orientation side; outward is the other side of the inside.
-        return new double[] {turn * ey / len, -turn * ex / len};
     }
 }

@@ -17,10 +17,16 @@ import java.util.Arrays;
 public final class Polygon implements Shape {
     private final float[] xy;
     private final Rect bounds;
+    /**
+     * The first vertex where the outline bends inwards, or -1 when convex: kept, since the
+     * polygon cannot change and every contact asks.
+     */
+    private final int concaveVertex;
 
-    private Polygon(float[] xy) {
+    private Polygon(float[] xy, int concaveVertex) {
         this.xy = xy;
         this.bounds = Polygons.bounds(xy);
+        this.concaveVertex = concaveVertex;
     }
 
     /**
@@ -42,7 +48,7 @@ public final class Polygon implements Shape {
         Check.notNull("xy", xy);
         float[] copy = xy.clone();
         Polygons.validate(copy);
-        return new Polygon(copy);
+        return new Polygon(copy, Polygons.concaveVertex(copy));
     }
 
     /**
@@ -58,7 +64,16 @@ public final class Polygon implements Shape {
             throw new IllegalArgumentException("a polygon needs area, but the rectangle's width and height are "
                     + rect.w() + " and " + rect.h() + " (both must be > 0)");
         }
-        return of(rect.x(), rect.y(), rect.right(), rect.y(), rect.right(), rect.bottom(), rect.x(), rect.bottom());
+        // The corners in double rounded to float are exactly right() and bottom(): a sum of two
+        // floats rounded first to double and then to float is their sum rounded to float, as
+        // double has more than twice float's precision (S. Figueroa, "When is double rounding
+        // innocuous?", 1995).
+        double[] corners = Polygons.corners(rect);
+        float[] xy = new float[corners.length];
+        for (int i = 0; i < xy.length; i++) {
+            xy[i] = (float) corners[i];
+        }
+        return of(xy);
     }
 
     /**
@@ -217,7 +232,7 @@ public final class Polygon implements Shape {
      * @return the area, in square pixels
      */
     public float area() {
-        return (float) (Math.abs(Polygons.doubleSignedArea(xy)) / 2);
+        return (float) (Math.abs(Polygons.doubleSignedArea(Polygons.toDouble(xy))) / 2);
     }
 
     /**
@@ -255,17 +270,15 @@ public final class Polygon implements Shape {
      * @return true if convex, false if it has a corner that points inwards
      */
     public boolean isConvex() {
-        int w = Polygons.winding(xy);
-        int n = size();
-        for (int i = 0; i < n; i++) {
-            int h = (i + n - 1) % n;
-            int k = (i + 1) % n;
-            double turn = Lines.orient(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]);
-            if (w * turn < 0) {
-                return false;
-            }
-        }
-        return true;
+        return concaveVertex < 0;
+    }
+
+    /**
+     * The first vertex where the outline bends inwards (turns against its winding), or -1
+     * when the polygon is convex.
+     */
+    int concaveVertex() {
+        return concaveVertex;
     }
 
     /** {@inheritDoc} Same as {@link Collide#polygonPoint}. */
@@ -305,7 +318,8 @@ public final class Polygon implements Shape {
         for (int i = 0; i < moved.length; i++) {
             Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2), moved[i]);
         }
-        return new Polygon(moved);
+        // Every coordinate moved exactly, so every orientation and the concave vertex are kept.
+        return new Polygon(moved, concaveVertex);
     }
 
     /** Two polygons are equal when they have the same vertices in the same order. */

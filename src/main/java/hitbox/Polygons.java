@@ -324,7 +324,7 @@ final class Polygons {
      * Twice the signed area (shoelace formula), measured from vertex 0 so that large but
      * nearby coordinates keep their precision. Its sign follows {@link Lines#orient}.
      */
-    static double doubleSignedArea(float[] xy) {
+    static double doubleSignedArea(double[] xy) {
         int n = xy.length / 2;
         double ox = xy[0];
         double oy = xy[1];
@@ -333,5 +333,63 @@ final class Polygons {
             sum += Lines.orient(ox, oy, xy[2 * i], xy[2 * i + 1], xy[2 * i + 2], xy[2 * i + 3]);
         }
         return sum;
+    }
+
+    /**
+     * The first vertex where the polygon bends inwards (turns against its {@link #winding}),
+     * or -1 if it is convex. Straight vertices (on the line between their neighbours) do not
+     * count. Exact orientation signs; assumes a simple polygon, as {@link Polygon#of} makes.
+     */
+    static int concaveVertex(float[] xy) {
+        int w = winding(xy);
+        int n = xy.length / 2;
+        for (int i = 0; i < n; i++) {
+            if (w * orient(xy, (i + n - 1) % n, i, (i + 1) % n) < 0) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * A rectangle's or polygon's vertices in double, x0, y0, x1, y1, .... A rectangle's are
+     * its corners top-left, top-right, bottom-right, bottom-left, with the far edges
+     * {@code x + w} and {@code y + h} exact in double (rounded to float they are
+     * {@link Rect#right()} and {@link Rect#bottom()}); a rectangle of width or height 0 gives
+     * four corners that lie on a segment or at a point.
+     */
+    static double[] corners(Shape s) {
+        if (s instanceof Rect r) {
+            double x = r.x(), y = r.y(), right = x + r.w(), bottom = y + r.h();
+            return new double[] {x, y, right, y, right, bottom, x, bottom};
+        }
+        return toDouble(((Polygon) s).raw());
+    }
+
+    /** The coordinates widened to double (exactly). */
+    static double[] toDouble(float[] xy) {
+        double[] d = new double[xy.length];
+        for (int i = 0; i < xy.length; i++) {
+            d[i] = xy[i];
+        }
+        return d;
+    }
+
+    /**
+     * The unit normal of edge i (vertex i to i + 1) pointing out of the polygon, or null for a
+     * zero-length edge. {@code turn} is the polygon's {@link Polygons#winding}: the inside is
+     * on the side where the orientation has that sign.
+     */
+    static double[] outwardNormal(float[] xy, int i, double turn) {
+        int n = xy.length / 2;
+        int j = (i + 1) % n;
+        double ex = (double) xy[2 * j] - xy[2 * i];
+        double ey = (double) xy[2 * j + 1] - xy[2 * i + 1];
+        double len = Math.hypot(ex, ey);
+        if (len == 0) {
+            return null;
+        }
+        // (-ey, ex) is on the positive-orientation side; outward is the other side of the inside.
+        return new double[] {turn * ey / len, -turn * ex / len};
     }
 }

@@ -354,22 +354,16 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
     /** The outward normals of the edges met at s and facing the ray, summed; else straight back. */
     private double[] polygonNormal(Polygon p, double s, double scale) {
         int n = p.size();
-        double area2 = 0;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            area2 += (double) p.x(i) * p.y(j) - (double) p.x(j) * p.y(i);
-        }
+        int turn = Polygons.winding(p.raw());
         double sx = 0, sy = 0;
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
             double at = segmentParam(ox, oy, dx, dy, Sweep.INF, p.x(i), p.y(i), p.x(j), p.y(j));
             if (at != Sweep.INF && Math.abs(at - s) <= SAME_EVENT * scale) {
-                double ex = (double) p.x(j) - p.x(i), ey = (double) p.y(j) - p.y(i);
-                double len = Math.hypot(ex, ey);
-                double nx = area2 > 0 ? ey / len : -ey / len, ny = area2 > 0 ? -ex / len : ex / len;
-                if (nx * dx + ny * dy < 0) {
-                    sx += nx;
-                    sy += ny;
+                double[] out = Polygons.outwardNormal(p.raw(), i, turn); // edges of a Polygon have length
+                if (out[0] * dx + out[1] * dy < 0) {
+                    sx += out[0];
+                    sy += out[1];
                 }
             }
         }

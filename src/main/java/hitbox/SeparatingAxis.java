@@ -129,7 +129,7 @@ public final class SeparatingAxis {
         double[] pb = convexCorners("b", b);
         List<Axis> axes = new ArrayList<>(pa.length / 2 + pb.length / 2);
         for (double[] owner : new double[][] {pa, pb}) {
-            double turn = Math.signum(area2(owner));
+            double turn = Math.signum(Polygons.doubleSignedArea(owner));
             int n = owner.length / 2;
             for (int i = 0; i < n; i++) {
                 int j = (i + 1) % n;
@@ -159,9 +159,7 @@ public final class SeparatingAxis {
      * @throws IllegalArgumentException if a polygon is null or concave
      */
     public static boolean overlaps(Polygon a, Polygon b) {
-        double[] pa = convexCorners("a", a);
-        double[] pb = convexCorners("b", b);
-        return !separated(pa, pa, pb) && !separated(pb, pa, pb);
+        return search(convexCorners("a", a), convexCorners("b", b), null);
     }
 
     /**
@@ -186,6 +184,16 @@ public final class SeparatingAxis {
      */
     static Contact contact(double[] a, double[] b) {
         Contacts.Best best = new Contacts.Best();
+        return search(a, b, best) ? best.contact() : null;
+    }
+
+    /**
+     * The one SAT loop: every edge normal of a, then of b, un-normalized so the projections
+     * are exact. False at the first axis that separates them (touching separates). With a
+     * {@code best}, each axis offers it the two pushes along it: b can go forward until its
+     * shadow starts where a's ends, or back.
+     */
+    private static boolean search(double[] a, double[] b, Contacts.Best best) {
         for (double[] owner : new double[][] {a, b}) {
             int n = owner.length / 2;
             for (int i = 0; i < n; i++) {
@@ -198,32 +206,16 @@ public final class SeparatingAxis {
                 double minA = min(a, mx, my), maxA = max(a, mx, my);
                 double minB = min(b, mx, my), maxB = max(b, mx, my);
                 if (maxA <= minB || maxB <= minA) {
-                    return null;
+                    return false;
                 }
-                double len = Math.hypot(mx, my);
-                // b can go forward until its shadow starts where a's ends, or back.
-                best.offer(mx / len, my / len, (maxA - minB) / len);
-                best.offer(-mx / len, -my / len, (maxB - minA) / len);
+                if (best != null) {
+                    double len = Math.hypot(mx, my);
+                    best.offer(mx / len, my / len, (maxA - minB) / len);
+                    best.offer(-mx / len, -my / len, (maxB - minA) / len);
+                }
             }
         }
-        return best.contact();
-    }
-
-    /** Does one of {@code owner}'s edge normals separate a and b (touching separates)? */
-    private static boolean separated(double[] owner, double[] a, double[] b) {
-        int n = owner.length / 2;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            double mx = -(owner[2 * j + 1] - owner[2 * i + 1]);
-            double my = owner[2 * j] - owner[2 * i];
-            if (mx == 0 && my == 0) {
-                continue;
-            }
-            if (max(a, mx, my) <= min(b, mx, my) || max(b, mx, my) <= min(a, mx, my)) {
-                return true;
-            }
-        }
-        return false;
+        return true;
     }
 
     private static double min(double[] p, double mx, double my) {
@@ -245,54 +237,11 @@ public final class SeparatingAxis {
     /** The polygon's vertices in double, after checking it is there and convex. */
     private static double[] convexCorners(String name, Polygon p) {
         Check.notNull(name, p);
-        int v = concaveVertex(p.raw());
+        int v = p.concaveVertex();
         if (v >= 0) {
             throw new IllegalArgumentException("SAT needs convex polygons; polygon " + name
                     + " is concave at vertex " + v + " (" + p.x(v) + ", " + p.y(v) + ")");
         }
-        return Contacts.corners(p);
-    }
-
-    /**
-     * The first vertex where the polygon bends inwards (turns against its own winding), or -1
-     * if it is convex. Straight vertices (three in a line) do not count. Assumes a simple
-     * polygon, as {@link Polygon#of} makes.
-     *
-     * <p>Kept here rather than in {@code Polygons} while polygon validation is being reworked;
-     * one copy should remain once both land.
-     */
-    static int concaveVertex(float[] xy) {
-        double turn = Math.signum(area2(xy));
-        int n = xy.length / 2;
-        for (int i = 0; i < n; i++) {
-            int h = (i + n - 1) % n, j = (i + 1) % n;
-            double o = Lines.orient(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1]);
-            if (o * turn < 0) {
-                return i;
-            }
-        }
-        return -1;
-    }
-
-    /** Twice the signed area (shoelace): its sign is the winding, positive for x-to-y turns. */
-    static double area2(float[] xy) {
-        double s = 0;
-        int n = xy.length / 2;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            s += (double) xy[2 * i] * xy[2 * j + 1] - (double) xy[2 * j] * xy[2 * i + 1];
-        }
-        return s;
-    }
-
-    /** Same for double coordinates. */
-    static double area2(double[] xy) {
-        double s = 0;
-        int n = xy.length / 2;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            s += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
-        }
-        return s;
+        return Polygons.corners(p);
     }
 }

@@ -58,7 +58,7 @@ public final class Snap {
      *         {@code groundY}
      */
     public static float standY(float h, float groundY) {
-        return endAt(groundY, h);
+        return Sweep.touchBefore(groundY, h);
     }
 
     /**
@@ -307,32 +307,11 @@ public final class Snap {
     /** The mover placed against the obstacle's {@code side}, touching it. */
     private static Push place(Side side, float x, float y, float w, float h, float ox, float oy, float ow, float oh) {
         return switch (side) {
-            case TOP -> new Push(x, endAt(oy, h), side);
-            case BOTTOM -> new Push(x, startAt((double) oy + oh), side);
-            case LEFT -> new Push(endAt(ox, w), y, side);
-            case RIGHT -> new Push(startAt((double) ox + ow), y, side);
+            case TOP -> new Push(x, Sweep.touchBefore(oy, h), side);
+            case BOTTOM -> new Push(x, Sweep.touchAfter((double) oy + oh), side);
+            case LEFT -> new Push(Sweep.touchBefore(ox, w), y, side);
+            case RIGHT -> new Push(Sweep.touchAfter((double) ox + ow), y, side);
             case NONE -> new Push(x, y, side);
         };
-    }
-
-    /**
-     * A start {@code s} whose far end {@code s + size} meets {@code edge} without passing it,
-     * as {@link Collide} adds (in double): {@code edge - size} when that is a float, which it
-     * is for whole numbers, else the float just below it.
-     */
-    private static float endAt(float edge, float size) {
-        float s = (float) ((double) edge - size);
-        // Rounded to nearest, s may sit a hair past the exact start; one step down is then at
-        // or before it, and a sum that is exactly at most edge cannot round above it.
-        if ((double) s + size > edge) {
-            s = Math.nextDown(s);
-        }
-        return s;
-    }
-
-    /** The smallest float at or after {@code edge}: a start that meets the edge from beyond. */
-    private static float startAt(double edge) {
-        float s = (float) edge;
-        return s < edge ? Math.nextUp(s) : s;
     }
 }

@@ -757,8 +757,13 @@ public final class Sweep {
         return Math.abs(vx) < INF && Math.abs(vy) < INF;
     }
 
-    /** The float that puts a box of this size right before the edge, touching, not over it. */
-    private static float touchBefore(float edge, float size) {
+    /**
+     * The float that puts a box of this size right before the edge, touching, not over it:
+     * its far end {@code p + size}, added in double as {@link Collide} does, is at most
+     * {@code edge}. That is {@code edge - size} when it is a float (it is for whole numbers);
+     * else the rounded start may sit a hair past, and the loop steps down (once at most).
+     */
+    static float touchBefore(float edge, float size) {
         float p = (float) ((double) edge - size);
         while ((double) p + size > edge) {
             p = Math.nextDown(p);
@@ -766,8 +771,8 @@ public final class Sweep {
         return p;
     }
 
-    /** The float at or right after the edge. */
-    private static float touchAfter(double edge) {
+    /** The float at or right after the edge: a start that meets the edge from beyond. */
+    static float touchAfter(double edge) {
         float p = (float) edge;
         while (p < edge) {
             p = Math.nextUp(p);

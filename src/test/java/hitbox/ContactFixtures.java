@@ -442,7 +442,10 @@ final class ContactFixtures {
 
     // ------------------------------------------------------------------------ shapes
 
-    /** Rotated rectangles: whole-number centre and size, angle in tenths of a degree. */
+    /**
+     * Rotated rectangles from the library's {@link Polygon#rotatedRect}: whole-number centre
+     * and size, angle in tenths of a degree.
+     */
     static Arbitrary<Polygon> rotatedRects() {
         return Combinators.combine(
                 Arbitraries.integers().between(-20, 20),
@@ -450,19 +453,7 @@ final class ContactFixtures {
                 Arbitraries.integers().between(1, 40),
                 Arbitraries.integers().between(1, 40),
                 Arbitraries.integers().between(0, 3599))
-            .as((cx, cy, w, h, tenths) -> rotatedRect(cx, cy, w, h, Math.toRadians(tenths / 10.0)));
-    }
-
-    /** A rectangle rotated by angle (radians) about its centre, as a polygon. */
-    static Polygon rotatedRect(double cx, double cy, double w, double h, double angle) {
-        double c = Math.cos(angle), s = Math.sin(angle);
-        double[][] corners = {{-w / 2, -h / 2}, {w / 2, -h / 2}, {w / 2, h / 2}, {-w / 2, h / 2}};
-        float[] xy = new float[8];
-        for (int i = 0; i < 4; i++) {
-            xy[2 * i] = (float) (cx + corners[i][0] * c - corners[i][1] * s);
-            xy[2 * i + 1] = (float) (cy + corners[i][0] * s + corners[i][1] * c);
-        }
-        return Polygon.of(xy);
+            .as((cx, cy, w, h, tenths) -> Polygon.rotatedRect(cx, cy, w, h, (float) Math.toRadians(tenths / 10.0)));
     }
 
     /** Concave shapes with whole-number corners, each drawn in a 0..6 box. */

@@ -371,7 +371,7 @@ class PolygonContactTest {
         List<int[]> pieces = Clearance.convexPieces(xy, cuts);
         assertEquals(pieces.size() - 1, cuts.size());
         assertTrue(pieces.size() <= Clearance.triangulate(xy, new ArrayList<>()).size());
-        assertEquals(SeparatingAxis.concaveVertex(p.raw()) < 0, pieces.size() == 1, "one piece exactly when convex");
+        assertEquals(p.isConvex(), pieces.size() == 1, "one piece exactly when convex");
         for (int[] piece : pieces) {
             assertTrue(ContactFixtures.isConvexRef(coordinates(xy, piece)), "piece is convex");
         }
@@ -390,7 +390,7 @@ class PolygonContactTest {
         double total = 0;
         for (int[] piece : pieces) {
             double[] c = coordinates(xy, piece);
-            total += Math.abs(SeparatingAxis.area2(c)) / 2;
+            total += Math.abs(Polygons.doubleSignedArea(c)) / 2;
             double cx = 0, cy = 0;
             for (int i = 0; i < c.length; i += 2) {
                 cx += c[i];
@@ -398,7 +398,7 @@ class PolygonContactTest {
             }
             assertTrue(ContactFixtures.insideRef(xy, cx / piece.length, cy / piece.length), "each piece lies inside the polygon");
         }
-        assertEquals(Math.abs(SeparatingAxis.area2(xy)) / 2, total, 1e-9);
+        assertEquals(Math.abs(Polygons.doubleSignedArea(xy)) / 2, total, 1e-9);
     }
 
     private static double[] coordinates(double[] xy, int[] piece) {

@@ -161,10 +161,10 @@ class SeparatingAxisTest {
 
     @Test
     void concaveVertex_straightVerticesAreConvex_otherWindingToo() {
-        assertEquals(-1, SeparatingAxis.concaveVertex(new float[] {0, 0, 5, 0, 10, 0, 10, 10, 0, 10}));
-        assertEquals(-1, SeparatingAxis.concaveVertex(new float[] {0, 10, 10, 10, 10, 0, 0, 0}));
+        assertEquals(-1, Polygons.concaveVertex(new float[] {0, 0, 5, 0, 10, 0, 10, 10, 0, 10}));
+        assertEquals(-1, Polygons.concaveVertex(new float[] {0, 10, 10, 10, 10, 0, 0, 0}));
         // The L listed the other way round: the inward corner (2, 2) is vertex 2.
-        assertEquals(2, SeparatingAxis.concaveVertex(new float[] {0, 6, 2, 6, 2, 2, 6, 2, 6, 0, 0, 0}));
+        assertEquals(2, Polygons.concaveVertex(new float[] {0, 6, 2, 6, 2, 2, 6, 2, 6, 0, 0, 0}));
     }
 
     // ------------------------------------------------------------------------ contact
