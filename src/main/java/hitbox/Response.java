@@ -294,6 +294,47 @@ public final class Response {
     /** The shape moved along the normal by {@code signedShare * depth}, after checking the share. */
     // Every Shape.translated returns a shape of its own kind (the sealed family's contract,
     // and each record narrows the return type), so the cast back to S is safe.
+    /**
+     * Shape a moved the shortest way out of b, so that afterwards {@code a.overlaps(b)} is
+     * false, exactly, and the two touch to within float rounding. Shapes that do not overlap
+     * come back unchanged.
+     *
+     * <p>Why more than {@link #pushOutA(Shape, Contact)}: a contact's normal and depth are
+     * floats, so moving by them can leave the shapes overlapping by a rounding error (a few
+     * millionths of a pixel), and a game loop that pushes out until {@code overlaps} is false
+     * would never finish. This moves along the same normal, by the depth and then by the
+     * smallest float steps more (doubling each time), until the exact test agrees.
+     *
+     * @param <S> the kind of shape
+     * @param a   the shape to move, with area (circle, rect or polygon), not null
+     * @param b   the shape it must leave, with area, not null
+     * @return a, moved out of b (or a itself if they do not overlap)
+     * @throws IllegalArgumentException if a shape is null or a segment (see
+     *                                  {@link Contact#between})
+     */
+    @SuppressWarnings("unchecked")
+    public static <S extends Shape> S separate(S a, Shape b) {
+        Contact contact = Contact.between(a, b);
+        if (contact == null) {
+            return a;
+        }
+        Rect box = a.bounds();
+        float scale = Math.max(Math.max(Math.abs(box.x()), Math.abs(box.right())),
+                Math.max(Math.max(Math.abs(box.y()), Math.abs(box.bottom())), contact.depth()));
+        double extra = 0;
+        S moved = a;
+        // 64 doublings of a float step reach far past any depth: the loop always ends apart.
+        for (int i = 0; i < 64; i++) {
+            double d = contact.depth() + extra;
+            moved = (S) a.translated((float) (-d * contact.nx()), (float) (-d * contact.ny()));
+            if (!moved.overlaps(b)) {
+                return moved;
+            }
+            extra = extra == 0 ? Math.ulp(scale) : extra * 2;
+        }
+        return moved;
+    }
+
     @SuppressWarnings("unchecked")
     private static <S extends Shape> S translated(S s, Contact contact, float signedShare, float share) {
         Check.notNull("contact", contact);
