@@ -5,7 +5,7 @@
  * Knowing that two shapes overlap is not enough to make them behave: you need to know which
  * way, and how far, to move them apart. Contact.between(ball, shape) gives that: a unit
  * normal pointing from the ball into the shape and the depth of the overlap. Then Response
- * does the rest: pushOutA moves the ball back by the depth so the two just touch; bounce
+ * does the rest: separate moves the ball back by the depth so the two just touch; bounce
  * reverses the part of the velocity along the normal (a ball off a wall); slide removes it
  * and keeps the part along the surface (a character walking along a wall).
  *
@@ -46,10 +46,6 @@ ArrayList<Vec> before = new ArrayList<Vec>();
 ArrayList<Vec> after = new ArrayList<Vec>();
 float ghostX, ghostY;      // where the ball was before the push out
 int movedIn;               // the mode this frame's contacts were answered in
-
-// A push out leaves the shapes touching, up to float rounding: a contact shallower than this
-// is what is left of one already answered, not a new one.
-float ROUNDING = 1e-3f;
 
 // The last hit, kept on screen for a moment so it can be read.
 Contact shownContact;
@@ -154,8 +150,9 @@ void move() {
 void respond() {
   for (int i = 0; i < shapes.length + walls.length; i++) {
     Shape s = i < shapes.length ? shapes[i] : walls[i - shapes.length];
-    Contact c = Contact.between(new Circle(x, y, r), s);
-    if (c == null || c.depth() < ROUNDING) {
+    Circle ball = new Circle(x, y, r);
+    Contact c = Contact.between(ball, s);
+    if (c == null) {
       continue;
     }
     Vec v0 = new Vec(vx, vy);
@@ -168,9 +165,10 @@ void respond() {
       vx = v.x();
       vy = v.y();
     }
-    Vec p = Response.pushOutA(x, y, c);
-    x = p.x();
-    y = p.y();
+    // Out along the normal by the depth, and exactly out: overlaps() is false afterwards.
+    Circle out = Response.separate(ball, s);
+    x = out.x();
+    y = out.y();
     hitShapes.add(i);
     contacts.add(c);
     before.add(v0);
@@ -247,7 +245,7 @@ void drawContact() {
     line(bx - sx * 5, by - sy * 5, bx + sx * 5, by + sy * 5);
     Overlay.labelBeside(g, (ax + bx) / 2 + sx * side * 6, (ay + by) / 2 + sy * side * 6, sx * side, sy * side,
         "depth = " + Overlay.number(c.depth()), Overlay.GUIDE);
-    text += "\nResponse.pushOutA: moved " + Overlay.number(c.depth()) + " against the normal, now just touching";
+    text += "\nResponse.separate: moved " + Overlay.number(c.depth()) + " against the normal, now just touching";
   } else {
     // The velocity's part along the normal, and along the surface, before and after.
     Vec surface = new Vec(sx, sy);
