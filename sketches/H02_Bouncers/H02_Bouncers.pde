@@ -4,8 +4,9 @@
  *
  * A hundred small boxes bounce around a hundred obstacles and the window, and each one takes
  * a new colour every time it hits an obstacle. Each bouncer does exactly what the single box
- * of sections 6 and 8 does: Motion.rectBlocked checks its next position, one axis at a time,
- * against the whole list of obstacles, and the blocked speeds reverse. That is 100 x 100 =
+ * of sections 6 and 8 does: Motion.bounce checks its next position, one axis at a time,
+ * against the whole list of obstacles, reverses the blocked speeds and moves only where it
+ * is free. That is 100 x 100 =
  * 10,000 bouncer-obstacle pairs a frame, a few rectangle comparisons each: plain loops, far
  * below a millisecond, so no grid or other broad phase is needed at this size.
  *
