@@ -172,12 +172,12 @@ void drawMaths() {
 
 /**
  * Which side of the line from (x1, y1) to (x2, y2) the point is on, looking from the first
- * end to the second, for the overlay's words only: the sign of the cross product that
- * Collide.lineLine's orientation tests compare (the library keeps that test to itself).
+ * end to the second, in the overlay's words: Collide.lineSide, the orientation test that
+ * Collide.lineLine compares.
  */
 String side(float x1, float y1, float x2, float y2, float px, float py) {
-  double cross = ((double) x2 - x1) * ((double) py - y1) - ((double) y2 - y1) * ((double) px - x1);
-  return cross > 0 ? "right" : cross < 0 ? "left" : "on it";
+  int side = Collide.lineSide(x1, y1, x2, y2, px, py);
+  return side > 0 ? "right" : side < 0 ? "left" : "on it";
 }
 
 public void mousePressed() {

@@ -153,6 +153,26 @@ public final class Collide {
     }
 
     /**
+     * Which side of the line through (x1, y1) and (x2, y2) is the point on, walking from the
+     * first point to the second? The orientation test behind every segment answer here.
+     *
+     * <p>On screen (y down), 1 is the walker's right-hand side and -1 the left; 0 means the
+     * point is on the line. Exact for whole numbers up to about 16 million. NaN gives 0.
+     *
+     * @param x1 the line's first point, x
+     * @param y1 the line's first point, y
+     * @param x2 the line's second point, x
+     * @param y2 the line's second point, y
+     * @param px the point's x
+     * @param py the point's y
+     * @return 1 (right), -1 (left) or 0 (on the line)
+     */
+    public static int lineSide(float x1, float y1, float x2, float y2, float px, float py) {
+        double o = Lines.orient(x1, y1, x2, y2, px, py);
+        return o > 0 ? 1 : (o < 0 ? -1 : 0);
+    }
+
+    /**
      * Clamps {@code v} into [lo, hi]; used for the closest point of a rectangle. NaN in any
      * argument gives NaN (Math.min and Math.max pass it on), so a NaN rectangle edge cannot
      * be clamped away into a false "collision".

@@ -52,6 +52,18 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
         return new Segment(x1 + dx, y1 + dy, x2 + dx, y2 + dy);
     }
 
+    /**
+     * Which side of this segment's line is the point on, walking from the first end to the
+     * second? Same as {@link Collide#lineSide}.
+     *
+     * @param px the point's x
+     * @param py the point's y
+     * @return 1 (the walker's right on screen), -1 (left) or 0 (on the line)
+     */
+    public int side(float px, float py) {
+        return Collide.lineSide(x1, y1, x2, y2, px, py);
+    }
+
     /** @return the segment's length */
     public float length() {
         return (float) Math.hypot(x2 - x1, y2 - y1);
