@@ -97,9 +97,10 @@ public void draw() {
 }
 
 /**
- * The crossings, for drawing: a ray from the point to the right, cast at each edge. An edge
- * counts by the tutorial's rule, one end below the ray and the other at or above it; an
- * edge the ray meets only at a corner or along its length does not.
+ * The crossings, for drawing: a ray from the point to the right, cast at each edge. Whether
+ * an edge counts is the library's rule, Collide.rayCrossesEdge: one end below the ray and
+ * the other at or above it; an edge the ray meets only at a corner or along its length does
+ * not.
  */
 void findCrossings() {
   counted.clear();
@@ -116,7 +117,7 @@ void findCrossings() {
     if (hit.distance() == 0) {
       onOutline = true;
     }
-    if ((e.y1() > py) != (e.y2() > py)) {
+    if (Collide.rayCrossesEdge(e.x1(), e.y1(), e.x2(), e.y2(), px, py)) {
       // In order along the ray, nearest first.
       int k = 0;
       while (k < counted.size() && counted.get(k).distance() <= hit.distance()) {

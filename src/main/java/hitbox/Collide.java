@@ -153,6 +153,28 @@ public final class Collide {
     }
 
     /**
+     * Does the ray cast from the point to the right cross this polygon edge, by the rule
+     * {@link #polygonPoint} counts with? An odd count over all edges means inside.
+     *
+     * <p>The rule is half-open, so that a ray through a corner is counted right: the edge
+     * counts only when one end is below the point's level and the other at or above it (y
+     * grows down), and the crossing is to the right of the point. A corner the ray passes
+     * through is counted once; a corner it only touches, twice or not at all. A point on the
+     * edge gives false ({@code polygonPoint} then says "outside").
+     *
+     * @param ax the edge's first end, x
+     * @param ay the edge's first end, y
+     * @param bx the edge's second end, x
+     * @param by the edge's second end, y
+     * @param px the point's x
+     * @param py the point's y
+     * @return true if this edge counts as a crossing
+     */
+    public static boolean rayCrossesEdge(float ax, float ay, float bx, float by, float px, float py) {
+        return Polygons.rayCrossing(ax, ay, bx, by, px, py) > 0;
+    }
+
+    /**
      * Which side of the line through (x1, y1) and (x2, y2) is the point on, walking from the
      * first point to the second? The orientation test behind every segment answer here.
      *

@@ -101,6 +101,26 @@ final class Polygons {
      * <p>Reference: E. Haines, "Point in Polygon Strategies", Graphics Gems IV (1994), and
      * W. R. Franklin's PNPOLY, made exact with an orientation test.
      */
+    /**
+     * The crossing rule of {@link #contains}, one edge at a time: 1 if the ray from (px, py)
+     * to the right crosses the edge from a to b, 0 if not, -1 if the point lies on the edge.
+     * An edge counts only when one end is below the point's level and the other at or above
+     * it (half-open), so a corner the ray passes through is counted once and a corner it
+     * only touches twice or not at all.
+     */
+    static int rayCrossing(double ax, double ay, double bx, double by, double px, double py) {
+        if ((ay > py) == (by > py)) {
+            return 0;
+        }
+        double o = Lines.orient(ax, ay, bx, by, px, py);
+        if (o == 0) {
+            return -1;
+        }
+        // The ray to the right crosses the edge when the point is left of the crossing; which
+        // sign of o that is depends on whether the edge goes up or down.
+        return (by > ay ? o > 0 : o < 0) ? 1 : 0;
+    }
+
     static boolean contains(float[] xy, double px, double py) {
         int n = xy.length / 2;
         if (n < 3) {
@@ -113,13 +133,11 @@ final class Polygons {
             double bx = xy[2 * i];
             double by = xy[2 * i + 1];
             if ((ay > py) != (by > py)) {
-                double o = Lines.orient(ax, ay, bx, by, px, py);
-                if (o == 0) {
+                int crossing = rayCrossing(ax, ay, bx, by, px, py);
+                if (crossing < 0) {
                     return false; // on the edge: its y range holds py, and it is on the line
                 }
-                // The ray to the right crosses the edge when the point is left of the crossing;
-                // which sign of o that is depends on whether the edge goes up or down.
-                if (by > ay ? o > 0 : o < 0) {
+                if (crossing > 0) {
                     inside = !inside;
                 }
             } else if (ay == py && (by == py ? px >= Math.min(ax, bx) && px <= Math.max(ax, bx) : ax == px)) {
