@@ -33,7 +33,7 @@ class AllSketchesTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("sketches")
     void runs300FramesWithItsScript_andTogglesTheOverlay(Catalog.SketchInfo info) {
-        Script script = info.screenshotScript().isFile() ? Script.read(info.screenshotScript()) : new Script();
+        Script script = info.readScript();
         script.frames(300).key(100, 'd').key(200, 'd');
         SketchRun.Result<?> result = SketchRun.of(info.newInstance()).script(script).run();
         assertEquals(300, result.framesDrawn(), "frames drawn");

@@ -154,6 +154,16 @@ public final class Catalog {
         }
 
         /**
+         * Reads the scripted input for its screenshot.
+         *
+         * @return what {@code screenshot.txt} says, or no input for 120 frames if there is none
+         * @throws IllegalArgumentException naming the line and column of a mistake in the file
+         */
+        public Script readScript() {
+            return screenshotScript().isFile() ? Script.read(screenshotScript()) : new Script();
+        }
+
+        /**
          * Makes a fresh instance of the compiled sketch.
          *
          * @return the sketch, not yet running

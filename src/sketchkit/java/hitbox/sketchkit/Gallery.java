@@ -91,8 +91,8 @@ public final class Gallery extends PApplet {
         List<Catalog.SketchInfo> sketches = catalog.sketches();
         int hovered = indexAt(mouseX, mouseY);
         for (int i = 0; i < sketches.size(); i++) {
-            float x = MARGIN + (i % COLUMNS) * CELL_W;
-            float y = TOP + (i / COLUMNS) * CELL_H - scroll;
+            float x = cellLeft(i);
+            float y = cellTop(i) - scroll;
             if (y + CELL_H < TOP || y > height) {
                 continue;
             }
@@ -138,8 +138,17 @@ public final class Gallery extends PApplet {
      * @return the thumbnail's centre, {x, y}, before any scrolling
      */
     public static int[] thumbnailCentre(int index) {
-        return new int[] {MARGIN + (index % COLUMNS) * CELL_W + 6 + THUMB_W / 2,
-                TOP + (index / COLUMNS) * CELL_H + 6 + THUMB_H / 2};
+        return new int[] {cellLeft(index) + 6 + THUMB_W / 2, cellTop(index) + 6 + THUMB_H / 2};
+    }
+
+    /** The left edge of sketch {@code index}'s cell. */
+    private static int cellLeft(int index) {
+        return MARGIN + (index % COLUMNS) * CELL_W;
+    }
+
+    /** The top edge of sketch {@code index}'s cell, before any scrolling. */
+    private static int cellTop(int index) {
+        return TOP + (index / COLUMNS) * CELL_H;
     }
 
     private int indexAt(float mx, float my) {

@@ -1,6 +1,5 @@
 package hitbox.sketchkit;
 
-import java.awt.GraphicsEnvironment;
 import java.util.Optional;
 
 import processing.core.PApplet;
@@ -13,9 +12,15 @@ public final class Launcher {
     private Launcher() {
     }
 
-    /** The one line printed when there is no display to open a window on. */
-    static final String NO_DISPLAY =
-            "No display to open a window on. Run it under a virtual one: xvfb-run -a gradle run";
+    /**
+     * The one line printed when there is no display to open a window on.
+     *
+     * @param command what to run under the virtual display, e.g. "gradle run"
+     * @return the message
+     */
+    static String noDisplay(String command) {
+        return "No display to open a window on. Run it under a virtual one: xvfb-run -a " + command;
+    }
 
     /**
      * Opens the gallery (no arguments) or the named sketch.
@@ -23,8 +28,8 @@ public final class Launcher {
      * @param args nothing, or a sketch's folder name
      */
     public static void main(String[] args) {
-        if (GraphicsEnvironment.isHeadless()) {
-            System.err.println(NO_DISPLAY);
+        if (!SketchRun.displayAvailable()) {
+            System.err.println(noDisplay("gradle run"));
             System.exit(2);
         }
         Catalog catalog = Catalog.load();

@@ -20,7 +20,7 @@ public final class Screenshots {
      */
     public static void main(String[] args) {
         if (!SketchRun.displayAvailable()) {
-            System.err.println("No display to open a window on. Run it under a virtual one: xvfb-run -a gradle screenshots");
+            System.err.println(Launcher.noDisplay("gradle screenshots"));
             System.exit(2);
         }
         Catalog catalog = Catalog.load();
@@ -29,7 +29,7 @@ public final class Screenshots {
                         "No sketch named \"" + n + "\". The sketches are: " + catalog.names()))).toList();
         int failures = 0;
         for (Catalog.SketchInfo info : chosen) {
-            Script script = info.screenshotScript().isFile() ? Script.read(info.screenshotScript()) : new Script();
+            Script script = info.readScript();
             try {
                 SketchRun.of(info.newInstance()).script(script)
                         .saveFrame(script.frames(), info.screenshot())
