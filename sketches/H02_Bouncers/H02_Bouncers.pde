@@ -35,7 +35,7 @@ class Bouncer {
   float y;
   float vx;
   float vy;
-  int colour;
+  color colour;
   int blocked = Motion.NONE;  // this frame's answer for its next position
   int colourChanges = 0;
 
@@ -81,11 +81,8 @@ class Bouncer {
   }
 }
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   randomSeed(2);
   colorMode(HSB, 360, 100, 100);
   for (int i = 0; i < obstacleCount; i++) {
@@ -104,19 +101,19 @@ public void setup() {
 }
 
 float randomSpeed() {
-  return random(1, 2.5f) * (random(1) < 0.5f ? -1 : 1);
+  return random(1, 2.5) * (random(1) < 0.5 ? -1 : 1);
 }
 
 // A bright random colour, never the one it had.
-int newColour(int old) {
-  int c = old;
+color newColour(color old) {
+  color c = old;
   while (c == old) {
     c = color(random(30, 330), 70, 100);  // any hue but red, which means "hit" here
   }
   return c;
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   hitsThisFrame = 0;
   for (Bouncer b : bouncers) {
@@ -154,7 +151,7 @@ void drawMaths() {
   pushStyle();
   noFill();
   stroke(Overlay.GUIDE);
-  strokeWeight(1.5f);
+  strokeWeight(1.5);
   ellipse(b.x + size / 2, b.y + size / 2, 34, 34);
   strokeWeight(1);
   stroke(hitX >= 0 ? Overlay.HIT : Overlay.MISS);
@@ -182,7 +179,7 @@ void nameObstacle(int i) {
   }
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   }

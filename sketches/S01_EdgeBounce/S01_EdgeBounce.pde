@@ -17,21 +17,18 @@ import hitbox.processing.*;
 float x = 300;
 float y = 140;
 float r = 24;
-float vx = 4.5f;
-float vy = 3.2f;
+float vx = 4.5;
+float vy = 3.2;
 String mode = "bounce";
 boolean showMaths = false;
 int crossedThisFrame = Edges.NONE;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textSize(14);
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
 
   x += vx;
@@ -88,14 +85,14 @@ void edgeLabel(float lx, float ly, String test, float left, String op, float rig
       crossed ? Overlay.HIT : Overlay.MISS);
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == 'b' || key == 'w') {
     mode = key == 'b' ? "bounce" : "wrap";
     if (vx == 0 && vy == 0) {  // coming back from "stop": give it a push
-      vx = 4.5f;
-      vy = 3.2f;
+      vx = 4.5;
+      vy = 3.2;
     }
   } else if (key == 's') {
     mode = "stop";

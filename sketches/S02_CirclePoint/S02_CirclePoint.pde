@@ -20,15 +20,12 @@ float r = 100;    // its radius (Processing's circle() takes the diameter, 2 * r
 boolean inside;       // the answer for this frame, kept for the tests
 boolean showMaths;    // the 'd' overlay
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
 
   // The whole idea in one line: is the point (mouseX, mouseY) inside the circle?
@@ -54,8 +51,8 @@ public void draw() {
 void drawMaths() {
   float d = dist(cx, cy, mouseX, mouseY);
   // The direction from the centre to the mouse (to the right when the mouse is on the centre).
-  float ux = d > 0.5f ? (mouseX - cx) / d : 1;
-  float uy = d > 0.5f ? (mouseY - cy) / d : 0;
+  float ux = d > 0.5 ? (mouseX - cx) / d : 1;
+  float uy = d > 0.5 ? (mouseY - cy) / d : 0;
   // The radius, along the same direction, set to one side (-uy, ux) of the distance line.
   Overlay.radius(g, cx, cy, ux, uy, r, "r");
 
@@ -70,11 +67,11 @@ void drawMaths() {
   circle(cx, cy, 6);
 
   // The test itself, written out.
-  int colour = inside ? Overlay.HIT : Overlay.MISS;
+  color colour = inside ? Overlay.HIT : Overlay.MISS;
   Overlay.labelCentered(g, width / 2, 28, "dist < r\n" + Overlay.verdict(d, "<", r, inside), colour);
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   }

@@ -22,15 +22,12 @@ float r2 = 100;
 boolean colliding;    // the answer for this frame, kept for the tests
 boolean showMaths;    // the 'd' overlay
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   float x1 = mouseX;
   float y1 = mouseY;
@@ -58,8 +55,8 @@ public void draw() {
 void drawMaths(float x1, float y1) {
   float d = dist(x1, y1, x2, y2);
   // The direction from circle 1 to circle 2 (to the right when the centres coincide).
-  float ux = d > 0.5f ? (x2 - x1) / d : 1;
-  float uy = d > 0.5f ? (y2 - y1) / d : 0;
+  float ux = d > 0.5 ? (x2 - x1) / d : 1;
+  float uy = d > 0.5 ? (y2 - y1) / d : 0;
   // Sideways: radius 1 is drawn on this side of the line, radius 2 on the other.
   float px = -uy;
   float py = ux;
@@ -78,12 +75,12 @@ void drawMaths(float x1, float y1) {
   Overlay.labelBeside(g, (x1 + x2) / 2 - px * 18, (y1 + y2) / 2 - py * 18, -px, -py, "dist = " + Overlay.number(d), Overlay.GUIDE);
 
   // The test itself, written out at the top, or at the bottom while the mouse circle is up there.
-  int colour = colliding ? Overlay.HIT : Overlay.MISS;
+  color colour = colliding ? Overlay.HIT : Overlay.MISS;
   float verdictY = y1 - r1 < 50 ? height - 46 : 28;
   Overlay.labelCentered(g, width / 2, verdictY, "dist < r1 + r2\n" + Overlay.verdict(d, "<", r1 + r2, colliding), colour);
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   }

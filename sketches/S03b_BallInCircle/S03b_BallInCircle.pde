@@ -24,12 +24,12 @@ float R = 90;
 // The ball: position, speed (pixels a frame), radius.
 float x = 110;
 float y = 90;
-float vx = 3.3f;
-float vy = 2.1f;
+float vx = 3.3;
+float vy = 2.1;
 float r = 22;
 
 boolean inside;       // does the ball overlap the circle this frame?
-int ballColour;       // what the ball is drawn in, kept for the tests
+color ballColour;       // what the ball is drawn in, kept for the tests
 int crossed;          // the window edges the ball crossed last time it bounced
 int bounceFrame = -1000;
 boolean paused;
@@ -39,11 +39,8 @@ boolean showMaths;    // the 'd' overlay
 float[] trailX = new float[14];
 float[] trailY = new float[14];
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
   for (int i = 0; i < trailX.length; i++) {
     trailX[i] = x;
@@ -51,7 +48,7 @@ public void setup() {
   }
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   if (!paused) {
     move();
@@ -70,7 +67,7 @@ public void draw() {
   noStroke();
   for (int i = 0; i < trailX.length; i++) {
     fill(ballColour, 10 + i * 6);
-    circle(trailX[i], trailY[i], 2 * r * (0.4f + 0.04f * i));
+    circle(trailX[i], trailY[i], 2 * r * (0.4 + 0.04 * i));
   }
   fill(ballColour);
   circle(x, y, 2 * r);
@@ -127,8 +124,8 @@ void drawBounce() {
 /** The distance between the centres, both radii, dist < r + R, and the edges of the last bounce. */
 void drawMaths() {
   float d = dist(x, y, cx, cy);
-  float ux = d > 0.5f ? (cx - x) / d : 1;
-  float uy = d > 0.5f ? (cy - y) / d : 0;
+  float ux = d > 0.5 ? (cx - x) / d : 1;
+  float uy = d > 0.5 ? (cy - y) / d : 0;
 
   Overlay.radius(g, x, y, ux, uy, r, "r");
   Overlay.radius(g, cx, cy, -ux, -uy, R, "R");
@@ -139,17 +136,17 @@ void drawMaths() {
   circle(cx, cy, 6);
   Overlay.labelBeside(g, (x + cx) / 2 + uy * 18, (y + cy) / 2 - ux * 18, uy, -ux, "dist = " + Overlay.number(d), Overlay.GUIDE);
 
-  int colour = inside ? Overlay.HIT : Overlay.MISS;
+  color colour = inside ? Overlay.HIT : Overlay.MISS;
   float verdictY = y - r < 60 && abs(x - width / 2) < 150 ? height - 46 : 28;
   Overlay.labelCentered(g, width / 2, verdictY, "dist < r + R\n" + Overlay.verdict(d, "<", r + R, inside), colour);
 }
 
-public void mousePressed() {
+void mousePressed() {
   x = Edges.circleClampX(mouseX, r, width);
   y = Edges.circleClampY(mouseY, r, height);
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == ' ') {

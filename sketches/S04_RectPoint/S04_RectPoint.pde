@@ -28,15 +28,12 @@ boolean lastCounted;
 int lastClickFrame = -1000;
 boolean showMaths;    // the 'd' overlay
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
 
   // The whole idea in one line: is the mouse inside the button?
@@ -123,11 +120,11 @@ void edge(float x1, float y1, float x2, float y2, boolean vertical, boolean hold
 }
 
 /** A comparison that holds pushes towards a collision: the colliding colour. */
-int colour(boolean holds) {
+color colour(boolean holds) {
   return holds ? Overlay.HIT : Overlay.MISS;
 }
 
-public void mousePressed() {
+void mousePressed() {
   // A click counts only if it lands inside the button: the same test as the hover.
   lastCounted = Collide.rectPoint(rx, ry, rw, rh, mouseX, mouseY);
   if (lastCounted) {
@@ -138,7 +135,7 @@ public void mousePressed() {
   lastClickFrame = frameCount;
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   }

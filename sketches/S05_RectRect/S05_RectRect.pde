@@ -28,15 +28,12 @@ float r1y;
 boolean colliding;    // the answer for this frame, kept for the tests
 boolean showMaths;    // the 'd' overlay
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   r1x = mouseX - r1w / 2;
   r1y = mouseY - r1h / 2;
@@ -128,11 +125,11 @@ void edgeLine(float at, boolean vertical, boolean holds) {
 }
 
 /** A comparison that holds pushes towards a collision: the colliding colour. */
-int colour(boolean holds) {
+color colour(boolean holds) {
   return holds ? Overlay.HIT : Overlay.MISS;
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   }

@@ -24,8 +24,8 @@ float x = 60;
 float y = 40;
 float w = 40;
 float h = 40;
-float vx = 3.5f;
-float vy = 2.5f;
+float vx = 3.5;
+float vy = 2.5;
 
 int blocked = Motion.NONE;   // this frame's answer from Motion.rectBlocked
 int crossed = Edges.NONE;    // this frame's answer from Edges.rectCrossed
@@ -34,15 +34,12 @@ boolean showMaths = false;
 boolean paused = false;
 boolean stepOnce = false;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textSize(14);
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
 
   // The tutorial's check, before moving: would the box, moved on one axis, hit the block?
@@ -121,7 +118,7 @@ void drawMaths() {
 }
 
 void nextBox(float bx, float by, boolean colliding) {
-  int colour = colliding ? Overlay.HIT : Overlay.MISS;
+  color colour = colliding ? Overlay.HIT : Overlay.MISS;
   pushStyle();
   fill(colour, 60);
   strokeWeight(2);
@@ -130,7 +127,7 @@ void nextBox(float bx, float by, boolean colliding) {
   popStyle();
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == 'p') {

@@ -22,7 +22,7 @@
 import hitbox.*;
 import hitbox.processing.*;
 
-float gravity = 0.5f;
+float gravity = 0.5;
 float jumpSpeed = 11;
 float walkSpeed = 3;
 float maxFall = 12;      // far below 48 (player height + shelf thickness): no fall skips a shelf
@@ -56,11 +56,8 @@ Rect yMoved;
 Rect yHit;
 boolean showMaths = false;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   solids.add(ground);
   solids.add(shelf);
   solids.add(crate);
@@ -68,7 +65,7 @@ public void setup() {
   solids.add(high);
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   step();
 
@@ -179,7 +176,7 @@ void showSnap(Rect moved, Rect hit, Side side, String what, String push, float l
   Overlay.label(g, x + w + 8, labelY, what + "\n" + push, Overlay.GUIDE);
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == ' ' || (key == CODED && keyCode == UP)) {
@@ -191,7 +188,7 @@ public void keyPressed() {
   }
 }
 
-public void keyReleased() {
+void keyReleased() {
   if (key == CODED && keyCode == LEFT) {
     leftDown = false;
   } else if (key == CODED && keyCode == RIGHT) {

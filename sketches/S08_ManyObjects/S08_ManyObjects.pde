@@ -27,8 +27,8 @@ float x = 20;
 float y = 20;
 float w = 30;
 float h = 30;
-float vx = 3.3f;
-float vy = 2.7f;
+float vx = 3.3;
+float vy = 2.7;
 float newW = 60;   // the size of a clicked obstacle
 float newH = 30;
 
@@ -43,11 +43,8 @@ boolean showMaths = false;
 boolean paused = false;
 boolean stepOnce = false;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   obstacles.add(new Rect(90, 70, 80, 40));
   obstacles.add(new Rect(260, 40, 40, 110));
   obstacles.add(new Rect(400, 80, 110, 30));
@@ -59,7 +56,7 @@ public void setup() {
   glow = new int[obstacles.size()];
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
 
   // Section 6's check, against every obstacle at once, and which ones it would hit.
@@ -156,7 +153,7 @@ String list(int[] indices) {
 }
 
 void nextBox(float bx, float by, boolean colliding) {
-  int colour = colliding ? Overlay.HIT : Overlay.MISS;
+  color colour = colliding ? Overlay.HIT : Overlay.MISS;
   pushStyle();
   fill(colour, 60);
   strokeWeight(2);
@@ -165,7 +162,7 @@ void nextBox(float bx, float by, boolean colliding) {
   popStyle();
 }
 
-public void mousePressed() {
+void mousePressed() {
   Rect added = Rect.centered(mouseX, mouseY, newW, newH);
   if (added.overlaps(new Rect(x, y, w, h))) {
     message = "not added: it would be on top of the box";
@@ -177,7 +174,7 @@ public void mousePressed() {
   messageFrames = 90;
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == 'p') {

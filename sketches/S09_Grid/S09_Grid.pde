@@ -21,7 +21,7 @@ import hitbox.processing.*;
 int cols = 20;
 int rows = 20;
 float cell = 20;
-float solidShare = 0.2f;
+float solidShare = 0.2;
 long seed = 1;
 Grid grid = new Grid(cols, rows, cell).fillRandom(solidShare, seed, 0, 0);
 int col = 0;
@@ -29,11 +29,11 @@ int row = 0;
 String lastMove = "use the arrow keys";
 boolean showMaths = false;
 
-public void settings() {
+void setup() {
   size(600, 420);  // the 400 x 400 grid, a panel on the right, the key hint below
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   drawGrid();
   fill(Palette.PLAYER);
@@ -112,7 +112,7 @@ void drawMaths() {
 // One of the player's four neighbours: outlined and labelled free or solid, as canMove says.
 void neighbour(int dc, int dr, String name, float lx, float ly) {
   boolean free = grid.canMove(col, row, dc, dr);
-  int colour = free ? Overlay.MISS : Overlay.HIT;
+  color colour = free ? Overlay.MISS : Overlay.HIT;
   pushStyle();
   noFill();
   stroke(colour);
@@ -123,7 +123,7 @@ void neighbour(int dc, int dr, String name, float lx, float ly) {
   Overlay.label(g, lx, ly, free ? "free" : outside ? "edge" : "solid", colour);
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == 'r') {

@@ -35,15 +35,12 @@ boolean[] segmentHit = new boolean[3];  // this frame's answers, kept for the te
 boolean boxHit, ballHit;
 boolean showMaths;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   bx = mouseX;
   by = mouseY;
@@ -180,12 +177,12 @@ String side(float x1, float y1, float x2, float y2, float px, float py) {
   return side > 0 ? "right" : side < 0 ? "left" : "on it";
 }
 
-public void mousePressed() {
+void mousePressed() {
   ax = mouseX;
   ay = mouseY;
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   }

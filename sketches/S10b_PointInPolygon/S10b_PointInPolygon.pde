@@ -31,15 +31,12 @@ ArrayList<Integer> countedEdges = new ArrayList<Integer>();
 ArrayList<RayHit> touched = new ArrayList<RayHit>();     // met, but not counted
 boolean showMaths;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   px = mouseX;
   py = mouseY;
@@ -162,8 +159,8 @@ void drawMaths() {
       line(e.x1(), e.y1(), e.x2(), e.y2());
     }
     // The edge's number, just outside it, a quarter of the way along.
-    float mx = lerp(e.x1(), e.x2(), 0.25f);
-    float my = lerp(e.y1(), e.y2(), 0.25f);
+    float mx = lerp(e.x1(), e.x2(), 0.25);
+    float my = lerp(e.y1(), e.y2(), 0.25);
     float nx = e.y2() - e.y1();
     float ny = -(e.x2() - e.x1());
     float len = dist(0, 0, nx, ny);
@@ -188,7 +185,7 @@ void drawMaths() {
   }
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   }

@@ -22,7 +22,7 @@ import hitbox.processing.*;
 import java.util.List;
 
 float cx = 280, cy = 215;     // the rectangle's centre
-float angle = 0.35f;
+float angle = 0.35;
 boolean turning = true;
 int sides = 3;
 int panelX = 566;             // the axes panel, right of the shapes
@@ -34,18 +34,15 @@ int separating = -1;          // the separating axis drawn beside the shapes (wi
 int shown = -1;               // the axis drawn beside the shapes: the separating one, or the least overlap
 boolean showMaths;
 
-public void settings() {
+void setup() {
   size(840, 440);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   if (turning) {
-    angle += 0.006f;
+    angle += 0.006;
   }
   box = Polygon.rotatedRect(cx, cy, 170, 90, angle);
   mover = Polygon.regular(mouseX, mouseY, 52, sides, -HALF_PI);
@@ -124,7 +121,7 @@ void drawAxisInPlace(int i) {
   float d = flip ? minus : plus;
   float ox = cx + px * d, oy = cy + py * d;
   boolean separates = a.separates();
-  int colour = separates ? Palette.MISS : Palette.HIT;
+  color colour = separates ? Palette.MISS : Palette.HIT;
 
   if (showMaths) {
     // The light that casts the shadows: from each shadow's ends straight back across the
@@ -139,7 +136,7 @@ void drawAxisInPlace(int i) {
   }
 
   stroke(colour);
-  strokeWeight(1.5f);
+  strokeWeight(1.5);
   line(ox + nx * lo, oy + ny * lo, ox + nx * hi, oy + ny * hi);
   strokeCap(SQUARE);
   strokeWeight(6);
@@ -177,7 +174,7 @@ float outOfView(float ox, float oy, float nx, float ny, float lo, float hi) {
 /** Every axis as a row: its direction, both shadows to scale, and whether it separates. */
 void drawPanel() {
   noStroke();
-  fill(0xFF171A20);
+  fill(#171A20);
   rect(panelX, 0, width - panelX, height);
   fill(Palette.NEUTRAL);
   textAlign(LEFT, TOP);
@@ -198,17 +195,17 @@ void drawRow(int i, float y, int rowH) {
     rect(panelX + 4, y - 2, width - panelX - 8, rowH - 2, 4);
   }
   // The direction, as a little arrow in a circle.
-  float gx = panelX + 20, gy = y + rowH / 2f - 1;
+  float gx = panelX + 20, gy = y + rowH / 2.0 - 1;
   noFill();
   stroke(Palette.LINE);
   strokeWeight(1);
   circle(gx, gy, 24);
   stroke(Palette.NEUTRAL);
-  strokeWeight(1.5f);
+  strokeWeight(1.5);
   Draw.arrow(g, gx - a.nx() * 9, gy - a.ny() * 9, a.nx() * 18, a.ny() * 18);
 
   // The name and the verdict.
-  fill(separates ? Palette.MISS : 0xFFAAB0BC);
+  fill(separates ? Palette.MISS : #AAB0BC);
   textAlign(LEFT, TOP);
   textSize(11);
   text((i + 1) + "  " + owner(i), panelX + 38, y);
@@ -229,13 +226,13 @@ void drawRow(int i, float y, int rowH) {
   float gapLo = min(a.maxA(), a.maxB()), gapHi = max(a.minA(), a.minB());
   if (separates) {
     stroke(Palette.ACCENT);
-    strokeWeight(1.5f);
+    strokeWeight(1.5);
     float gx0 = map(gapLo, lo, hi, x0, x1), gx1 = map(gapHi, lo, hi, x0, x1);
     line(gx0, barY - 4, gx0, barY + 10);
     line(gx1, barY - 4, gx1, barY + 10);
   }
   if (showMaths && rowH >= 30) {
-    fill(0xFFAAB0BC);
+    fill(#AAB0BC);
     textSize(10);
     textAlign(LEFT, TOP);
     text("[" + Overlay.number(a.minA()) + ", " + Overlay.number(a.maxA()) + "]  ["
@@ -243,7 +240,7 @@ void drawRow(int i, float y, int rowH) {
   }
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key >= '3' && key <= '6') {

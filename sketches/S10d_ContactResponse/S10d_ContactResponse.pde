@@ -27,7 +27,7 @@ int mode = PUSH;
 
 float r = 18;              // the ball
 float x = 300, y = 340;
-float vx = 3.1f, vy = -2.3f;
+float vx = 3.1, vy = -2.3;
 
 Shape[] shapes = {
     new Circle(160, 230, 55),
@@ -57,11 +57,8 @@ int shownFor;
 
 boolean showMaths;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
   walls = new Shape[] {
       new Rect(-100, -100, width + 200, 100),
@@ -71,7 +68,7 @@ public void setup() {
   };
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   move();
 
@@ -90,7 +87,7 @@ public void draw() {
     // Where the mouse would put the ball: inside a shape.
     noFill();
     stroke(Palette.PLAYER, 160);
-    strokeWeight(1.5f);
+    strokeWeight(1.5);
     circle(ghostX, ghostY, 2 * r);
   }
   noStroke();
@@ -204,7 +201,7 @@ void drawContact() {
     // The ball has moved on: where it was when it touched.
     noFill();
     stroke(Palette.PLAYER, 140);
-    strokeWeight(1.5f);
+    strokeWeight(1.5);
     circle(shownX, shownY, 2 * r);
   }
   if (mode != PUSH) {
@@ -219,7 +216,7 @@ void drawContact() {
   // ball (a) into the shape (b).
   float tx = shownX + nx * r, ty = shownY + ny * r;
   stroke(Palette.ACCENT);
-  strokeWeight(2.5f);
+  strokeWeight(2.5);
   Draw.arrow(g, tx, ty, nx * 34, ny * 34);
   noStroke();
   fill(Palette.ACCENT);
@@ -240,7 +237,7 @@ void drawContact() {
     float bx = shownX + sx * off, by = shownY + sy * off;
     Overlay.guide(g, ax, ay, bx, by);
     stroke(Overlay.GUIDE);
-    strokeWeight(1.5f);
+    strokeWeight(1.5);
     line(ax - sx * 5, ay - sy * 5, ax + sx * 5, ay + sy * 5);
     line(bx - sx * 5, by - sy * 5, bx + sx * 5, by + sy * 5);
     Overlay.labelBeside(g, (ax + bx) / 2 + sx * side * 6, (ay + by) / 2 + sy * side * 6, sx * side, sy * side,
@@ -266,7 +263,7 @@ void drawContact() {
   Overlay.label(g, 8, ly, text, Overlay.GUIDE);
 }
 
-public void mousePressed() {
+void mousePressed() {
   if (mode == BOUNCE) {
     float dx = mouseX - x, dy = mouseY - y;
     float d = dist(0, 0, dx, dy);
@@ -277,15 +274,15 @@ public void mousePressed() {
   }
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key >= '1' && key <= '3') {
     mode = key - '0';
     shownFor = 0;
     if (mode == BOUNCE && vx == 0 && vy == 0) {
-      vx = 3.1f;
-      vy = -2.3f;
+      vx = 3.1;
+      vy = -2.3;
     }
   }
 }

@@ -54,11 +54,8 @@ int shots, naiveTunnels, sweptTunnels;   // the tally
 int hold;                                // frames left showing a finished shot
 boolean showMaths;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
   randomSeed(7);
   newShot();
@@ -86,7 +83,7 @@ void newShot() {
   sweptSamples.add(new float[] {x0, 0});
 }
 
-public void draw() {
+void draw() {
   if (hold > 0) {
     hold--;
     if (hold == 0) {
@@ -236,13 +233,13 @@ void drawMaths() {
     float shownTo = constrain(impactToX, 4, width - 4);
     Overlay.guide(g, impactFromX, py, shownTo, py);
     stroke(Overlay.GUIDE);
-    strokeWeight(1.5f);
+    strokeWeight(1.5);
     line(impactFromX, py - 5, impactFromX, py + 5);
     if (impactToX <= width) {
       line(impactToX, py - 5, impactToX, py + 5);
     }
     stroke(Overlay.HIT);
-    strokeWeight(2.5f);
+    strokeWeight(2.5);
     line(impactAtX, py - 7, impactAtX, py + 7);   // t of the way along the step
     noFill();
     stroke(Overlay.HIT);
@@ -269,14 +266,14 @@ void sample(float x, float y, boolean hit) {
   }
   noFill();
   stroke(hit ? Overlay.HIT : Overlay.GUIDE, 170);
-  strokeWeight(1.5f);
+  strokeWeight(1.5);
   circle(x, y, 2 * r);
   noStroke();
   fill(hit ? Overlay.HIT : Overlay.GUIDE);
   circle(x, y, 4);
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if ((key == '+' || key == '=') && speedIndex < speeds.length - 1) {

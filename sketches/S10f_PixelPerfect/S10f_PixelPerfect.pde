@@ -18,10 +18,10 @@ import hitbox.*;
 import hitbox.processing.*;
 
 // One colour per stage that can decide.
-int CIRCLES_COLOUR = 0xFFB48EF0;   // apart by the circles: the cheapest answer
-int BOXES_COLOUR = Palette.ACCENT; // apart by the boxes
-int PIXELS_COLOUR = Palette.MISS;  // the pixel test ran: no shared pixel
-int HIT_COLOUR = Palette.HIT;      // the pixel test ran: colliding
+color CIRCLES_COLOUR = #B48EF0;   // apart by the circles: the cheapest answer
+color BOXES_COLOUR = Palette.ACCENT; // apart by the boxes
+color PIXELS_COLOUR = Palette.MISS;  // the pixel test ran: no shared pixel
+color HIT_COLOUR = Palette.HIT;      // the pixel test ran: colliding
 
 PGraphics star, ring, smallStar;       // the sprites, drawn in code
 PixelMask starMask, ringMask, smallMask;
@@ -44,11 +44,8 @@ Hybrid.Result[] crowdResults = new Hybrid.Result[48];
 
 boolean showMaths;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
   star = starSprite(170, 82, 34);
   ring = ringSprite(100, 40, 12);
@@ -83,7 +80,7 @@ PGraphics starSprite(int size, float outer, float inner) {
   for (int i = 0; i < 10; i++) {
     float a = -HALF_PI + i * PI / 5;
     float rr = i % 2 == 0 ? outer : inner;
-    s.vertex(size / 2f + rr * cos(a), size / 2f + 3 + rr * sin(a));
+    s.vertex(size / 2.0 + rr * cos(a), size / 2.0 + 3 + rr * sin(a));
   }
   s.endShape(CLOSE);
   s.endDraw();
@@ -98,12 +95,12 @@ PGraphics ringSprite(int size, float radius, float thickness) {
   s.noFill();
   s.stroke(255);
   s.strokeWeight(thickness);
-  s.circle(size / 2f, size / 2f, 2 * radius);
+  s.circle(size / 2.0, size / 2.0, 2 * radius);
   s.endDraw();
   return s;
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   ringX = mouseX - ring.width / 2;
   ringY = mouseY - ring.height / 2;
@@ -158,7 +155,7 @@ void drawCrowd() {
     Rect b = ringMask.bounds();
     noFill();
     stroke(CIRCLES_COLOUR);
-    strokeWeight(1.5f);
+    strokeWeight(1.5);
     circle(ringX + b.x() + b.w() / 2, ringY + b.y() + b.h() / 2, dist(0, 0, b.w(), b.h()));
   }
   drawStages(null, crowdCounter);
@@ -170,13 +167,13 @@ void drawCrowd() {
 }
 
 /** A white sprite drawn in a colour. */
-void sprite(PGraphics s, int x, int y, int colour, int alpha) {
+void sprite(PGraphics s, int x, int y, color colour, int alpha) {
   tint(colour, alpha);
   image(s, x, y);
   noTint();
 }
 
-int stageColour(Hybrid.Result r) {
+color stageColour(Hybrid.Result r) {
   if (r.overlaps()) {
     return HIT_COLOUR;
   }
@@ -201,7 +198,7 @@ void drawStages(Hybrid.Result r, Hybrid.Counter crowd) {
     boolean decided = r != null && r.decidedBy().ordinal() == i;
     boolean passed = r != null && r.decidedBy().ordinal() > i;
     stroke(colours[i]);
-    strokeWeight(decided ? 3 : 1.5f);
+    strokeWeight(decided ? 3 : 1.5);
     fill(decided ? colours[i] : Palette.BACKGROUND);
     rect(x, 10, w, 26, 6);
     fill(decided ? Palette.BACKGROUND : colours[i]);
@@ -241,7 +238,7 @@ void drawPairMaths() {
   float bcx = bx + b.w() / 2, bcy = by + b.h() / 2, br = dist(0, 0, b.w(), b.h()) / 2;
   noFill();
   stroke(CIRCLES_COLOUR);
-  strokeWeight(1.5f);
+  strokeWeight(1.5);
   circle(acx, acy, 2 * ar);
   circle(bcx, bcy, 2 * br);
   float d = dist(acx, acy, bcx, bcy);
@@ -260,7 +257,7 @@ void drawPairMaths() {
   if (circlesMeet) {
     noFill();
     stroke(BOXES_COLOUR);
-    strokeWeight(1.5f);
+    strokeWeight(1.5);
     rect(ax, ay, a.w(), a.h());
     rect(bx, by, b.w(), b.h());
     boolean boxesMeet = result.decidedBy() == Hybrid.Stage.PRECISE;
@@ -281,14 +278,14 @@ void markPixel(int px, int py) {
   stroke(Palette.ACCENT);
   strokeWeight(2);
   rect(px - 3, py - 3, 7, 7);
-  line(px - 12, py + 0.5f, px - 5, py + 0.5f);
-  line(px + 6, py + 0.5f, px + 13, py + 0.5f);
-  line(px + 0.5f, py - 12, px + 0.5f, py - 5);
-  line(px + 0.5f, py + 6, px + 0.5f, py + 13);
+  line(px - 12, py + 0.5, px - 5, py + 0.5);
+  line(px + 6, py + 0.5, px + 13, py + 0.5);
+  line(px + 0.5, py - 12, px + 0.5, py - 5);
+  line(px + 0.5, py + 6, px + 0.5, py + 13);
   Overlay.labelBeside(g, px - 14, py, -1, 0, "first shared pixel (" + px + ", " + py + ")", Palette.ACCENT);
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == 'c') {
