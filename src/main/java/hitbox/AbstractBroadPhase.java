@@ -11,21 +11,22 @@ import java.util.function.IntConsumer;
  *
  * <p>The exact test is {@link #overlap}: {@link Collide#rectRect} with each box's right and
  * bottom edges stored as {@code (double) x + w}, the very sums rectRect makes, so the answers
- * are the same to the last bit.
+ * are the same to the last bit. A box is kept as four doubles side by side, {@code x, right,
+ * y, bottom} (see {@link #box}): one array read in order is what makes the tight loops fast.
  */
 abstract class AbstractBroadPhase implements BroadPhase {
 
     /** How many boxes are stored: slots 0 to count - 1. */
     int count;
     int[] ids = new int[0];
-    float[] xs = new float[0];
-    float[] ys = new float[0];
+    /**
+     * Slot s's box at {@code 4 * s}: its left edge x, its right edge {@code (double) x + w} (as
+     * rectRect computes it), its top edge y and its bottom edge {@code (double) y + h}.
+     */
+    double[] box = new double[0];
+    /** The sizes as given, for {@link #w} and {@link #h} (right - x may round differently). */
     float[] ws = new float[0];
     float[] hs = new float[0];
-    /** {@code (double) x + w}: the right edge as rectRect computes it. */
-    double[] rights = new double[0];
-    /** {@code (double) y + h}: the bottom edge as rectRect computes it. */
-    double[] bottoms = new double[0];
 
     /** Box tests made so far; {@link #checks} is the difference over one call. */
     long tally;
@@ -81,25 +82,22 @@ abstract class AbstractBroadPhase implements BroadPhase {
     /**
      * {@link Collide#rectRect}, on left and top edges and the right and bottom edges as it
      * computes them ({@code (double) x + w}); floats widen to double exactly, so this is the
-     * same comparison.
+     * same comparison. The four comparisons are joined with {@code &}, not {@code &&}: no
+     * branch for the processor to guess wrong in the loops that call this millions of times.
      */
     static boolean overlap(double x1, double right1, double y1, double bottom1,
                            double x2, double right2, double y2, double bottom2) {
-        return right1 > x2 && x1 < right2 && bottom1 > y2 && y1 < bottom2;
+        return right1 > x2 & x1 < right2 & bottom1 > y2 & y1 < bottom2;
     }
 
-    /** Do the boxes in two slots overlap? */
-    final boolean overlapSlots(int s, int t) {
-        return overlap(xs[s], rights[s], ys[s], bottoms[s], xs[t], rights[t], ys[t], bottoms[t]);
+    /** Do the boxes at i and j overlap, each four doubles as in {@link #box}? */
+    static boolean overlap(double[] a, int i, double[] b, int j) {
+        return overlap(a[i], a[i + 1], a[i + 2], a[i + 3], b[j], b[j + 1], b[j + 2], b[j + 3]);
     }
 
-    /** Reports a pair, smaller id first. */
+    /** Reports a pair, smaller id first (min and max, not an if: which comes first is a coin toss). */
     static void emit(PairConsumer out, int idA, int idB) {
-        if (idA < idB) {
-            out.pair(idA, idB);
-        } else {
-            out.pair(idB, idA);
-        }
+        out.pair(Math.min(idA, idB), Math.max(idA, idB));
     }
 
     // ---------------------------------------------------------------- changing
@@ -123,7 +121,7 @@ abstract class AbstractBroadPhase implements BroadPhase {
             slotOf.put(id, slot);
             added(slot);
         } else {
-            float oldX = xs[slot], oldY = ys[slot];
+            float oldX = (float) box[4 * slot], oldY = (float) box[4 * slot + 2];
             store(slot, x, y, w, h);
             moved(slot, oldX, oldY);
         }
@@ -137,12 +135,13 @@ abstract class AbstractBroadPhase implements BroadPhase {
     }
 
     private void store(int slot, float x, float y, float w, float h) {
-        xs[slot] = x;
-        ys[slot] = y;
+        int k = 4 * slot;
+        box[k] = x;
+        box[k + 1] = (double) x + w;
+        box[k + 2] = y;
+        box[k + 3] = (double) y + h;
         ws[slot] = w;
         hs[slot] = h;
-        rights[slot] = (double) x + w;
-        bottoms[slot] = (double) y + h;
     }
 
     @Override
@@ -157,7 +156,9 @@ abstract class AbstractBroadPhase implements BroadPhase {
         int last = count - 1;
         if (slot != last) {
             ids[slot] = ids[last];
-            store(slot, xs[last], ys[last], ws[last], hs[last]);
+            System.arraycopy(box, 4 * last, box, 4 * slot, 4);
+            ws[slot] = ws[last];
+            hs[slot] = hs[last];
             slotOf.put(ids[slot], slot);
             relocated(last, slot);
         }
@@ -177,12 +178,9 @@ abstract class AbstractBroadPhase implements BroadPhase {
     private void grow() {
         int capacity = Math.max(16, ids.length * 2);
         ids = Arrays.copyOf(ids, capacity);
-        xs = Arrays.copyOf(xs, capacity);
-        ys = Arrays.copyOf(ys, capacity);
+        box = Arrays.copyOf(box, 4 * capacity);
         ws = Arrays.copyOf(ws, capacity);
         hs = Arrays.copyOf(hs, capacity);
-        rights = Arrays.copyOf(rights, capacity);
-        bottoms = Arrays.copyOf(bottoms, capacity);
         grown(capacity);
     }
 
@@ -200,12 +198,12 @@ abstract class AbstractBroadPhase implements BroadPhase {
 
     @Override
     public final float x(int id) {
-        return xs[slotOf(id)];
+        return (float) box[4 * slotOf(id)];
     }
 
     @Override
     public final float y(int id) {
-        return ys[slotOf(id)];
+        return (float) box[4 * slotOf(id) + 2];
     }
 
     @Override
@@ -245,7 +243,7 @@ abstract class AbstractBroadPhase implements BroadPhase {
         reading++;
         try {
             for (int s = 0; s < count; s++) {
-                out.box(ids[s], xs[s], ys[s], ws[s], hs[s]);
+                out.box(ids[s], (float) box[4 * s], (float) box[4 * s + 2], ws[s], hs[s]);
             }
         } finally {
             reading--;
@@ -388,7 +386,7 @@ abstract class AbstractBroadPhase implements BroadPhase {
         @Override
         public void accept(int id) {
             int slot = slotOf.get(id);
-            if (overlapsBox(shape, xs[slot], ys[slot], ws[slot], hs[slot])) {
+            if (overlapsBox(shape, (float) box[4 * slot], (float) box[4 * slot + 2], ws[slot], hs[slot])) {
                 out.accept(id);
             }
         }
@@ -447,7 +445,8 @@ abstract class AbstractBroadPhase implements BroadPhase {
         /** Measures the box in a slot and keeps it if the ray goes into it. */
         void consider(int slot) {
             tally++;
-            float d = Ray.distanceToRect(ox, oy, dx, dy, maxDistance, xs[slot], ys[slot], ws[slot], hs[slot]);
+            float d = Ray.distanceToRect(ox, oy, dx, dy, maxDistance,
+                    (float) box[4 * slot], (float) box[4 * slot + 2], ws[slot], hs[slot]);
             if (d != Float.POSITIVE_INFINITY) {
                 if (hitCount == hits.length) {
                     hits = Arrays.copyOf(hits, hitCount * 2);

@@ -33,10 +33,12 @@ final class BruteForceBroadPhase extends AbstractBroadPhase {
     void findPairs(PairConsumer out) {
         int n = count;
         tally += (long) n * (n - 1) / 2;
+        double[] b = box;  // a local: the callback could change a field, so it would be read again after each
+        int[] id = ids;
         for (int s = 0; s < n; s++) {
             for (int t = s + 1; t < n; t++) {
-                if (overlapSlots(s, t)) {
-                    emit(out, ids[s], ids[t]);
+                if (overlap(b, 4 * s, b, 4 * t)) {
+                    emit(out, id[s], id[t]);
                 }
             }
         }
@@ -46,7 +48,8 @@ final class BruteForceBroadPhase extends AbstractBroadPhase {
     void findBoxes(double x, double y, double right, double bottom, IntConsumer out) {
         tally += count;
         for (int s = 0; s < count; s++) {
-            if (overlap(x, right, y, bottom, xs[s], rights[s], ys[s], bottoms[s])) {
+            int k = 4 * s;
+            if (overlap(x, right, y, bottom, box[k], box[k + 1], box[k + 2], box[k + 3])) {
                 out.accept(ids[s]);
             }
         }

@@ -14,98 +14,122 @@ import java.util.function.IntConsumer;
  * side and by {@link #MULTIPLIER} times its last move ahead of it. A fat box grown much too
  * large (the box was fast, now slow) is shrunk the same way.
  *
- * <p>The fat boxes are floats rounded outward, so each holds its box exactly; a tree box test
- * with strict comparisons then never loses a pair, and the leaves are decided by the exact
- * test on the stored boxes. Pairs come from walking the tree against itself, each pair of
- * subtrees once.
+ * <p>Each node is one record of eight doubles: its box (fat for a leaf, the union of its
+ * children's otherwise) as {@code minX, maxX, minY, maxY}, and for a leaf a copy of the stored
+ * box, {@code x, right, y, bottom}, so the exact test reads the line the tree test just read;
+ * and one record of four ints: its children (the first -1 for a leaf, the second then its
+ * slot), its parent and its height. The fat boxes are computed in double and each holds its
+ * box exactly, so a tree box test with strict comparisons never loses a pair.
+ *
+ * <p>Pairs, as Box2D's broad phase and contact list: a persistent list of candidates, the pairs
+ * of leaves whose fat boxes overlap. A fat box changes only when its leaf is (re-)inserted or
+ * removed, which marks the leaf; each {@link #pairs} call drops the candidates with a marked
+ * leaf, finds the candidates with a marked leaf by walking the tree against itself, skipping
+ * every pair of subtrees with no marked leaf (each node counts the marked leaves below it),
+ * and then runs the exact test over the list. So every pair whose fat boxes overlap is in the
+ * list, each once, and the walk costs in proportion to the leaves that left their fat boxes.
  */
 final class DynamicTreeBroadPhase extends AbstractBroadPhase {
     /** Pixels added on each side of a leaf's box (Box2D: 0.1 m, about 2 to 3 pixels at its usual scale). */
-    static final float EXTENSION = 2;
+    static final double EXTENSION = 2;
     /** How many frames of its last move a leaf's box is grown by ahead of it (Box2D 2.4: 4). */
-    static final float MULTIPLIER = 4;
+    static final double MULTIPLIER = 4;
     private static final int NONE = -1;
+    // A node's record in nd (8 doubles) and nl (4 ints).
+    private static final int BOX = 0;
+    private static final int TIGHT = 4;
+    private static final int CHILD1 = 0;
+    private static final int CHILD2 = 1;
+    private static final int PARENT = 2;
+    private static final int HEIGHT = 3;
 
-    private float[] minX = new float[0];
-    private float[] minY = new float[0];
-    private float[] maxX = new float[0];
-    private float[] maxY = new float[0];
-    private int[] parent = new int[0];
-    private int[] child1 = new int[0];
-    private int[] child2 = new int[0];
-    /** 0 for a leaf, -1 for a free node. */
-    private int[] height = new int[0];
-    private int[] slotOfLeaf = new int[0];
+    /** Node n's box at 8n: minX, maxX, minY, maxY; a leaf's stored box at 8n + 4: x, right, y, bottom. */
+    private double[] nd = new double[0];
+    /** Node n's links at 4n: child1 (-1 for a leaf), child2 (a leaf's slot), parent, height (0 for a leaf, -1 free). */
+    private int[] nl = new int[0];
     private int nodes;
     private int freeNode = NONE;
     private int root = NONE;
 
     private int[] leafOf = new int[0];
 
+    // The candidate list: leaves pairA[i] and pairB[i], whose fat boxes overlap.
+    private int[] pairA = new int[0];
+    private int[] pairB = new int[0];
+    private int pairCount;
+    /** Nodes whose leaf was inserted, re-inserted or removed since the last pairs(), and their list. */
+    private boolean[] marked = new boolean[0];
+    private int[] markedList = new int[0];
+    private int markedCount;
+    /** How many marked leaves are in each node's subtree (a leaf: 1 if marked). */
+    private int[] markedBelow = new int[0];
+
     // ---------------------------------------------------------------- changes
 
     @Override
     void added(int slot) {
         int leaf = newNode();
-        slotOfLeaf[leaf] = slot;
+        nl[4 * leaf + CHILD2] = slot;
         leafOf[slot] = leaf;
-        fatten(leaf, slot, 0, 0);
+        copyBox(leaf, slot);
+        fatten(leaf, 0, 0);
+        mark(leaf);
         insertLeaf(leaf);
+    }
+
+    /** Marks a node's leaf as changed: before it goes into the tree, so the refit counts it above. */
+    private void mark(int node) {
+        markedBelow[node] = 1;
+        if (!marked[node]) {
+            marked[node] = true;
+            if (markedCount == markedList.length) {
+                markedList = Arrays.copyOf(markedList, Math.max(16, 2 * markedCount));
+            }
+            markedList[markedCount++] = node;
+        }
     }
 
     @Override
     void moved(int slot, float oldX, float oldY) {
-        int leaf = leafOf[slot];
-        double dx = (double) xs[slot] - oldX, dy = (double) ys[slot] - oldY;
-        if (holds(leaf, slot)) {
+        int leaf = leafOf[slot], k = 4 * slot;
+        copyBox(leaf, slot);
+        double dx = box[k] - oldX, dy = box[k + 2] - oldY;
+        if (holds(leaf)) {
             // Still inside: nothing to do, unless the fat box is far larger than it would be now.
             double r = EXTENSION * 5;  // Box2D: the fat box it would get now, grown by 4 extensions more
-            double hugeMinX = xs[slot] - r + Math.min(0, MULTIPLIER * dx), hugeMaxX = rights[slot] + r + Math.max(0, MULTIPLIER * dx);
-            double hugeMinY = ys[slot] - r + Math.min(0, MULTIPLIER * dy), hugeMaxY = bottoms[slot] + r + Math.max(0, MULTIPLIER * dy);
-            if (hugeMinX <= minX[leaf] && hugeMinY <= minY[leaf] && maxX[leaf] <= hugeMaxX && maxY[leaf] <= hugeMaxY) {
+            int f = 8 * leaf;
+            if (box[k] - r + Math.min(0, MULTIPLIER * dx) <= nd[f] && nd[f + 1] <= box[k + 1] + r + Math.max(0, MULTIPLIER * dx)
+                    && box[k + 2] - r + Math.min(0, MULTIPLIER * dy) <= nd[f + 2] && nd[f + 3] <= box[k + 3] + r + Math.max(0, MULTIPLIER * dy)) {
                 return;
             }
         }
         removeLeaf(leaf);
-        fatten(leaf, slot, dx, dy);
+        fatten(leaf, dx, dy);
+        mark(leaf);
         insertLeaf(leaf);
     }
 
-    private boolean holds(int leaf, int slot) {
-        return minX[leaf] <= xs[slot] && minY[leaf] <= ys[slot] && rights[slot] <= maxX[leaf] && bottoms[slot] <= maxY[leaf];
+    private void copyBox(int leaf, int slot) {
+        System.arraycopy(box, 4 * slot, nd, 8 * leaf + TIGHT, 4);
     }
 
-    /** The leaf's fat box: the slot's box grown by the extension and by the move ahead, rounded outward. */
-    private void fatten(int leaf, int slot, double dx, double dy) {
-        double left = (double) xs[slot] - EXTENSION, top = (double) ys[slot] - EXTENSION;
-        double right = rights[slot] + EXTENSION, bottom = bottoms[slot] + EXTENSION;
+    /** Is the leaf's stored box inside its fat box? */
+    private boolean holds(int leaf) {
+        int f = 8 * leaf, t = f + TIGHT;
+        return nd[f] <= nd[t] && nd[t + 1] <= nd[f + 1] && nd[f + 2] <= nd[t + 2] && nd[t + 3] <= nd[f + 3];
+    }
+
+    /**
+     * The leaf's fat box: its stored box grown by the extension and by the move ahead. In double,
+     * where x - 2 can only round towards x, never past it: the fat box always holds the box.
+     */
+    private void fatten(int leaf, double dx, double dy) {
+        int f = 8 * leaf, t = f + TIGHT;
         double ax = MULTIPLIER * dx, ay = MULTIPLIER * dy;
-        if (ax < 0) {
-            left += ax;
-        } else {
-            right += ax;
-        }
-        if (ay < 0) {
-            top += ay;
-        } else {
-            bottom += ay;
-        }
-        minX[leaf] = down(left);
-        minY[leaf] = down(top);
-        maxX[leaf] = up(right);
-        maxY[leaf] = up(bottom);
-    }
-
-    /** The largest float at or below v. */
-    private static float down(double v) {
-        float f = (float) v;
-        return f > v ? Math.nextDown(f) : f;
-    }
-
-    /** The smallest float at or above v. */
-    private static float up(double v) {
-        float f = (float) v;
-        return f < v ? Math.nextUp(f) : f;
+        nd[f] = nd[t] - EXTENSION + Math.min(0, ax);
+        nd[f + 1] = nd[t + 1] + EXTENSION + Math.max(0, ax);
+        nd[f + 2] = nd[t + 2] - EXTENSION + Math.min(0, ay);
+        nd[f + 3] = nd[t + 3] + EXTENSION + Math.max(0, ay);
     }
 
     @Override
@@ -113,13 +137,14 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
         int leaf = leafOf[slot];
         removeLeaf(leaf);
         freeNode(leaf);
+        mark(leaf);  // its candidates go at the next pairs
     }
 
     @Override
     void relocated(int from, int to) {
         int leaf = leafOf[from];
         leafOf[to] = leaf;
-        slotOfLeaf[leaf] = to;
+        nl[4 * leaf + CHILD2] = to;
     }
 
     @Override
@@ -127,6 +152,11 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
         nodes = 0;
         freeNode = NONE;
         root = NONE;
+        pairCount = 0;
+        for (int i = 0; i < markedCount; i++) {
+            marked[markedList[i]] = false;
+        }
+        markedCount = 0;
     }
 
     @Override
@@ -140,101 +170,116 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
         int node;
         if (freeNode != NONE) {
             node = freeNode;
-            freeNode = parent[node];
+            freeNode = nl[4 * node + PARENT];
         } else {
-            if (nodes == parent.length) {
+            if (nodes == nl.length / 4) {
                 int capacity = Math.max(16, 2 * nodes);
-                minX = Arrays.copyOf(minX, capacity);
-                minY = Arrays.copyOf(minY, capacity);
-                maxX = Arrays.copyOf(maxX, capacity);
-                maxY = Arrays.copyOf(maxY, capacity);
-                parent = Arrays.copyOf(parent, capacity);
-                child1 = Arrays.copyOf(child1, capacity);
-                child2 = Arrays.copyOf(child2, capacity);
-                height = Arrays.copyOf(height, capacity);
-                slotOfLeaf = Arrays.copyOf(slotOfLeaf, capacity);
+                nd = Arrays.copyOf(nd, 8 * capacity);
+                nl = Arrays.copyOf(nl, 4 * capacity);
+                marked = Arrays.copyOf(marked, capacity);
+                markedBelow = Arrays.copyOf(markedBelow, capacity);
             }
             node = nodes++;
         }
-        parent[node] = NONE;
-        child1[node] = NONE;
-        child2[node] = NONE;
-        height[node] = 0;
-        slotOfLeaf[node] = NONE;
+        int l = 4 * node;
+        nl[l + CHILD1] = NONE;
+        nl[l + CHILD2] = NONE;
+        nl[l + PARENT] = NONE;
+        nl[l + HEIGHT] = 0;
+        markedBelow[node] = 0;
         return node;
     }
 
     private void freeNode(int node) {
-        parent[node] = freeNode;
-        height[node] = -1;
+        nl[4 * node + PARENT] = freeNode;
+        nl[4 * node + HEIGHT] = -1;
         freeNode = node;
     }
 
     private boolean isLeaf(int node) {
-        return child1[node] == NONE;
+        return nl[4 * node + CHILD1] == NONE;
     }
 
-    private static float perimeter(float x0, float y0, float x1, float y1) {
-        return 2 * ((x1 - x0) + (y1 - y0));
+    private int child1(int node) {
+        return nl[4 * node + CHILD1];
+    }
+
+    private int child2(int node) {
+        return nl[4 * node + CHILD2];
+    }
+
+    private int parent(int node) {
+        return nl[4 * node + PARENT];
+    }
+
+    private int height(int node) {
+        return nl[4 * node + HEIGHT];
+    }
+
+    private static double perimeter(double minX, double maxX, double minY, double maxY) {
+        return 2 * ((maxX - minX) + (maxY - minY));
+    }
+
+    private double perimeter(int node) {
+        int f = 8 * node;
+        return perimeter(nd[f], nd[f + 1], nd[f + 2], nd[f + 3]);
     }
 
     /** The perimeter of the union of node's box and the given one. */
-    private float unionPerimeter(int node, float x0, float y0, float x1, float y1) {
-        return perimeter(Math.min(minX[node], x0), Math.min(minY[node], y0), Math.max(maxX[node], x1), Math.max(maxY[node], y1));
+    private double unionPerimeter(int node, double minX, double maxX, double minY, double maxY) {
+        int f = 8 * node;
+        return perimeter(Math.min(nd[f], minX), Math.max(nd[f + 1], maxX), Math.min(nd[f + 2], minY), Math.max(nd[f + 3], maxY));
     }
 
     private void insertLeaf(int leaf) {
         if (root == NONE) {
             root = leaf;
-            parent[leaf] = NONE;
+            nl[4 * leaf + PARENT] = NONE;
             return;
         }
-        float lx0 = minX[leaf], ly0 = minY[leaf], lx1 = maxX[leaf], ly1 = maxY[leaf];
+        int f = 8 * leaf;
+        double lx0 = nd[f], lx1 = nd[f + 1], ly0 = nd[f + 2], ly1 = nd[f + 3];
         int index = root;
         while (!isLeaf(index)) {
-            int c1 = child1[index], c2 = child2[index];
-            float area = perimeter(minX[index], minY[index], maxX[index], maxY[index]);
-            float combined = unionPerimeter(index, lx0, ly0, lx1, ly1);
-            float cost = 2 * combined;                 // a new parent for this node and the leaf
-            float inheritance = 2 * (combined - area);  // the least cost of going further down
-            float cost1 = descentCost(c1, lx0, ly0, lx1, ly1) + inheritance;
-            float cost2 = descentCost(c2, lx0, ly0, lx1, ly1) + inheritance;
+            int c1 = child1(index), c2 = child2(index);
+            double area = perimeter(index);
+            double combined = unionPerimeter(index, lx0, lx1, ly0, ly1);
+            double cost = 2 * combined;                 // a new parent for this node and the leaf
+            double inheritance = 2 * (combined - area);  // the least cost of going further down
+            double cost1 = descentCost(c1, lx0, lx1, ly0, ly1) + inheritance;
+            double cost2 = descentCost(c2, lx0, lx1, ly0, ly1) + inheritance;
             if (cost < cost1 && cost < cost2) {
                 break;
             }
             index = cost1 < cost2 ? c1 : c2;
         }
         int sibling = index;
-        int oldParent = parent[sibling];
+        int oldParent = parent(sibling);
         int newParent = newNode();
-        parent[newParent] = oldParent;
-        minX[newParent] = Math.min(lx0, minX[sibling]);
-        minY[newParent] = Math.min(ly0, minY[sibling]);
-        maxX[newParent] = Math.max(lx1, maxX[sibling]);
-        maxY[newParent] = Math.max(ly1, maxY[sibling]);
-        height[newParent] = height[sibling] + 1;
+        nl[4 * newParent + PARENT] = oldParent;
         if (oldParent != NONE) {
             replaceChild(oldParent, sibling, newParent);
         } else {
             root = newParent;
         }
-        child1[newParent] = sibling;
-        child2[newParent] = leaf;
-        parent[sibling] = newParent;
-        parent[leaf] = newParent;
-        refit(parent[leaf]);
+        nl[4 * newParent + CHILD1] = sibling;
+        nl[4 * newParent + CHILD2] = leaf;
+        nl[4 * sibling + PARENT] = newParent;
+        nl[4 * leaf + PARENT] = newParent;
+        refit(newParent);
     }
 
-    private float descentCost(int c, float x0, float y0, float x1, float y1) {
-        float grown = unionPerimeter(c, x0, y0, x1, y1);
-        return isLeaf(c) ? grown : grown - perimeter(minX[c], minY[c], maxX[c], maxY[c]);
+    private double descentCost(int c, double minX, double maxX, double minY, double maxY) {
+        double grown = unionPerimeter(c, minX, maxX, minY, maxY);
+        return isLeaf(c) ? grown : grown - perimeter(c);
     }
 
     private void replaceChild(int node, int old, int now) {
-        if (child1[node] == old) {
-            child1[node] = now;
+        int l = 4 * node;
+        if (nl[l + CHILD1] == old) {
+            nl[l + CHILD1] = now;
         } else {
-            child2[node] = now;
+            nl[l + CHILD2] = now;
         }
     }
 
@@ -243,36 +288,37 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
             root = NONE;
             return;
         }
-        int up = parent[leaf];
-        int grandParent = parent[up];
-        int sibling = child1[up] == leaf ? child2[up] : child1[up];
+        int up = parent(leaf);
+        int grandParent = parent(up);
+        int sibling = child1(up) == leaf ? child2(up) : child1(up);
         if (grandParent != NONE) {
             replaceChild(grandParent, up, sibling);
-            parent[sibling] = grandParent;
+            nl[4 * sibling + PARENT] = grandParent;
             freeNode(up);
             refit(grandParent);
         } else {
             root = sibling;
-            parent[sibling] = NONE;
+            nl[4 * sibling + PARENT] = NONE;
             freeNode(up);
         }
     }
 
     /** Walks up from node to the root, balancing and refitting boxes and heights. */
     private void refit(int node) {
-        for (int index = node; index != NONE; index = parent[index]) {
+        for (int index = node; index != NONE; index = parent(index)) {
             index = balance(index);
             setFromChildren(index);
         }
     }
 
     private void setFromChildren(int node) {
-        int c1 = child1[node], c2 = child2[node];
-        height[node] = 1 + Math.max(height[c1], height[c2]);
-        minX[node] = Math.min(minX[c1], minX[c2]);
-        minY[node] = Math.min(minY[c1], minY[c2]);
-        maxX[node] = Math.max(maxX[c1], maxX[c2]);
-        maxY[node] = Math.max(maxY[c1], maxY[c2]);
+        int c1 = child1(node), c2 = child2(node), f = 8 * node, f1 = 8 * c1, f2 = 8 * c2;
+        nl[4 * node + HEIGHT] = 1 + Math.max(height(c1), height(c2));
+        markedBelow[node] = markedBelow[c1] + markedBelow[c2];
+        nd[f] = Math.min(nd[f1], nd[f2]);
+        nd[f + 1] = Math.max(nd[f1 + 1], nd[f2 + 1]);
+        nd[f + 2] = Math.min(nd[f1 + 2], nd[f2 + 2]);
+        nd[f + 3] = Math.max(nd[f1 + 3], nd[f2 + 3]);
     }
 
     /**
@@ -281,11 +327,11 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
      * takes the shorter one. Returns the node now in a's place.
      */
     private int balance(int a) {
-        if (isLeaf(a) || height[a] < 2) {
+        if (isLeaf(a) || height(a) < 2) {
             return a;
         }
-        int b = child1[a], c = child2[a];
-        int lean = height[c] - height[b];
+        int b = child1(a), c = child2(a);
+        int lean = height(c) - height(b);
         if (lean > 1) {
             return rotateUp(a, c, true);
         }
@@ -295,25 +341,22 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
         return a;
     }
 
-    /** Rotates child up into a's place; {@code second} says child was a's second child. */
+    /** Rotates child {@code up} into a's place; {@code second} says it was a's second child. */
     private int rotateUp(int a, int up, boolean second) {
-        int f = child1[up], g = child2[up];
-        child1[up] = a;
-        parent[up] = parent[a];
-        parent[a] = up;
-        if (parent[up] != NONE) {
-            replaceChild(parent[up], a, up);
+        int f = child1(up), g = child2(up);
+        int aParent = parent(a);
+        nl[4 * up + CHILD1] = a;
+        nl[4 * up + PARENT] = aParent;
+        nl[4 * a + PARENT] = up;
+        if (aParent != NONE) {
+            replaceChild(aParent, a, up);
         } else {
             root = up;
         }
-        int taller = height[f] > height[g] ? f : g, shorter = taller == f ? g : f;
-        child2[up] = taller;
-        if (second) {
-            child2[a] = shorter;
-        } else {
-            child1[a] = shorter;
-        }
-        parent[shorter] = a;
+        int taller = height(f) > height(g) ? f : g, shorter = taller == f ? g : f;
+        nl[4 * up + CHILD2] = taller;
+        nl[4 * a + (second ? CHILD2 : CHILD1)] = shorter;
+        nl[4 * shorter + PARENT] = a;
         setFromChildren(a);
         setFromChildren(up);
         return up;
@@ -321,45 +364,79 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
 
     // ---------------------------------------------------------------- the questions
 
-    /** Could boxes inside these two nodes' boxes overlap? Strict, as the exact test is. */
-    private boolean touch(int a, int b) {
-        return maxX[a] > minX[b] && minX[a] < maxX[b] && maxY[a] > minY[b] && minY[a] < maxY[b];
-    }
-
     @Override
     void findPairs(PairConsumer out) {
-        if (root != NONE) {
-            self(root, out);
+        if (markedCount > 0) {
+            updateCandidates();
         }
+        double[] d = nd;  // locals: the callback could change a field, so it would be read again after each
+        int[] a = pairA, b = pairB, links = nl;
+        for (int i = 0, n = pairCount; i < n; i++) {
+            int p = a[i], q = b[i];
+            if (overlap(d, 8 * p + TIGHT, d, 8 * q + TIGHT)) {
+                emit(out, ids[links[4 * p + CHILD2]], ids[links[4 * q + CHILD2]]);
+            }
+        }
+        tally += pairCount;
     }
 
-    private void self(int node, PairConsumer out) {
-        if (isLeaf(node)) {
+    /** Drops the candidates with a marked leaf, then finds those of the marked leaves. */
+    private void updateCandidates() {
+        int kept = 0;
+        for (int i = 0; i < pairCount; i++) {
+            int p = pairA[i], q = pairB[i];
+            if (!marked[p] && !marked[q]) {
+                pairA[kept] = p;
+                pairB[kept++] = q;
+            }
+        }
+        pairCount = kept;
+        if (root != NONE) {
+            selfMarked(root);
+        }
+        for (int i = 0; i < markedCount; i++) {
+            int node = markedList[i];
+            marked[node] = false;
+            if (height(node) == 0) {  // still a leaf in the tree: take it off the counts above
+                for (int up = node; up != NONE; up = parent(up)) {
+                    markedBelow[up]--;
+                }
+            }
+        }
+        markedCount = 0;
+    }
+
+    /** The new candidates within a subtree: none if it has no marked leaf. */
+    private void selfMarked(int node) {
+        if (isLeaf(node) || markedBelow[node] == 0) {
             return;
         }
-        self(child1[node], out);
-        self(child2[node], out);
-        cross(child1[node], child2[node], out);
+        int c1 = child1(node), c2 = child2(node);
+        selfMarked(c1);
+        selfMarked(c2);
+        crossMarked(c1, c2);
     }
 
-    /** Every pair with one leaf under a and one under b. */
-    private void cross(int a, int b, PairConsumer out) {
-        if (!touch(a, b)) {
+    /** The new candidates with one leaf under a and one under b, at least one of them marked. */
+    private void crossMarked(int a, int b) {
+        if (markedBelow[a] + markedBelow[b] == 0 || !overlap(nd, 8 * a + BOX, nd, 8 * b + BOX)) {
             return;
         }
         boolean leafA = isLeaf(a), leafB = isLeaf(b);
         if (leafA && leafB) {
-            int s = slotOfLeaf[a], t = slotOfLeaf[b];
-            tally++;
-            if (overlapSlots(s, t)) {
-                emit(out, ids[s], ids[t]);
+            if (pairCount == pairA.length) {
+                int capacity = Math.max(64, 2 * pairCount);
+                pairA = Arrays.copyOf(pairA, capacity);
+                pairB = Arrays.copyOf(pairB, capacity);
             }
-        } else if (leafB || (!leafA && height[a] >= height[b])) {
-            cross(child1[a], b, out);
-            cross(child2[a], b, out);
+            pairA[pairCount] = a;
+            pairB[pairCount++] = b;
+        } else if (leafB || (!leafA && height(a) >= height(b))) {
+            crossMarked(child1(a), b);
+            crossMarked(child2(a), b);
         } else {
-            cross(a, child1[b], out);
-            cross(a, child2[b], out);
+            crossMarked(a, child1(b));
+            crossMarked(a, child2(b));
         }
     }
 
@@ -371,19 +448,19 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
     }
 
     private void query(int node, double x, double y, double right, double bottom, IntConsumer out) {
-        if (!(maxX[node] > x && minX[node] < right && maxY[node] > y && minY[node] < bottom)) {
+        int f = 8 * node;
+        if (!overlap(nd[f], nd[f + 1], nd[f + 2], nd[f + 3], x, right, y, bottom)) {
             return;
         }
         if (isLeaf(node)) {
-            int s = slotOfLeaf[node];
             tally++;
-            if (overlap(x, right, y, bottom, xs[s], rights[s], ys[s], bottoms[s])) {
-                out.accept(ids[s]);
+            if (overlap(x, right, y, bottom, nd[f + TIGHT], nd[f + TIGHT + 1], nd[f + TIGHT + 2], nd[f + TIGHT + 3])) {
+                out.accept(ids[child2(node)]);
             }
             return;
         }
-        query(child1[node], x, y, right, bottom, out);
-        query(child2[node], x, y, right, bottom, out);
+        query(child1(node), x, y, right, bottom, out);
+        query(child2(node), x, y, right, bottom, out);
     }
 
     @Override
@@ -394,14 +471,15 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
     }
 
     private void rayDown(int node, RayCast ray) {
-        if (!ray.mayEnter(minX[node], minY[node], maxX[node], maxY[node])) {
+        int f = 8 * node;
+        if (!ray.mayEnter(nd[f], nd[f + 2], nd[f + 1], nd[f + 3])) {
             return;
         }
         if (isLeaf(node)) {
-            ray.consider(slotOfLeaf[node]);
+            ray.consider(child2(node));
         } else {
-            rayDown(child1[node], ray);
-            rayDown(child2[node], ray);
+            rayDown(child1(node), ray);
+            rayDown(child2(node), ray);
         }
     }
 
@@ -413,10 +491,11 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
     }
 
     private void cellsDown(int node, int depth, BoxConsumer out) {
-        out.box(depth, minX[node], minY[node], maxX[node] - minX[node], maxY[node] - minY[node]);
+        int f = 8 * node;
+        out.box(depth, (float) nd[f], (float) nd[f + 2], (float) (nd[f + 1] - nd[f]), (float) (nd[f + 3] - nd[f + 2]));
         if (!isLeaf(node)) {
-            cellsDown(child1[node], depth + 1, out);
-            cellsDown(child2[node], depth + 1, out);
+            cellsDown(child1(node), depth + 1, out);
+            cellsDown(child2(node), depth + 1, out);
         }
     }
 

@@ -119,10 +119,11 @@ final class QuadtreeBroadPhase extends AbstractBroadPhase {
     }
 
     private void cellsOf(int slot) {
-        x0[slot] = Lattice.cell(xs[slot], PER_CELL);
-        x1[slot] = Lattice.cell(rights[slot], PER_CELL);
-        y0[slot] = Lattice.cell(ys[slot], PER_CELL);
-        y1[slot] = Lattice.cell(bottoms[slot], PER_CELL);
+        int k = 4 * slot;
+        x0[slot] = Lattice.cell(box[k], PER_CELL);
+        x1[slot] = Lattice.cell(box[k + 1], PER_CELL);
+        y0[slot] = Lattice.cell(box[k + 2], PER_CELL);
+        y1[slot] = Lattice.cell(box[k + 3], PER_CELL);
         boxLevel[slot] = Math.max(Lattice.level(x0[slot], x1[slot]), Lattice.level(y0[slot], y1[slot]));
     }
 
@@ -432,7 +433,7 @@ final class QuadtreeBroadPhase extends AbstractBroadPhase {
 
     private void test(int s, int t, PairConsumer out) {
         tally++;
-        if (overlapSlots(s, t)) {
+        if (overlap(box, 4 * s, box, 4 * t)) {
             emit(out, ids[s], ids[t]);
         }
     }
@@ -475,10 +476,11 @@ final class QuadtreeBroadPhase extends AbstractBroadPhase {
     /** Walks down with the box of slot s, reporting pairs. */
     private void down(int s, int node, PairConsumer out) {
         Aim q = aim;
-        q.x = xs[s];
-        q.right = rights[s];
-        q.y = ys[s];
-        q.bottom = bottoms[s];
+        int k = 4 * s;
+        q.x = box[k];
+        q.right = box[k + 1];
+        q.y = box[k + 2];
+        q.bottom = box[k + 3];
         q.x0 = x0[s];
         q.x1 = x1[s];
         q.y0 = y0[s];
@@ -499,7 +501,8 @@ final class QuadtreeBroadPhase extends AbstractBroadPhase {
         }
         for (int t = head[node]; t != NONE; t = next[t]) {
             tally++;
-            if (overlap(q.x, q.right, q.y, q.bottom, xs[t], rights[t], ys[t], bottoms[t])) {
+            int k = 4 * t;
+            if (overlap(q.x, q.right, q.y, q.bottom, box[k], box[k + 1], box[k + 2], box[k + 3])) {
                 if (q.pairs != null) {
                     emit(q.pairs, ids[q.slot], ids[t]);
                 } else {

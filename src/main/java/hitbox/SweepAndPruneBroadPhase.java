@@ -4,24 +4,24 @@ import java.util.Arrays;
 import java.util.function.IntConsumer;
 
 /**
- * {@link BroadPhase#sweepAndPrune()}: the boxes in flat arrays sorted by left edge (entries),
- * each entry a copy of its box so the sweep reads memory in order.
+ * {@link BroadPhase#sweepAndPrune()}: the boxes in a flat array sorted by left edge (entries),
+ * each entry a copy of its box (four doubles, as {@link #box}) so the sweep reads memory in
+ * order.
  *
  * <p>Changes only mark the order stale: a new box is appended, a moved box is rewritten in
  * place, a removed box's entry is marked dead. The next question compacts the dead entries
  * and restores the order by insertion sort, which does little work when the boxes moved a
  * little (coherent motion); if it has done more than a few moves per entry, it gives up and
- * sorts all of them at once.
+ * sorts all of them at once, by a radix sort on the left edges' bits (three passes, no
+ * allocation once grown).
  */
 final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
     private static final int DEAD = -1;
 
     /** Entries in use, dead ones included until the next sort. */
     private int length;
-    private float[] ex = new float[0];
-    private double[] er = new double[0];
-    private float[] ey = new float[0];
-    private double[] eb = new double[0];
+    /** Entry e's box at 4 * e: x, right, y, bottom. */
+    private double[] ebox = new double[0];
     private int[] eid = new int[0];
     private int[] eslot = new int[0];
     /** The entry of each slot. */
@@ -33,16 +33,18 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
     private double minY;
     private double maxRight;
     private double maxBottom;
-    private long[] sortKeys = new long[0];
+    // The full sort's scratch: keys and entries, and a second pair of each for the radix passes.
+    private int[] sortKey = new int[0];
+    private int[] sortEntry = new int[0];
+    private int[] sortKey2 = new int[0];
+    private int[] sortEntry2 = new int[0];
+    private final int[] digitCount = new int[2049];
 
     @Override
     void added(int slot) {
-        if (length == ex.length) {
+        if (length == eid.length) {
             int capacity = Math.max(16, 2 * length);
-            ex = Arrays.copyOf(ex, capacity);
-            er = Arrays.copyOf(er, capacity);
-            ey = Arrays.copyOf(ey, capacity);
-            eb = Arrays.copyOf(eb, capacity);
+            ebox = Arrays.copyOf(ebox, 4 * capacity);
             eid = Arrays.copyOf(eid, capacity);
             eslot = Arrays.copyOf(eslot, capacity);
         }
@@ -59,10 +61,7 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
     }
 
     private void write(int e, int slot) {
-        ex[e] = xs[slot];
-        er[e] = rights[slot];
-        ey[e] = ys[slot];
-        eb[e] = bottoms[slot];
+        System.arraycopy(box, 4 * slot, ebox, 4 * e, 4);
         stale = true;
     }
 
@@ -106,11 +105,12 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
             fullSort();
         }
         double wide = 0, top = Double.POSITIVE_INFINITY, right = Double.NEGATIVE_INFINITY, bottom = Double.NEGATIVE_INFINITY;
-        for (int e = 0; e < length; e++) {
-            wide = Math.max(wide, er[e] - ex[e]);
-            top = Math.min(top, ey[e]);
-            right = Math.max(right, er[e]);
-            bottom = Math.max(bottom, eb[e]);
+        double[] b = ebox;
+        for (int k = 0; k < 4 * length; k += 4) {
+            wide = Math.max(wide, b[k + 1] - b[k]);
+            right = Math.max(right, b[k + 1]);
+            top = Math.min(top, b[k + 2]);
+            bottom = Math.max(bottom, b[k + 3]);
         }
         widest = wide;
         minY = top;
@@ -133,10 +133,7 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
     }
 
     private void copy(int from, int to) {
-        ex[to] = ex[from];
-        er[to] = er[from];
-        ey[to] = ey[from];
-        eb[to] = eb[from];
+        System.arraycopy(ebox, 4 * from, ebox, 4 * to, 4);
         eid[to] = eid[from];
         eslot[to] = eslot[from];
     }
@@ -144,13 +141,13 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
     /** Insertion sort by left edge; false if it gave up after {@code budget} moves. */
     private boolean insertionSort(long budget) {
         long moves = 0;
+        double[] b = ebox;
         for (int i = 1; i < length; i++) {
-            float x = ex[i];
-            if (!(x < ex[i - 1])) {
+            double x = b[4 * i];
+            if (!(x < b[4 * i - 4])) {
                 continue;
             }
-            double r = er[i], b = eb[i];
-            float y = ey[i];
+            double r = b[4 * i + 1], y = b[4 * i + 2], bottom = b[4 * i + 3];
             int id = eid[i], slot = eslot[i];
             int j = i - 1;
             do {
@@ -158,15 +155,9 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
                 entryOf[eslot[j + 1]] = j + 1;
                 j--;
                 moves++;
-            } while (j >= 0 && ex[j] > x);
+            } while (j >= 0 && b[4 * j] > x);
             j++;
-            ex[j] = x;
-            er[j] = r;
-            ey[j] = y;
-            eb[j] = b;
-            eid[j] = id;
-            eslot[j] = slot;
-            entryOf[slot] = j;
+            set(j, x, r, y, bottom, id, slot);
             if (moves > budget) {
                 return false;
             }
@@ -174,42 +165,70 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
         return true;
     }
 
-    /** Sorts every entry: keys of (left edge's bits made sortable, entry), then permuted in place. */
+    private void set(int e, double x, double r, double y, double bottom, int id, int slot) {
+        int k = 4 * e;
+        ebox[k] = x;
+        ebox[k + 1] = r;
+        ebox[k + 2] = y;
+        ebox[k + 3] = bottom;
+        eid[e] = id;
+        eslot[e] = slot;
+        entryOf[slot] = e;
+    }
+
+    /** Sorts every entry: a radix sort of the left edges' bits, then the entries moved along each cycle of the order. */
     private void fullSort() {
-        if (sortKeys.length < length) {
-            sortKeys = new long[ex.length];
+        if (sortKey.length < length) {
+            sortKey = new int[eid.length];
+            sortEntry = new int[eid.length];
+            sortKey2 = new int[eid.length];
+            sortEntry2 = new int[eid.length];
         }
         for (int e = 0; e < length; e++) {
-            int bits = Float.floatToRawIntBits(ex[e]);
-            bits ^= (bits >> 31) & 0x7fffffff;  // negative floats: reverse their order
-            sortKeys[e] = (long) bits << 32 | e;
+            int bits = Float.floatToRawIntBits((float) ebox[4 * e]);  // exact: the left edge is a float
+            // Negative floats in reverse, then the sign bit flipped: the bits now sort as unsigned ints.
+            sortKey[e] = (bits ^ ((bits >> 31) & 0x7fffffff)) ^ 0x80000000;
+            sortEntry[e] = e;
         }
-        Arrays.sort(sortKeys, 0, length);
-        // Follow each cycle of the permutation, so no second set of arrays is needed.
+        for (int shift = 0; shift < 32; shift += 11) {
+            Arrays.fill(digitCount, 0);
+            for (int e = 0; e < length; e++) {
+                digitCount[(sortKey[e] >>> shift & 0x7FF) + 1]++;
+            }
+            for (int d = 1; d < digitCount.length; d++) {
+                digitCount[d] += digitCount[d - 1];
+            }
+            for (int e = 0; e < length; e++) {
+                int at = digitCount[sortKey[e] >>> shift & 0x7FF]++;
+                sortKey2[at] = sortKey[e];
+                sortEntry2[at] = sortEntry[e];
+            }
+            int[] swap = sortKey;
+            sortKey = sortKey2;
+            sortKey2 = swap;
+            swap = sortEntry;
+            sortEntry = sortEntry2;
+            sortEntry2 = swap;
+        }
+        // sortEntry[e] is the entry that belongs at e. Follow each cycle, so no second set of
+        // entry arrays is needed; -1 marks a place filled.
         for (int e = 0; e < length; e++) {
-            int from = (int) sortKeys[e];
+            int from = sortEntry[e];
             if (from < 0) {
-                continue;  // already placed
+                continue;
             }
             int hole = e;
-            float x = ex[e], y = ey[e];
-            double r = er[e], b = eb[e];
+            double x = ebox[4 * e], r = ebox[4 * e + 1], y = ebox[4 * e + 2], b = ebox[4 * e + 3];
             int id = eid[e], slot = eslot[e];
             while (from != e) {
                 copy(from, hole);
                 entryOf[eslot[hole]] = hole;
-                sortKeys[hole] |= 0xFFFF_FFFFL;  // mark placed (-1 in the low int)
+                sortEntry[hole] = -1;
                 hole = from;
-                from = (int) sortKeys[hole];
+                from = sortEntry[hole];
             }
-            ex[hole] = x;
-            er[hole] = r;
-            ey[hole] = y;
-            eb[hole] = b;
-            eid[hole] = id;
-            eslot[hole] = slot;
-            entryOf[slot] = hole;
-            sortKeys[hole] |= 0xFFFF_FFFFL;
+            set(hole, x, r, y, b, id, slot);
+            sortEntry[hole] = -1;
         }
     }
 
@@ -218,17 +237,18 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
     @Override
     void findPairs(PairConsumer out) {
         long tests = 0;
-        int n = length;
-        for (int i = 0; i < n; i++) {
-            float x = ex[i], y = ey[i];
-            double r = er[i], b = eb[i];
-            int id = eid[i];
-            for (int j = i + 1; j < n && ex[j] < r; j++) {
-                tests++;
-                if (overlap(x, r, y, b, ex[j], er[j], ey[j], eb[j])) {
-                    emit(out, id, eid[j]);
+        int end = 4 * length;
+        double[] b = ebox;  // locals: the callback could change a field, so it would be read again after each
+        int[] id = eid;
+        for (int i = 0; i < end; i += 4) {
+            double right = b[i + 1];
+            int j = i + 4;
+            for (; j < end && b[j] < right; j += 4) {
+                if (overlap(b, i, b, j)) {
+                    emit(out, id[i >> 2], id[j >> 2]);
                 }
             }
+            tests += (j - i - 4) >> 2;
         }
         tally += tests;
     }
@@ -236,9 +256,11 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
     @Override
     void findBoxes(double x, double y, double right, double bottom, IntConsumer out) {
         long tests = 0;
-        for (int j = firstEntryFrom(x); j < length && ex[j] < right; j++) {
+        double[] b = ebox;
+        for (int j = firstEntryFrom(x); j < length && b[4 * j] < right; j++) {
             tests++;
-            if (overlap(x, right, y, bottom, ex[j], er[j], ey[j], eb[j])) {
+            int k = 4 * j;
+            if (overlap(x, right, y, bottom, b[k], b[k + 1], b[k + 2], b[k + 3])) {
                 out.accept(eid[j]);
             }
         }
@@ -252,7 +274,7 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
         int lo = 0, hi = length;
         while (lo < hi) {
             int mid = (lo + hi) >>> 1;
-            if (ex[mid] < from) {
+            if (ebox[4 * mid] < from) {
                 lo = mid + 1;
             } else {
                 hi = mid;
@@ -266,7 +288,7 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
         if (length == 0) {
             return;
         }
-        double minX = ex[0];
+        double minX = ebox[0];
         double t0 = ray.enter(minX, minY, maxRight, maxBottom), t1 = ray.exit(minX, minY, maxRight, maxBottom);
         if (!(t0 <= t1)) {
             return;
@@ -282,8 +304,9 @@ final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
         right += padX;
         top -= padY;
         bottom += padY;
-        for (int j = firstEntryFrom(left); j < length && ex[j] <= right; j++) {
-            if (er[j] >= left && ey[j] <= bottom && eb[j] >= top) {
+        double[] b = ebox;
+        for (int j = firstEntryFrom(left); j < length && b[4 * j] <= right; j++) {
+            if (b[4 * j + 1] >= left && b[4 * j + 2] <= bottom && b[4 * j + 3] >= top) {
                 ray.consider(eslot[j]);
             }
         }
