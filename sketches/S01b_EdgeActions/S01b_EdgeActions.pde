@@ -31,6 +31,7 @@ boolean showMaths;       // d
 
 void setup() {
   size(600, 400);
+  textFont(createFont("SansSerif", 14));
 }
 
 void draw() {

@@ -118,13 +118,13 @@ class S01_EdgeBounceTest {
 
     @Test
     void overlayKey_writesOutTheEdgeTests_andPressingAgainHidesThem() {
-        // The speeds' label sits at (8, 30), far from the ball in the first frames.
+        // The ball starts right of the middle and high up: the tests' panel goes at the bottom left.
         SketchRun.Result<S01_EdgeBounce> r = SketchRun.of(new S01_EdgeBounce())
                 .script(new Script().frames(8).key(1, 'd').key(4, 'd'))
                 .capture(1).capture(3).run();
-        int before = SketchPixels.count(r.frame(1), 8, 30, 200, 48, Palette.BACKGROUND);
-        assertTrue(before > 2500, "nothing there before d, background pixels: " + before);
-        assertTrue(SketchPixels.count(r.frame(3), 8, 30, 200, 48, Palette.BACKGROUND) < before / 2, "d writes the maths");
-        assertEquals(before, SketchPixels.count(r.lastFrame(), 8, 30, 200, 48, Palette.BACKGROUND), "a second d hides it");
+        int before = SketchPixels.count(r.frame(1), 10, 270, 250, 350, Palette.BACKGROUND);
+        assertTrue(before > 15000, "nothing there before d, background pixels: " + before);
+        assertTrue(SketchPixels.count(r.frame(3), 10, 270, 250, 350, Palette.BACKGROUND) < before / 2, "d writes the maths");
+        assertEquals(before, SketchPixels.count(r.lastFrame(), 10, 270, 250, 350, Palette.BACKGROUND), "a second d hides it");
     }
 }
