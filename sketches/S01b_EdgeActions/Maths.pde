@@ -1,4 +1,4 @@
-// The scene for each action, the game-over banner, and the "show the maths" overlay.
+// The scene for each action, the game over and the serve, and the "show the maths" overlay.
 
 // Each screen of the next-screen world has its own ground colour.
 color[] grounds = {#1E2A22, #2A2620, #1E2634, #2C2030};
@@ -29,6 +29,15 @@ void drawScene() {
   } else {
     background(Palette.BACKGROUND);
   }
+}
+
+/** Serves again: the ball from the middle, to the side it did not go out of. */
+void serve() {
+  gameOver = false;
+  xSpeed = x > width / 2 ? -4.5 : 4.5;
+  ySpeed = 3.2;
+  x = width / 2;
+  y = height / 2;
 }
 
 void drawGameOver() {

@@ -80,15 +80,6 @@ void draw() {
   Overlay.hint(g, "w wrap   n next screen   g game over   s stop   space: serve   d: show the maths");
 }
 
-/** Serves again: the ball from the middle, to the side it did not go out of. */
-void serve() {
-  gameOver = false;
-  xSpeed = x > width / 2 ? -4.5 : 4.5;
-  ySpeed = 3.2;
-  x = width / 2;
-  y = height / 2;
-}
-
 void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
