@@ -79,6 +79,32 @@ class H02_BouncersTest {
     }
 
     @Test
+    void theSketchesLoop_movesEachBouncerAsMotionBounceDoes() {
+        // The loop in the first tab (ask every obstacle, combine, reverse once, window edges,
+        // move where free) is Motion.bounce's frame, written out: check it bouncer by bouncer.
+        float[][] before = new float[100][];
+        int[] compared = new int[1];
+        SketchRun.of(new H02_Bouncers()).frames(600).everyFrame(s -> {
+            for (int i = 0; i < s.bouncers.size(); i++) {
+                H02_Bouncers.Bouncer b = s.bouncers.get(i);
+                if (before[i] != null) {
+                    float[] p = before[i];
+                    Motion.Step step = Motion.bounce(p[0], p[1], s.size, s.size, p[2], p[3], s.obstacles, s.width, s.height);
+                    String what = "frame " + s.frameCount + ", bouncer " + i;
+                    assertEquals(step.x(), b.x, what + " x");
+                    assertEquals(step.y(), b.y, what + " y");
+                    assertEquals(step.vx(), b.vx, what + " vx");
+                    assertEquals(step.vy(), b.vy, what + " vy");
+                    assertEquals(step.blocked(), b.blocked, what + " blocked");
+                    compared[0]++;
+                }
+                before[i] = new float[] {b.x, b.y, b.vx, b.vy};
+            }
+        }).run();
+        assertEquals(599 * 100, compared[0]);
+    }
+
+    @Test
     void sameSeed_sameRun() {
         H02_Bouncers a = SketchRun.of(new H02_Bouncers()).frames(200).run().sketch();
         H02_Bouncers b = SketchRun.of(new H02_Bouncers()).frames(200).run().sketch();
@@ -105,6 +131,9 @@ class H02_BouncersTest {
         int cy = (int) (zero.y + on.sketch().size / 2);
         assertTrue(SketchPixels.differing(a, b, cx - 20, cy - 20, cx + 20, cy + 20) > 50, "bouncer 0 is ringed");
         assertFalse(on.sketch().bouncers.get(0).x != off.sketch().bouncers.get(0).x, "the overlay does not change the run");
+        SketchRun.Result<H02_Bouncers> onOff = SketchRun.of(new H02_Bouncers())
+                .script(new Script().frames(158).key(2, 'd').key(100, 'd')).run();
+        assertEquals(0, SketchPixels.differing(a, onOff.lastFrame()), "d again hides it");
     }
 
 
