@@ -1,4 +1,4 @@
-// The "show the maths" overlay (d), the labels, and the keys.
+// The "show the maths" overlay (d), the labels, the click that adds an obstacle, and the keys.
 
 String message = "";   // what the last click did, shown for a while
 int messageFrames = 0;

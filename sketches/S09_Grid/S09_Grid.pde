@@ -38,7 +38,8 @@ void setup() {
 }
 
 void newMaze() {
-  // The tutorial's fill: each cell has a 20% chance of being an obstacle.
+  // The tutorial's fill: each cell has a 20% chance of being an obstacle (seeded here, so
+  // a seed always makes the same maze).
   randomSeed(seed);
   for (int row = 0; row < rows; row++) {
     for (int column = 0; column < columns; column++) {
@@ -90,7 +91,8 @@ void step(int dx, int dy) {
   int y = playerIndexY + dy;
   boolean free;
   if (tutorialGrid) {
-    // The tutorial's check: not past an edge of the grid, and not an obstacle.
+    // The tutorial's check, which it writes once per arrow key: not past that edge of the
+    // grid, and not an obstacle.
     free = x >= 0 && x < columns && y >= 0 && y < rows && !grid[y][x];
   } else {
     // Hitbox's: outside the grid counts as solid, so one call checks both.
