@@ -5,7 +5,6 @@ class Bouncer {
   float vx;
   float vy;
   color colour = 0;
-  int blocked = Motion.NONE;  // what the obstacles answered this frame
 
   Bouncer(float x, float y, float vx, float vy) {
     this.x = x;
@@ -27,7 +26,6 @@ class Bouncer {
   // again: squeezed between two, the reversed move is blocked too, so wait on that axis.
   // (Motion.bounce does these steps in one call.)
   void bounce(int blocked) {
-    this.blocked = blocked;
     vx = Motion.reverseX(blocked, vx);
     vy = Motion.reverseY(blocked, vy);
     int crossed = Edges.rectCrossed(x + vx, y + vy, size, size, width, height);
