@@ -109,13 +109,16 @@ void drawMaths() {
   }
 }
 
-// One of the player's four neighbours, outlined free (green) or blocked (red), with what the
-// grid holds there: the array's true or false, or the Grid's word.
+// One of the player's four neighbours in the grid, outlined free (green) or blocked (red), with
+// what the grid holds there: the array's true or false, or the Grid's word.
 void neighbour(int dx, int dy, float lx, float ly, float sideX, float sideY) {
   int x = playerIndexX + dx;
   int y = playerIndexY + dy;
   boolean inGrid = x >= 0 && x < columns && y >= 0 && y < rows;
-  boolean free = inGrid && !obstacle(x, y);
+  if (!inGrid) {
+    return;   // past the edge: nothing to show there (the panel says why a step is refused)
+  }
+  boolean free = !obstacle(x, y);
   color colour = free ? Overlay.MISS : Overlay.HIT;
   pushStyle();
   noFill();
@@ -123,7 +126,7 @@ void neighbour(int dx, int dy, float lx, float ly, float sideX, float sideY) {
   strokeWeight(2);
   rect(x * cellSize, y * cellSize, cellSize, cellSize);
   popStyle();
-  String text = !inGrid ? "edge" : tutorialGrid ? "" + grid[y][x] : free ? "free" : "solid";
+  String text = tutorialGrid ? "" + grid[y][x] : free ? "free" : "solid";
   Overlay.labelBeside(g, lx + sideX * cellSize, ly + sideY * cellSize, sideX, sideY, text, colour);
 }
 
