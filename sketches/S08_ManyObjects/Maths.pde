@@ -88,7 +88,8 @@ void drawMaths() {
   stroke(Overlay.GUIDE);
   strokeWeight(2);
   Draw.arrow(g, x + w / 2, y + h / 2, vx * 8, vy * 8);
-  float lx = x + w / 2 < width / 2 ? x + w + 12 : x - 12 - 300;
+  // Below the box, on the side with more room.
+  float lx = x + w / 2 < width / 2 ? x + w + 12 : x - 12 - labelWidth(text);
   Overlay.label(g, lx, y + h + 8, text, text.contains("!") ? Overlay.HIT : Overlay.TEXT);
 }
 
@@ -154,6 +155,18 @@ String hitboxPreview() {
   }
   return text + ", reversed once\nasked again: " + Motion.describe(still)
       + (Motion.has(still, Motion.X) ? ", waits across" : "") + (Motion.has(still, Motion.Y) ? ", waits down" : "");
+}
+
+// How wide Overlay.label draws this text: its longest line at size 12, and 8 pixels.
+float labelWidth(String text) {
+  pushStyle();
+  textSize(12);
+  float longest = 0;
+  for (String line : text.split("\n")) {
+    longest = max(longest, textWidth(line));
+  }
+  popStyle();
+  return longest + 8;
 }
 
 boolean blocksAny(float bx, float by) {
