@@ -49,21 +49,42 @@ void drawMaths() {
   }
 
   String[] lines = new String[5];
-  lines[0] = "get() where the wheels would be, before the car is drawn:";
+  lines[0] = "get() where the wheels would be,\nbefore the car is drawn:";
   for (int i = 0; i < 4; i++) {
     lines[i + 1] = "         " + i + " " + wheelNames[i] + ": " + colourName(under[i]) + "  " + rgb(under[i]);
   }
   String text = join(lines, "\n") + "\n" + (hitWall ? "a wheel on the wall: stop" : "no wall: move")
       + "\ntop speed = 4 - 0.75 x " + wheelsOnGrass + " on the grass = " + nf(topSpeed, 1, 2);
-  float px = 104;
-  float py = 186;
-  Overlay.label(g, px, py, text, Overlay.TEXT);
+  // Beside the car, towards the middle of the window, where the infield is.
+  float w = labelWidth(text);
+  float h = text.split("\n").length * 15 + 4;
+  float ux = width / 2 - x;
+  float uy = height / 2 - y;
+  float len = max(1, dist(0, 0, ux, uy));
+  ux /= len;
+  uy /= len;
+  float reach = w / 2 * abs(ux) + h / 2 * abs(uy) + 18;
+  float left = constrain(x + ux * reach - w / 2, 2, width - w - 2);
+  float top = constrain(y + uy * reach - h / 2, 2, height - h - 2);
+  Overlay.label(g, left, top, text, Overlay.TEXT);
   for (int i = 0; i < 4; i++) {
     stroke(Overlay.TEXT);
     strokeWeight(1);
     fill(under[i]);
-    rect(px + 8, py + 2 + (i + 1) * 15 + 3, 14, 10);
+    rect(left + 8, top + 2 + (i + 2) * 15 + 3, 14, 10);
   }
+}
+
+// How wide Overlay.label draws this text: its longest line at size 12, and 8 pixels.
+float labelWidth(String text) {
+  pushStyle();
+  textSize(12);
+  float longest = 0;
+  for (String line : text.split("\n")) {
+    longest = max(longest, textWidth(line));
+  }
+  popStyle();
+  return longest + 8;
 }
 
 // A point get() read: a white ring with the colour it found inside.
