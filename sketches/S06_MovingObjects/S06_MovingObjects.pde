@@ -7,11 +7,12 @@
  * moved down only, at (x, y + vy). If the box moved across would hit the block, vx reverses;
  * if the box moved down would, vy reverses. So it bounces off the side it really hits.
  *
- * Press t to run the tutorial's own code instead (written out below). Then press c: the box
- * is aimed at the block's corner, where neither move alone hits it but the diagonal move
- * does, so both checks say "free" and the box ends a frame inside the block (the counter at
- * the top). The tutorial's window check also looks where the box is, not where it will be,
- * so the box pokes out of the window for a frame at each edge.
+ * Press t to run the tutorial's own code instead (written out below, in this sketch's
+ * names). Then press c: the box is aimed at the block's corner, where neither move alone
+ * hits it but the diagonal move does, so both checks say "free" and the box ends a frame
+ * inside the block (the counter at the top). The tutorial's window check also looks where
+ * the box is, not where it will be, so the box pokes out of the window for a frame at each
+ * edge.
  *
  * Where Hitbox differs: Motion.rectBlocked makes the same two checks and also tests the
  * diagonal move, reporting both axes for a corner hit, and Edges checks the window at the
