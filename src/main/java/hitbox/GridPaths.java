@@ -32,40 +32,52 @@ final class GridPaths {
             return NONE;
         }
         int cols = grid.cols();
+        int rows = grid.rows();
         int start = fromRow * cols + fromCol;
         int goal = toRow * cols + toCol;
         if (start == goal) {
             return new int[] {start};
         }
-        Buffers b = Buffers.get(cols * grid.rows());
+        Buffers b = Buffers.get(cols * rows);
         int mark = b.nextMark();
         int[] seen = b.seen;
         int[] link = b.link;
-        int[] queue = b.queue;
+        int[] queueCol = b.queueCol;
+        int[] queueRow = b.queueRow;
         // Searching from the goal leaves every link pointing one step nearer to it, so the
-        // route is read off forwards from the start.
+        // route is read off forwards from the start. A cell is marked seen the first time it
+        // is looked at, solid or not, so the grid is asked about each cell at most once.
         seen[goal] = mark;
-        queue[0] = goal;
+        queueCol[0] = toCol;
+        queueRow[0] = toRow;
         int head = 0;
         int tail = 1;
         while (head < tail) {
-            int cell = queue[head++];
-            int col = cell % cols;
-            int row = cell / cols;
+            int col = queueCol[head];
+            int row = queueRow[head];
+            head++;
+            int cell = row * cols + col;
             for (int k = 0; k < 4; k++) {
                 int c = col + STEP_COL[k];
                 int r = row + STEP_ROW[k];
-                if (!grid.isSolid(c, r)) {
-                    int next = r * cols + c;
-                    if (seen[next] != mark) {
-                        seen[next] = mark;
-                        link[next] = cell;
-                        if (next == start) {
-                            return follow(link, start, goal);
-                        }
-                        queue[tail++] = next;
-                    }
+                if (c < 0 || c >= cols || r < 0 || r >= rows) {
+                    continue;
                 }
+                int next = r * cols + c;
+                if (seen[next] == mark) {
+                    continue;
+                }
+                seen[next] = mark;
+                if (grid.isSolid(c, r)) {
+                    continue;
+                }
+                link[next] = cell;
+                if (next == start) {
+                    return follow(link, start, goal);
+                }
+                queueCol[tail] = c;
+                queueRow[tail] = r;
+                tail++;
             }
         }
         return NONE;
@@ -90,20 +102,22 @@ final class GridPaths {
     static int[] path(Grid grid, int fromCol, int fromRow, int toCol, int toRow, PathCosts costs) {
         checkCells(grid, fromCol, fromRow, toCol, toRow);
         Check.notNull("costs", costs);
-        if (Double.isInfinite(stepCost(grid, costs, fromCol, fromRow))
-                || Double.isInfinite(stepCost(grid, costs, toCol, toRow))) {
-            return NONE;
-        }
         int cols = grid.cols();
+        int rows = grid.rows();
+        Buffers b = Buffers.get(cols * rows);
+        int mark = b.nextMark();
+        Search s = new Search(grid, costs, b, mark);
         int start = fromRow * cols + fromCol;
         int goal = toRow * cols + toCol;
+        if (Double.isInfinite(s.cost(fromCol, fromRow)) || Double.isInfinite(s.cost(toCol, toRow))) {
+            return NONE;
+        }
         if (start == goal) {
             return new int[] {start};
         }
-        int steps = costs.diagonals() ? 8 : 4;
+        boolean diagonals = costs.diagonals();
+        int steps = diagonals ? 8 : 4;
         double cheapest = costs.cheapest();
-        Buffers b = Buffers.get(cols * grid.rows());
-        int mark = b.nextMark();
         int[] seen = b.seen;
         int[] link = b.link;
         double[] dist = b.dist;
@@ -111,32 +125,28 @@ final class GridPaths {
         open.clear();
         seen[start] = mark;
         dist[start] = 0;
-        open.push(estimate(cheapest, costs.diagonals(), fromCol, fromRow, toCol, toRow), start);
+        open.push(estimate(cheapest, diagonals, fromCol, fromRow, toCol, toRow), 0, start);
         while (!open.isEmpty()) {
-            double key = open.topKey();
+            double here = open.topDist();
             int cell = open.pop();
-            int col = cell % cols;
-            int row = cell / cols;
-            double here = dist[cell];
-            if (key > here + estimate(cheapest, costs.diagonals(), col, row, toCol, toRow)) {
+            if (here > dist[cell]) {
                 continue;  // an old entry: the cell was reached more cheaply since
             }
             if (cell == goal) {
                 return backwards(link, start, goal);
             }
+            int col = cell % cols;
+            int row = cell / cols;
             for (int k = 0; k < steps; k++) {
-                int dc = STEP_COL[k];
-                int dr = STEP_ROW[k];
-                int c = col + dc;
-                int r = row + dr;
-                double cost = stepCost(grid, costs, c, r);
+                int c = col + STEP_COL[k];
+                int r = row + STEP_ROW[k];
+                double cost = s.cost(c, r);
                 if (Double.isInfinite(cost)) {
                     continue;
                 }
                 if (k >= 4) {
                     // A diagonal needs both straight steps beside it open: no cut corners.
-                    if (Double.isInfinite(stepCost(grid, costs, c, row))
-                            || Double.isInfinite(stepCost(grid, costs, col, r))) {
+                    if (Double.isInfinite(s.cost(c, row)) || Double.isInfinite(s.cost(col, r))) {
                         continue;
                     }
                     cost *= PathCosts.DIAGONAL;
@@ -147,7 +157,7 @@ final class GridPaths {
                     seen[next] = mark;
                     dist[next] = d;
                     link[next] = cell;
-                    open.push(d + estimate(cheapest, costs.diagonals(), c, r, toCol, toRow), next);
+                    open.push(d + estimate(cheapest, diagonals, c, r, toCol, toRow), d, next);
                 }
             }
         }
@@ -172,16 +182,49 @@ final class GridPaths {
         return cheapest * (straight + PathCosts.DIAGONAL * diagonal);
     }
 
-    /** The cost of stepping into (col, row): infinite if it is outside, solid or impassable. */
-    private static double stepCost(Grid grid, PathCosts costs, int col, int row) {
-        if (grid.isSolid(col, row)) {
-            return Double.POSITIVE_INFINITY;
+    /** One weighted search: the cost of stepping into each cell, worked out once per cell. */
+    private static final class Search {
+        private final Grid grid;
+        private final PathCosts costs;
+        private final int cols;
+        private final int rows;
+        private final int mark;
+        private final int[] known;
+        private final double[] cost;
+
+        Search(Grid grid, PathCosts costs, Buffers b, int mark) {
+            this.grid = grid;
+            this.costs = costs;
+            this.cols = grid.cols();
+            this.rows = grid.rows();
+            this.mark = mark;
+            this.known = b.costKnown;
+            this.cost = b.cost;
         }
-        int terrain = grid.get(col, row);
-        try {
-            return costs.cost(terrain);
-        } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException("cell (col " + col + ", row " + row + "): " + e.getMessage(), e);
+
+        /** The cost of stepping into (col, row): infinite if it is outside, solid or impassable. */
+        double cost(int col, int row) {
+            if (col < 0 || col >= cols || row < 0 || row >= rows) {
+                return Double.POSITIVE_INFINITY;
+            }
+            int i = row * cols + col;
+            if (known[i] == mark) {
+                return cost[i];
+            }
+            double c;
+            if (grid.isSolid(col, row)) {
+                c = Double.POSITIVE_INFINITY;
+            } else {
+                int terrain = grid.get(col, row);
+                try {
+                    c = costs.cost(terrain);
+                } catch (IllegalArgumentException e) {
+                    throw new IllegalArgumentException("cell (col " + col + ", row " + row + "): " + e.getMessage(), e);
+                }
+            }
+            known[i] = mark;
+            cost[i] = c;
+            return c;
         }
     }
 
@@ -220,8 +263,11 @@ final class GridPaths {
 
         int[] seen = new int[0];
         int[] link = new int[0];
-        int[] queue = new int[0];
+        int[] queueCol = new int[0];
+        int[] queueRow = new int[0];
         double[] dist = new double[0];
+        int[] costKnown = new int[0];
+        double[] cost = new double[0];
         final Heap heap = new Heap();
         private int mark;
 
@@ -235,8 +281,11 @@ final class GridPaths {
             if (b.seen.length < cells) {
                 b.seen = new int[cells];
                 b.link = new int[cells];
-                b.queue = new int[cells];
+                b.queueCol = new int[cells];
+                b.queueRow = new int[cells];
                 b.dist = new double[cells];
+                b.costKnown = new int[cells];
+                b.cost = new double[cells];
                 b.mark = 0;
             }
             return b;
@@ -246,15 +295,21 @@ final class GridPaths {
         int nextMark() {
             if (mark == Integer.MAX_VALUE) {
                 Arrays.fill(seen, 0);
+                Arrays.fill(costKnown, 0);
                 mark = 0;
             }
             return ++mark;
         }
     }
 
-    /** A binary min-heap of cells by key; an improved cell is pushed again and the old entry skipped. */
+    /**
+     * A binary min-heap of cells by estimated total cost, ties going to the cell reached at the
+     * greater cost (nearer the goal, which keeps A* from fanning out over equal routes); an
+     * improved cell is pushed again and the old entry skipped.
+     */
     private static final class Heap {
         private double[] keys = new double[256];
+        private double[] dists = new double[256];
         private int[] cells = new int[256];
         private int size;
 
@@ -266,26 +321,34 @@ final class GridPaths {
             return size == 0;
         }
 
-        double topKey() {
-            return keys[0];
+        double topDist() {
+            return dists[0];
         }
 
-        void push(double key, int cell) {
+        /** Does an entry with this key and cost come out before entry i? */
+        private boolean before(double key, double dist, int i) {
+            return key < keys[i] || (key == keys[i] && dist > dists[i]);
+        }
+
+        void push(double key, double dist, int cell) {
             if (size == keys.length) {
                 keys = Arrays.copyOf(keys, size * 2);
+                dists = Arrays.copyOf(dists, size * 2);
                 cells = Arrays.copyOf(cells, size * 2);
             }
             int i = size++;
             while (i > 0) {
                 int parent = (i - 1) >>> 1;
-                if (keys[parent] <= key) {
+                if (!before(key, dist, parent)) {
                     break;
                 }
                 keys[i] = keys[parent];
+                dists[i] = dists[parent];
                 cells[i] = cells[parent];
                 i = parent;
             }
             keys[i] = key;
+            dists[i] = dist;
             cells[i] = cell;
         }
 
@@ -293,6 +356,7 @@ final class GridPaths {
             int top = cells[0];
             size--;
             double key = keys[size];
+            double dist = dists[size];
             int cell = cells[size];
             int i = 0;
             while (true) {
@@ -300,17 +364,19 @@ final class GridPaths {
                 if (child >= size) {
                     break;
                 }
-                if (child + 1 < size && keys[child + 1] < keys[child]) {
+                if (child + 1 < size && before(keys[child + 1], dists[child + 1], child)) {
                     child++;
                 }
-                if (keys[child] >= key) {
+                if (!(keys[child] < key || (keys[child] == key && dists[child] > dist))) {
                     break;
                 }
                 keys[i] = keys[child];
+                dists[i] = dists[child];
                 cells[i] = cells[child];
                 i = child;
             }
             keys[i] = key;
+            dists[i] = dist;
             cells[i] = cell;
             return top;
         }

@@ -51,17 +51,25 @@ final class GridSight {
         int rowHi = clamp(grid.rowAt(Math.nextUp(yMax)), grid.rows());
         int colLo = clamp(grid.colAt(Math.nextDown(ax)), grid.cols());
         int colHi = clamp(grid.colAt(Math.nextUp(bx)), grid.cols());
+        // The rows a column spans run between the heights at its two sides; each side is
+        // shared with the next column, so its rows are worked out once.
+        double invDx = dx > 0 ? 1 / dx : 0;
+        float h = heightAt(ax, ay, invDx, dy, ax);
+        int lowLeft = grid.rowAt(Math.nextDown(h));
+        int highLeft = grid.rowAt(Math.nextUp(h));
         for (int col = colLo; col <= colHi; col++) {
             float left = grid.cellX(col);
             float right = grid.cellX(col + 1);
             int r0 = rowLo;
             int r1 = rowHi;
             if (dx > 0) {
-                // The heights where the segment enters and leaves this column.
-                double ya = heightAt(ax, ay, dx, dy, Math.max(ax, left));
-                double yb = heightAt(ax, ay, dx, dy, Math.min(bx, right));
-                r0 = Math.max(rowLo, grid.rowAt(Math.nextDown((float) Math.min(ya, yb))));
-                r1 = Math.min(rowHi, grid.rowAt(Math.nextUp((float) Math.max(ya, yb))));
+                h = heightAt(ax, ay, invDx, dy, Math.min(bx, right));
+                int lowRight = grid.rowAt(Math.nextDown(h));
+                int highRight = grid.rowAt(Math.nextUp(h));
+                r0 = Math.max(rowLo, Math.min(lowLeft, lowRight));
+                r1 = Math.min(rowHi, Math.max(highLeft, highRight));
+                lowLeft = lowRight;
+                highLeft = highRight;
             }
             float w = right - left;
             for (int row = r0; row <= r1; row++) {
@@ -76,10 +84,14 @@ final class GridSight {
         return true;
     }
 
-    /** The segment's y at x, for x between its ends (dx > 0); in double, off by far less than a float step. */
-    private static double heightAt(float ax, float ay, double dx, double dy, float x) {
-        double t = ((double) x - ax) / dx;
-        return ay + Math.min(1, Math.max(0, t)) * dy;
+    /**
+     * The segment's y at x, for x between its ends, rounded to a float: the true height is
+     * within half a float step of it (the double arithmetic is off by far less), so one
+     * float step down and up brackets it.
+     */
+    private static float heightAt(float ax, float ay, double invDx, double dy, float x) {
+        double t = ((double) x - ax) * invDx;
+        return (float) (ay + Math.min(1, Math.max(0, t)) * dy);
     }
 
     private static boolean reachesOutside(Grid grid, float x, float y) {

@@ -167,6 +167,24 @@ public final class PathCosts {
         return cheapest;
     }
 
+    /**
+     * Costs are equal when they cost every terrain the same and agree on diagonals.
+     *
+     * @param o another object
+     * @return true if it is equal costs
+     */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof PathCosts p && p.uniform == uniform && p.diagonals == diagonals
+                && Arrays.equals(p.costs, costs);
+    }
+
+    /** @return a hash code consistent with {@link #equals} */
+    @Override
+    public int hashCode() {
+        return Arrays.hashCode(costs) * 31 + (uniform ? 2 : 0) + (diagonals ? 1 : 0);
+    }
+
     /** @return the costs, for printing */
     @Override
     public String toString() {

@@ -284,6 +284,11 @@ class GridPathTest {
         assertTrue(costs.withDiagonals().diagonals());
         assertFalse(costs.diagonals(), "withDiagonals makes a new value");
         assertEquals(INF, costs.cost(1));
+        assertEquals(PathCosts.byTerrain(1, INF, 3), costs);
+        assertEquals(PathCosts.byTerrain(1, INF, 3).hashCode(), costs.hashCode());
+        assertFalse(costs.equals(costs.withDiagonals()));
+        assertFalse(costs.equals(PathCosts.byTerrain(1, INF, 4)));
+        assertFalse(PathCosts.steps().equals(PathCosts.byTerrain(1)), "steps costs every terrain 1, byTerrain(1) only terrain 0");
         assertEquals(1f, PathCosts.steps().cost(12345), "steps: every terrain costs 1");
         assertEquals("PathCosts.byTerrain[1.0, Infinity, 3.0].withDiagonals()", costs.withDiagonals().toString());
         assertEquals("terrain -1 has no cost: the costs are for terrains 0 to 2",
