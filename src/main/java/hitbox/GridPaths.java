@@ -73,7 +73,7 @@ final class GridPaths {
                 }
                 link[next] = cell;
                 if (next == start) {
-                    return follow(link, start, goal);
+                    return follow(link, start, goal, false);
                 }
                 queueCol[tail] = c;
                 queueRow[tail] = r;
@@ -83,16 +83,20 @@ final class GridPaths {
         return NONE;
     }
 
-    /** The cells from start to goal along the links, start and goal included. */
-    private static int[] follow(int[] link, int start, int goal) {
+    /**
+     * The cells along the links from {@code first} to {@code last}, both included, in that
+     * order, or the other way round ({@code reversed}: the links lead from the goal back to
+     * the start).
+     */
+    private static int[] follow(int[] link, int first, int last, boolean reversed) {
         int length = 1;
-        for (int cell = start; cell != goal; cell = link[cell]) {
+        for (int cell = first; cell != last; cell = link[cell]) {
             length++;
         }
         int[] route = new int[length];
-        int cell = start;
+        int cell = first;
         for (int i = 0; i < length; i++) {
-            route[i] = cell;
+            route[reversed ? length - 1 - i : i] = cell;
             cell = link[cell];
         }
         return route;
@@ -133,7 +137,7 @@ final class GridPaths {
                 continue;  // an old entry: the cell was reached more cheaply since
             }
             if (cell == goal) {
-                return backwards(link, start, goal);
+                return follow(link, goal, start, true);
             }
             int col = cell % cols;
             int row = cell / cols;
@@ -228,21 +232,6 @@ final class GridPaths {
         }
     }
 
-    /** The cells from start to goal, read backwards along the links from the goal. */
-    private static int[] backwards(int[] link, int start, int goal) {
-        int length = 1;
-        for (int cell = goal; cell != start; cell = link[cell]) {
-            length++;
-        }
-        int[] route = new int[length];
-        int cell = goal;
-        for (int i = length - 1; i >= 0; i--) {
-            route[i] = cell;
-            cell = link[cell];
-        }
-        return route;
-    }
-
     private static void checkCells(Grid grid, int fromCol, int fromRow, int toCol, int toRow) {
         checkCell(grid, "fromCol", fromCol, grid.cols());
         checkCell(grid, "fromRow", fromRow, grid.rows());
@@ -325,9 +314,16 @@ final class GridPaths {
             return dists[0];
         }
 
-        /** Does an entry with this key and cost come out before entry i? */
-        private boolean before(double key, double dist, int i) {
-            return key < keys[i] || (key == keys[i] && dist > dists[i]);
+        /** Does an entry with this key and cost come out before one with the other key and cost? */
+        private static boolean before(double key, double dist, double otherKey, double otherDist) {
+            return key < otherKey || (key == otherKey && dist > otherDist);
+        }
+
+        /** Puts an entry at place i. */
+        private void put(int i, double key, double dist, int cell) {
+            keys[i] = key;
+            dists[i] = dist;
+            cells[i] = cell;
         }
 
         void push(double key, double dist, int cell) {
@@ -337,47 +333,36 @@ final class GridPaths {
                 cells = Arrays.copyOf(cells, size * 2);
             }
             int i = size++;
+            // Up from the bottom: parents that come later move down a place.
             while (i > 0) {
                 int parent = (i - 1) >>> 1;
-                if (!before(key, dist, parent)) {
+                if (!before(key, dist, keys[parent], dists[parent])) {
                     break;
                 }
-                keys[i] = keys[parent];
-                dists[i] = dists[parent];
-                cells[i] = cells[parent];
+                put(i, keys[parent], dists[parent], cells[parent]);
                 i = parent;
             }
-            keys[i] = key;
-            dists[i] = dist;
-            cells[i] = cell;
+            put(i, key, dist, cell);
         }
 
         int pop() {
             int top = cells[0];
             size--;
+            // The last entry goes down from the top: children that come first move up a place.
             double key = keys[size];
             double dist = dists[size];
             int cell = cells[size];
             int i = 0;
-            while (true) {
-                int child = 2 * i + 1;
-                if (child >= size) {
-                    break;
-                }
-                if (child + 1 < size && before(keys[child + 1], dists[child + 1], child)) {
+            for (int child = 1; child < size; i = child, child = 2 * i + 1) {
+                if (child + 1 < size && before(keys[child + 1], dists[child + 1], keys[child], dists[child])) {
                     child++;
                 }
-                if (!(keys[child] < key || (keys[child] == key && dists[child] > dist))) {
+                if (!before(keys[child], dists[child], key, dist)) {
                     break;
                 }
-                keys[i] = keys[child];
-                dists[i] = dists[child];
-                cells[i] = cells[child];
-                i = child;
+                put(i, keys[child], dists[child], cells[child]);
             }
-            keys[i] = key;
-            dists[i] = dist;
-            cells[i] = cell;
+            put(i, key, dist, cell);
             return top;
         }
     }

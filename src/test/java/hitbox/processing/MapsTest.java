@@ -39,23 +39,24 @@ class MapsTest {
     @Test
     void fromImage_rgbImage_countsAsOpaque() {
         // An RGB image's top byte means nothing to Processing: a black pixel may be stored as 0.
-        PImage image = new PImage(2, 1, PConstants.RGB);
-        image.loadPixels();
-        image.pixels[0] = 0x00000000;
-        image.pixels[1] = 0x00FFFFFF;
-        image.updatePixels();
+        PImage image = twoPixels(PConstants.RGB, 0x00000000, 0x00FFFFFF);
         assertEquals("#.", Maps.fromImage(image, 1, key(), 1).toMap());
     }
 
     @Test
     void fromImage_argbImage_withATransparentPixel_isRefused() {
-        PImage image = new PImage(2, 1, PConstants.ARGB);
-        image.loadPixels();
-        image.pixels[0] = 0xFF000000;
-        image.pixels[1] = 0x00FFFFFF;
-        image.updatePixels();
+        PImage image = twoPixels(PConstants.ARGB, 0xFF000000, 0x00FFFFFF);
         assertEquals("pixel (1, 0) is not opaque (alpha 0 of 255): paint every pixel of the map in one of the key's colours,"
                 + " fully opaque", assertThrows(IllegalArgumentException.class, () -> Maps.fromImage(image, 1, key(), 1)).getMessage());
+    }
+
+    private static PImage twoPixels(int format, int left, int right) {
+        PImage image = new PImage(2, 1, format);
+        image.loadPixels();
+        image.pixels[0] = left;
+        image.pixels[1] = right;
+        image.updatePixels();
+        return image;
     }
 
     @Test
