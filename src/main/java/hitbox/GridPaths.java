@@ -42,21 +42,18 @@ final class GridPaths {
         int mark = b.nextMark();
         int[] seen = b.seen;
         int[] link = b.link;
-        int[] queueCol = b.queueCol;
-        int[] queueRow = b.queueRow;
+        int[] queue = b.queue;
         // Searching from the goal leaves every link pointing one step nearer to it, so the
         // route is read off forwards from the start. A cell is marked seen the first time it
         // is looked at, solid or not, so the grid is asked about each cell at most once.
         seen[goal] = mark;
-        queueCol[0] = toCol;
-        queueRow[0] = toRow;
+        queue[0] = goal;
         int head = 0;
         int tail = 1;
         while (head < tail) {
-            int col = queueCol[head];
-            int row = queueRow[head];
-            head++;
-            int cell = row * cols + col;
+            int cell = queue[head++];
+            int row = cell / cols;
+            int col = cell - row * cols;
             for (int k = 0; k < 4; k++) {
                 int c = col + STEP_COL[k];
                 int r = row + STEP_ROW[k];
@@ -75,9 +72,7 @@ final class GridPaths {
                 if (next == start) {
                     return follow(link, start, goal, false);
                 }
-                queueCol[tail] = c;
-                queueRow[tail] = r;
-                tail++;
+                queue[tail++] = next;
             }
         }
         return NONE;
@@ -252,8 +247,7 @@ final class GridPaths {
 
         int[] seen = new int[0];
         int[] link = new int[0];
-        int[] queueCol = new int[0];
-        int[] queueRow = new int[0];
+        int[] queue = new int[0];
         double[] dist = new double[0];
         int[] costKnown = new int[0];
         double[] cost = new double[0];
@@ -270,8 +264,7 @@ final class GridPaths {
             if (b.seen.length < cells) {
                 b.seen = new int[cells];
                 b.link = new int[cells];
-                b.queueCol = new int[cells];
-                b.queueRow = new int[cells];
+                b.queue = new int[cells];
                 b.dist = new double[cells];
                 b.costKnown = new int[cells];
                 b.cost = new double[cells];
