@@ -38,7 +38,7 @@ final class GridPaths {
         if (start == goal) {
             return new int[] {start};
         }
-        Buffers b = Buffers.get(cols * rows);
+        Buffers b = Buffers.get(cols * rows, false);
         int mark = b.nextMark();
         int[] seen = b.seen;
         int[] link = b.link;
@@ -103,7 +103,7 @@ final class GridPaths {
         Check.notNull("costs", costs);
         int cols = grid.cols();
         int rows = grid.rows();
-        Buffers b = Buffers.get(cols * rows);
+        Buffers b = Buffers.get(cols * rows, true);
         int mark = b.nextMark();
         Search s = new Search(grid, costs, b, mark);
         int start = fromRow * cols + fromCol;
@@ -254,7 +254,8 @@ final class GridPaths {
         final Heap heap = new Heap();
         private int mark;
 
-        static Buffers get(int cells) {
+        /** The buffers for a search of this many cells; {@code weighted} adds the arrays only A* needs. */
+        static Buffers get(int cells, boolean weighted) {
             SoftReference<Buffers> ref = KEPT.get();
             Buffers b = ref == null ? null : ref.get();
             if (b == null) {
@@ -265,10 +266,15 @@ final class GridPaths {
                 b.seen = new int[cells];
                 b.link = new int[cells];
                 b.queue = new int[cells];
+                b.dist = new double[0];
+                b.costKnown = new int[0];
+                b.cost = new double[0];
+                b.mark = 0;
+            }
+            if (weighted && b.dist.length < cells) {
                 b.dist = new double[cells];
                 b.costKnown = new int[cells];
-                b.cost = new double[cells];
-                b.mark = 0;
+                b.cost = new double[cells];  // zeros: marks start at 1, so no cell's cost is known yet
             }
             return b;
         }
