@@ -36,8 +36,11 @@ final class BruteForceBroadPhase extends AbstractBroadPhase {
         double[] b = box;  // a local: the callback could change a field, so it would be read again after each
         int[] id = ids;
         for (int s = 0; s < n; s++) {
+            int k = 4 * s;
+            double x = b[k], right = b[k + 1], y = b[k + 2], bottom = b[k + 3];
             for (int t = s + 1; t < n; t++) {
-                if (overlap(b, 4 * s, b, 4 * t)) {
+                int j = 4 * t;
+                if (overlap(x, right, y, bottom, b[j], b[j + 1], b[j + 2], b[j + 3])) {
                     emit(out, id[s], id[t]);
                 }
             }
