@@ -75,17 +75,19 @@ public interface BroadPhase {
     }
 
     /**
-     * A uniform hash grid whose cell size is chosen from the boxes, each time it is rebuilt:
-     * the power of two nearest above twice the median size ({@code max(w, h)}), or, when most
-     * boxes are points, from how far apart they are.
+     * A uniform grid whose cell size is chosen from the boxes each time it is rebuilt: about
+     * the size ({@code max(w, h)}) that 9 boxes in 10 do not exceed, or, when most boxes are
+     * points, the spacing that puts about one box in each cell of their bounds.
      *
      * <p>Each box is stored once, in the cell of its top-left corner, in the finest grid whose
      * cells are at least as large as the box; larger boxes go to grids of cells 2, 4, 8... times
-     * as large, so a few very large boxes do not slow down the rest. The grid is rebuilt (by
-     * counting sort, in time proportional to the number of boxes) by the first
-     * {@link #pairs}, {@link #query} or {@link #raycast} after a change, which suits boxes that
-     * all move every frame. Any float coordinates work; beyond about 2^61 cells from the
-     * origin the cells are shared, which is still exact but slower.
+     * as large, so a few very large boxes do not slow down the rest. Each grid is an array of
+     * cells where the boxes are dense enough, and hashed where they are sparse (a world with a
+     * few boxes far apart costs no more than a small one). The grid is rebuilt (by counting
+     * sort, in time proportional to the number of boxes) by the first {@link #pairs},
+     * {@link #query} or {@link #raycast} after a change, which suits boxes that all move every
+     * frame. Any float coordinates work; beyond about 2^61 cells from the origin the cells are
+     * shared, which is still exact but slower.
      *
      * @return an empty grid
      */
@@ -95,7 +97,7 @@ public interface BroadPhase {
 
     /**
      * A uniform hash grid with cells of the given size: as {@link #grid()}, for when you know
-     * the right size (about twice the size of a typical box).
+     * the right size (about the size of the larger boxes: most boxes should fit in a cell).
      *
      * @param cellSize the width and height of a cell of the finest grid, more than 0
      * @return an empty grid
@@ -137,7 +139,9 @@ public interface BroadPhase {
      * A dynamic AABB tree, as Box2D's {@code b2DynamicTree}: a balanced binary tree of boxes,
      * each leaf's box enlarged by 2 pixels and, when it moves, by 4 times its last move ahead
      * of it, so a box that moves a little stays inside its enlarged box and the tree does not
-     * change. Pairs come from walking the tree against itself.
+     * change. As Box2D's broad phase, it keeps the list of pairs whose enlarged boxes overlap,
+     * and only the boxes that left theirs are looked up again; the exact test then runs over
+     * that list.
      *
      * @return an empty dynamic tree
      */
