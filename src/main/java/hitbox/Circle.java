@@ -33,10 +33,10 @@ public record Circle(float x, float y, float r) implements Shape {
         return Collide.circlePoint(x, y, r, px, py);
     }
 
-    /** {@inheritDoc} */
+    /** {@inheritDoc} Rounded outwards, so the box holds the circle even when x - r is not a float. */
     @Override
     public Rect bounds() {
-        return new Rect(x - r, y - r, 2 * r, 2 * r);
+        return Bounds.enclosing(Bounds.left(this), Bounds.top(this), Bounds.right(this), Bounds.bottom(this));
     }
 
     /** {@inheritDoc} */

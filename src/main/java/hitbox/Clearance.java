@@ -188,7 +188,7 @@ final class Clearance {
             }
         }
         edges.sort((e, f) -> Double.compare(e[4], f[4]));
-        Contacts.Best best = new Contacts.Best(2 * tol);
+        Contacts.Shortest best = new Contacts.Shortest(2 * tol);
         List<double[]> inside = new ArrayList<>();
         for (double[] e : edges) {
             if (best.beyond(e[4])) {
@@ -249,7 +249,7 @@ final class Clearance {
      * overlapping over its whole length. Next to such a line both sides are covered by the
      * regions of the two pieces the cut separates, so nothing nearer is lost.
      */
-    private static void offerGap(Contacts.Best best, double[] e, double lo, double hi, double foot,
+    private static void offerGap(Contacts.Shortest best, double[] e, double lo, double hi, double foot,
                                  List<double[]> lines, double tol) {
         double ex = e[2] - e[0], ey = e[3] - e[1];
         double t = Math.max(lo, Math.min(hi, foot));
@@ -456,9 +456,10 @@ final class Clearance {
     /**
      * A circle (first) of radius r &gt; 0 against a polygon (second) that it overlaps: the
      * shortest move of the centre to a point at least r from the polygon. Normal from the
-     * circle to the polygon.
+     * circle to the polygon, or (flip) from the polygon to the circle, the tie rule applied
+     * to the normal as reported.
      */
-    static Contact circle(float cx, float cy, float r, float[] xy) {
+    static Contact circle(float cx, float cy, float r, float[] xy, boolean flip) {
         int n = xy.length / 2;
         // Everything relative to the centre: the no-move point is the origin.
         double[] p = new double[xy.length];
@@ -487,7 +488,7 @@ final class Clearance {
         }
 
         Disc disc = new Disc(xy, cx, cy, p, r, tol);
-        Contacts.Best best = new Contacts.Best(2 * tol);
+        Contacts.Shortest best = new Contacts.Shortest(2 * tol, flip);
         for (double[] o : offsets) {
             offerCentre(best, o[0], o[1], disc);
             double ex = o[2] - o[0], ey = o[3] - o[1];
@@ -510,6 +511,13 @@ final class Clearance {
             if (d > 0) {
                 double k = 1 - r / d;
                 offerCentre(best, vx * k, vy * k, disc);
+            } else {
+                // The centre is on this corner: every direction of the corner's cone is as
+                // short, so the axis ones are offered too (the cover test drops the others).
+                offerCentre(best, 0, r, disc);
+                offerCentre(best, 0, -r, disc);
+                offerCentre(best, r, 0, disc);
+                offerCentre(best, -r, 0, disc);
             }
         }
         // Crossings of two pieces, skipping any piece farther away than the best so far (a
@@ -567,7 +575,7 @@ final class Clearance {
     }
 
     /** Offers moving the centre to (qx, qy), if the circle is clear there. */
-    private static void offerCentre(Contacts.Best best, double qx, double qy, Disc disc) {
+    private static void offerCentre(Contacts.Shortest best, double qx, double qy, Disc disc) {
         double d = length(qx, qy);
         if (d == 0 || best.beyond(d) || coveredCentre(qx, qy, disc)) {
             return;
@@ -679,7 +687,7 @@ final class Clearance {
     static List<int[]> convexPieces(double[] xy, List<int[]> cuts) {
         List<int[]> diagonals = new ArrayList<>();
         List<int[]> pieces = triangulate(xy, diagonals);
-        double turn = Math.signum(Polygons.doubleSignedArea(xy));
+        double turn = Polygons.areaSign(xy);
         for (int[] d : diagonals) {
             int p = pieceWithEdge(pieces, d[0], d[1]);
             int q = pieceWithEdge(pieces, d[1], d[0]);
@@ -756,7 +764,7 @@ final class Clearance {
      */
     static List<int[]> triangulate(double[] xy, List<int[]> diagonals) {
         int n = xy.length / 2;
-        double turn = Math.signum(Polygons.doubleSignedArea(xy));
+        double turn = Polygons.areaSign(xy);
         if (turn == 0) {
             throw new IllegalArgumentException("the polygon has no area, so it cannot be cut into triangles");
         }

@@ -6,9 +6,13 @@ package hitbox;
  * <p>Each method is the {@code if} statement the tutorial writes, made exact: the arithmetic is
  * done in {@code double}, so for whole-number coordinates up to about a million a touching case
  * is decided by the <a href="package-summary.html#touching">touching rule</a> and never by
- * rounding. The methods allocate nothing and check nothing: NaN in any argument makes every
- * comparison false, so the answer is "no collision". Circles are centre and radius; rectangles
- * are top-left corner, width and height (Processing's {@code CORNER} mode).
+ * rounding. The methods allocate nothing and never throw for any float: NaN in any argument
+ * (a coordinate of a polygon's array included) answers "no collision", false (the package's
+ * <a href="package-summary.html#bad-input">NaN rule</a>); so does a negative size or radius.
+ * Infinite values are compared as the formulas compare them. The polygon methods throw only
+ * for a null array ({@link IllegalArgumentException} naming it). Circles are centre and
+ * radius; rectangles are top-left corner, width and height (Processing's {@code CORNER}
+ * mode).
  */
 public final class Collide {
     private Collide() {
@@ -30,7 +34,7 @@ public final class Collide {
     public static boolean circlePoint(float cx, float cy, float r, float px, float py) {
         double dx = (double) px - cx;
         double dy = (double) py - cy;
-        return dx * dx + dy * dy < (double) r * r;
+        return r > 0 && dx * dx + dy * dy < (double) r * r;
     }
 
     /**
@@ -49,6 +53,9 @@ public final class Collide {
      * @return true if the distance between the centres is less than the sum of the radii
      */
     public static boolean circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
+        if (!(r1 >= 0 && r2 >= 0)) {
+            return false;
+        }
         double dx = (double) x2 - x1;
         double dy = (double) y2 - y1;
         double reach = (double) r1 + r2;
@@ -93,7 +100,8 @@ public final class Collide {
      */
     public static boolean rectRect(float x1, float y1, float w1, float h1,
                                    float x2, float y2, float w2, float h2) {
-        return (double) x1 + w1 > x2 && x1 < (double) x2 + w2
+        return w1 >= 0 && h1 >= 0 && w2 >= 0 && h2 >= 0
+                && (double) x1 + w1 > x2 && x1 < (double) x2 + w2
                 && (double) y1 + h1 > y2 && y1 < (double) y2 + h2;
     }
 
@@ -114,6 +122,9 @@ public final class Collide {
      * @return true if the circle's inside and the rectangle's inside overlap
      */
     public static boolean circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
+        if (!(r >= 0 && rw >= 0 && rh >= 0)) {
+            return false;
+        }
         double dx = cx - clamp(cx, rx, (double) rx + rw);
         double dy = cy - clamp(cy, ry, (double) ry + rh);
         double d2 = dx * dx + dy * dy;
@@ -149,6 +160,9 @@ public final class Collide {
      * @return true if the point is strictly inside
      */
     public static boolean polygonPoint(float[] xy, float px, float py) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(px, py, 0, 0, 0)) {
+            return false;
+        }
         return Polygons.contains(xy, px, py);
     }
 
@@ -171,6 +185,9 @@ public final class Collide {
      * @return true if this edge counts as a crossing
      */
     public static boolean rayCrossesEdge(float ax, float ay, float bx, float by, float px, float py) {
+        if (Check.nan(ax, ay, bx, by, px) || Float.isNaN(py)) {
+            return false;
+        }
         return Polygons.rayCrossing(ax, ay, bx, by, px, py) > 0;
     }
 
@@ -229,6 +246,9 @@ public final class Collide {
      */
     public static boolean lineLine(float x1, float y1, float x2, float y2,
                                    float x3, float y3, float x4, float y4) {
+        if (Check.nan(x1, y1, x2, y2, x3) || Check.nan(y3, x4, y4, 0, 0)) {
+            return false;
+        }
         double d1 = Lines.orient(x3, y3, x4, y4, x1, y1);
         double d2 = Lines.orient(x3, y3, x4, y4, x2, y2);
         double d3 = Lines.orient(x1, y1, x2, y2, x3, y3);
@@ -265,6 +285,9 @@ public final class Collide {
      * @return true if some point of the segment is strictly inside the circle
      */
     public static boolean lineCircle(float x1, float y1, float x2, float y2, float cx, float cy, float r) {
+        if (Check.nan(x1, y1, x2, y2, cx) || Check.nan(cy, r, 0, 0, 0)) {
+            return false;
+        }
         if (!(r > 0)) {
             return false;
         }
@@ -310,6 +333,9 @@ public final class Collide {
      */
     public static boolean lineRect(float x1, float y1, float x2, float y2,
                                    float rx, float ry, float rw, float rh) {
+        if (Check.nan(x1, y1, x2, y2, rx) || Check.nan(ry, rw, rh, 0, 0)) {
+            return false;
+        }
         if (!(rw > 0 && rh > 0)) {
             return false;
         }
@@ -345,6 +371,9 @@ public final class Collide {
      * @return true if the insides of the circle and the polygon overlap
      */
     public static boolean polygonCircle(float[] xy, float cx, float cy, float r) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(cx, cy, r, 0, 0)) {
+            return false;
+        }
         int n = xy.length / 2;
         if (!(r >= 0) || n < 3) {
             return false;
@@ -376,6 +405,9 @@ public final class Collide {
      * @return true if the insides of the rectangle and the polygon overlap
      */
     public static boolean polygonRect(float[] xy, float rx, float ry, float rw, float rh) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(rx, ry, rw, rh, 0)) {
+            return false;
+        }
         if (!(rw >= 0 && rh >= 0)) {
             return false;
         }
@@ -414,7 +446,7 @@ public final class Collide {
      * @return true if some point of the segment is strictly inside the polygon
      */
     public static boolean polygonLine(float[] xy, float x1, float y1, float x2, float y2) {
-        if (Float.isNaN(x1) || Float.isNaN(y1) || Float.isNaN(x2) || Float.isNaN(y2)) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(x1, y1, x2, y2, 0)) {
             return false;
         }
         if (Polygons.contains(xy, x1, y1)) {
@@ -439,6 +471,9 @@ public final class Collide {
      * @return true if the insides of the polygons overlap
      */
     public static boolean polygonPolygon(float[] a, float[] b) {
+        if (Check.nan(Check.notNull("a", a)) || Check.nan(Check.notNull("b", b))) {
+            return false;
+        }
         int wa = Polygons.winding(a);
         int wb = Polygons.winding(b);
         if (wa == 0 || wb == 0 || Polygons.boundsApart(a, b)) {
@@ -487,6 +522,9 @@ public final class Collide {
      */
     public static boolean trianglePoint(float x1, float y1, float x2, float y2, float x3, float y3,
                                         float px, float py) {
+        if (Check.nan(x1, y1, x2, y2, x3) || Check.nan(y3, px, py, 0, 0)) {
+            return false;
+        }
         double o1 = Lines.orient(x1, y1, x2, y2, px, py);
         double o2 = Lines.orient(x2, y2, x3, y3, px, py);
         double o3 = Lines.orient(x3, y3, x1, y1, px, py);

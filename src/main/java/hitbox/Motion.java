@@ -37,20 +37,32 @@ import java.util.List;
  * <p>Obstacles are rectangles; movers are rectangles or circles. The next positions are
  * computed as a sketch does, {@code x + vx} in {@code float}, and tested with
  * {@link Collide#rectRect} and {@link Collide#circleRect}. The raw-float methods allocate
- * nothing and check nothing (a NaN gives {@link #NONE}); the array and list overloads check
+ * nothing, check nothing and never throw: a NaN in any argument gives {@link #NONE} (the
+ * <a href="package-summary.html#bad-input">NaN rule</a>); the array and list overloads check
  * that the obstacles are there.
+ *
+ * <p>The answer is an {@code int} in {@link Side}'s <a href="Side.html#bits">bit scheme</a>:
+ * a blocked axis sets the bits of both its sides ({@link #X} is {@code LEFT | RIGHT}, {@link #Y}
+ * is {@code TOP | BOTTOM}), since the next-position check knows the axis, not which face;
+ * {@code Motion.has(blocked, Motion.X)} and {@code Side.has(blocked, Side.LEFT)} both read it.
  */
 public final class Motion {
     private Motion() {
     }
 
-    /** Neither axis is blocked: move freely. */
+    /** Neither axis is blocked: move freely. 0. */
     public static final int NONE = 0;
-    /** The horizontal move is blocked: reverse (or stop) {@code vx}. */
-    public static final int X = 1;
-    /** The vertical move is blocked: reverse (or stop) {@code vy}. */
-    public static final int Y = 2;
-    /** Both axes are blocked, {@code X | Y}: reverse both speeds. */
+    /**
+     * The horizontal move is blocked: reverse (or stop) {@code vx}. In {@link Side}'s
+     * <a href="Side.html#bits">bit scheme</a> it is the two walls, {@code LEFT | RIGHT}: 3.
+     */
+    public static final int X = 3;
+    /**
+     * The vertical move is blocked: reverse (or stop) {@code vy}. In {@link Side}'s bit
+     * scheme, {@code TOP | BOTTOM}: 12.
+     */
+    public static final int Y = 12;
+    /** Both axes are blocked, {@code X | Y}: reverse both speeds. 15. */
     public static final int BOTH = X | Y;
 
     // ---- rectangle mover --------------------------------------------------------------
@@ -75,6 +87,9 @@ public final class Motion {
      */
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy,
                                   float ox, float oy, float ow, float oh) {
+        if (Check.nan(x, y, w, h, vx) || Check.nan(vy, ox, oy, ow, oh)) {
+            return NONE;
+        }
         float nx = x + vx;
         float ny = y + vy;
         int blocked = (Collide.rectRect(nx, y, w, h, ox, oy, ow, oh) ? X : NONE)
@@ -171,6 +186,9 @@ public final class Motion {
      */
     public static int circleBlocked(float cx, float cy, float r, float vx, float vy,
                                     float ox, float oy, float ow, float oh) {
+        if (Check.nan(cx, cy, r, vx, vy) || Check.nan(ox, oy, ow, oh, 0)) {
+            return NONE;
+        }
         float nx = cx + vx;
         float ny = cy + vy;
         int blocked = (Collide.circleRect(nx, cy, r, ox, oy, ow, oh) ? X : NONE)
@@ -390,12 +408,9 @@ public final class Motion {
      * @return the name of the answer
      */
     public static String describe(int blocked) {
-        return switch (blocked & BOTH) {
-            case X -> "X";
-            case Y -> "Y";
-            case BOTH -> "BOTH";
-            default -> "NONE";
-        };
+        boolean x = has(blocked, X);
+        boolean y = has(blocked, Y);
+        return x && y ? "BOTH" : x ? "X" : y ? "Y" : "NONE";
     }
 
     /**
@@ -444,7 +459,8 @@ public final class Motion {
      * @param vy      its new speed down
      * @param blocked the axes an obstacle blocked before the move ({@link #X}, {@link #Y},
      *                {@link #BOTH} or {@link #NONE}): non-zero means it hit an obstacle
-     * @param crossed the window edges the move would have crossed ({@link Edges} flags)
+     * @param crossed the window edges the move would have crossed ({@link Edges} flags, in
+     *                {@link Side}'s bit scheme)
      */
     public record Step(float x, float y, float vx, float vy, int blocked, int crossed) {
 

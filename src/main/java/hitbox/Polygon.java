@@ -1,5 +1,7 @@
 package hitbox;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
 import java.util.Arrays;
 
 /**
@@ -227,17 +229,24 @@ public final class Polygon implements Shape {
     /**
      * The area enclosed, always positive whatever the winding.
      *
+     * <p>Computed exactly (in {@link BigDecimal}) and rounded once, so it is right for any
+     * coordinates, 1e16 next to 1 included, where float or double sums would cancel.
+     *
      * <p>Reference: the shoelace formula (Gauss's area formula).
      *
-     * @return the area, in square pixels
+     * @return the area, in square pixels, above 0; {@link Float#POSITIVE_INFINITY} if it is
+     *         too large for a float
      */
     public float area() {
-        return (float) (Math.abs(Polygons.doubleSignedArea(Polygons.toDouble(xy))) / 2);
+        return Polygons.exactDoubleSignedArea(Polygons.toDouble(xy)).abs().floatValue() / 2;
     }
 
     /**
      * The centroid: the balance point of the enclosed area (for a concave polygon it may lie
      * outside the polygon).
+     *
+     * <p>Computed exactly (in {@link BigDecimal}) and rounded once, so it is right for any
+     * coordinates a polygon can have, and always finite.
      *
      * <p>Reference: the centroid of a polygon from the signed areas of the triangles fanned
      * out from vertex 0, each weighted at its own centroid.
@@ -245,22 +254,25 @@ public final class Polygon implements Shape {
      * @return the centroid
      */
     public Vec centroid() {
-        double ox = xy[0];
-        double oy = xy[1];
-        double sumX = 0;
-        double sumY = 0;
-        double twiceArea = 0;
+        BigDecimal ox = new BigDecimal(xy[0]);
+        BigDecimal oy = new BigDecimal(xy[1]);
+        BigDecimal sumX = BigDecimal.ZERO;
+        BigDecimal sumY = BigDecimal.ZERO;
+        BigDecimal twiceArea = BigDecimal.ZERO;
         for (int i = 1; i + 1 < size(); i++) {
-            double ax = xy[2 * i] - ox;
-            double ay = xy[2 * i + 1] - oy;
-            double bx = xy[2 * i + 2] - ox;
-            double by = xy[2 * i + 3] - oy;
-            double t = ax * by - ay * bx; // twice the signed area of triangle (0, a, b)
-            twiceArea += t;
-            sumX += t * (ax + bx); // the triangle's centroid is (0 + a + b) / 3
-            sumY += t * (ay + by);
+            BigDecimal ax = new BigDecimal(xy[2 * i]).subtract(ox);
+            BigDecimal ay = new BigDecimal(xy[2 * i + 1]).subtract(oy);
+            BigDecimal bx = new BigDecimal(xy[2 * i + 2]).subtract(ox);
+            BigDecimal by = new BigDecimal(xy[2 * i + 3]).subtract(oy);
+            BigDecimal t = ax.multiply(by).subtract(ay.multiply(bx)); // twice the signed area of (0, a, b)
+            twiceArea = twiceArea.add(t);
+            sumX = sumX.add(t.multiply(ax.add(bx))); // the triangle's centroid is (0 + a + b) / 3
+            sumY = sumY.add(t.multiply(ay.add(by)));
         }
-        return new Vec((float) (ox + sumX / (3 * twiceArea)), (float) (oy + sumY / (3 * twiceArea)));
+        // A polygon Polygon.of accepts has area, exactly; the division is rounded once.
+        BigDecimal three = twiceArea.multiply(BigDecimal.valueOf(3));
+        MathContext mc = new MathContext(60);
+        return new Vec(ox.add(sumX.divide(three, mc)).floatValue(), oy.add(sumY.divide(three, mc)).floatValue());
     }
 
     /**

@@ -1,5 +1,7 @@
 package hitbox;
 
+import java.math.BigDecimal;
+
 /**
  * Polygon maths behind {@link Collide} and {@link Polygon}; {@code xy} is x0, y0, x1, y1, ....
  *
@@ -78,7 +80,7 @@ final class Polygons {
         }
     }
 
-    /** The bounding rectangle of the vertices. */
+    /** The bounding rectangle of the vertices, rounded outwards ({@link Bounds#enclosing}). */
     static Rect bounds(float[] xy) {
         float minX = xy[0], maxX = xy[0], minY = xy[1], maxY = xy[1];
         for (int i = 2; i < xy.length; i += 2) {
@@ -87,7 +89,7 @@ final class Polygons {
             minY = Math.min(minY, xy[i + 1]);
             maxY = Math.max(maxY, xy[i + 1]);
         }
-        return new Rect(minX, minY, maxX - minX, maxY - minY);
+        return Bounds.enclosing(minX, minY, maxX, maxY);
     }
 
     /**
@@ -339,8 +341,27 @@ final class Polygons {
     }
 
     /**
+     * Twice the signed area, exactly (the shoelace formula in {@link BigDecimal}): no
+     * rounding, no overflow, whatever the coordinates. Its sign follows {@link Lines#orient}.
+     */
+    static BigDecimal exactDoubleSignedArea(double[] xy) {
+        int n = xy.length / 2;
+        BigDecimal sum = BigDecimal.ZERO;
+        for (int i = 1; i + 1 < n; i++) {
+            sum = sum.add(Lines.exactOrient(xy[0], xy[1], xy[2 * i], xy[2 * i + 1], xy[2 * i + 2], xy[2 * i + 3]));
+        }
+        return sum;
+    }
+
+    /** The winding as the sign of the exact area: +1, -1, or 0 for none. */
+    static int areaSign(double[] xy) {
+        return exactDoubleSignedArea(xy).signum();
+    }
+
+    /**
      * Twice the signed area (shoelace formula), measured from vertex 0 so that large but
-     * nearby coordinates keep their precision. Its sign follows {@link Lines#orient}.
+     * nearby coordinates keep their precision; a double, rounded (see
+     * {@link #exactDoubleSignedArea} for the exact one). Its sign follows {@link Lines#orient}.
      */
     static double doubleSignedArea(double[] xy) {
         int n = xy.length / 2;

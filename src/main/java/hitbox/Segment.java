@@ -40,10 +40,10 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
         return Lines.segmentPoint(x1, y1, x2, y2, px, py);
     }
 
-    /** {@inheritDoc} */
+    /** {@inheritDoc} Rounded outwards, so the box holds both ends even when their distance is not a float. */
     @Override
     public Rect bounds() {
-        return new Rect(Math.min(x1, x2), Math.min(y1, y2), Math.abs(x2 - x1), Math.abs(y2 - y1));
+        return Bounds.enclosing(Bounds.left(this), Bounds.top(this), Bounds.right(this), Bounds.bottom(this));
     }
 
     /** {@inheritDoc} */

@@ -129,7 +129,7 @@ public final class SeparatingAxis {
         double[] pb = convexCorners("b", b);
         List<Axis> axes = new ArrayList<>(pa.length / 2 + pb.length / 2);
         for (double[] owner : new double[][] {pa, pb}) {
-            double turn = Math.signum(Polygons.doubleSignedArea(owner));
+            double turn = Polygons.areaSign(owner);
             int n = owner.length / 2;
             for (int i = 0; i < n; i++) {
                 int j = (i + 1) % n;
@@ -183,7 +183,7 @@ public final class SeparatingAxis {
      * no axis and are skipped, which is still a complete test for convex sets.
      */
     static Contact contact(double[] a, double[] b) {
-        Contacts.Best best = new Contacts.Best();
+        Contacts.Shortest best = new Contacts.Shortest();
         return search(a, b, best) ? best.contact() : null;
     }
 
@@ -193,7 +193,7 @@ public final class SeparatingAxis {
      * {@code best}, each axis offers it the two pushes along it: b can go forward until its
      * shadow starts where a's ends, or back.
      */
-    private static boolean search(double[] a, double[] b, Contacts.Best best) {
+    private static boolean search(double[] a, double[] b, Contacts.Shortest best) {
         for (double[] owner : new double[][] {a, b}) {
             int n = owner.length / 2;
             for (int i = 0; i < n; i++) {

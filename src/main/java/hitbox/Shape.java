@@ -47,10 +47,13 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon {
     boolean contains(float x, float y);
 
     /**
-     * The smallest axis-aligned rectangle that holds this shape: its hit box for a cheap
-     * first test.
+     * The smallest axis-aligned float rectangle that holds this shape: its hit box for a
+     * cheap first test. Rounded outwards: its far edges, {@code x + w} and {@code y + h}
+     * added in double as {@link Collide} adds them, are at or beyond the shape's, even when
+     * the exact size is not a float. (Only a shape reaching past the float range, a circle
+     * of radius near {@code Float.MAX_VALUE}, say, gets a box held back at the float range.)
      *
-     * @return the bounding rectangle
+     * @return the bounding rectangle, never null
      */
     Rect bounds();
 

@@ -171,10 +171,10 @@ class MotionTest {
 
     @ParameterizedTest(name = "reverse({0}) of (3, -4)")
     @CsvSource({
-            "0, 3, -4",
-            "1, -3, -4",
-            "2, 3, 4",
-            "3, -3, 4",
+            "0, 3, -4",     // NONE
+            "3, -3, -4",    // X: LEFT | RIGHT in Side's bits
+            "12, 3, 4",     // Y: TOP | BOTTOM
+            "15, -3, 4",    // BOTH
     })
     void reverse_table(int blocked, float vx, float vy) {
         assertEquals(vx, Motion.reverseX(blocked, 3));

@@ -99,7 +99,7 @@ class PolygonContactTest {
         Contact contact = checked(c, U);
         assertContact(0, 1, (float) (20 + Math.sqrt(44)), contact);
         // The nearest-wall answer, for comparison, would be 2.
-        assertEquals(2, Contacts.closestFeature(30, 20, 12, U.raw()).depth(), 1e-6);
+        assertEquals(2, Contacts.closestFeature(30, 20, 12, U.raw(), false).depth(), 1e-6);
     }
 
     @ParameterizedTest
@@ -348,9 +348,9 @@ class PolygonContactTest {
     @Property(tries = 300, maxDiscardRatio = 20)
     void clearance_agreesWithClosestFeature_onConvexPolygons(@ForAll("circle") Circle a, @ForAll("convex") Polygon b) {
         Assume.that(a.r() > 0);
-        Contact near = Contacts.closestFeature(a.x(), a.y(), a.r(), b.raw());
+        Contact near = Contacts.closestFeature(a.x(), a.y(), a.r(), b.raw(), false);
         Assume.that(near != null);
-        agree(near, Clearance.circle(a.x(), a.y(), a.r(), b.raw()), a, b);
+        agree(near, Clearance.circle(a.x(), a.y(), a.r(), b.raw(), false), a, b);
     }
 
     @Property(tries = 200)
