@@ -134,12 +134,7 @@ public final class Motion {
      * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
      */
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, Rect[] obstacles) {
-        Check.notNull("obstacles", obstacles);
-        int blocked = NONE;
-        for (int i = 0; i < obstacles.length && blocked != BOTH; i++) {
-            blocked |= rectBlocked(x, y, w, h, vx, vy, Hits.element(obstacles, i, "obstacles"));
-        }
-        return blocked;
+        return rectBlocked(x, y, w, h, vx, vy, Hits.view("obstacles", obstacles));
     }
 
     /**
@@ -231,12 +226,7 @@ public final class Motion {
      * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
      */
     public static int circleBlocked(float cx, float cy, float r, float vx, float vy, Rect[] obstacles) {
-        Check.notNull("obstacles", obstacles);
-        int blocked = NONE;
-        for (int i = 0; i < obstacles.length && blocked != BOTH; i++) {
-            blocked |= circleBlocked(cx, cy, r, vx, vy, Hits.element(obstacles, i, "obstacles"));
-        }
-        return blocked;
+        return circleBlocked(cx, cy, r, vx, vy, Hits.view("obstacles", obstacles));
     }
 
     /**
