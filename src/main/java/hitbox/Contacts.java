@@ -189,7 +189,7 @@ final class Contacts {
         }
         // The search cannot come back empty for shapes that overlap; if rounding ever made it,
         // the closest-feature answer is still a push that clears the nearest edge.
-        Contact clear = Clearance.circle(cx, cy, r, xy, flip);
+        Contact clear = CircleClearance.circle(cx, cy, r, xy, flip);
         return clear != null ? clear : near;
     }
 

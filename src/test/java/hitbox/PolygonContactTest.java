@@ -350,14 +350,14 @@ class PolygonContactTest {
         Assume.that(a.r() > 0);
         Contact near = Contacts.closestFeature(a.x(), a.y(), a.r(), b.raw(), false);
         Assume.that(near != null);
-        agree(near, Clearance.circle(a.x(), a.y(), a.r(), b.raw(), false), a, b);
+        agree(near, CircleClearance.circle(a.x(), a.y(), a.r(), b.raw(), false), a, b);
     }
 
     @Property(tries = 200)
     void triangles_coverThePolygon(@ForAll("concave") Polygon p) {
         double[] xy = ContactFixtures.vertices(p);
         List<int[]> diagonals = new ArrayList<>();
-        List<int[]> triangles = Clearance.triangulate(xy, diagonals);
+        List<int[]> triangles = Triangulation.triangulate(xy, diagonals);
         // n - 2 triangles, fewer where a vertex is dropped for being straight.
         assertTrue(triangles.size() <= p.size() - 2 && triangles.size() >= p.size() - 2 - straightVertices(xy) - 1);
         assertEquals(triangles.size() - 1, diagonals.size());
@@ -368,9 +368,9 @@ class PolygonContactTest {
     void convexPieces_areConvex_coverThePolygon_noMoreThanTriangles(@ForAll("concave") Polygon p) {
         double[] xy = ContactFixtures.vertices(p);
         List<int[]> cuts = new ArrayList<>();
-        List<int[]> pieces = Clearance.convexPieces(xy, cuts);
+        List<int[]> pieces = Triangulation.convexPieces(xy, cuts);
         assertEquals(pieces.size() - 1, cuts.size());
-        assertTrue(pieces.size() <= Clearance.triangulate(xy, new ArrayList<>()).size());
+        assertTrue(pieces.size() <= Triangulation.triangulate(xy, new ArrayList<>()).size());
         assertEquals(p.isConvex(), pieces.size() == 1, "one piece exactly when convex");
         for (int[] piece : pieces) {
             assertTrue(ContactFixtures.isConvexRef(coordinates(xy, piece)), "piece is convex");
@@ -381,7 +381,7 @@ class PolygonContactTest {
     @Test
     void convexPieces_ofTheL_areTwo() {
         List<int[]> cuts = new ArrayList<>();
-        assertEquals(2, Clearance.convexPieces(ContactFixtures.vertices(L), cuts).size());
+        assertEquals(2, Triangulation.convexPieces(ContactFixtures.vertices(L), cuts).size());
         assertEquals(1, cuts.size());
     }
 
