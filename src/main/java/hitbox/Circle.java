@@ -24,7 +24,7 @@ public record Circle(float x, float y, float r) implements Shape {
     public Circle {
         Check.finite("x", x);
         Check.finite("y", y);
-        Check.size("radius", r);
+        Check.size("radius r", r);
     }
 
     /** {@inheritDoc} Same as {@link Collide#circlePoint}. */
@@ -42,6 +42,8 @@ public record Circle(float x, float y, float r) implements Shape {
     /** {@inheritDoc} */
     @Override
     public Circle translated(float dx, float dy) {
-        return new Circle(x + dx, y + dy, r);
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
+        return new Circle(Check.finite("x + dx", x + dx), Check.finite("y + dy", y + dy), r);
     }
 }

@@ -36,7 +36,9 @@ import java.util.List;
  * <p>The cutting into convex pieces is {@link Triangulation}'s.
  *
  * <p>The circle half of the search, whose pieces are round, is {@link CircleClearance}'s;
- * the tolerance and the small geometry here are shared by both.
+ * the tolerance and the small geometry here are shared by both. At about 490 lines this is
+ * a little over the usual size: the polygon search's candidates, regions and lines of moves
+ * only make sense together.
  *
  * <p>Reference: C. Ericson, <i>Real-Time Collision Detection</i>, 2005, section 3.11
  * (Minkowski sums and differences).

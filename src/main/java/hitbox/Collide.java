@@ -13,6 +13,10 @@ package hitbox;
  * for a null array ({@link IllegalArgumentException} naming it). Circles are centre and
  * radius; rectangles are top-left corner, width and height (Processing's {@code CORNER}
  * mode).
+ *
+ * <p>This class is longer than most (about 530 lines): it is the tutorial's whole table of
+ * tests, one public method per pair with its full javadoc; the polygon maths is in
+ * package-private helpers.
  */
 public final class Collide {
     private Collide() {

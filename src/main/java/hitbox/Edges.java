@@ -113,8 +113,15 @@ public final class Edges {
         return rectCrossed(b.x(), b.y(), b.w(), b.h(), width, height);
     }
 
-    /** The one crossing rule: strictly beyond an edge, in double so touching is exact. */
+    /**
+     * The one crossing rule: strictly beyond an edge, in double so touching is exact. A NaN
+     * anywhere crosses nothing.
+     */
     private static int crossed(double left, double right, double top, double bottom, float width, float height) {
+        if (Double.isNaN(left) || Double.isNaN(right) || Double.isNaN(top) || Double.isNaN(bottom)
+                || Float.isNaN(width) || Float.isNaN(height)) {
+            return NONE;
+        }
         int edges = NONE;
         if (left < 0) {
             edges |= LEFT;
@@ -277,11 +284,14 @@ public final class Edges {
         // a hair outside [0, loop]; pull it back so the promised range always holds.
         wrapped = Math.min(Math.max(wrapped, 0), loop);
         float result = (float) (wrapped - after);
-        if ((double) result + after > loop) {
-            result = Math.nextDown(result);
-        } else if ((double) result + after < 0) {
-            result = Math.nextUp(result);
+        // The promised range is [-after, window + before]; rounding the far end's position in
+        // double cannot see a step that small next to a big shape, so clamp to it directly.
+        double top = (double) window + before;
+        float hi = (float) top;
+        if (hi > top) {
+            hi = Math.nextDown(hi);
         }
+        result = Math.min(Math.max(result, -after), hi);
         return result;
     }
 

@@ -83,7 +83,7 @@ public final class Grid {
             throw new IllegalArgumentException("rows must be > 0, was " + rows);
         }
         if ((long) cols * rows > MAX_CELLS) {
-            throw new IllegalArgumentException("a grid of " + cols + " x " + rows + " cells is too big: at most "
+            throw new IllegalArgumentException("a grid of cols x rows = " + cols + " x " + rows + " cells is too big: at most "
                     + MAX_CELLS + " cells fit in one grid");
         }
         this.cols = cols;
@@ -539,6 +539,9 @@ public final class Grid {
      * @return true if the rectangle overlaps a solid cell or the outside of the grid
      */
     public boolean rectOverlapsSolid(float x, float y, float w, float h) {
+        if (Check.nan(x, y, w, h, 0) || w < 0 || h < 0) {
+            return false;
+        }
         double right = (double) x + w;
         double bottom = (double) y + h;
         if (reachesOutside(x, right, y, bottom)) {
@@ -575,6 +578,9 @@ public final class Grid {
      * @return true if the circle overlaps a solid cell or the outside of the grid
      */
     public boolean circleOverlapsSolid(float cx, float cy, float r) {
+        if (Check.nan(cx, cy, r, 0, 0) || r < 0) {
+            return false;
+        }
         double left = (double) cx - r;
         double right = (double) cx + r;
         double top = (double) cy - r;

@@ -441,7 +441,8 @@ public final class Motion {
     }
 
     /**
-     * What one {@link #bounce} frame did.
+     * What one {@link #bounce} frame did. A plain carrier of the answer: it takes any value,
+     * NaN included, since {@code bounce} works on plain floats and never throws.
      *
      * @param x       the box's new left edge
      * @param y       the box's new top edge

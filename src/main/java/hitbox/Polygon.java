@@ -17,6 +17,13 @@ import java.util.Arrays;
  * a new one ({@link #translated}).
  */
 public final class Polygon implements Shape {
+
+    /**
+     * The most sides {@link #regular} makes: 4096. Checking an outline compares every pair of
+     * edges, so more would take seconds, and far more cannot be a float polygon at all.
+     */
+    public static final int MAX_SIDES = 4096;
+
     private final float[] xy;
     private final Rect bounds;
     /**
@@ -92,6 +99,12 @@ public final class Polygon implements Shape {
      *                                  one line
      */
     public static Polygon triangle(float x1, float y1, float x2, float y2, float x3, float y3) {
+        Check.finite("x1", x1);
+        Check.finite("y1", y1);
+        Check.finite("x2", x2);
+        Check.finite("y2", y2);
+        Check.finite("x3", x3);
+        Check.finite("y3", y3);
         return of(x1, y1, x2, y2, x3, y3);
     }
 
@@ -114,8 +127,8 @@ public final class Polygon implements Shape {
     public static Polygon rotatedRect(float cx, float cy, float w, float h, float angle) {
         Check.finite("cx", cx);
         Check.finite("cy", cy);
-        Check.positive("width", w);
-        Check.positive("height", h);
+        Check.positive("width w", w);
+        Check.positive("height h", h);
         Check.finite("angle", angle);
         double cos = Math.cos(angle);
         double sin = Math.sin(angle);
@@ -127,7 +140,7 @@ public final class Polygon implements Shape {
             xy[i] = (float) (cx + corners[i] * cos - corners[i + 1] * sin);
             xy[i + 1] = (float) (cy + corners[i] * sin + corners[i + 1] * cos);
         }
-        return of(xy);
+        return rounded(xy, "cx = " + cx + ", cy = " + cy + ", w = " + w + ", h = " + h + ", angle = " + angle);
     }
 
     /**
@@ -140,7 +153,9 @@ public final class Polygon implements Shape {
      * @param sides  how many sides, 3 or more
      * @return the regular polygon
      * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
-     *                                  or there are fewer than 3 sides
+     *                                  there are fewer than 3 or more than {@link #MAX_SIDES}
+     *                                  sides, or rounding to float makes the corners meet
+     *                                  (a radius too small for its centre)
      */
     public static Polygon regular(float cx, float cy, float radius, int sides) {
         return regular(cx, cy, radius, sides, 0);
@@ -157,15 +172,16 @@ public final class Polygon implements Shape {
      * @param angle  the direction of the first corner, in radians
      * @return the regular polygon
      * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
-     *                                  or there are fewer than 3 sides
+     *                                  there are fewer than 3 or more than {@link #MAX_SIDES}
+     *                                  sides, or rounding to float makes the corners meet
      */
     public static Polygon regular(float cx, float cy, float radius, int sides, float angle) {
         Check.finite("cx", cx);
         Check.finite("cy", cy);
         Check.positive("radius", radius);
         Check.finite("angle", angle);
-        if (sides < 3) {
-            throw new IllegalArgumentException("sides must be >= 3, was " + sides);
+        if (sides < 3 || sides > MAX_SIDES) {
+            throw new IllegalArgumentException("sides must be from 3 to " + MAX_SIDES + ", was " + sides);
         }
         float[] xy = new float[2 * sides];
         for (int i = 0; i < sides; i++) {
@@ -173,7 +189,20 @@ public final class Polygon implements Shape {
             xy[2 * i] = (float) (cx + radius * Math.cos(a));
             xy[2 * i + 1] = (float) (cy + radius * Math.sin(a));
         }
-        return of(xy);
+        return rounded(xy, "cx = " + cx + ", cy = " + cy + ", radius = " + radius + ", sides = " + sides + ", angle = " + angle);
+    }
+
+    /**
+     * The polygon of computed corners, or a message naming the arguments that gave corners
+     * which rounding to float made invalid (a huge centre, a tiny size, many sides).
+     */
+    private static Polygon rounded(float[] xy, String arguments) {
+        try {
+            return of(xy);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("the corners from " + arguments + " round to an outline a polygon"
+                    + " cannot have: " + e.getMessage(), e);
+        }
     }
 
     /** @return how many vertices the polygon has */
@@ -192,7 +221,7 @@ public final class Polygon implements Shape {
      * @throws IllegalArgumentException if {@code i} is out of range
      */
     public float x(int i) {
-        return xy[2 * index("vertex index", i)];
+        return xy[2 * index("vertex index i", i)];
     }
 
     /**
@@ -201,7 +230,7 @@ public final class Polygon implements Shape {
      * @throws IllegalArgumentException if {@code i} is out of range
      */
     public float y(int i) {
-        return xy[2 * index("vertex index", i) + 1];
+        return xy[2 * index("vertex index i", i) + 1];
     }
 
     /**
@@ -212,7 +241,7 @@ public final class Polygon implements Shape {
      * @throws IllegalArgumentException if {@code i} is out of range
      */
     public Segment edge(int i) {
-        int k = (index("edge index", i) + 1) % size();
+        int k = (index("edge index i", i) + 1) % size();
         return new Segment(xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]);
     }
 
@@ -317,6 +346,8 @@ public final class Polygon implements Shape {
      */
     @Override
     public Polygon translated(float dx, float dy) {
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
         float[] moved = xy.clone();
         boolean exact = true;
         for (int i = 0; i < moved.length; i += 2) {
@@ -324,11 +355,16 @@ public final class Polygon implements Shape {
             moved[i + 1] += dy;
             exact &= moved[i] == (double) xy[i] + dx && moved[i + 1] == (double) xy[i + 1] + dy;
         }
-        if (!exact) {
-            return of(moved);
-        }
         for (int i = 0; i < moved.length; i++) {
-            Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2), moved[i]);
+            Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2) + (i % 2 == 0 ? " + dx" : " + dy"), moved[i]);
+        }
+        if (!exact) {
+            try {
+                return of(moved);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("moving by dx = " + dx + ", dy = " + dy + " rounds the outline: "
+                        + e.getMessage(), e);
+            }
         }
         // Every coordinate moved exactly, so every orientation and the concave vertex are kept.
         return new Polygon(moved, concaveVertex);

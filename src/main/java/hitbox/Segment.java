@@ -49,7 +49,10 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
     /** {@inheritDoc} */
     @Override
     public Segment translated(float dx, float dy) {
-        return new Segment(x1 + dx, y1 + dy, x2 + dx, y2 + dy);
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
+        return new Segment(Check.finite("x1 + dx", x1 + dx), Check.finite("y1 + dy", y1 + dy),
+                Check.finite("x2 + dx", x2 + dx), Check.finite("y2 + dy", y2 + dy));
     }
 
     /**

@@ -81,8 +81,8 @@ public final class SeparatingAxis {
             Check.finite("minB", minB);
             Check.finite("maxB", maxB);
             if (minA > maxA || minB > maxB) {
-                throw new IllegalArgumentException("a shadow must not end before it starts, but a is ["
-                        + minA + ", " + maxA + "] and b is [" + minB + ", " + maxB + "]");
+                throw new IllegalArgumentException("a shadow must not end before it starts (minA <= maxA,"
+                        + " minB <= maxB), but a is [" + minA + ", " + maxA + "] and b is [" + minB + ", " + maxB + "]");
             }
             double length = Math.hypot(nx, ny);
             if (Math.abs(length - 1) > Contact.UNIT_TOLERANCE) {

@@ -97,7 +97,8 @@ public final class Snap {
      * Where a push put the mover, and the side of the obstacle it was pushed to.
      *
      * <p>{@link Side#NONE} means the two did not overlap and the position is the mover's own,
-     * unchanged.
+     * unchanged. A plain carrier of the answer: it takes any position, NaN included, since
+     * the pushes work on plain floats and never throw; only the side must be given.
      *
      * @param x    the mover's new left edge
      * @param y    the mover's new top edge
