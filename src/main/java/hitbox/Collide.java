@@ -498,12 +498,10 @@ public final class Collide {
         int m = Polygons.leftmost(b);
         int prev = Polygons.distinctNeighbour(b, m, b.length / 2 - 1);
         int next = Polygons.distinctNeighbour(b, m, 1);
-        double vx = b[2 * m];
-        double vy = b[2 * m + 1];
-        // The leftmost corner is convex, so the sum of its two edge directions points inside.
-        double dx = (b[2 * prev] - vx) + (b[2 * next] - vx);
-        double dy = (b[2 * prev + 1] - vy) + (b[2 * next + 1] - vy);
-        return Polygons.stepsInside(a, wa, vx, vy, dx, dy);
+        // The leftmost corner is convex, so the sum of its two edge directions points inside;
+        // summed exactly, since a corner can be thinner than a double's rounding.
+        return Polygons.stepsInsideExact(a, wa, b[2 * m], b[2 * m + 1], b[2 * prev], b[2 * prev + 1],
+                b[2 * next], b[2 * next + 1]);
     }
 
     /**

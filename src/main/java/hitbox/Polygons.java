@@ -277,6 +277,47 @@ final class Polygons {
     }
 
     /**
+     * {@link #stepsInside} from vertex v of another polygon, in the direction
+     * {@code (p - v) + (q - v)} between its neighbours p and q, decided in exact arithmetic
+     * (the direction and every cross product in {@link BigDecimal}): a corner can be far
+     * thinner than a double's rounding (coordinates of 1e38 next to 1e-45), and a rounded
+     * direction would fall out of it. Runs once per polygon pair.
+     */
+    static boolean stepsInsideExact(float[] xy, int w, float vx, float vy, float px, float py, float qx, float qy) {
+        BigDecimal bvx = new BigDecimal(vx), bvy = new BigDecimal(vy);
+        BigDecimal dx = new BigDecimal(px).subtract(bvx).add(new BigDecimal(qx).subtract(bvx));
+        BigDecimal dy = new BigDecimal(py).subtract(bvy).add(new BigDecimal(qy).subtract(bvy));
+        int n = xy.length / 2;
+        for (int i = 0; i < n; i++) {
+            double ax = xy[2 * i];
+            double ay = xy[2 * i + 1];
+            int k = (i + 1) % n;
+            double bx = xy[2 * k];
+            double by = xy[2 * k + 1];
+            if (ax == vx && ay == vy) {
+                int h = distinctNeighbour(xy, i, n - 1);
+                int j = distinctNeighbour(xy, i, 1);
+                int turn = w * Double.compare(Lines.orient(xy[2 * h], xy[2 * h + 1], ax, ay, xy[2 * j], xy[2 * j + 1]), 0);
+                boolean insideIn = w * crossSign(xy[2 * h], xy[2 * h + 1], ax, ay, dx, dy) > 0;
+                boolean insideOut = w * crossSign(ax, ay, xy[2 * j], xy[2 * j + 1], dx, dy) > 0;
+                return turn >= 0 ? insideIn && insideOut : insideIn || insideOut;
+            }
+            if (Lines.orient(ax, ay, bx, by, vx, vy) == 0 && Lines.inBox(ax, ay, bx, by, vx, vy)
+                    && !(bx == vx && by == vy)) {
+                return w * crossSign(ax, ay, bx, by, dx, dy) > 0;
+            }
+        }
+        return contains(xy, vx, vy);
+    }
+
+    /** The exact sign of (b - a) x d. */
+    private static int crossSign(double ax, double ay, double bx, double by, BigDecimal dx, BigDecimal dy) {
+        BigDecimal ex = new BigDecimal(bx).subtract(new BigDecimal(ax));
+        BigDecimal ey = new BigDecimal(by).subtract(new BigDecimal(ay));
+        return ex.multiply(dy).subtract(ey.multiply(dx)).signum();
+    }
+
+    /**
      * Walking the segment from (x1, y1) to (x2, y2), does it step into the polygon's inside
      * somewhere before its far end? Together with "is (x1, y1) inside", that decides whether
      * the closed segment reaches the inside: if it does, take the first point of the walk
