@@ -227,7 +227,7 @@ class ContractTest {
         // Far positions and shapes much wider than the window: the documented ranges hold.
         java.util.Random random = new java.util.Random(3);
         for (int i = 0; i < 200_000; i++) {
-            float width = random.nextInt(4) == 0 ? random.nextFloat() * 1000 : (float) Math.scalb(random.nextFloat(), random.nextInt(60) - 30);
+            float width = random.nextInt(4) == 0 ? random.nextFloat() * 1000 : Math.scalb(random.nextFloat(), random.nextInt(60) - 30);
             float w = width * (1 + random.nextFloat() * 10) + (random.nextBoolean() ? 0 : random.nextFloat());
             float x = (float) ((random.nextDouble() - 0.5) * Math.scalb(1.0, random.nextInt(80) - 20));
             float rect = Edges.rectWrapX(x, w, width);

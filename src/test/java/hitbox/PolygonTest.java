@@ -12,6 +12,7 @@ import net.jqwik.api.Arbitraries;
 import net.jqwik.api.Arbitrary;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.statistics.StatisticsReport;
 import net.jqwik.api.Provide;
 import net.jqwik.api.statistics.Statistics;
 import org.junit.jupiter.api.Test;
@@ -131,6 +132,7 @@ class PolygonTest {
         return xy;
     }
 
+    @StatisticsReport(onFailureOnly = true)
     @Property(tries = 3000)
     void of_acceptsExactlySimplePolygons(@ForAll("vertexLists") float[] xy) {
         boolean simple = GeometryReference.isSimple(xy);
