@@ -51,6 +51,14 @@ final class Check {
         return !(Float.isFinite(a) && Float.isFinite(b) && Float.isFinite(c) && Float.isFinite(d) && Float.isFinite(e));
     }
 
+    /**
+     * The float nearest to v, held in the float range: an answer about shapes that span more
+     * than {@code Float.MAX_VALUE} (a distance, a point, a depth) stays finite. NaN stays NaN.
+     */
+    static float held(double v) {
+        return (float) Math.max(-Float.MAX_VALUE, Math.min(Float.MAX_VALUE, v));
+    }
+
     /** Returns {@code value}, or throws if it is null. */
     static <T> T notNull(String name, T value) {
         if (value == null) {

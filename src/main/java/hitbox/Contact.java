@@ -14,7 +14,8 @@ package hitbox;
  * <a href="package-summary.html#touching">touching rule</a>, which is exactly when the depth
  * would be 0 or less: shapes that touch have depth 0 and give null, so a returned contact
  * always has {@code depth > 0}. (A hair's-width overlap that rounds to a depth of 0 gives
- * the smallest positive float, {@link Float#MIN_VALUE}.) Swapping the shapes gives the same
+ * the smallest positive float, {@link Float#MIN_VALUE}; a depth past the float range, for
+ * shapes spanning more than {@code Float.MAX_VALUE}, is held at {@code Float.MAX_VALUE}.) Swapping the shapes gives the same
  * depth and the opposite normal, {@link #flipped()}, except where the two directions are
  * exactly equally short (see below).
  *
@@ -252,9 +253,10 @@ public record Contact(float nx, float ny, float depth) {
 
     /**
      * A contact from double-precision results. The depth is rounded to float and kept above
-     * 0; the normal is a unit vector already.
+     * 0, and held at {@code Float.MAX_VALUE} for shapes so big that it is past the float
+     * range (found by fuzzing); the normal is a unit vector already.
      */
     static Contact of(double nx, double ny, double depth) {
-        return new Contact((float) nx, (float) ny, Math.max((float) depth, Float.MIN_VALUE));
+        return new Contact((float) nx, (float) ny, Math.max(Check.held(depth), Float.MIN_VALUE));
     }
 }

@@ -258,6 +258,23 @@ final class Polygons {
      * @param w the polygon's {@link #winding}, not 0
      */
     static boolean stepsInside(float[] xy, int w, double px, double py, double dx, double dy) {
+        int at = locate(xy, px, py);
+        if (at >= 0) {
+            return cornerContains(w, xy, at, dx, dy);
+        }
+        if (at < -1) {
+            int i = -at - 2, k = (i + 1) % (xy.length / 2);
+            return w * (((double) xy[2 * k] - xy[2 * i]) * dy - ((double) xy[2 * k + 1] - xy[2 * i + 1]) * dx) > 0;
+        }
+        return contains(xy, px, py);
+    }
+
+    /**
+     * Where the point is on the outline: the index of the vertex it is on, or
+     * {@code -(i + 2)} if it is inside edge i (on it, not at its far end), or -1 if it is not
+     * on the outline. Exact.
+     */
+    private static int locate(float[] xy, double px, double py) {
         int n = xy.length / 2;
         for (int i = 0; i < n; i++) {
             double ax = xy[2 * i];
@@ -266,14 +283,14 @@ final class Polygons {
             double bx = xy[2 * k];
             double by = xy[2 * k + 1];
             if (ax == px && ay == py) {
-                return cornerContains(w, xy, i, dx, dy);
+                return i;
             }
             if (Lines.orient(ax, ay, bx, by, px, py) == 0 && Lines.inBox(ax, ay, bx, by, px, py)
                     && !(bx == px && by == py)) {
-                return w * ((bx - ax) * dy - (by - ay) * dx) > 0;
+                return -(i + 2);
             }
         }
-        return contains(xy, px, py);
+        return -1;
     }
 
     /**
@@ -288,24 +305,19 @@ final class Polygons {
         BigDecimal dx = new BigDecimal(px).subtract(bvx).add(new BigDecimal(qx).subtract(bvx));
         BigDecimal dy = new BigDecimal(py).subtract(bvy).add(new BigDecimal(qy).subtract(bvy));
         int n = xy.length / 2;
-        for (int i = 0; i < n; i++) {
-            double ax = xy[2 * i];
-            double ay = xy[2 * i + 1];
-            int k = (i + 1) % n;
-            double bx = xy[2 * k];
-            double by = xy[2 * k + 1];
-            if (ax == vx && ay == vy) {
-                int h = distinctNeighbour(xy, i, n - 1);
-                int j = distinctNeighbour(xy, i, 1);
-                int turn = w * Double.compare(Lines.orient(xy[2 * h], xy[2 * h + 1], ax, ay, xy[2 * j], xy[2 * j + 1]), 0);
-                boolean insideIn = w * crossSign(xy[2 * h], xy[2 * h + 1], ax, ay, dx, dy) > 0;
-                boolean insideOut = w * crossSign(ax, ay, xy[2 * j], xy[2 * j + 1], dx, dy) > 0;
-                return turn >= 0 ? insideIn && insideOut : insideIn || insideOut;
-            }
-            if (Lines.orient(ax, ay, bx, by, vx, vy) == 0 && Lines.inBox(ax, ay, bx, by, vx, vy)
-                    && !(bx == vx && by == vy)) {
-                return w * crossSign(ax, ay, bx, by, dx, dy) > 0;
-            }
+        int at = locate(xy, vx, vy);
+        if (at >= 0) {
+            int h = distinctNeighbour(xy, at, n - 1);
+            int j = distinctNeighbour(xy, at, 1);
+            double ax = xy[2 * at], ay = xy[2 * at + 1];
+            int turn = w * Double.compare(Lines.orient(xy[2 * h], xy[2 * h + 1], ax, ay, xy[2 * j], xy[2 * j + 1]), 0);
+            boolean insideIn = w * crossSign(xy[2 * h], xy[2 * h + 1], ax, ay, dx, dy) > 0;
+            boolean insideOut = w * crossSign(ax, ay, xy[2 * j], xy[2 * j + 1], dx, dy) > 0;
+            return turn >= 0 ? insideIn && insideOut : insideIn || insideOut;
+        }
+        if (at < -1) {
+            int i = -at - 2, k = (i + 1) % n;
+            return w * crossSign(xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1], dx, dy) > 0;
         }
         return contains(xy, vx, vy);
     }

@@ -411,7 +411,8 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      */
     private RayHit hitAt(double s, double outX, double outY) {
         double len = Math.hypot(outX, outY);
-        return new RayHit((float) (s * Math.hypot(dx, dy)), (float) (ox + s * dx), (float) (oy + s * dy),
+        // Held in the float range: a ray across a polygon wider than it cannot say more.
+        return new RayHit(Check.held(s * Math.hypot(dx, dy)), Check.held(ox + s * dx), Check.held(oy + s * dy),
                 (float) (-outX / len), (float) (-outY / len));
     }
 }

@@ -8,7 +8,8 @@ package hitbox;
  * goes straight to {@link Response#bounce(float, float, float, float, float)}. A ray that
  * starts inside a shape with area hits it at once: distance 0, the point is the ray's origin
  * and the normal points along the ray. {@link #side()} names the side of the shape that was
- * hit, by the same rule as {@link Hit#side()}.
+ * hit, by the same rule as {@link Hit#side()}. For a shape that spans more than the float
+ * range, the distance and the point are held at {@code Float.MAX_VALUE}.
  *
  * @param distance how far along the ray the hit is, in pixels (0 or more)
  * @param x        the hit point's x

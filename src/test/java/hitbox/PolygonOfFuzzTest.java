@@ -46,10 +46,10 @@ class PolygonOfFuzzTest {
         }
         assertTrue(p.overlaps(p), () -> "a polygon overlaps itself: " + p);
         Contact self = Contact.between(p, p);
-        assertTrue(self != null && self.depth() > 0);
+        assertTrue(self != null && self.depth() > 0, () -> "contact with itself: " + p);
         Circle probe = new Circle(p.x(0), p.y(0), Math.max(1, b.w() / 4));
-        assertEquals(p.overlaps(probe), Contact.between(p, probe) != null);
-        assertEquals(probe.overlaps(p), p.overlaps(probe));
+        assertEquals(p.overlaps(probe), Contact.between(p, probe) != null, () -> "contact exactly when overlapping: " + p + ", " + probe);
+        assertEquals(probe.overlaps(p), p.overlaps(probe), () -> "symmetric: " + p + ", " + probe);
         Edges.crossed(p, b.w(), b.h());
         Hybrid.check(p, probe);
         if (b.w() > 0) {
