@@ -263,11 +263,15 @@ public final class Polygon implements Shape {
      *
      * <p>Reference: the shoelace formula (Gauss's area formula).
      *
-     * @return the area, in square pixels, above 0; {@link Float#POSITIVE_INFINITY} if it is
+     * @return the area, in square pixels, above 0 ({@link Float#MIN_VALUE} at least, for a
+     *         polygon too thin for a float's area); {@link Float#POSITIVE_INFINITY} if it is
      *         too large for a float
      */
     public float area() {
-        return Polygons.exactDoubleSignedArea(Polygons.toDouble(xy)).abs().floatValue() / 2;
+        // Every polygon Polygon.of makes has area; one too thin for a float still gets the
+        // smallest positive float, not 0 (found by fuzzing).
+        float area = Polygons.exactDoubleSignedArea(Polygons.toDouble(xy)).abs().floatValue() / 2;
+        return Math.max(area, Float.MIN_VALUE);
     }
 
     /**
