@@ -39,7 +39,7 @@ class PolygonOfFuzzTest {
         Rect b = p.bounds();
         // Bounds hold every vertex, unless the polygon spans more than the float range, where
         // they are documented to be held back at it (found by fuzzing: +-Float.MAX_VALUE).
-        boolean wide = spanX(p) > Float.MAX_VALUE || spanY(p) > Float.MAX_VALUE;
+        boolean wide = spanX(p) >= Float.MAX_VALUE || spanY(p) >= Float.MAX_VALUE;
         for (int i = 0; i < p.size() && !wide; i++) {
             assertTrue(b.x() <= p.x(i) && (double) b.x() + b.w() >= p.x(i), "bounds " + b + " miss x" + i);
             assertTrue(b.y() <= p.y(i) && (double) b.y() + b.h() >= p.y(i), "bounds " + b + " miss y" + i);
