@@ -2,102 +2,98 @@
  * Edges: a ball bouncing off the window
  * Tutorial section 1: Edges
  *
- * The simplest collision: has the ball gone past an edge of the window? The library's
- * Edges.circleCrossed answers with the edges it crossed, and the sketch decides what to do:
- * bounce back (Edges.bounceX/Y turn the speed to point inside), wrap around to the other side
- * like Pac-Man (Edges.circleWrapX/Y), or stop at the edge.
+ * Move the ball, then ask: has it gone past an edge? If so, reverse its speed. The tutorial
+ * tests the ball's centre against 0 and width and multiplies the speed by -1; press t to run
+ * its code. Hitbox tests the ball's edge (x - r < left) and sets the speed's sign (pointing
+ * back inside), because a flipped speed only brings the ball back if one step is enough: a
+ * ball that starts past an edge flips every frame and stays stuck in the wall, flickering.
  *
- * Try this: switch modes while the ball moves; make the ball bigger than the window's
- * height and see both top and bottom crossed at once.
- * Keys: b bounce, w wrap, s stop, d shows the maths.
+ * Try this: with the tutorial's code, press e to move the edges in while the ball is outside
+ * the box (the tutorial: "just change the numbers in the if statements"), or click beside the
+ * box to drop the ball in the wall; then press t and do it again.
+ * Keys: t the tutorial's code / Hitbox's, e the window's edges / a box's, click puts the ball
+ * at the mouse, d shows the maths.
  */
 import hitbox.*;
 import hitbox.processing.*;
 
+// The ball: position, radius and speed (pixels a frame).
 float x = 300;
 float y = 140;
 float r = 24;
-float vx = 4.5f;
-float vy = 3.2f;
-String mode = "bounce";
-boolean showMaths = false;
-int crossedThisFrame = Edges.NONE;
+float xSpeed = 4.5;
+float ySpeed = 3.2;
 
-public void settings() {
+// The edges it bounces off: the numbers in the if statements. e swaps the window's for a box's.
+float left = 0;
+float right = 600;
+float top = 0;
+float bottom = 400;
+
+boolean tutorialsCode = false;  // t: the tutorial's if statements, or Hitbox's Edges
+boolean bounced;                // an edge test fired this frame: the ball is drawn red
+boolean showMaths;              // d
+
+void setup() {
   size(600, 400);
+  textFont(createFont("SansSerif", 14));
 }
 
-public void setup() {
-  textSize(14);
-}
-
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
+  x += xSpeed;
+  y += ySpeed;
 
-  x += vx;
-  y += vy;
-  crossedThisFrame = Edges.circleCrossed(x, y, r, width, height);
-
-  if (mode.equals("bounce")) {
-    vx = Edges.bounceX(crossedThisFrame, vx);
-    vy = Edges.bounceY(crossedThisFrame, vy);
-    // Put it back inside too, so it never sits past the edge, even for a frame.
-    x = Edges.circleClampX(x, r, width);
-    y = Edges.circleClampY(y, r, height);
-  } else if (mode.equals("wrap")) {
-    x = Edges.circleWrapX(x, r, width);
-    y = Edges.circleWrapY(y, r, height);
-  } else {  // stop: stay at the edge it reached
-    if (Edges.has(crossedThisFrame, Edges.LEFT) || Edges.has(crossedThisFrame, Edges.RIGHT)) {
-      vx = 0;
+  if (tutorialsCode) {
+    // The tutorial's code: the centre against the edges, then flip the speed.
+    bounced = false;
+    if (x < left || x > right) {
+      xSpeed *= -1;
+      bounced = true;
     }
-    if (Edges.has(crossedThisFrame, Edges.TOP) || Edges.has(crossedThisFrame, Edges.BOTTOM)) {
-      vy = 0;
+    if (y < top || y > bottom) {
+      ySpeed *= -1;
+      bounced = true;
     }
-    x = Edges.circleClampX(x, r, width);
-    y = Edges.circleClampY(y, r, height);
+  } else {
+    // Hitbox's: the ball's edge against the edges (x - r < left, x + r > right, the same
+    // down the page); Edges measures from (0, 0), so it gets the ball's place in the box.
+    // Then the speed is set to point back inside: abs(xSpeed) past the left edge,
+    // -abs(xSpeed) past the right. Set, not flipped: a second frame in the wall keeps it.
+    int crossed = Edges.circleCrossed(x - left, y - top, r, right - left, bottom - top);
+    bounced = crossed != Edges.NONE;
+    xSpeed = Edges.bounceX(crossed, xSpeed);
+    ySpeed = Edges.bounceY(crossed, ySpeed);
   }
 
+  drawWalls();
   noStroke();
-  fill(crossedThisFrame == Edges.NONE ? Palette.PLAYER : Palette.HIT);
+  fill(bounced ? Palette.HIT : Palette.PLAYER);
   circle(x, y, 2 * r);
 
-  Overlay.label(g, 8, 8, "mode: " + mode + "   (b bounce, w wrap, s stop)");
+  Overlay.label(g, 8, 8, tutorialsCode ? "the tutorial's code: the centre, speed *= -1"
+      : "Hitbox's code: the ball's edge, speed's sign set");
   if (showMaths) {
     drawMaths();
   }
-  Overlay.hint(g, "d: show the maths   b / w / s: bounce, wrap, stop");
+  Overlay.hint(g, "t: tutorial's code / Hitbox's   e: window / box edges   click: drop the ball   d: show the maths");
 }
 
-// The tutorial's four comparisons, each written next to the edge it tests.
-void drawMaths() {
-  Overlay.guide(g, x - r, y, 0, y);
-  Overlay.guide(g, x + r, y, width, y);
-  Overlay.guide(g, x, y - r, x, 0);
-  Overlay.guide(g, x, y + r, x, height);
-  // Each label sits beside its own guide line, just clear of the ball.
-  edgeLabel(10, y + r + 6, "left: x < r", x, "<", r, Edges.LEFT);
-  edgeLabel(width, y + r + 6, "right: x > width - r", x, ">", width - r, Edges.RIGHT);
-  edgeLabel(x + r + 6, 10, "top: y < r", y, "<", r, Edges.TOP);
-  edgeLabel(x + r + 6, height - 62, "bottom: y > height - r", y, ">", height - r, Edges.BOTTOM);
+void mousePressed() {
+  x = mouseX;
+  y = mouseY;
 }
 
-void edgeLabel(float lx, float ly, String test, float left, String op, float right, int edge) {
-  boolean crossed = Edges.has(crossedThisFrame, edge);
-  Overlay.label(g, lx, ly, test + "\n" + Overlay.comparison(left, op, right, crossed),
-      crossed ? Overlay.HIT : Overlay.MISS);
-}
-
-public void keyPressed() {
-  if (key == 'd') {
+void keyPressed() {
+  if (key == 't') {
+    tutorialsCode = !tutorialsCode;
+  } else if (key == 'e') {
+    boolean window = right == width;
+    left = window ? 150 : 0;
+    right = window ? 450 : width;
+    top = window ? 100 : 0;
+    bottom = window ? 300 : height;
+  } else if (key == 'd') {
     showMaths = !showMaths;
-  } else if (key == 'b' || key == 'w') {
-    mode = key == 'b' ? "bounce" : "wrap";
-    if (vx == 0 && vy == 0) {  // coming back from "stop": give it a push
-      vx = 4.5f;
-      vy = 3.2f;
-    }
-  } else if (key == 's') {
-    mode = "stop";
   }
 }

@@ -3,40 +3,44 @@
  * Tutorial section 2: Circle/Point
  *
  * The mouse is a point. It is inside the circle when its distance to the centre is less
- * than the radius: Collide.circlePoint(cx, cy, r, mouseX, mouseY). The circle turns red
- * while the mouse is inside, green otherwise. Exactly on the outline is not inside.
+ * than the radius: the tutorial writes dist(mouseX, mouseY, circleCenterX, circleCenterY)
+ * < circleRadius. The circle turns red while the mouse is inside, green otherwise. Hitbox's
+ * Collide.circlePoint asks the same question squared, dx * dx + dy * dy < r * r, in double:
+ * the same answers with no square root to round, so exactly on the outline is never inside.
  *
  * Try this: make the radius 0 (a circle of radius 0 contains no point); move the centre
- * to the mouse on click; draw many circles and colour the ones under the mouse.
+ * to the mouse on click; make circular buttons (the tutorial's idea; S02b has some).
  * Keys: d shows the maths (the distance line, the radius, dist < r written out).
  */
 import hitbox.*;
 import hitbox.processing.*;
 
-float cx = 300;   // the circle's centre
-float cy = 200;
-float r = 100;    // its radius (Processing's circle() takes the diameter, 2 * r)
+float circleCenterX = 300;
+float circleCenterY = 200;
+float circleRadius = 100;  // circle() takes the diameter: 2 * circleRadius
 
-boolean inside;       // the answer for this frame, kept for the tests
-boolean showMaths;    // the 'd' overlay
+boolean inside;      // is the mouse inside? The colour shows it, the overlay writes it out
+boolean showMaths;   // d
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
 
-  // The whole idea in one line: is the point (mouseX, mouseY) inside the circle?
-  inside = Collide.circlePoint(cx, cy, r, mouseX, mouseY);
-
+  // The tutorial's test: is the distance from the mouse to the centre less than the radius?
+  //   if (dist(mouseX, mouseY, circleCenterX, circleCenterY) < circleRadius)
+  // Collide.circlePoint is that test, compared squared:
+  inside = Collide.circlePoint(circleCenterX, circleCenterY, circleRadius, mouseX, mouseY);
+  if (inside) {
+    fill(Palette.HIT);
+  } else {
+    fill(Palette.MISS);
+  }
   noStroke();
-  fill(inside ? Palette.HIT : Palette.MISS);
-  circle(cx, cy, 2 * r);
+  circle(circleCenterX, circleCenterY, 2 * circleRadius);
 
   // The point: the mouse.
   stroke(Palette.BACKGROUND);
@@ -50,31 +54,7 @@ public void draw() {
   Overlay.hint(g, "move the mouse in and out of the circle     d: show the maths");
 }
 
-/** The distance from the centre to the mouse, the radius beside it, and dist < r. */
-void drawMaths() {
-  float d = dist(cx, cy, mouseX, mouseY);
-  // The direction from the centre to the mouse (to the right when the mouse is on the centre).
-  float ux = d > 0.5f ? (mouseX - cx) / d : 1;
-  float uy = d > 0.5f ? (mouseY - cy) / d : 0;
-  // The radius, along the same direction, set to one side (-uy, ux) of the distance line.
-  Overlay.radius(g, cx, cy, ux, uy, r, "r");
-
-  // The distance: a dashed line from the centre to the mouse, its length written beside it
-  // on the other side.
-  Overlay.guide(g, cx, cy, mouseX, mouseY);
-  Overlay.labelBeside(g, (cx + mouseX) / 2, (cy + mouseY) / 2, uy, -ux, "dist = " + Overlay.number(d), Overlay.GUIDE);
-
-  // The centre, where both lines start.
-  noStroke();
-  fill(Overlay.GUIDE);
-  circle(cx, cy, 6);
-
-  // The test itself, written out.
-  int colour = inside ? Overlay.HIT : Overlay.MISS;
-  Overlay.labelCentered(g, width / 2, 28, "dist < r\n" + Overlay.verdict(d, "<", r, inside), colour);
-}
-
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   }

@@ -2,14 +2,15 @@
  * Ball in a Circle
  * Tutorial section 3: Circle/Circle
  *
- * The "try this" from the circle sections: a ball bounces around the window and turns red
- * while it overlaps the circle in the middle, Collide.circleCircle(x, y, r, cx, cy, R). The
- * window's edges are handled by the library too: Edges.circleCrossed says which edges the
- * ball has crossed, Edges.bounceX/bounceY turn its speed back inside, and
- * Edges.circleClampX/circleClampY put it back in the window.
+ * The tutorial's "try this" at the end of the circle sections: a ball that bounces off the
+ * edges of the window and turns red inside a circle in the middle. Two tests each frame:
+ * section 1's edges, and section 3's circle/circle, Collide.circleCircle(x, y, r, cx, cy, R),
+ * the tutorial's dist(x, y, cx, cy) < r + R. Red here means "overlapping": the ball turns
+ * red as soon as it reaches in. The edges are Hitbox's way from S01 (the ball's edge
+ * tested, the speed's sign set), with the ball put back at the edge.
  *
- * Try this: make the ball bigger than the circle; add a second ball and test the two balls
- * against each other; make the circle follow the mouse.
+ * Try this: make it red only when wholly inside (dist + r < R); make the ball bigger than
+ * the circle; add a second ball and test the two balls against each other.
  * Keys: d shows the maths (distance, both radii, dist < r + R, the edges crossed). Space
  * pauses. Click to put the ball at the mouse.
  */
@@ -21,45 +22,39 @@ float cx = 300;
 float cy = 200;
 float R = 90;
 
-// The ball: position, speed (pixels a frame), radius.
+// The ball: position, radius and speed (pixels a frame).
 float x = 110;
 float y = 90;
-float vx = 3.3f;
-float vy = 2.1f;
 float r = 22;
+float xSpeed = 3.3;
+float ySpeed = 2.1;
 
-boolean inside;       // does the ball overlap the circle this frame?
-int ballColour;       // what the ball is drawn in, kept for the tests
-int crossed;          // the window edges the ball crossed last time it bounced
-int bounceFrame = -1000;
-boolean paused;
-boolean showMaths;    // the 'd' overlay
+boolean inside;      // does the ball overlap the circle? It is drawn red while it does
+boolean paused;      // space
+boolean showMaths;   // d
 
-// A short trail of past positions, oldest first.
-float[] trailX = new float[14];
-float[] trailY = new float[14];
-
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
-  for (int i = 0; i < trailX.length; i++) {
-    trailX[i] = x;
-    trailY[i] = y;
-  }
+  startTrail();
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   if (!paused) {
-    move();
+    x += xSpeed;
+    y += ySpeed;
+    // Section 1: bounce off the window's edges, Hitbox's way (S01), then put it back at the edge.
+    int crossed = Edges.circleCrossed(x, y, r, width, height);
+    xSpeed = Edges.bounceX(crossed, xSpeed);
+    ySpeed = Edges.bounceY(crossed, ySpeed);
+    x = Edges.circleClampX(x, r, width);
+    y = Edges.circleClampY(y, r, height);
+    addToTrail(crossed);
   }
 
-  // The whole idea in one line: does the ball overlap the circle?
+  // Section 3: does the ball overlap the circle? dist(x, y, cx, cy) < r + R
   inside = Collide.circleCircle(x, y, r, cx, cy, R);
-  ballColour = inside ? Palette.HIT : Palette.MISS;
 
   // The circle: an obstacle the ball passes through.
   stroke(Palette.OBSTACLE);
@@ -67,11 +62,9 @@ public void draw() {
   fill(Palette.OBSTACLE, 50);
   circle(cx, cy, 2 * R);
 
+  color ballColour = inside ? Palette.HIT : Palette.MISS;
+  drawTrail(ballColour);
   noStroke();
-  for (int i = 0; i < trailX.length; i++) {
-    fill(ballColour, 10 + i * 6);
-    circle(trailX[i], trailY[i], 2 * r * (0.4f + 0.04f * i));
-  }
   fill(ballColour);
   circle(x, y, 2 * r);
 
@@ -82,74 +75,12 @@ public void draw() {
   drawBounce();
 }
 
-/** One step: move, then bounce off (and stay inside) the window's edges. */
-void move() {
-  x += vx;
-  y += vy;
-  int edges = Edges.circleCrossed(x, y, r, width, height);
-  if (edges != Edges.NONE) {
-    vx = Edges.bounceX(edges, vx);
-    vy = Edges.bounceY(edges, vy);
-    x = Edges.circleClampX(x, r, width);
-    y = Edges.circleClampY(y, r, height);
-    crossed = edges;
-    bounceFrame = frameCount;
-  }
-  for (int i = 0; i < trailX.length - 1; i++) {
-    trailX[i] = trailX[i + 1];
-    trailY[i] = trailY[i + 1];
-  }
-  trailX[trailX.length - 1] = x;
-  trailY[trailY.length - 1] = y;
-}
-
-/** The edge the ball just bounced off lights up for a moment. */
-void drawBounce() {
-  int age = frameCount - bounceFrame;
-  if (age > 25) {
-    return;
-  }
-  stroke(Palette.ACCENT, 255 - age * 10);
-  strokeWeight(5);
-  if (Edges.has(crossed, Edges.LEFT)) line(2, 0, 2, height);
-  if (Edges.has(crossed, Edges.RIGHT)) line(width - 3, 0, width - 3, height);
-  if (Edges.has(crossed, Edges.TOP)) line(0, 2, width, 2);
-  if (Edges.has(crossed, Edges.BOTTOM)) line(0, height - 3, width, height - 3);
-  if (showMaths) {
-    // Which edges the bounce crossed, as the library names them, written beside the ball on
-    // the window's side of it.
-    float inX = Edges.has(crossed, Edges.LEFT) ? 1 : (Edges.has(crossed, Edges.RIGHT) ? -1 : 0);
-    float inY = Edges.has(crossed, Edges.TOP) ? 1 : (Edges.has(crossed, Edges.BOTTOM) ? -1 : 0);
-    Overlay.labelBeside(g, x + inX * (r + 6), y + inY * (r + 6), inX, inY, "crossed: " + Edges.describe(crossed), Palette.ACCENT);
-  }
-}
-
-/** The distance between the centres, both radii, dist < r + R, and the edges of the last bounce. */
-void drawMaths() {
-  float d = dist(x, y, cx, cy);
-  float ux = d > 0.5f ? (cx - x) / d : 1;
-  float uy = d > 0.5f ? (cy - y) / d : 0;
-
-  Overlay.radius(g, x, y, ux, uy, r, "r");
-  Overlay.radius(g, cx, cy, -ux, -uy, R, "R");
-  Overlay.guide(g, x, y, cx, cy);
-  noStroke();
-  fill(Overlay.GUIDE);
-  circle(x, y, 6);
-  circle(cx, cy, 6);
-  Overlay.labelBeside(g, (x + cx) / 2 + uy * 18, (y + cy) / 2 - ux * 18, uy, -ux, "dist = " + Overlay.number(d), Overlay.GUIDE);
-
-  int colour = inside ? Overlay.HIT : Overlay.MISS;
-  float verdictY = y - r < 60 && abs(x - width / 2) < 150 ? height - 46 : 28;
-  Overlay.labelCentered(g, width / 2, verdictY, "dist < r + R\n" + Overlay.verdict(d, "<", r + R, inside), colour);
-}
-
-public void mousePressed() {
+void mousePressed() {
   x = Edges.circleClampX(mouseX, r, width);
   y = Edges.circleClampY(mouseY, r, height);
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == ' ') {

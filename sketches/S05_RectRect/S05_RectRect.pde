@@ -2,47 +2,48 @@
  * Rectangle/Rectangle
  * Tutorial section 5: Rectangle/Rectangle
  *
- * Two rectangles overlap when each edge of one is past the opposite edge of the other: r1's
+ * Two rectangles overlap when every edge of one is past the opposite edge of the other: r1's
  * right edge past r2's left, r1's left edge before r2's right, and the same down the page.
- * Collide.rectRect(r1x, r1y, r1w, r1h, r2x, r2y, r2w, r2h) makes the four comparisons. Move
- * the blue rectangle with the mouse; the centre one turns red while they overlap.
- * Rectangles side by side, sharing an edge, do not collide.
+ * The mouse holds r1 by its top-left corner, as in the tutorial's sketch (rect() draws from
+ * the corner); r2 turns red while they overlap. Rectangles side by side, sharing an edge, do
+ * not collide: all four comparisons are strict.
  *
- * Try this: make r1 as wide as the window (a floor); make r2 height 0 (a line: it collides
- * only by reaching into r1); use this test as the cheap first check before a slower one.
- * Keys: d shows the maths (the four edge comparisons, each at its edges).
+ * Where Hitbox differs: it does not. Collide.rectRect makes the tutorial's four strict
+ * comparisons; it only adds x + w in double, so that large coordinates cannot round.
+ *
+ * Try this: make r1 as wide as the window (a floor); make r1 height 0 (a line: it collides
+ * only by reaching into r2); hold r1 by its centre (r1x = mouseX - r1w / 2) and see which
+ * numbers change. S05b shows the test written the other way round, with ||.
+ * Keys: d shows the maths (the four comparisons, each at the edges it compares).
  */
 import hitbox.*;
 import hitbox.processing.*;
 
-// r1 follows the mouse (centred on it); r2 stays in the middle of the window.
+// r1 hangs from the mouse by its top-left corner; r2 stays in the middle of the window.
+float r1x, r1y;
 float r1w = 120;
 float r1h = 80;
 float r2x = 220;
 float r2y = 150;
 float r2w = 160;
 float r2h = 100;
-
-float r1x;            // r1's top-left corner this frame
-float r1y;
-boolean colliding;    // the answer for this frame, kept for the tests
 boolean showMaths;    // the 'd' overlay
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
-  r1x = mouseX - r1w / 2;
-  r1y = mouseY - r1h / 2;
+  r1x = mouseX;
+  r1y = mouseY;
 
-  // The whole idea in one line: do the two rectangles overlap?
-  colliding = Collide.rectRect(r1x, r1y, r1w, r1h, r2x, r2y, r2w, r2h);
+  // The tutorial's if: r1's right past r2's left, r1's left before r2's right, r1's bottom
+  // below r2's top, r1's top above r2's bottom.
+  boolean tutorialSays = r1x + r1w > r2x && r1x < r2x + r2w && r1y + r1h > r2y && r1y < r2y + r2h;
+  // The library's call: the same four comparisons.
+  boolean colliding = Collide.rectRect(r1x, r1y, r1w, r1h, r2x, r2y, r2w, r2h);
 
   noStroke();
   fill(colliding ? Palette.HIT : Palette.MISS);
@@ -53,86 +54,18 @@ public void draw() {
   strokeWeight(2);
   fill(Palette.PLAYER, 150);
   rect(r1x, r1y, r1w, r1h);
-
-  // Their names, as the maths calls them.
-  fill(Palette.BACKGROUND);
-  textAlign(LEFT, TOP);
-  textSize(13);
-  text("r2", r2x + 6, r2y + 4);
-  fill(Palette.NEUTRAL);
-  text("r1", r1x + 6, r1y + 4);
+  names();
 
   if (showMaths) {
-    drawMaths();
-  }
-  Overlay.hint(g, "move the blue rectangle onto the other one     d: show the maths");
-}
-
-/** The four comparisons, each drawn at the two edges it compares, and the verdict. */
-void drawMaths() {
-  boolean a = r1x + r1w > r2x;   // r1's right edge is past r2's left edge
-  boolean b = r1x < r2x + r2w;   // r1's left edge is before r2's right edge
-  boolean c = r1y + r1h > r2y;   // r1's bottom edge is below r2's top edge
-  boolean d = r1y < r2y + r2h;   // r1's top edge is above r2's bottom edge
-
-  // r2's edges, extended across the window: each comparison asks on which side of one of
-  // these lines r1's opposite edge is.
-  edgeLine(r2x, true, a);
-  edgeLine(r2x + r2w, true, b);
-  edgeLine(r2y, false, c);
-  edgeLine(r2y + r2h, false, d);
-  // r1's edges, each in the colour of the comparison it is in.
-  edge(r1x + r1w, r1y, r1x + r1w, r1y + r1h, a);
-  edge(r1x, r1y, r1x, r1y + r1h, b);
-  edge(r1x, r1y + r1h, r1x + r1w, r1y + r1h, c);
-  edge(r1x, r1y, r1x + r1w, r1y, d);
-  edge(r2x, r2y, r2x, r2y + r2h, a);
-  edge(r2x + r2w, r2y, r2x + r2w, r2y + r2h, b);
-  edge(r2x, r2y, r2x + r2w, r2y, c);
-  edge(r2x, r2y + r2h, r2x + r2w, r2y + r2h, d);
-
-  // Each comparison written at r2's edge, outside it.
-  Overlay.labelBeside(g, r2x - 8, r2y + r2h / 2, -1, 0,
-      "r1 right > r2 left\n" + Overlay.comparison(r1x + r1w, ">", r2x, a), colour(a));
-  Overlay.labelBeside(g, r2x + r2w + 8, r2y + r2h / 2, 1, 0,
-      "r1 left < r2 right\n" + Overlay.comparison(r1x, "<", r2x + r2w, b), colour(b));
-  Overlay.labelBeside(g, r2x + r2w / 2, r2y - 8, 0, -1,
-      "r1 bottom > r2 top\n" + Overlay.comparison(r1y + r1h, ">", r2y, c), colour(c));
-  Overlay.labelBeside(g, r2x + r2w / 2, r2y + r2h + 8, 0, 1,
-      "r1 top < r2 bottom\n" + Overlay.comparison(r1y, "<", r2y + r2h, d), colour(d));
-
-  // The verdict, at the top, or at the bottom while r1 is up there.
-  int holding = (a ? 1 : 0) + (b ? 1 : 0) + (c ? 1 : 0) + (d ? 1 : 0);
-  String verdict = (holding == 4 ? "all four hold" : holding + " of 4 hold") + ": " + (colliding ? "colliding" : "not colliding");
-  float verdictY = r1y < 50 ? height - 46 : 28;
-  Overlay.labelCentered(g, width / 2, verdictY,
-      "r1x + r1w > r2x && r1x < r2x + r2w && r1y + r1h > r2y && r1y < r2y + r2h\n" + verdict, colour(colliding));
-}
-
-/** An edge, drawn thick in its comparison's colour. */
-void edge(float x1, float y1, float x2, float y2, boolean holds) {
-  stroke(colour(holds));
-  strokeWeight(4);
-  line(x1, y1, x2, y2);
-}
-
-/** One of r2's edges extended across the window, thin. */
-void edgeLine(float at, boolean vertical, boolean holds) {
-  stroke(colour(holds), 90);
-  strokeWeight(1);
-  if (vertical) {
-    line(at, 0, at, height);
+    drawMaths(colliding);
   } else {
-    line(0, at, width, at);
+    answer(8, 8, "the tutorial's if", tutorialSays);
+    answer(8, 30, "Collide.rectRect", colliding);
   }
+  Overlay.hint(g, "move the blue rectangle (the mouse holds its top-left corner)     d: show the maths");
 }
 
-/** A comparison that holds pushes towards a collision: the colliding colour. */
-int colour(boolean holds) {
-  return holds ? Overlay.HIT : Overlay.MISS;
-}
-
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   }

@@ -4,135 +4,108 @@
  *
  * A box bounces around the window and off the block in the middle. Before it moves, it asks
  * where it WOULD be next frame, one axis at a time: moved across only, at (x + vx, y), and
- * moved down only, at (x, y + vy). Motion.rectBlocked answers with the axes that would run
- * into the block, and only those speeds are reversed, so the box bounces off the side it
- * really hit: off the left or right side it turns back across, off the top or bottom it turns
- * back up or down. Edges does the same for the window.
+ * moved down only, at (x, y + vy). If the box moved across would hit the block, vx reverses;
+ * if the box moved down would, vy reverses. So it bounces off the side it really hits.
  *
- * Try this: pause (p) just before the box reaches the block and step (n) frame by frame with
- * the maths on (d): when one of the two next-position boxes turns red, that speed reverses.
- * Set vx to 250, more than the block and the box are wide together: now and then the box
- * jumps clean over the block between two frames, because the check only looks where the
- * box lands, not at the path (Sweep looks at the path).
- * Keys: d shows the maths, p pauses, n steps one frame while paused.
+ * Press t to run the tutorial's own code instead (written out below, in this sketch's
+ * names). Then press c: the box is aimed at the block's corner, where neither move alone
+ * hits it but the diagonal move does, so both checks say "free" and the box ends a frame
+ * inside the block (the counter at the top). The tutorial's window check also looks where
+ * the box is, not where it will be, so the box pokes out of the window for a frame at each
+ * edge.
+ *
+ * Where Hitbox differs: Motion.rectBlocked makes the same two checks and also tests the
+ * diagonal move, reporting both axes for a corner hit, and Edges checks the window at the
+ * next position too, because a check of the next position should never let the box in.
+ *
+ * Try this: pause (p) before the box reaches the block and step (n) with the maths on (d):
+ * when one of the next-position boxes turns red, that speed reverses. Set vx to 250: the box
+ * jumps clean over the block now and then, because the check only looks where the box lands,
+ * not along the way (Sweep looks at the path, see S10e).
+ * Keys: t the tutorial's code / Motion.rectBlocked, c aim at the corner, p pause, n one
+ * frame while paused, d shows the maths.
  */
 import hitbox.*;
 import hitbox.processing.*;
 
-Rect block = Rect.centered(300, 190, 160, 100);
+float blockX = 220;
+float blockY = 140;
+float blockW = 160;
+float blockH = 100;
 float x = 60;
 float y = 40;
 float w = 40;
 float h = 40;
-float vx = 3.5f;
-float vy = 2.5f;
+float vx = 3.5;
+float vy = 2.5;
 
-int blocked = Motion.NONE;   // this frame's answer from Motion.rectBlocked
-int crossed = Edges.NONE;    // this frame's answer from Edges.rectCrossed
-int flash = 0;               // frames left to show the block red after a bounce
-boolean showMaths = false;
-boolean paused = false;
-boolean stepOnce = false;
+boolean tutorialWay = false;   // t: the tutorial's code instead of Motion.rectBlocked
+int blocked = Motion.NONE;     // this frame's answer: which speeds reversed off the block
+int framesInside = 0;          // frames the box ended inside the block
+int flash = 0;                 // frames left to show the block red after a bounce
+boolean showMaths, paused, stepOnce;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textSize(14);
 }
 
-public void draw() {
-  background(Palette.BACKGROUND);
-
-  // The tutorial's check, before moving: would the box, moved on one axis, hit the block?
-  blocked = Motion.rectBlocked(x, y, w, h, vx, vy, block);
-  if (blocked != Motion.NONE) {
-    flash = 12;
+void draw() {
+  if (!paused || stepOnce) {
+    stepOnce = false;
+    step();
   }
+  drawScene();
+}
 
-  // The block glows red for a moment after each bounce off it.
-  fill(Palette.OBSTACLE);
-  if (flash > 0) {
-    stroke(Palette.HIT);
-    strokeWeight(4);
+void step() {
+  if (tutorialWay) {
+    // Section 6 as the tutorial writes it: the rectangle test at the next position, across
+    // only, then down only; else the window's edges, where the box is now.
+    boolean hitX = x + w + vx > blockX && x + vx < blockX + blockW && y + h > blockY && y < blockY + blockH;
+    if (hitX) {
+      vx *= -1;
+    } else if (x < 0 || x + w > width) {
+      vx *= -1;
+    }
+    boolean hitY = x + w > blockX && x < blockX + blockW && y + h + vy > blockY && y + vy < blockY + blockH;
+    if (hitY) {
+      vy *= -1;
+    } else if (y < 0 || y + h > height) {
+      vy *= -1;
+    }
+    blocked = (hitX ? Motion.X : 0) | (hitY ? Motion.Y : 0);
   } else {
-    noStroke();
+    // Hitbox: the same two checks and the diagonal one in a call, then the window, both
+    // at the next position.
+    blocked = Motion.rectBlocked(x, y, w, h, vx, vy, blockX, blockY, blockW, blockH);
+    vx = Motion.reverseX(blocked, vx);
+    vy = Motion.reverseY(blocked, vy);
+    int crossed = Edges.rectCrossed(x + vx, y + vy, w, h, width, height);
+    vx = Edges.bounceX(crossed, vx);
+    vy = Edges.bounceY(crossed, vy);
   }
-  Draw.shape(g, block);
-  noStroke();
-  if (showMaths) {
-    // See-through, so the next-position boxes show around and under it.
-    fill(Palette.PLAYER, 110);
-    stroke(Palette.NEUTRAL);
-    strokeWeight(1);
-  } else {
-    fill(Palette.PLAYER);
-  }
-  rect(x, y, w, h);
-
-  if (showMaths) {
-    drawMaths();
-  }
-  Overlay.label(g, 8, 8, paused ? "paused: n steps one frame, p goes on" : "Motion.rectBlocked: " + Motion.describe(blocked));
-  Overlay.hint(g, "d: show the maths (the next-position boxes)   p: pause   n: one frame");
-
-  if (paused && !stepOnce) {
-    return;
-  }
-  stepOnce = false;
-  if (flash > 0) {
-    flash--;
-  }
-  // Reverse exactly the speeds whose axis is blocked, then look at the window the same way.
-  vx = Motion.reverseX(blocked, vx);
-  vy = Motion.reverseY(blocked, vy);
-  crossed = Edges.rectCrossed(x + vx, y + vy, w, h, width, height);
-  vx = Edges.bounceX(crossed, vx);
-  vy = Edges.bounceY(crossed, vy);
   x += vx;
   y += vy;
-}
 
-// The two boxes the check tests, drawn where they are, each with its answer.
-void drawMaths() {
-  boolean hitX = Collide.rectRect(x + vx, y, w, h, block.x(), block.y(), block.w(), block.h());
-  boolean hitY = Collide.rectRect(x, y + vy, w, h, block.x(), block.y(), block.w(), block.h());
-  nextBox(x + vx, y, hitX);
-  nextBox(x, y + vy, hitY);
-  if (blocked == Motion.BOTH && !hitX && !hitY) {
-    // The corner case: neither axis alone hits, the diagonal move does; both speeds reverse.
-    nextBox(x + vx, y + vy, true);
-    Overlay.label(g, x + vx + w + 6, y + vy + h + 6, "next x and y (corner): colliding", Overlay.HIT);
+  flash = blocked != Motion.NONE ? 12 : max(0, flash - 1);
+  if (Collide.rectRect(x, y, w, h, blockX, blockY, blockW, blockH)) {
+    framesInside++;
   }
-  Draw.arrow(g, x + w / 2, y + h / 2, vx * 8, vy * 8);
-
-  // "next x" on the side the box is moving to across, "next y" on the side it moves to down.
-  String sx = "next x: (x + vx, y) = (" + Overlay.number(x + vx) + ", " + Overlay.number(y) + ")\n"
-      + (hitX ? "colliding: reverse vx" : "not colliding");
-  String sy = "next y: (x, y + vy) = (" + Overlay.number(x) + ", " + Overlay.number(y + vy) + ")\n"
-      + (hitY ? "colliding: reverse vy" : "not colliding");
-  float lx = vx > 0 ? x + w + 10 : x - 200;
-  float ly = vy > 0 ? y + h + 10 : y - 44;
-  Overlay.label(g, lx, y, sx, hitX ? Overlay.HIT : Overlay.MISS);
-  Overlay.label(g, x - 40, ly, sy, hitY ? Overlay.HIT : Overlay.MISS);
-  Overlay.label(g, 8, 30, "vx = " + Overlay.number(vx) + "   vy = " + Overlay.number(vy)
-      + "\nwindow: Edges.rectCrossed(next) = " + Edges.describe(Edges.rectCrossed(x + vx, y + vy, w, h, width, height)));
 }
 
-void nextBox(float bx, float by, boolean colliding) {
-  int colour = colliding ? Overlay.HIT : Overlay.MISS;
-  pushStyle();
-  fill(colour, 60);
-  strokeWeight(2);
-  stroke(colour);
-  rect(bx, by, w, h);
-  popStyle();
-}
-
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
+  } else if (key == 't') {
+    tutorialWay = !tutorialWay;
+    framesInside = 0;
+  } else if (key == 'c') {
+    // Just off the block's top-left corner, heading for it: only the diagonal move hits.
+    x = blockX - w - 1;
+    y = blockY - h - 1;
+    vx = abs(vx);
+    vy = abs(vy);
   } else if (key == 'p') {
     paused = !paused;
   } else if (key == 'n') {

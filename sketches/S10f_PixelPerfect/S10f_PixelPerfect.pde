@@ -3,11 +3,16 @@
  * Tutorial section 10: Pixel-perfect, and the hybrid approach
  *
  * Two sprites collide when some pixel is solid in both: exact, but slow if every pair is
- * tested pixel by pixel. So Hybrid.check tests in three stages, cheapest first, and the
- * first stage that can say "apart" decides: 1) the circles around the sprites' boxes,
- * 2) the boxes themselves, 3) the pixels (PixelMask, made from each sprite's alpha).
- * Only stage 3 can say "colliding". The sprites are coloured by the stage that decided;
- * the first pixel the two share is marked (PixelMask.firstOverlap).
+ * tested pixel by pixel. So the tutorial suggests a hybrid: first a distance check, fast and
+ * little code; if it says "close", hit boxes; if they overlap, pixel-perfect. Hybrid.check
+ * runs exactly those three stages, cheapest first, and the first that can say "apart"
+ * decides: 1) the circles around the sprites' boxes, 2) the boxes, 3) the pixels (PixelMask,
+ * made from each sprite's alpha). Only stage 3 can say "colliding". The big star is coloured
+ * by the stage that decided; the first pixel the two share is marked.
+ *
+ * The tutorial gives no code for these stages. Hitbox's pixel stage differs from a loop over
+ * the pixels because that loop is what makes pixel-perfect slow: PixelMask keeps each row of
+ * a sprite as bits, 64 pixels to a long, and compares 64 pixels in one step.
  *
  * Try this: put the ring between two of the star's points (the boxes overlap, the pixels
  * do not); press c and sweep the ring through a crowd to see how rarely the pixel test has
@@ -17,38 +22,25 @@
 import hitbox.*;
 import hitbox.processing.*;
 
-// One colour per stage that can decide.
-int CIRCLES_COLOUR = 0xFFB48EF0;   // apart by the circles: the cheapest answer
-int BOXES_COLOUR = Palette.ACCENT; // apart by the boxes
-int PIXELS_COLOUR = Palette.MISS;  // the pixel test ran: no shared pixel
-int HIT_COLOUR = Palette.HIT;      // the pixel test ran: colliding
-
-PGraphics star, ring, smallStar;       // the sprites, drawn in code
+PGraphics star, ring, smallStar;       // the sprites, drawn in code (Sprites.pde)
 PixelMask starMask, ringMask, smallMask;
 
-// Where the sprites are: top-left corners, whole pixels.
+// Where the sprites are: top-left corners, whole pixels. The ring follows the mouse.
 int starX = 215;
 int starY = 100;
 int ringX, ringY;
 
 Hybrid.Result result;                 // the big star against the ring, this frame
-PixelMask.Pixel firstPixel;           // their first shared pixel, in the star's pixels
-int sharedPixels;                     // how many pixels they share
 Hybrid.Counter counter = new Hybrid.Counter();      // every check since the start
-Hybrid.Counter crowdCounter = new Hybrid.Counter(); // the crowd's checks this frame
 
-boolean crowdMode;
+boolean crowdMode;                    // c: a crowd of small stars instead
 int[] crowdX = new int[48];
 int[] crowdY = new int[48];
 Hybrid.Result[] crowdResults = new Hybrid.Result[48];
+Hybrid.Counter crowdCounter = new Hybrid.Counter(); // the crowd's checks this frame
 
-boolean showMaths;
-
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
   star = starSprite(170, 82, 34);
   ring = ringSprite(100, 40, 12);
@@ -57,238 +49,29 @@ public void setup() {
   starMask = mask(star);
   ringMask = mask(ring);
   smallMask = mask(smallStar);
-
-  // The crowd: small stars spread over the window on a jittered grid (seeded: the same
-  // every run).
-  randomSeed(3);
-  for (int i = 0; i < crowdX.length; i++) {
-    crowdX[i] = 20 + (i % 8) * 72 + (int) random(0, 30);
-    crowdY[i] = 60 + (i / 8) * 44 + (int) random(0, 14);
-  }
+  placeCrowd();
 }
 
-PixelMask mask(PGraphics sprite) {
-  sprite.loadPixels();
-  return PixelMask.fromPixels(sprite.pixels, sprite.width, sprite.height, 127);
-}
-
-/** A five-pointed star in white on a transparent square. */
-PGraphics starSprite(int size, float outer, float inner) {
-  PGraphics s = createGraphics(size, size);
-  s.beginDraw();
-  s.clear();
-  s.noStroke();
-  s.fill(255);
-  s.beginShape();
-  for (int i = 0; i < 10; i++) {
-    float a = -HALF_PI + i * PI / 5;
-    float rr = i % 2 == 0 ? outer : inner;
-    s.vertex(size / 2f + rr * cos(a), size / 2f + 3 + rr * sin(a));
-  }
-  s.endShape(CLOSE);
-  s.endDraw();
-  return s;
-}
-
-/** A ring (a thick circle outline) in white on a transparent square. */
-PGraphics ringSprite(int size, float radius, float thickness) {
-  PGraphics s = createGraphics(size, size);
-  s.beginDraw();
-  s.clear();
-  s.noFill();
-  s.stroke(255);
-  s.strokeWeight(thickness);
-  s.circle(size / 2f, size / 2f, 2 * radius);
-  s.endDraw();
-  return s;
-}
-
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   ringX = mouseX - ring.width / 2;
   ringY = mouseY - ring.height / 2;
-
   if (crowdMode) {
-    drawCrowd();
+    // One check per star in the crowd: most end at the first stage.
+    crowdCounter.reset();
+    for (int i = 0; i < crowdX.length; i++) {
+      crowdResults[i] = crowdCounter.add(Hybrid.check(smallMask, crowdX[i], crowdY[i], ringMask, ringX, ringY));
+    }
+    drawCrowd();   // Maths.pde
   } else {
-    drawPair();
+    // Distance, then hit boxes, then pixels: the stages the tutorial names, in its order.
+    result = counter.add(Hybrid.check(starMask, starX, starY, ringMask, ringX, ringY));
+    drawPair();    // Maths.pde
   }
   Overlay.hint(g, "move the ring     c: " + (crowdMode ? "one big star" : "a crowd of stars") + "     d: show the maths");
 }
 
-void drawPair() {
-  // The whole idea in one line: cheap stages first, pixels only if they cannot decide.
-  result = counter.add(Hybrid.check(starMask, starX, starY, ringMask, ringX, ringY));
-  firstPixel = result.overlaps() ? starMask.firstOverlap(ringMask, ringX - starX, ringY - starY) : null;
-  sharedPixels = result.overlaps() ? starMask.overlapCount(ringMask, ringX - starX, ringY - starY) : 0;
-
-  sprite(star, starX, starY, stageColour(result), 255);
-  sprite(ring, ringX, ringY, Palette.PLAYER, 190);
-
-  if (showMaths) {
-    drawPairMaths();
-  }
-  if (firstPixel != null) {
-    markPixel(starX + firstPixel.x(), starY + firstPixel.y());
-  }
-  drawStages(result, null);
-  Overlay.label(g, 8, height - 42, "checks so far: " + counter.total() + "   circles "
-      + counter.decidedBy(Hybrid.Stage.CIRCLES) + ", boxes " + counter.decidedBy(Hybrid.Stage.BOXES)
-      + ", pixels " + counter.decidedBy(Hybrid.Stage.PRECISE) + " (" + counter.overlapping() + " colliding)");
-}
-
-void drawCrowd() {
-  crowdCounter.reset();
-  for (int i = 0; i < crowdX.length; i++) {
-    crowdResults[i] = crowdCounter.add(Hybrid.check(smallMask, crowdX[i], crowdY[i], ringMask, ringX, ringY));
-  }
-  for (int i = 0; i < crowdX.length; i++) {
-    sprite(smallStar, crowdX[i], crowdY[i], stageColour(crowdResults[i]), 255);
-    if (showMaths && crowdResults[i].decidedBy() != Hybrid.Stage.CIRCLES) {
-      // The stars the circle stage could not dismiss: their boxes.
-      Rect b = smallMask.bounds();
-      noFill();
-      stroke(BOXES_COLOUR, 200);
-      strokeWeight(1);
-      rect(crowdX[i] + b.x(), crowdY[i] + b.y(), b.w(), b.h());
-    }
-  }
-  sprite(ring, ringX, ringY, Palette.PLAYER, 190);
-  if (showMaths) {
-    Rect b = ringMask.bounds();
-    noFill();
-    stroke(CIRCLES_COLOUR);
-    strokeWeight(1.5f);
-    circle(ringX + b.x() + b.w() / 2, ringY + b.y() + b.h() / 2, dist(0, 0, b.w(), b.h()));
-  }
-  drawStages(null, crowdCounter);
-  int precise = crowdCounter.decidedBy(Hybrid.Stage.PRECISE);
-  Overlay.label(g, 8, height - 57, "this frame: " + crowdCounter.total() + " checks   circles "
-      + crowdCounter.decidedBy(Hybrid.Stage.CIRCLES) + ", boxes " + crowdCounter.decidedBy(Hybrid.Stage.BOXES)
-      + ", pixels " + precise + " (" + crowdCounter.overlapping() + " colliding)\n"
-      + "the pixel test ran " + precise + " times instead of " + crowdCounter.total());
-}
-
-/** A white sprite drawn in a colour. */
-void sprite(PGraphics s, int x, int y, int colour, int alpha) {
-  tint(colour, alpha);
-  image(s, x, y);
-  noTint();
-}
-
-int stageColour(Hybrid.Result r) {
-  if (r.overlaps()) {
-    return HIT_COLOUR;
-  }
-  if (r.decidedBy() == Hybrid.Stage.CIRCLES) {
-    return CIRCLES_COLOUR;
-  }
-  return r.decidedBy() == Hybrid.Stage.BOXES ? BOXES_COLOUR : PIXELS_COLOUR;
-}
-
-/**
- * The three stages along the top. For one check, the stage that decided is filled in its
- * colour; for the crowd, how many checks each stage decided.
- */
-void drawStages(Hybrid.Result r, Hybrid.Counter crowd) {
-  String[] names = {"1  circles apart?", "2  boxes apart?", "3  pixels shared?"};
-  int[] colours = {CIRCLES_COLOUR, BOXES_COLOUR, r != null && r.overlaps() ? HIT_COLOUR : PIXELS_COLOUR};
-  textSize(13);
-  textAlign(CENTER, CENTER);
-  for (int i = 0; i < 3; i++) {
-    float x = 12 + i * 196;
-    float w = 184;
-    boolean decided = r != null && r.decidedBy().ordinal() == i;
-    boolean passed = r != null && r.decidedBy().ordinal() > i;
-    stroke(colours[i]);
-    strokeWeight(decided ? 3 : 1.5f);
-    fill(decided ? colours[i] : Palette.BACKGROUND);
-    rect(x, 10, w, 26, 6);
-    fill(decided ? Palette.BACKGROUND : colours[i]);
-    text(names[i], x + w / 2, 22);
-    if (r != null) {
-      String answer;
-      if (i == 2) {
-        answer = decided ? (r.overlaps() ? "yes: colliding" : "no: apart") : "not needed";
-      } else {
-        answer = decided ? "yes: apart, done" : "no: go on";
-      }
-      fill(decided || passed ? Palette.NEUTRAL : Palette.LINE);
-      textSize(12);
-      text(answer, x + w / 2, 46);
-      textSize(13);
-    } else if (crowd != null) {
-      Hybrid.Stage stage = Hybrid.Stage.values()[i];
-      int n = crowd.decidedBy(stage);
-      String answer = i < 2 ? n + " apart, done" : n + " ran: " + crowd.overlapping() + " colliding";
-      fill(Palette.NEUTRAL);
-      textSize(12);
-      text(answer, x + w / 2, 46);
-      textSize(13);
-    }
-  }
-}
-
-/** The circles and boxes the first two stages compare, and the pixel count. */
-void drawPairMaths() {
-  Rect a = starMask.bounds();
-  Rect b = ringMask.bounds();
-  // Each sprite's box (its solid pixels' bounds) where it is placed.
-  float ax = starX + a.x(), ay = starY + a.y();
-  float bx = ringX + b.x(), by = ringY + b.y();
-  // Stage 1: the circle around each box: centre the box's centre, radius half its diagonal.
-  float acx = ax + a.w() / 2, acy = ay + a.h() / 2, ar = dist(0, 0, a.w(), a.h()) / 2;
-  float bcx = bx + b.w() / 2, bcy = by + b.h() / 2, br = dist(0, 0, b.w(), b.h()) / 2;
-  noFill();
-  stroke(CIRCLES_COLOUR);
-  strokeWeight(1.5f);
-  circle(acx, acy, 2 * ar);
-  circle(bcx, bcy, 2 * br);
-  float d = dist(acx, acy, bcx, bcy);
-  Overlay.guide(g, acx, acy, bcx, bcy);
-  noStroke();
-  fill(Overlay.GUIDE);
-  circle(acx, acy, 6);
-  circle(bcx, bcy, 6);
-  Overlay.labelCentered(g, acx, acy + 16, "r1 = " + Overlay.number(ar), CIRCLES_COLOUR);
-  Overlay.labelCentered(g, bcx, bcy + 16, "r2 = " + Overlay.number(br), CIRCLES_COLOUR);
-  boolean circlesMeet = result.decidedBy() != Hybrid.Stage.CIRCLES;
-  String lines = "1 circles meet: dist < r1 + r2:  " + Overlay.comparison(d, "<", ar + br, circlesMeet)
-      + (circlesMeet ? "" : "  -> apart, done");
-
-  // Stage 2: the boxes, only if the circles meet.
-  if (circlesMeet) {
-    noFill();
-    stroke(BOXES_COLOUR);
-    strokeWeight(1.5f);
-    rect(ax, ay, a.w(), a.h());
-    rect(bx, by, b.w(), b.h());
-    boolean boxesMeet = result.decidedBy() == Hybrid.Stage.PRECISE;
-    // The four edge comparisons of rect/rect, on the boxes' pixel edges.
-    lines += "\n2 boxes overlap: " + (int) (bx + b.w()) + " > " + (int) ax + " && " + (int) bx + " < " + (int) (ax + a.w())
-        + " && " + (int) (by + b.h()) + " > " + (int) ay + " && " + (int) by + " < " + (int) (ay + a.h()) + ": " + boxesMeet
-        + (boxesMeet ? "" : "  -> apart, done");
-    if (boxesMeet) {
-      lines += "\n3 pixels solid in both: " + sharedPixels + (result.overlaps() ? "  -> colliding" : "  -> apart");
-    }
-  }
-  Overlay.label(g, 8, height - 62 - 15 * (lines.split("\n").length - 1), lines, Overlay.TEXT);
-}
-
-/** The first pixel both sprites share (reading order): a cross on it and its coordinates. */
-void markPixel(int px, int py) {
-  noFill();
-  stroke(Palette.ACCENT);
-  strokeWeight(2);
-  rect(px - 3, py - 3, 7, 7);
-  line(px - 12, py + 0.5f, px - 5, py + 0.5f);
-  line(px + 6, py + 0.5f, px + 13, py + 0.5f);
-  line(px + 0.5f, py - 12, px + 0.5f, py - 5);
-  line(px + 0.5f, py + 6, px + 0.5f, py + 13);
-  Overlay.labelBeside(g, px - 14, py, -1, 0, "first shared pixel (" + px + ", " + py + ")", Palette.ACCENT);
-}
-
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == 'c') {

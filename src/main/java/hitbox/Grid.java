@@ -657,4 +657,146 @@ public final class Grid {
     private int clampRow(int row) {
         return Math.max(0, Math.min(rows - 1, row));
     }
+
+    // ---- sight, routes, pixel moves and picture maps (the work is in GridSight, GridPaths,
+    // ---- GridMove and GridImages; these only hand it over) ---------------------------
+
+    /**
+     * Can one point see another: does the segment between them reach into no solid cell? A
+     * guard sees the player when {@code grid.lineOfSight(guardX, guardY, playerX, playerY)}.
+     *
+     * <p>Exactly {@link Collide#lineRect} against the rectangle of every solid cell, so the
+     * <a href="package-summary.html#touching">touching rule</a> holds: a line that grazes a
+     * solid cell's corner, or runs along its edge, is not blocked. Only the cells along the
+     * segment are looked at (a grid traversal in the manner of Amanatides and Woo), so a line
+     * across a 2000 x 2000 grid costs a few thousand cells, not four million.
+     *
+     * <p>Outside the grid counts as solid, cell by cell, as {@link #isSolid} says: a segment
+     * with an end beyond the grid's edges is blocked, except one lying exactly on a grid line
+     * (which reaches into no cell at all). A segment along the grid's border is not blocked.
+     *
+     * @param x0 the first point's x, in pixels
+     * @param y0 the first point's y
+     * @param x1 the second point's x
+     * @param y1 the second point's y
+     * @return true if no solid cell is in the way; false for a NaN or infinite coordinate
+     *         (the package's NaN rule: no result, so no sight; never throws)
+     */
+    public boolean lineOfSight(float x0, float y0, float x1, float y1) {
+        return GridSight.lineOfSight(this, x0, y0, x1, y1);
+    }
+
+    /**
+     * A shortest route for a player that moves cell by cell: straight steps (up, down, left,
+     * right) that {@link #canMove} allows, from one cell to another. Breadth-first search,
+     * visiting each cell at most once; on a 1000 x 1000 grid it takes milliseconds.
+     *
+     * <p>The route is the cells in order as indices {@code row * cols() + col} (so a cell's
+     * column is {@code index % cols()} and its row {@code index / cols()}), the start first
+     * and the goal last; a start that is the goal gives that one cell. When several routes are
+     * equally short, which one comes back is not specified.
+     *
+     * @param fromCol the start's column, from 0 to {@code cols() - 1}
+     * @param fromRow the start's row, from 0 to {@code rows() - 1}
+     * @param toCol   the goal's column, from 0 to {@code cols() - 1}
+     * @param toRow   the goal's row, from 0 to {@code rows() - 1}
+     * @return the route, or an empty array if there is none (the goal is walled off, or the
+     *         start or the goal is solid)
+     * @throws IllegalArgumentException if a cell is not in the grid; the message names the
+     *                                  parameter
+     */
+    public int[] path(int fromCol, int fromRow, int toCol, int toRow) {
+        return GridPaths.path(this, fromCol, fromRow, toCol, toRow);
+    }
+
+    /**
+     * A cheapest route under a cost per terrain type, with diagonal steps if the costs allow
+     * them: A* with a distance estimate that never overestimates, so the route is exactly a
+     * cheapest one. See {@link PathCosts} for what a step costs, what is impassable and how
+     * diagonals avoid corners; the route is given as in {@link #path(int, int, int, int)}, and
+     * {@link PathCosts#costOf} adds it up.
+     *
+     * @param fromCol the start's column, from 0 to {@code cols() - 1}
+     * @param fromRow the start's row, from 0 to {@code rows() - 1}
+     * @param toCol   the goal's column, from 0 to {@code cols() - 1}
+     * @param toRow   the goal's row, from 0 to {@code rows() - 1}
+     * @param costs   what each step costs, not null
+     * @return a cheapest route, or an empty array if there is none (or the start or the goal
+     *         is solid or impassable)
+     * @throws IllegalArgumentException if a cell is not in the grid (the message names the
+     *                                  parameter), {@code costs} is null, or the search meets
+     *                                  a cell whose terrain has no cost (the message names
+     *                                  the cell)
+     */
+    public int[] path(int fromCol, int fromRow, int toCol, int toRow, PathCosts costs) {
+        return GridPaths.path(this, fromCol, fromRow, toCol, toRow, costs);
+    }
+
+    /**
+     * Moves a box in pixels through the grid's solid cells this frame: the tutorial's hybrid
+     * approach, obstacles in a grid and the player in pixels, as in the original Super Mario
+     * Brothers. The box goes until it hits a solid cell, stops touching it and slides along it,
+     * so it never tunnels through a wall and never ends inside one.
+     *
+     * <p>The result is exactly {@link Sweep#move Sweep.move(mover, vx, vy, cells)} with
+     * {@code cells} the rectangles of every solid cell, row by row, the cells beyond the
+     * grid's edges included (they are solid, as {@link #isSolid} says); but only the cells
+     * under the box swept this frame are looked at ({@link #moveObstacles}). As with
+     * {@code Sweep.move}, a cell the box already overlaps at the start is ignored for this
+     * move, so a box stuck in a wall can walk out of it.
+     *
+     * @param mover the box, where it starts
+     * @param vx    its motion this frame, x part
+     * @param vy    its motion this frame, y part
+     * @return where the box ends, the velocity to keep, and the sides of the cells it hit
+     * @throws IllegalArgumentException if {@code mover} is null, the velocity is NaN or
+     *                                  infinite, or the box and its move span more than about
+     *                                  four million cells
+     */
+    public Sweep.Move move(Rect mover, float vx, float vy) {
+        return GridMove.move(this, mover, vx, vy);
+    }
+
+    /**
+     * The solid cells {@link #move} looks at for this move, as rectangles, row by row: the
+     * solid cells (in the grid or beyond its edges) under the box spanned by where the mover
+     * starts and where the whole motion would take it. For drawing what the move checked.
+     *
+     * @param mover the box, where it starts
+     * @param vx    its motion this frame, x part
+     * @param vy    its motion this frame, y part
+     * @return the cells' rectangles, a new list
+     * @throws IllegalArgumentException as {@link #move} does
+     */
+    public java.util.List<Rect> moveObstacles(Rect mover, float vx, float vy) {
+        return GridMove.obstacles(this, mover, vx, vy);
+    }
+
+    /**
+     * Reads a map from a picture, so a map can be drawn in any paint program: every
+     * {@code pixelsPerCell x pixelsPerCell} block of pixels, from the top-left corner, is one
+     * cell, and its colour says the cell's terrain through the key. With a PImage, use
+     * {@code hitbox.processing.Maps.fromImage}.
+     *
+     * @param pixels        the picture's colours, ARGB, row by row from the top-left (a
+     *                      {@code PImage}'s {@code pixels} after {@code loadPixels()})
+     * @param width         the picture's width in pixels
+     * @param height        the picture's height in pixels
+     * @param pixelsPerCell how many pixels across (and down) one cell is drawn, 1 or more
+     * @param colors        which colour is which terrain
+     * @param cellSize      a cell's width and height in the grid, in pixels, more than 0
+     * @return a new grid of {@code width / pixelsPerCell} by {@code height / pixelsPerCell}
+     *         cells
+     * @throws IllegalArgumentException if an argument is null, the sizes do not fit together
+     *                                  (the picture is not a whole number of cells, or
+     *                                  {@code pixels} is not {@code width * height} long), or
+     *                                  the picture is inconsistent: a pixel that is not opaque
+     *                                  or not one of the key's colours (the message names its
+     *                                  x and y), or a block of two terrains (the message names
+     *                                  the cell and both pixels)
+     */
+    public static Grid fromPixels(int[] pixels, int width, int height, int pixelsPerCell, TerrainColors colors,
+                                  float cellSize) {
+        return GridImages.read(pixels, width, height, pixelsPerCell, colors, checkedCellSize(cellSize), cellSize);
+    }
 }

@@ -69,7 +69,7 @@ class BadInputCatalogTest {
             "Rect.centered", "Rect.at", "Rect.translated", "Circle.translated", "Segment.translated",
             "Polygon.translated", "Shape.translated", "Polygon.triangle", "Polygon.rotatedRect", "Polygon.regular", "Polygon.of",
             "Ray.between", "Sweep.timeOfImpact", "Sweep.move", "Response.pushOutA", "Response.pushOutB",
-            "Grid.parse", "Grid.fillRandom");
+            "Grid.parse", "Grid.fillRandom", "Grid.move", "Grid.moveObstacles", "Grid.fromPixels");
 
     /** Plain carriers of raw-float answers, documented to take any float. */
     private static final Set<Class<?>> CARRIERS = Set.of(Vec.class, Motion.Step.class, Snap.Push.class);
@@ -394,6 +394,12 @@ class BadInputCatalogTest {
         if (c == Contact.class) {
             return new Contact(0, 1, 1);
         }
+        if (c == PathCosts.class) {
+            return PathCosts.steps();
+        }
+        if (c == TerrainColors.class) {
+            return new TerrainColors().put(0x000000, Grid.EMPTY).put(0xFFFFFF, Grid.SOLID);
+        }
         throw new IllegalStateException("no receiver for " + c);
     }
 
@@ -453,8 +459,18 @@ class BadInputCatalogTest {
             return new float[] {0, 0, 10, 0, 0, 10};
         }
         if (type == int[].class) {
-            // PixelMask.fromPixels(pixels, width, height, t): width and height are the next ints.
-            return new int[] {0xff000000, 0, 0, 0xff000000, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+            // A route of one cell (PathCosts.costOf), or one opaque black pixel for the
+            // fromPixels methods, whose sizes are all 1 on the odd attempts.
+            return attempt % 2 == 0 ? new int[] {0} : new int[] {0xff000000};
+        }
+        if (type == TerrainColors.class) {
+            return new TerrainColors().put(0x000000, Grid.EMPTY).put(0xFFFFFF, Grid.SOLID);
+        }
+        if (type == PathCosts.class) {
+            return PathCosts.steps();
+        }
+        if (type == Grid.class) {
+            return new Grid(4, 3, 10);
         }
         if (type == boolean[][].class) {
             return new boolean[][] {{true, false}, {false, true}};

@@ -52,30 +52,57 @@ class H02_BouncersTest {
 
     @Test
     void colour_changesExactlyOnHits() {
-        int[][] before = new int[1][];
+        // A hit is what Motion says about the bouncer's next move from where it was: asked
+        // here afresh, from the previous frame's positions and speeds.
+        float[][] before = new float[100][];
+        int[] colours = new int[100];
         int[] changes = new int[1];
-        int[] hits = new int[1];
         SketchRun.of(new H02_Bouncers()).frames(1000).everyFrame(s -> {
             int counted = 0;
             for (int i = 0; i < s.bouncers.size(); i++) {
                 H02_Bouncers.Bouncer b = s.bouncers.get(i);
-                boolean hit = b.blocked != Motion.NONE;
-                counted += hit ? 1 : 0;
-                if (before[0] != null) {
-                    boolean changed = b.colour != before[0][i];
-                    assertEquals(hit, changed, "bouncer " + i + ": a new colour if and only if it hit an obstacle");
+                if (before[i] != null) {
+                    float[] p = before[i];
+                    boolean hit = Motion.rectBlocked(p[0], p[1], s.size, s.size, p[2], p[3], s.obstacles) != Motion.NONE;
+                    boolean changed = b.colour != colours[i];
+                    assertEquals(hit, changed, "frame " + s.frameCount + ", bouncer " + i
+                            + ": a new colour if and only if it hit an obstacle");
                     changes[0] += changed ? 1 : 0;
+                    counted += hit ? 1 : 0;
                 }
+                before[i] = new float[] {b.x, b.y, b.vx, b.vy};
+                colours[i] = b.colour;
             }
-            assertEquals(counted, s.hitsThisFrame, "hits this frame");
-            hits[0] += counted;
-            int[] colours = new int[s.bouncers.size()];
-            for (int i = 0; i < colours.length; i++) {
-                colours[i] = s.bouncers.get(i).colour;
+            if (s.frameCount > 1) {
+                assertEquals(counted, s.hitsThisFrame, "hits this frame");
             }
-            before[0] = colours;
         }).run();
         assertTrue(changes[0] > 1000, "colours changed on many hits: " + changes[0]);
+    }
+
+    @Test
+    void theSketchesLoop_movesEachBouncerAsMotionBounceDoes() {
+        // The loop in the first tab (ask every obstacle, combine, reverse once, window edges,
+        // move where free) is Motion.bounce's frame, written out: check it bouncer by bouncer.
+        float[][] before = new float[100][];
+        int[] compared = new int[1];
+        SketchRun.of(new H02_Bouncers()).frames(600).everyFrame(s -> {
+            for (int i = 0; i < s.bouncers.size(); i++) {
+                H02_Bouncers.Bouncer b = s.bouncers.get(i);
+                if (before[i] != null) {
+                    float[] p = before[i];
+                    Motion.Step step = Motion.bounce(p[0], p[1], s.size, s.size, p[2], p[3], s.obstacles, s.width, s.height);
+                    String what = "frame " + s.frameCount + ", bouncer " + i;
+                    assertEquals(step.x(), b.x, what + " x");
+                    assertEquals(step.y(), b.y, what + " y");
+                    assertEquals(step.vx(), b.vx, what + " vx");
+                    assertEquals(step.vy(), b.vy, what + " vy");
+                    compared[0]++;
+                }
+                before[i] = new float[] {b.x, b.y, b.vx, b.vy};
+            }
+        }).run();
+        assertEquals(599 * 100, compared[0]);
     }
 
     @Test
@@ -105,6 +132,11 @@ class H02_BouncersTest {
         int cy = (int) (zero.y + on.sketch().size / 2);
         assertTrue(SketchPixels.differing(a, b, cx - 20, cy - 20, cx + 20, cy + 20) > 50, "bouncer 0 is ringed");
         assertFalse(on.sketch().bouncers.get(0).x != off.sketch().bouncers.get(0).x, "the overlay does not change the run");
+        SketchRun.Result<H02_Bouncers> onOff = SketchRun.of(new H02_Bouncers())
+                .script(new Script().frames(158).key(2, 'd').key(100, 'd')).run();
+        // Above the key hint, whose text Processing may draw a little differently once labels
+        // have used another text size.
+        assertEquals(0, SketchPixels.differing(a, onOff.lastFrame(), 0, 0, 599, 380), "d again hides it");
     }
 
 

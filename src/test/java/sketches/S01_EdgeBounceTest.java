@@ -1,6 +1,7 @@
 package sketches;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -8,9 +9,16 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
 import hitbox.Edges;
+import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
+import processing.core.PImage;
 
+/**
+ * S01_EdgeBounce: Hitbox's way (the ball's edge tested, the speed's sign set) and the
+ * tutorial's (the centre tested, the speed flipped), against the window's edges or a box's
+ * (150..450 across, 100..300 down, after e). The ball is red on the frames an edge test fires.
+ */
 class S01_EdgeBounceTest {
 
     @BeforeAll
@@ -18,14 +26,27 @@ class S01_EdgeBounceTest {
         assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
     }
 
+    /** The ball's colour, read a half radius from its centre, away from the labels at the top and the bottom. */
+    private static int ballColour(S01_EdgeBounce s) {
+        int py = Math.round(s.y + (s.y < s.height / 2 ? s.r / 2 : -s.r / 2));
+        return s.get(Math.round(s.x), py) | 0xFF000000;
+    }
+
     @Test
-    void bounce_ballStaysInsideTheWindow_overThousandsOfFrames() {
-        int[] edgesCrossed = new int[1];
+    void hitboxWay_bouncesOffAllFourEdges_neverPastOneForTwoFramesRunning() {
+        int[] edgesCrossed = {0};
+        int[] previous = {Edges.NONE};
         SketchRun.of(new S01_EdgeBounce()).frames(5000)
                 .everyFrame(s -> {
-                    assertEquals(Edges.NONE, Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height),
-                            "ball at (" + s.x + ", " + s.y + ") is past an edge");
-                    edgesCrossed[0] |= s.crossedThisFrame;
+                    int crossed = Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height);
+                    assertEquals(Edges.NONE, crossed & previous[0],
+                            "ball at (" + s.x + ", " + s.y + ") is past the same edge two frames running");
+                    assertTrue(s.x - s.r > -4.5f - 1e-3f && s.x + s.r < s.width + 4.5f + 1e-3f, "at most one step past, x = " + s.x);
+                    assertTrue(s.y - s.r > -3.2f - 1e-3f && s.y + s.r < s.height + 3.2f + 1e-3f, "at most one step past, y = " + s.y);
+                    assertEquals(Integer.toHexString(crossed != Edges.NONE ? Palette.HIT : Palette.PLAYER),
+                            Integer.toHexString(ballColour(s)), "red exactly on the frames it crossed an edge");
+                    edgesCrossed[0] |= crossed;
+                    previous[0] = crossed;
                 })
                 .run();
         assertEquals(Edges.LEFT | Edges.RIGHT | Edges.TOP | Edges.BOTTOM, edgesCrossed[0],
@@ -33,46 +54,77 @@ class S01_EdgeBounceTest {
     }
 
     @Test
-    void wrap_ballLeavesOneSideAndComesBackOnTheOther() {
-        boolean[] wrapped = new boolean[1];
-        float[] previousX = {Float.NaN};
-        SketchRun.of(new S01_EdgeBounce()).script(new Script().frames(400).key(1, 'w'))
-                .everyFrame(s -> {
-                    // Moving right at 4.5 a frame, x only ever falls when it wraps to the left.
-                    if (s.x < previousX[0]) {
-                        wrapped[0] = true;
-                        assertTrue(s.x <= 0, "reappears at the left edge, was x = " + s.x);
-                    }
-                    previousX[0] = s.x;
-                    assertTrue(s.x >= -s.r && s.x <= s.width + s.r, "stays within one radius of the window");
-                })
+    void tutorialsCode_testsTheCentre_soTheBallGoesHalfOutBeforeItTurns() {
+        float[] furthest = {0};
+        SketchRun.of(new S01_EdgeBounce()).script(new Script().frames(400).key(1, 't'))
+                .everyFrame(s -> furthest[0] = Math.max(furthest[0], s.x + s.r - s.width))
                 .run();
-        assertTrue(wrapped[0], "the ball wrapped around");
+        // Hitbox's way turns it within a step (4.5) of the edge; the tutorial's when the centre is past it.
+        assertTrue(furthest[0] > 24, "the ball reached " + furthest[0] + " past the right edge");
     }
 
     @Test
-    void stop_ballStopsAtTheEdgesItReaches_andBounceStartsItAgain() {
-        SketchRun.Result<S01_EdgeBounce> stopped = SketchRun.of(new S01_EdgeBounce())
-                .script(new Script().frames(300).key(1, 's')).run();
-        S01_EdgeBounce s = stopped.sketch();
-        assertEquals(0f, s.vx, "stopped across");
-        assertEquals(0f, s.vy, "stopped down");
-        assertEquals(Edges.NONE, Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height));
-
-        S01_EdgeBounce again = SketchRun.of(new S01_EdgeBounce())
-                .script(new Script().frames(320).key(1, 's').key(300, 'b')).run().sketch();
-        assertTrue(again.vx != 0 && again.vy != 0, "b sets it moving again");
+    void tutorialsCode_aBallDroppedInTheWall_staysStuckThere_flippingEveryFrame() {
+        // Dropped left of the box (its left edge is at 150), then the box's edges swapped in.
+        Script script = new Script().frames(200).key(1, 't').click(4, 90, 190).key(6, 'e');
+        float[] lastSpeed = {Float.NaN};
+        float[] stuckAt = {Float.NaN};
+        SketchRun.Result<S01_EdgeBounce> r = SketchRun.of(new S01_EdgeBounce()).script(script).everyFrame(s -> {
+            if (s.frameCount == 9) {
+                stuckAt[0] = s.x;
+                assertTrue(s.x + s.r < s.left, "in the wall, x = " + s.x);
+            }
+            if (s.frameCount >= 10) {
+                assertTrue(Math.abs(s.x - stuckAt[0]) <= 4.5f, "stuck where it was, x = " + s.x + ", was " + stuckAt[0]);
+                assertEquals(-lastSpeed[0], s.xSpeed, "xSpeed flips every frame");
+                assertEquals(Integer.toHexString(Palette.HIT), Integer.toHexString(ballColour(s)), "the test fires every frame: red");
+            }
+            lastSpeed[0] = s.xSpeed;
+        }).run();
+        assertEquals(150f, r.sketch().left, "e moved the left edge in");
     }
 
     @Test
-    void overlayKey_drawsTheEdgeComparisons_andHidesThemAgain() {
+    void hitboxWay_theSameDrop_comesBackInsideTheBox_andBouncesThere() {
+        Script script = new Script().frames(400).click(4, 90, 190).key(6, 'e');
+        boolean[] inside = {false};
+        SketchRun.Result<S01_EdgeBounce> r = SketchRun.of(new S01_EdgeBounce()).script(script).everyFrame(s -> {
+            if (s.frameCount == 40) {
+                assertTrue(s.x - s.r >= s.left, "back inside the box by frame 40, x = " + s.x);
+            }
+            if (s.frameCount >= 40) {
+                int crossed = Edges.circleCrossed(s.x - s.left, s.y - s.top, s.r, s.right - s.left, s.bottom - s.top);
+                inside[0] |= crossed == Edges.NONE;
+                assertTrue(s.x - s.r > s.left - 4.5f - 1e-3f && s.x + s.r < s.right + 4.5f + 1e-3f, "stays in the box, x = " + s.x);
+                assertTrue(s.y - s.r > s.top - 3.2f - 1e-3f && s.y + s.r < s.bottom + 3.2f + 1e-3f, "stays in the box, y = " + s.y);
+            }
+        }).capture(300).run();
+        assertTrue(inside[0]);
+        PImage frame = r.frame(300);
+        assertNotEquals(Integer.toHexString(Palette.BACKGROUND), Integer.toHexString(frame.get(580, 60) | 0xFF000000),
+                "outside the box is drawn as wall");
+        SketchPixels.assertColour(frame, 150, 200, Palette.OBSTACLE, "the box's left edge");
+    }
+
+    @Test
+    void eKeyAgain_givesTheWindowsEdgesBack() {
+        S01_EdgeBounce s = SketchRun.of(new S01_EdgeBounce()).script(new Script().frames(10).key(2, 'e').key(5, 'e'))
+                .run().sketch();
+        assertEquals(0f, s.left);
+        assertEquals(600f, s.right);
+        assertEquals(0f, s.top);
+        assertEquals(400f, s.bottom);
+    }
+
+    @Test
+    void overlayKey_writesOutTheEdgeTests_andPressingAgainHidesThem() {
+        // The ball starts right of the middle and high up: the tests' panel goes at the bottom left.
         SketchRun.Result<S01_EdgeBounce> r = SketchRun.of(new S01_EdgeBounce())
-                .script(new Script().frames(3).key(1, 'd'))
-                .capture(1).capture(2).run();
-        assertTrue(r.sketch().showMaths);
-        // The ball moves between frames; the overlay's guides and labels add far more.
-        assertTrue(SketchPixels.differing(r.frame(1), r.frame(2)) > 2000, "the overlay appears");
-        assertTrue(!SketchRun.of(new S01_EdgeBounce()).script(new Script().frames(4).key(1, 'd').key(2, 'd'))
-                .run().sketch().showMaths, "a second d hides it");
+                .script(new Script().frames(8).key(1, 'd').key(4, 'd'))
+                .capture(1).capture(3).run();
+        int before = SketchPixels.count(r.frame(1), 10, 270, 250, 350, Palette.BACKGROUND);
+        assertTrue(before > 15000, "nothing there before d, background pixels: " + before);
+        assertTrue(SketchPixels.count(r.frame(3), 10, 270, 250, 350, Palette.BACKGROUND) < before / 2, "d writes the maths");
+        assertEquals(before, SketchPixels.count(r.lastFrame(), 10, 270, 250, 350, Palette.BACKGROUND), "a second d hides it");
     }
 }

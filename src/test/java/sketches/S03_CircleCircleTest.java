@@ -43,7 +43,8 @@ class S03_CircleCircleTest {
         SketchRun.Result<S03_CircleCircle> r = SketchRun.of(new S03_CircleCircle())
                 .script(new Script().frames(5).mouse(1, mx, my)).run();
         S03_CircleCircle s = r.sketch();
-        assertEquals(Collide.circleCircle(mx, my, s.r1, s.x2, s.y2, s.r2), s.colliding, "the sketch's answer is the library's");
+        assertEquals(Collide.circleCircle(mx, my, s.smallCircleRadius, 300, 200, s.bigCircleRadius), s.colliding,
+                "the sketch's answer is the library's");
         assertEquals(colliding, s.colliding, "colliding");
         SketchPixels.assertColour(r.lastFrame(), px, py, colliding ? Palette.HIT : Palette.MISS, "centre circle");
     }

@@ -40,20 +40,25 @@ class S03b_BallInCircleTest {
             assertTrue(s.y - s.r >= 0 && s.y + s.r <= s.height, "ball inside the window down, y = " + s.y);
             boolean overlaps = Collide.circleCircle(s.x, s.y, s.r, s.cx, s.cy, s.R);
             assertEquals(overlaps, s.inside, "the sketch's answer is the library's");
-            assertEquals(Integer.toHexString(overlaps ? Palette.HIT : Palette.MISS), Integer.toHexString(s.ballColour), "ball colour");
+            // What the ball is drawn in, read at its centre; not on the click frames, whose
+            // click moves the ball just after the frame is drawn.
+            if (s.frameCount != 1000 && s.frameCount != 2000) {
+                assertEquals(Integer.toHexString(overlaps ? Palette.HIT : Palette.MISS),
+                        Integer.toHexString(s.get(Math.round(s.x), Math.round(s.y)) | 0xFF000000), "ball colour");
+            }
             if (overlaps) {
                 insideFrames[0]++;
             } else {
                 outsideFrames[0]++;
             }
             if (!Float.isNaN(lastSpeed[0])) {
-                if (lastSpeed[0] < 0 && s.vx > 0) bounces[0]++;
-                if (lastSpeed[0] > 0 && s.vx < 0) bounces[1]++;
-                if (lastSpeed[1] < 0 && s.vy > 0) bounces[2]++;
-                if (lastSpeed[1] > 0 && s.vy < 0) bounces[3]++;
+                if (lastSpeed[0] < 0 && s.xSpeed > 0) bounces[0]++;
+                if (lastSpeed[0] > 0 && s.xSpeed < 0) bounces[1]++;
+                if (lastSpeed[1] < 0 && s.ySpeed > 0) bounces[2]++;
+                if (lastSpeed[1] > 0 && s.ySpeed < 0) bounces[3]++;
             }
-            lastSpeed[0] = s.vx;
-            lastSpeed[1] = s.vy;
+            lastSpeed[0] = s.xSpeed;
+            lastSpeed[1] = s.ySpeed;
         }).run();
         assertTrue(insideFrames[0] > 50, "the ball passes through the circle, frames: " + insideFrames[0]);
         assertTrue(outsideFrames[0] > 50, "the ball leaves the circle, frames: " + outsideFrames[0]);

@@ -9,6 +9,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
+import hitbox.processing.Overlay;
 import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
@@ -25,7 +26,7 @@ class S04_RectPointTest {
         assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
     }
 
-    @ParameterizedTest(name = "mouse ({0}, {1}): hovered {2}")
+    @ParameterizedTest(name = "mouse ({0}, {1}): hovered {2}, both forms")
     @CsvSource({
             "300, 200, true",
             "201, 151, true",    // just inside the top-left corner
@@ -38,12 +39,47 @@ class S04_RectPointTest {
             "300, 260, false",   // below
     })
     void button_isRedOnlyWhileHovered(int mx, int my, boolean hovered) {
-        SketchRun.Result<S04_RectPoint> r = SketchRun.of(new S04_RectPoint())
-                .script(new Script().frames(5).mouse(1, mx, my)).run();
-        assertEquals(hovered, r.sketch().hovered, "hovered");
-        // A pixel of the button away from the mouse dot, the edges and the counter's text.
-        int px = mx < 300 ? 380 : 220;
-        SketchPixels.assertColour(r.lastFrame(), px, 235, hovered ? Palette.HIT : Palette.MISS, "button");
+        // The combined if (Collide.rectPoint), then the nested ifs (n): the same answers.
+        for (boolean nested : new boolean[] {false, true}) {
+            Script script = new Script().frames(5).mouse(1, mx, my);
+            if (nested) {
+                script.key(1, 'n');
+            }
+            SketchRun.Result<S04_RectPoint> r = SketchRun.of(new S04_RectPoint()).script(script).run();
+            assertEquals(nested, r.sketch().nestedIf);
+            String form = nested ? "nested ifs" : "combined if";
+            // A pixel of the button away from the mouse dot, the edges and the counter's text.
+            int px = mx < 300 ? 380 : 220;
+            SketchPixels.assertColour(r.lastFrame(), px, 235, hovered ? Palette.HIT : Palette.MISS, "button, " + form);
+        }
+    }
+
+    @ParameterizedTest(name = "mouse ({0}, {1}), nested {2}: {3} comparisons reached")
+    @CsvSource({
+            "100, 200, true,  1",   // left of the button: mouseX > rectX is false, nothing after it is reached
+            "100, 200, false, 1",   // the combined if stops there too
+            "500, 200, true,  2",   // right of it: the second comparison is false
+            "300, 100, true,  3",   // above it: across holds, mouseY > rectY is false
+            "300, 100, false, 3",
+            "300, 300, true,  4",   // below it: all four reached, the last is false
+            "300, 200, true,  4",   // inside: all four reached and hold
+    })
+    void overlay_greysTheComparisonsNeverReached(int mx, int my, boolean nested, int reached) {
+        Script script = new Script().frames(5).mouse(1, mx, my).key(1, 'd');
+        if (nested) {
+            script.key(1, 'n');
+        }
+        PImage frame = SketchRun.of(new S04_RectPoint()).script(script).run().lastFrame();
+        // Each comparison's edge, drawn thick in its colour, in the order Java reaches them:
+        // left, right, top, bottom; sampled away from the guides through the mouse.
+        boolean[] holds = {mx > 200, mx < 400, my > 150, my < 250};
+        int[][] at = {{200, 170}, {400, 170}, {220, 150}, {220, 250}};
+        String[] names = {"mouseX > rectX", "mouseX < rectX + rectWidth", "mouseY > rectY", "mouseY < rectY + rectHeight"};
+        for (int i = 0; i < 4; i++) {
+            int expected = i >= reached ? Palette.OBSTACLE : holds[i] ? Overlay.HIT : Overlay.MISS;
+            SketchPixels.assertColour(frame, at[i][0], at[i][1], expected,
+                    names[i] + (i >= reached ? ", never reached: grey" : ", reached"));
+        }
     }
 
     @Test

@@ -13,11 +13,14 @@ import java.util.Set;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import hitbox.Collide;
 import hitbox.Rect;
 import hitbox.Side;
 import hitbox.processing.Overlay;
+import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
@@ -49,11 +52,12 @@ class S07_SnapToEdgeTest {
         return states;
     }
 
-    @Test
-    void longWalkWithJumps_neverEndsAFrameInsideAnything() {
+    @ParameterizedTest(name = "way {0}")
+    @ValueSource(chars = {'3', '4'})
+    void longWalkWithJumps_neverEndsAFrameInsideAnything(char way) {
         Random random = new Random(7);
-        Script script = new Script().frames(8000);
-        for (int f = 1; f < 7900; ) {
+        Script script = new Script().frames(8000).key(1, way);
+        for (int f = 3; f < 7900; ) {
             int length = 5 + random.nextInt(60);
             script.hold(f, random.nextBoolean() ? "LEFT" : "RIGHT", length);
             if (random.nextInt(3) > 0) {
@@ -172,4 +176,96 @@ class S07_SnapToEdgeTest {
         assertTrue(off.lastFrame().get(midX, sideY) != Overlay.GUIDE, "no mark without the overlay");
     }
 
+    private static List<State> record(Script script, char way) {
+        return record(script.key(1, way));
+    }
+
+    @Test
+    void theTutorialsSnap_andSnapPushBack_moveThePlayerExactlyAlike() {
+        // The tour walks, jumps into the shelf's underside and pushes against the crate.
+        List<State> tutorial = record(tour(), '3');
+        List<State> library = record(tour(), '4');
+        for (int f = 2; f < tutorial.size(); f++) {
+            assertEquals(library.get(f), tutorial.get(f), "frame " + f);
+        }
+    }
+
+    @Test
+    void sink_stopsFalling_butStaysInside_andSinksOnThrough() {
+        S07_SnapToEdge level = new S07_SnapToEdge();
+        List<State> states = record(new Script().frames(90), '1');
+        float groundTop = level.ground.y();
+        int landed = -1;
+        for (int f = 2; f < states.size() && landed < 0; f++) {
+            if (states.get(f).y() + level.h > groundTop) {
+                landed = f;
+            }
+        }
+        assertTrue(landed > 0, "it reached the ground");
+        assertTrue(states.get(landed).onGround() && states.get(landed).vy() == 0, "stopped, where it is: inside");
+        for (int f = landed + 1; f < states.size(); f++) {
+            assertTrue(states.get(f).y() > states.get(f - 1).y(), "it sinks further every frame: frame " + f);
+        }
+        assertTrue(states.get(90).y() + level.h - groundTop > 20, "deep in the ground by frame 90");
+    }
+
+    @Test
+    void stopShort_hangsAboveTheGround_thenCreepsDown_neverInside() {
+        S07_SnapToEdge level = new S07_SnapToEdge();
+        float groundTop = level.ground.y();
+        float[] highest = {0};
+        List<State> states = new ArrayList<>();
+        SketchRun.of(new S07_SnapToEdge()).script(new Script().frames(90).key(1, '2')).everyFrame(s -> {
+            for (Rect o : s.solids) {
+                assertFalse(Collide.rectRect(s.x, s.y, s.w, s.h, o.x(), o.y(), o.w(), o.h()), "never inside, frame " + s.frameCount);
+            }
+            if (s.onGround) {
+                highest[0] = Math.max(highest[0], groundTop - (s.y + s.h));
+            }
+            states.add(State.of(s));
+        }).run();
+        assertTrue(highest[0] > 5, "it stopped more than 5 px above the ground: " + highest[0]);
+        State last = states.get(states.size() - 1);
+        float gap = groundTop - (last.y() + level.h);
+        assertTrue(gap >= 0 && gap < level.gravity, "and crept down to within one gravity step: " + gap);
+    }
+
+    @Test
+    void theScreen_saysHowTheWaysStand() {
+        // 1: sunk into the ground; 4: standing exactly on it. Red and green labels beside the player.
+        SketchRun.Result<S07_SnapToEdge> sunk = SketchRun.of(new S07_SnapToEdge()).script(new Script().frames(60).key(1, '1')).run();
+        SketchRun.Result<S07_SnapToEdge> snapped = SketchRun.of(new S07_SnapToEdge()).script(new Script().frames(60)).run();
+        int x0 = (int) (sunk.sketch().x + sunk.sketch().w), y0 = (int) sunk.sketch().y;
+        assertTrue(reddish(sunk.lastFrame(), x0, y0 - 10, x0 + 200, y0 + 40) > 30, "'sunk ... px into it' in red");
+        x0 = (int) (snapped.sketch().x + snapped.sketch().w);
+        y0 = (int) snapped.sketch().y;
+        assertTrue(greenish(snapped.lastFrame(), x0, y0 - 10, x0 + 200, y0 + 40) > 30, "'standing exactly on it' in green");
+        assertEquals(0, reddish(snapped.lastFrame(), x0, y0 - 10, x0 + 200, y0 + 40), "and nothing red");
+        // And the sunk part of the player is hidden by the ground it is in.
+        SketchPixels.assertColour(sunk.lastFrame(), (int) sunk.sketch().x + 5, (int) sunk.sketch().ground.y() + 2, Palette.OBSTACLE, "the ground in front");
+    }
+
+    /** Pixels of a red label's text (Overlay.HIT, anti-aliased over its dark box). */
+    private static int reddish(PImage image, int x0, int y0, int x1, int y1) {
+        int n = 0;
+        for (int y = y0; y <= y1; y++) {
+            for (int x = x0; x <= x1; x++) {
+                int c = image.get(x, y);
+                n += ((c >> 16) & 0xFF) > 180 && ((c >> 8) & 0xFF) < 140 ? 1 : 0;
+            }
+        }
+        return n;
+    }
+
+    /** Pixels of a green label's text (Overlay.MISS). */
+    private static int greenish(PImage image, int x0, int y0, int x1, int y1) {
+        int n = 0;
+        for (int y = y0; y <= y1; y++) {
+            for (int x = x0; x <= x1; x++) {
+                int c = image.get(x, y);
+                n += ((c >> 8) & 0xFF) > 180 && ((c >> 16) & 0xFF) < 160 ? 1 : 0;
+            }
+        }
+        return n;
+    }
 }

@@ -1,12 +1,13 @@
 package sketches;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
 
 import org.junit.jupiter.api.BeforeAll;
@@ -14,15 +15,18 @@ import org.junit.jupiter.api.Test;
 
 import hitbox.Collide;
 import hitbox.Edges;
-import hitbox.Motion;
-import hitbox.Rect;
 import hitbox.processing.Overlay;
 import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
-/** One box among a list of obstacles: clicks add obstacles, the box never goes into any, the hit ones light up. */
+/**
+ * One box among a list of Obstacle objects (four walls, eight blocks; 5 and 6 are pillars
+ * with a 32 px slot, where the box starts). Hitbox's loop (combine, reverse once, ask again)
+ * never lets the box into an obstacle; the tutorial's loop (t) flips inside the loop and
+ * moves the box into a pillar.
+ */
 class S08_ManyObjectsTest {
 
     @BeforeAll
@@ -30,29 +34,52 @@ class S08_ManyObjectsTest {
         assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
     }
 
+    /** The obstacle the box overlaps, or -1. */
+    private static int inside(S08_ManyObjects s) {
+        for (int i = 0; i < s.obstacles.size(); i++) {
+            S08_ManyObjects.Obstacle o = s.obstacles.get(i);
+            if (Collide.rectRect(s.x, s.y, s.w, s.h, o.x, o.y, o.w, o.h)) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    @Test
+    void setup_isTheTutorialsFourWallsAndBlocks_withTheBoxInTheSlot() {
+        S08_ManyObjects s = SketchRun.of(new S08_ManyObjects()).frames(1).run().sketch();
+        assertEquals(12, s.obstacles.size(), "4 walls and 8 blocks");
+        S08_ManyObjects.Obstacle left = s.obstacles.get(5);
+        S08_ManyObjects.Obstacle right = s.obstacles.get(6);
+        float slot = right.x - (left.x + left.w);
+        assertTrue(slot > s.w && slot - s.w < Math.abs(s.vx), "the slot is wider than the box by less than one move: " + slot);
+        assertTrue(s.x >= left.x + left.w && s.x + s.w <= right.x, "the box is in the slot");
+    }
+
     @Test
     void click_addsAnObstacleWhereTheMouseIs() {
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
                 .script(new Script().frames(5).click(2, 520, 40)).run();
         S08_ManyObjects s = r.sketch();
-        assertEquals(9, s.obstacles.size(), "8 obstacles, then 9");
-        Rect added = s.obstacles.get(8);
-        assertEquals(520, added.centerX(), "centred on the mouse across");
-        assertEquals(40, added.centerY(), "and down");
+        assertEquals(13, s.obstacles.size(), "12 obstacles, then 13");
+        S08_ManyObjects.Obstacle added = s.obstacles.get(12);
+        assertEquals(520, added.x + added.w / 2, "centred on the mouse across");
+        assertEquals(40, added.y + added.h / 2, "and down");
+        SketchPixels.assertColour(r.lastFrame(), 520, 40, Palette.OBSTACLE, "the new obstacle is drawn");
     }
 
     @Test
     void clickOnTheBox_isRefused() {
-        // The box starts at (20, 20), 30 x 30, and moves about 3 px a frame: at frame 2 it covers (35, 35).
+        // The box starts at (271, 70), 30 x 30, and slides down the slot about 3 px a frame.
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
-                .script(new Script().frames(5).click(2, 35, 35)).run();
-        assertEquals(8, r.sketch().obstacles.size(), "no obstacle on top of the box");
+                .script(new Script().frames(5).click(2, 286, 90)).run();
+        assertEquals(12, r.sketch().obstacles.size(), "no obstacle on top of the box");
         assertTrue(r.sketch().message.startsWith("not added"), "and it says so: " + r.sketch().message);
     }
 
     @Test
-    void tenThousandFrames_withAddedObstacles_neverOverlapsAny_andStaysInTheWindow() {
-        // Clicks that squeeze gaps narrower than one move next to the first obstacles.
+    void hitboxLoop_tenThousandFrames_withAddedObstacles_neverOverlapsAny() {
+        // Clicks that squeeze gaps narrower than one move next to the blocks.
         Script script = new Script().frames(10_000)
                 .click(300, 130, 135).click(1300, 330, 95).click(2300, 160, 285).click(3300, 440, 160)
                 .click(4300, 540, 345).click(5300, 215, 180);
@@ -60,17 +87,12 @@ class S08_ManyObjectsTest {
         int[] moves = new int[1];
         float[] last = new float[2];
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects()).script(script).everyFrame(s -> {
-            for (int i = 0; i < s.obstacles.size(); i++) {
-                Rect o = s.obstacles.get(i);
-                assertFalse(Collide.rectRect(s.x, s.y, s.w, s.h, o.x(), o.y(), o.w(), o.h()),
-                        "the box at (" + s.x + ", " + s.y + ") overlaps obstacle " + i);
-            }
+            assertEquals(-1, inside(s), "the box at (" + s.x + ", " + s.y + ") overlaps an obstacle");
             assertEquals(Edges.NONE, Edges.rectCrossed(s.x, s.y, s.w, s.h, s.width, s.height), "inside the window");
-            for (int i : s.hitsX) {
-                lit.add(i);
-            }
-            for (int i : s.hitsY) {
-                lit.add(i);
+            for (int i = 0; i < s.obstacles.size(); i++) {
+                if (s.obstacles.get(i).lit()) {
+                    lit.add(i);
+                }
             }
             if (s.x != last[0] || s.y != last[1]) {
                 moves[0]++;
@@ -78,65 +100,121 @@ class S08_ManyObjectsTest {
             last[0] = s.x;
             last[1] = s.y;
         }).run();
-        assertTrue(r.sketch().obstacles.size() > 8, "the clicks added obstacles");
+        assertTrue(r.sketch().obstacles.size() > 12, "the clicks added obstacles");
         assertTrue(moves[0] > 9000, "it kept moving: " + moves[0] + " frames of 10,000");
-        assertTrue(lit.size() >= 6, "it bounced off many different obstacles: " + lit);
+        assertTrue(lit.size() >= 12, "it bounced off many different obstacles: " + lit);
     }
 
     @Test
-    void squeezedBetweenTwoObstacles_waitsInsteadOfBouncingIntoTheOther() {
-        // Where the box is after frame 40; then the same run with two obstacles clicked in
+    void hitboxLoop_inTheSlot_waitsAcrossAndSlidesOut() {
+        List<float[]> at = new ArrayList<>();
+        SketchRun.of(new S08_ManyObjects()).frames(120).everyFrame(s -> {
+            assertEquals(-1, inside(s), "the box at (" + s.x + ", " + s.y + ") overlaps an obstacle");
+            at.add(new float[] {s.x, s.y});
+        }).run();
+        // While it is between the pillars (y + 30 < 240), it never moves across, only down.
+        int slid = 0;
+        for (int i = 1; i < at.size() && at.get(i)[1] + 30 < 240; i++) {
+            assertEquals(271, at.get(i)[0], "frame " + (i + 1) + ": waits across in the slot");
+            assertTrue(at.get(i)[1] > at.get(i - 1)[1], "frame " + (i + 1) + ": and slides down");
+            slid++;
+        }
+        assertTrue(slid > 40, "it slid down the slot for " + slid + " frames");
+        assertTrue(at.get(at.size() - 1)[0] != 271, "and left it");
+    }
+
+    @Test
+    void squeezedByTwoClickedObstacles_waitsInsteadOfBouncingIntoTheOther() {
+        // Where the box is after frame 300; then the same run with two obstacles clicked in
         // beside it, each 2 to 3 px away: less than one move (3.3 px), so reversing off
         // one points it straight into the other.
-        S08_ManyObjects before = SketchRun.of(new S08_ManyObjects()).frames(40).run().sketch();
+        S08_ManyObjects before = SketchRun.of(new S08_ManyObjects()).frames(300).run().sketch();
         int cy = Math.round(before.y + before.h / 2);
         int left = (int) Math.floor(before.x) - 32;                 // right edge 2 to 3 px left of the box
         int right = (int) Math.ceil(before.x + before.w) + 32;      // left edge 2 to 3 px right of it
         int[] waited = new int[1];
         float[] last = new float[2];
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
-                .script(new Script().frames(200).click(40, left, cy).click(40, right, cy))
+                .script(new Script().frames(500).click(300, left, cy).click(300, right, cy))
                 .everyFrame(s -> {
-                    for (int i = 0; i < s.obstacles.size(); i++) {
-                        Rect o = s.obstacles.get(i);
-                        assertFalse(Collide.rectRect(s.x, s.y, s.w, s.h, o.x(), o.y(), o.w(), o.h()),
-                                "the box at (" + s.x + ", " + s.y + ") overlaps obstacle " + i);
-                    }
-                    if (s.frameCount > 41 && s.x == last[0] && s.y != last[1]) {
+                    assertEquals(-1, inside(s), "the box at (" + s.x + ", " + s.y + ") overlaps an obstacle");
+                    if (s.frameCount > 301 && s.x == last[0] && s.y != last[1]) {
                         waited[0]++;
                     }
                     last[0] = s.x;
                     last[1] = s.y;
                 }).run();
-        assertEquals(10, r.sketch().obstacles.size(), "both clicks added an obstacle");
+        assertEquals(14, r.sketch().obstacles.size(), "both clicks added an obstacle");
         assertTrue(waited[0] > 0, "it waited across (moving only down) while squeezed");
     }
 
     @Test
-    void hitObstacles_areNamedAndLitUp() {
-        // Frame 13: moved across only, the box would hit obstacle 0 (see the screenshot's frame 130 for 5).
-        SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects()).frames(13).run();
+    void tutorialLoop_flipsTwiceInTheSlot_andTheBoxMovesIntoAPillar_andStaysThere() {
+        // t after frame 1: the tutorial's loop, the box back at its start in the slot.
+        float[][] at = new float[62][];
+        SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
+                .script(new Script().frames(61).key(1, 't'))
+                .capture(3)
+                .everyFrame(s -> at[s.frameCount] = new float[] {s.x, s.y, s.vx, inside(s)})
+                .run();
         S08_ManyObjects s = r.sketch();
-        assertEquals(Motion.X, s.blocked, "blocked across");
-        assertArrayEquals(new int[] {0}, s.hitsX, "by obstacle 0");
-        assertArrayEquals(new int[0], s.hitsY, "nothing down");
-        Rect o = s.obstacles.get(0);
-        assertEquals(Palette.HIT, r.lastFrame().get((int) o.centerX(), (int) o.bottom() - 3), "obstacle 0 is red");
-        Rect other = s.obstacles.get(2);
-        assertEquals(Palette.OBSTACLE, r.lastFrame().get((int) other.centerX(), (int) other.centerY()), "obstacle 2 is not");
+        assertTrue(s.tutorialLoop);
+        // Frame 2 starts at (271, 70) going left: pillar 5 flips vx, pillar 6 flips it back.
+        assertEquals(-3.3f, at[2][2], 1e-6, "vx flipped twice: as it was");
+        assertEquals(5, (int) at[2][3], "so the box moved into pillar 5, at x = " + at[2][0]);
+        int insideFrames = 0;
+        for (int f = 2; f <= 61; f++) {
+            insideFrames += at[f][3] >= 0 ? 1 : 0;
+            assertTrue(Math.abs(at[f][0] - 271) < 4 && Math.abs(at[f][1] - 70) < 4,
+                    "frame " + f + ": stuck in the slot, flickering, at (" + at[f][0] + ", " + at[f][1] + ")");
+        }
+        assertEquals(30, insideFrames, "inside pillar 5 every other frame");
+        // Drawn as a learner sees it: frame 3 shows the box inside, ringed red.
+        PImage frame = r.frame(3);
+        SketchPixels.assertColour(frame, Math.round(at[2][0]) + 15, Math.round(at[2][1]), Palette.HIT,
+                "the red ring on the box's top edge");
     }
 
     @Test
-    void overlay_drawsIndicesAndNextPositionBoxes() {
-        SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
-                .script(new Script().frames(24).key(10, 'p').key(20, 'd'))
-                .capture(20).capture(24).run();
-        PImage off = r.frame(20);
-        PImage on = r.frame(24);
-        assertTrue(SketchPixels.differing(off, on) > 1000, "the overlay changes what is drawn");
-        assertEquals(0, SketchPixels.count(off, Overlay.MISS), "no green without the overlay");
-        assertTrue(SketchPixels.count(on, Overlay.MISS) > 100, "the free next-position boxes are green");
+    void tutorialPreview_saysWhereTheBoxWillLand() {
+        // The maths overlay's text is the tutorial's loop run ahead on copies of the speeds:
+        // "it lands inside" exactly when the next frame finds the box inside an obstacle.
+        boolean[] predicted = new boolean[1];
+        int[] checked = new int[2];
+        SketchRun.of(new S08_ManyObjects())
+                .script(new Script().frames(200).key(1, 't'))
+                .everyFrame(s -> {
+                    if (s.frameCount >= 3) {
+                        assertEquals(predicted[0], inside(s) >= 0, "frame " + s.frameCount + ": the preview said "
+                                + (predicted[0] ? "inside" : "not inside"));
+                        checked[predicted[0] ? 1 : 0]++;
+                    }
+                    predicted[0] = s.tutorialPreview().contains("lands inside");
+                }).run();
+        assertTrue(checked[0] > 0 && checked[1] > 0, "both answers were checked: " + checked[0] + " and " + checked[1]);
     }
 
+    @Test
+    void hitboxLoop_theBlockingObstaclesLightUp() {
+        // Frame 1: pillar 5 blocks the move across, and pillar 6 the move back.
+        SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects()).frames(3).run();
+        S08_ManyObjects s = r.sketch();
+        assertTrue(s.obstacles.get(5).lit() && s.obstacles.get(6).lit(), "both pillars lit");
+        SketchPixels.assertColour(r.lastFrame(), 250, 200, Palette.HIT, "pillar 5 is red");
+        SketchPixels.assertColour(r.lastFrame(), 322, 200, Palette.HIT, "pillar 6 is red");
+        SketchPixels.assertColour(r.lastFrame(), 475, 95, Palette.OBSTACLE, "obstacle 7 is not");
+    }
 
+    @Test
+    void overlay_drawsNextPositionBoxes_andPressingAgainHidesIt() {
+        SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
+                .script(new Script().frames(26).key(10, 'p').key(15, 'd').key(20, 'd'))
+                .capture(14).capture(18).run();
+        PImage off = r.frame(14);
+        PImage on = r.frame(18);
+        assertTrue(SketchPixels.differing(off, on) > 1000, "the overlay changes what is drawn");
+        assertEquals(0, SketchPixels.count(off, Overlay.MISS), "no green without the overlay");
+        assertTrue(SketchPixels.count(on, Overlay.MISS) > 40, "the free next-position box is green");
+        assertEquals(0, SketchPixels.differing(off, r.lastFrame()), "d again hides it (paused: nothing else changed)");
+    }
 }

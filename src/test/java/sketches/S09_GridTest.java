@@ -12,6 +12,8 @@ import java.util.Random;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import hitbox.Grid;
 import hitbox.processing.Overlay;
@@ -20,7 +22,11 @@ import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
-/** A seeded 20 x 20 maze with 20% solid cells; the arrows move the player only into free cells. */
+/**
+ * A 20 x 20 maze of 20 px cells, as the tutorial's boolean[][] (t) or Hitbox's Grid (the
+ * default, exactly 20% solid and the player's cell kept free); the arrows move the player only
+ * into free cells.
+ */
 class S09_GridTest {
 
     private static final String[] ARROWS = {"UP", "DOWN", "LEFT", "RIGHT"};
@@ -31,53 +37,88 @@ class S09_GridTest {
         assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
     }
 
-    @Test
-    void grid_hasEightySolidCellsOfFourHundred_andThePlayerStartsOnAFreeOne() {
-        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).frames(3).run();
-        Grid grid = r.sketch().grid;
-        assertEquals(20, grid.cols());
-        assertEquals(20, grid.rows());
-        assertEquals(80, grid.countSolid(), "20% of 400");
-        assertEquals(0, r.sketch().col);
-        assertEquals(0, r.sketch().row);
-        assertFalse(grid.isSolid(0, 0), "the start cell is kept free");
-        // What is drawn is the grid: a solid cell grey, a free one not, the player blue.
-        int solidCol = -1, solidRow = -1, freeCol = -1, freeRow = -1;
-        for (int c = 0; c < 20; c++) {
-            for (int row = 0; row < 20; row++) {
-                if (grid.isSolid(c, row)) {
-                    solidCol = c;
-                    solidRow = row;
-                } else if (c + row > 0) {
-                    freeCol = c;
-                    freeRow = row;
-                }
-            }
-        }
-        PImage frame = r.lastFrame();
-        assertEquals(Palette.OBSTACLE, frame.get((int) grid.cellCenterX(solidCol), (int) grid.cellCenterY(solidRow)));
-        assertEquals(Palette.BACKGROUND, frame.get((int) grid.cellCenterX(freeCol), (int) grid.cellCenterY(freeRow)));
-        assertEquals(Palette.PLAYER, frame.get((int) grid.cellCenterX(0), (int) grid.cellCenterY(0)));
+    /** Is this cell solid in the grid the sketch shows, read from its own data. */
+    private static boolean solid(S09_Grid s, int column, int row) {
+        return s.tutorialGrid ? s.grid[row][column] : s.maze.isSolid(column, row);
     }
 
     @Test
-    void arrows_moveOnlyIntoFreeCells_neverOffTheMap() {
+    void hitboxGrid_hasEightySolidCellsOfFourHundred_andThePlayerStartsOnAFreeOne() {
+        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).frames(3).run();
+        S09_Grid s = r.sketch();
+        Grid maze = s.maze;
+        assertFalse(s.tutorialGrid);
+        assertEquals(20, maze.cols());
+        assertEquals(20, maze.rows());
+        assertEquals(80, maze.countSolid(), "20% of 400");
+        assertEquals(0, s.playerIndexX);
+        assertEquals(0, s.playerIndexY);
+        assertFalse(maze.isSolid(0, 0), "the start cell is kept free");
+        assertDrawnAsTheGrid(r.lastFrame(), s);
+    }
+
+    @Test
+    void tutorialGrid_isTheTutorialsFill_aTwentyPercentChancePerCell_rowByRow() {
+        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).script(new Script().frames(4).key(1, 't')).run();
+        S09_Grid s = r.sketch();
+        assertTrue(s.tutorialGrid);
+        // randomSeed(1), then random(1) < 0.2 for each cell, rows outside, columns inside.
+        Random random = new Random(1);
+        int count = 0;
+        for (int row = 0; row < 20; row++) {
+            for (int column = 0; column < 20; column++) {
+                boolean expected = random.nextFloat() < 0.2f;
+                assertEquals(expected, s.grid[row][column], "grid[" + row + "][" + column + "]");
+                count += expected ? 1 : 0;
+            }
+        }
+        assertNotEquals(80, count, "a coin flip per cell: not exactly 20% (" + count + ")");
+        assertDrawnAsTheGrid(r.lastFrame(), s);
+    }
+
+    /** A solid cell grey, a free one background, the player blue: what is drawn is the grid. */
+    private static void assertDrawnAsTheGrid(PImage frame, S09_Grid s) {
+        int checkedSolid = 0;
+        int checkedFree = 0;
+        for (int column = 0; column < 20; column++) {
+            for (int row = 0; row < 20; row++) {
+                if (column == s.playerIndexX && row == s.playerIndexY) {
+                    continue;
+                }
+                int colour = solid(s, column, row) ? Palette.OBSTACLE : Palette.BACKGROUND;
+                SketchPixels.assertColour(frame, column * 20 + 10, row * 20 + 10, colour, "cell (" + column + ", " + row + ")");
+                checkedSolid += solid(s, column, row) ? 1 : 0;
+                checkedFree += solid(s, column, row) ? 0 : 1;
+            }
+        }
+        assertTrue(checkedSolid > 50 && checkedFree > 250);
+        SketchPixels.assertColour(frame, s.playerIndexX * 20 + 10, s.playerIndexY * 20 + 10, Palette.PLAYER, "the player");
+    }
+
+    @ParameterizedTest(name = "the tutorial''s array: {0}")
+    @ValueSource(booleans = {false, true})
+    void arrows_moveOnlyIntoFreeCells_neverOffTheMap(boolean tutorial) {
         // 600 random arrow presses, three frames apart.
         Random random = new Random(3);
         Script script = new Script().frames(1805);
+        if (tutorial) {
+            script.key(1, 't');
+        }
         int[] pressed = new int[601];
         for (int i = 1; i <= 600; i++) {
             pressed[i] = random.nextInt(4);
             script.hold(3 * i, ARROWS[pressed[i]], 1);
         }
-        List<int[]> at = new ArrayList<>();  // (col, row) after each frame
+        List<int[]> at = new ArrayList<>();  // (column, row) after each frame
         at.add(null);
         SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).script(script).everyFrame(s -> {
-            assertTrue(s.grid.inGrid(s.col, s.row), "on the map: " + s.col + ", " + s.row);
-            assertFalse(s.grid.isSolid(s.col, s.row), "never on a solid cell: " + s.col + ", " + s.row);
-            at.add(new int[] {s.col, s.row});
+            assertTrue(s.playerIndexX >= 0 && s.playerIndexX < 20 && s.playerIndexY >= 0 && s.playerIndexY < 20,
+                    "on the map: " + s.playerIndexX + ", " + s.playerIndexY);
+            assertFalse(solid(s, s.playerIndexX, s.playerIndexY), "never on a solid cell: " + s.playerIndexX + ", " + s.playerIndexY);
+            at.add(new int[] {s.playerIndexX, s.playerIndexY});
         }).run();
-        Grid grid = r.sketch().grid;
+        S09_Grid s = r.sketch();
+        assertEquals(tutorial, s.tutorialGrid);
         int moved = 0;
         int refusedSolid = 0;
         int refusedEdge = 0;
@@ -87,15 +128,17 @@ class S09_GridTest {
             int[] step = STEPS[pressed[i]];
             int c = before[0] + step[0];
             int row = before[1] + step[1];
-            boolean free = grid.inGrid(c, row) && !grid.isSolid(c, row);
+            boolean inGrid = c >= 0 && c < 20 && row >= 0 && row < 20;
+            boolean free = inGrid && !solid(s, c, row);
+            String press = "press " + i + " (" + ARROWS[pressed[i]] + ")";
             if (free) {
-                assertEquals(c, after[0], "press " + i + " (" + ARROWS[pressed[i]] + ") into a free cell moves");
-                assertEquals(row, after[1], "press " + i + " (" + ARROWS[pressed[i]] + ") into a free cell moves");
+                assertEquals(c, after[0], press + " into a free cell moves");
+                assertEquals(row, after[1], press + " into a free cell moves");
                 moved++;
             } else {
-                assertEquals(before[0], after[0], "press " + i + " (" + ARROWS[pressed[i]] + ") into a wall stays");
-                assertEquals(before[1], after[1], "press " + i + " (" + ARROWS[pressed[i]] + ") into a wall stays");
-                if (grid.inGrid(c, row)) {
+                assertEquals(before[0], after[0], press + " into a wall stays");
+                assertEquals(before[1], after[1], press + " into a wall stays");
+                if (inGrid) {
                     refusedSolid++;
                 } else {
                     refusedEdge++;
@@ -107,36 +150,52 @@ class S09_GridTest {
         assertTrue(refusedEdge > 0, "the map's edge stopped it: " + refusedEdge);
     }
 
+    /** Four steps down to (0, 4), then r: seed 2, whose coin flip for cell (0, 4) comes up "obstacle". */
+    private static Script walkDownThenNewMaze(boolean tutorial) {
+        Script script = new Script().frames(20).hold(2, "DOWN", 1).hold(4, "DOWN", 1).hold(6, "DOWN", 1)
+                .hold(8, "DOWN", 1).key(12, 'r');
+        return tutorial ? script.key(1, 't') : script;
+    }
+
     @Test
-    void r_makesANewMaze_keepingThePlayersCellFree() {
-        Script script = new Script().frames(20).hold(2, "RIGHT", 1).hold(4, "RIGHT", 1).key(8, 'r');
-        SketchRun.Result<S09_Grid> before = SketchRun.of(new S09_Grid()).frames(6).script(script).run();
-        SketchRun.Result<S09_Grid> after = SketchRun.of(new S09_Grid()).script(script).run();
+    void r_hitboxGrid_makesANewMaze_keepingThePlayersCellFree() {
+        SketchRun.Result<S09_Grid> before = SketchRun.of(new S09_Grid()).script(walkDownThenNewMaze(false)).frames(10).run();
+        SketchRun.Result<S09_Grid> after = SketchRun.of(new S09_Grid()).script(walkDownThenNewMaze(false)).run();
         S09_Grid s = after.sketch();
-        assertEquals(2, s.col, "the player stays where it was");
-        assertNotEquals(before.sketch().grid.toMap(), s.grid.toMap(), "a different maze");
-        assertEquals(80, s.grid.countSolid(), "still 20%");
-        assertFalse(s.grid.isSolid(s.col, s.row), "with the player's cell free");
+        assertEquals(4, s.playerIndexY, "the player stays where it was");
+        assertNotEquals(before.sketch().maze.toMap(), s.maze.toMap(), "a different maze");
+        assertEquals(80, s.maze.countSolid(), "still 20%");
+        assertFalse(s.maze.isSolid(0, 4), "with the player's cell free");
+        assertEquals(0, SketchPixels.count(after.lastFrame(), 0, 80, 19, 99, Palette.HIT), "no red ring");
     }
 
     @Test
-    void overlay_writesTheMouseCellAndMarksTheNeighbours() {
-        // Player at (0, 0): up and left are the map's edge (solid), right and down free with seed 1.
-        Script plain = new Script().frames(5).mouse(1, 254, 172);
-        Script maths = new Script().frames(5).mouse(1, 254, 172).key(2, 'd');
-        SketchRun.Result<S09_Grid> off = SketchRun.of(new S09_Grid()).script(plain).run();
-        SketchRun.Result<S09_Grid> on = SketchRun.of(new S09_Grid()).script(maths).run();
-        assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame()) > 1000, "the overlay changes what is drawn");
-        Grid grid = on.sketch().grid;
-        // The mouse's cell, (12, 8), is outlined; its left edge is at x 240.
-        assertEquals(12, grid.colAt(254));
-        assertTrue(SketchPixels.count(on.lastFrame(), 238, 165, 243, 175, Overlay.GUIDE) > 0, "the mouse's cell is outlined");
-        assertEquals(0, SketchPixels.count(off.lastFrame(), 238, 165, 243, 175, Overlay.GUIDE), "not without the overlay");
-        // The right neighbour of (0, 0) is free: outlined green.
-        assertTrue(grid.canMove(0, 0, 1, 0));
-        assertTrue(SketchPixels.count(on.lastFrame(), 37, 5, 43, 15, Overlay.MISS) > 0, "the free neighbour (1, 0) is outlined green");
-        assertEquals(0, SketchPixels.count(off.lastFrame(), 37, 5, 43, 15, Overlay.MISS), "not without the overlay");
+    void r_tutorialGrid_canDropAnObstacleOnThePlayer_andSaysSo() {
+        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).script(walkDownThenNewMaze(true)).run();
+        S09_Grid s = r.sketch();
+        assertEquals(2, s.seed);
+        assertEquals(0, s.playerIndexX);
+        assertEquals(4, s.playerIndexY);
+        assertTrue(s.grid[4][0], "the tutorial's fill does not keep the player's cell free");
+        // The player is ringed red on its cell, (0, 80) to (20, 100).
+        assertTrue(SketchPixels.count(r.lastFrame(), 0, 80, 19, 99, Palette.HIT) > 40, "a red ring round the player");
     }
 
-
+    @Test
+    void overlay_writesTheMouseCellAndMarksTheNeighbours_andPressingAgainHidesIt() {
+        // Player at (0, 0): up and left are the map's edge, right and down free with seed 1.
+        Script script = new Script().frames(8).mouse(1, 254, 172).key(2, 'd').key(5, 'd');
+        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).script(script).capture(2).capture(4).run();
+        PImage off = r.frame(2);
+        PImage on = r.frame(4);
+        assertTrue(SketchPixels.differing(off, on) > 1000, "the overlay changes what is drawn");
+        // The mouse's cell, (12, 8), is outlined; its left edge is at x 240.
+        assertTrue(SketchPixels.count(on, 238, 165, 243, 175, Overlay.GUIDE) > 0, "the mouse's cell is outlined");
+        assertEquals(0, SketchPixels.count(off, 238, 165, 243, 175, Overlay.GUIDE), "not without the overlay");
+        // The right neighbour of (0, 0) is free: outlined green.
+        assertTrue(r.sketch().maze.canMove(0, 0, 1, 0));
+        assertTrue(SketchPixels.count(on, 37, 5, 43, 15, Overlay.MISS) > 0, "the free neighbour (1, 0) is outlined green");
+        assertEquals(0, SketchPixels.count(off, 37, 5, 43, 15, Overlay.MISS), "not without the overlay");
+        assertEquals(0, SketchPixels.differing(off, r.lastFrame()), "d again hides it");
+    }
 }

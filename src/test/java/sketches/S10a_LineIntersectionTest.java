@@ -59,12 +59,12 @@ class S10a_LineIntersectionTest {
         script.mouse(3, mx, my);
         SketchRun.Result<S10a_LineIntersection> r = SketchRun.of(new S10a_LineIntersection()).script(script).run();
         S10a_LineIntersection s = r.sketch();
-        assertEquals(sx >= 0 ? sx : 40, s.ax, "start x");
-        assertEquals(mx, s.bx, "the line ends at the mouse");
+        assertEquals(sx >= 0 ? sx : 40, s.startX, "start x");
+        assertEquals(mx, s.mouseX, "the line ends at the mouse");
         boolean[] expected = {s1, s2, s3};
         for (int i = 0; i < 3; i++) {
             Segment g = s.segments[i];
-            assertEquals(Collide.lineLine(s.ax, s.ay, s.bx, s.by, g.x1(), g.y1(), g.x2(), g.y2()), s.segmentHit[i],
+            assertEquals(Collide.lineLine(s.startX, s.startY, s.mouseX, s.mouseY, g.x1(), g.y1(), g.x2(), g.y2()), s.segmentHit[i],
                     "the sketch's answer is the library's");
             assertEquals(expected[i], s.segmentHit[i], s.names[i]);
         }
@@ -81,13 +81,13 @@ class S10a_LineIntersectionTest {
         SketchRun.Result<S10a_LineIntersection> r = SketchRun.of(new S10a_LineIntersection())
                 .script(new Script().frames(4).mouse(1, 430, 130)).run();
         S10a_LineIntersection s = r.sketch();
-        RayHit hit = Ray.between(s.ax, s.ay, s.bx, s.by).cast(s.segments[1]);
+        RayHit hit = Ray.between(s.startX, s.startY, s.mouseX, s.mouseY).cast(s.segments[1]);
         assertNotNull(hit);
         assertEquals(300, hit.x(), 1e-3f, "on s2");
         SketchPixels.assertColour(r.lastFrame(), Math.round(hit.x()) + 2, Math.round(hit.y()), Palette.ACCENT, "the crossing dot");
         // The circle: the line goes in and comes out, two dots.
-        RayHit in = Ray.between(s.ax, s.ay, s.bx, s.by).cast(s.ball);
-        RayHit out = Ray.between(s.bx, s.by, s.ax, s.ay).cast(s.ball);
+        RayHit in = Ray.between(s.startX, s.startY, s.mouseX, s.mouseY).cast(s.ball);
+        RayHit out = Ray.between(s.mouseX, s.mouseY, s.startX, s.startY).cast(s.ball);
         assertTrue(in.x() < out.x(), "entry before exit");
         SketchPixels.assertColour(r.lastFrame(), Math.round(in.x()), Math.round(in.y()) + 2, Palette.ACCENT, "entry dot");
         SketchPixels.assertColour(r.lastFrame(), Math.round(out.x()), Math.round(out.y()) + 2, Palette.ACCENT, "exit dot");

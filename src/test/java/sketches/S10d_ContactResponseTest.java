@@ -68,15 +68,15 @@ class S10d_ContactResponseTest {
         Set<Integer> pushedOutOf = new HashSet<>();
         int[] contacts = {0};
         SketchRun.of(new S10d_ContactResponse()).script(sweep(new Script(), 1, 1500).frames(1500)).everyFrame(s -> {
-            assertEquals(s.PUSH, s.movedIn);
+            assertEquals(s.PUSH, s.mode);
             assertClear(s);
-            if (s.contacts.isEmpty()) {
+            if (s.answers.isEmpty()) {
                 assertEquals(s.mouseX, s.x, "no contact: the ball is at the mouse");
                 assertEquals(s.mouseY, s.y);
             }
-            for (int i = 0; i < s.contacts.size(); i++) {
+            for (S10d_ContactResponse.Answer a : s.answers) {
                 contacts[0]++;
-                pushedOutOf.add(s.hitShapes.get(i));
+                pushedOutOf.add(a.shape);
             }
         }).run();
         assertTrue(contacts[0] > 100, "the mouse went into shapes, contacts: " + contacts[0]);
@@ -95,18 +95,19 @@ class S10d_ContactResponseTest {
         int[] into = {0};
         SketchRun.of(new S10d_ContactResponse()).script(script).everyFrame(s -> {
             assertClear(s);
-            if (s.movedIn != s.BOUNCE) {
-                return;   // frame 1, before the key
+            if (s.frameCount < 3) {
+                return;   // the key reaches the sketch after frame 1
             }
-            for (int i = 0; i < s.contacts.size(); i++) {
-                Contact c = s.contacts.get(i);
+            assertEquals(s.BOUNCE, s.mode);
+            for (S10d_ContactResponse.Answer a : s.answers) {
+                Contact c = a.contact;
                 Vec n = c.normal();
                 Vec t = new Vec(-n.y(), n.x());
-                Vec v0 = s.before.get(i);
-                Vec v1 = s.after.get(i);
+                Vec v0 = a.before;
+                Vec v1 = a.after;
                 if (v0.dot(n) > MOVING) {
                     into[0]++;
-                    bouncedOff.add(s.hitShapes.get(i));
+                    bouncedOff.add(a.shape);
                     assertEquals(-v0.dot(n), v1.dot(n), 1e-4f, "the part along the normal is reversed");
                 } else {
                     assertEquals(v0.dot(n), v1.dot(n), 2 * MOVING, "moving away already (or sliding along): as it was");
@@ -131,17 +132,18 @@ class S10d_ContactResponseTest {
         int[] into = {0};
         SketchRun.of(new S10d_ContactResponse()).script(script).everyFrame(s -> {
             assertClear(s);
-            if (s.movedIn != s.SLIDE) {
-                return;   // frame 1, before the key
+            if (s.frameCount < 3) {
+                return;   // the key reaches the sketch after frame 1
             }
-            for (int i = 0; i < s.contacts.size(); i++) {
-                Vec n = s.contacts.get(i).normal();
+            assertEquals(s.SLIDE, s.mode);
+            for (S10d_ContactResponse.Answer a : s.answers) {
+                Vec n = a.contact.normal();
                 Vec t = new Vec(-n.y(), n.x());
-                Vec v0 = s.before.get(i);
-                Vec v1 = s.after.get(i);
+                Vec v0 = a.before;
+                Vec v1 = a.after;
                 if (v0.dot(n) > MOVING) {
                     into[0]++;
-                    slidAlong.add(s.hitShapes.get(i));
+                    slidAlong.add(a.shape);
                     assertEquals(0, v1.dot(n), 1e-4f, "the part along the normal is removed");
                 } else {
                     assertEquals(v0.dot(n), v1.dot(n), 2 * MOVING, "moving away already (or sliding along): as it was");
@@ -158,9 +160,9 @@ class S10d_ContactResponseTest {
         SketchRun.Result<S10d_ContactResponse> r = SketchRun.of(new S10d_ContactResponse())
                 .script(new Script().frames(4).mouse(1, 400, 120)).run();
         S10d_ContactResponse s = r.sketch();
-        assertEquals(1, s.contacts.size());
-        assertEquals(1, (int) s.hitShapes.get(0), "the rect");
-        assertEquals(new Vec(0, -1), s.contacts.get(0).normal(), "the ball is below the rect's middle: normal up, into it");
+        assertEquals(1, s.answers.size());
+        assertEquals(1, s.answers.get(0).shape, "the rect");
+        assertEquals(new Vec(0, -1), s.answers.get(0).contact.normal(), "the ball is below the rect's middle: normal up, into it");
         assertEquals(158, s.y, 1e-3f, "pushed down out of the rect's bottom (y 140) to touch it");
         PImage frame = r.lastFrame();
         SketchPixels.assertColour(frame, 470, 90, Palette.HIT, "the rect");

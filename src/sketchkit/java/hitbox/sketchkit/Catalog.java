@@ -52,13 +52,25 @@ public final class Catalog {
     }
 
     /**
-     * Reads a sketches folder.
+     * Reads a sketches folder whose sketches the build compiled onto this program's class path.
      *
      * @param root the folder that holds one folder per sketch
      * @return the catalog
      * @throws IllegalStateException if the folder does not exist
      */
     public static Catalog load(File root) {
+        return load(root, Catalog.class.getClassLoader());
+    }
+
+    /**
+     * Reads a sketches folder whose sketches {@link SketchBuild} compiled elsewhere.
+     *
+     * @param root    the folder that holds one folder per sketch
+     * @param classes where the compiled sketches, their problems and line maps are found
+     * @return the catalog
+     * @throws IllegalStateException if the folder does not exist
+     */
+    public static Catalog load(File root, ClassLoader classes) {
         File[] folders = root.listFiles(File::isDirectory);
         if (folders == null) {
             throw new IllegalStateException("No sketches folder at " + root.getAbsolutePath()
@@ -69,7 +81,7 @@ public final class Catalog {
         for (File folder : folders) {
             File main = new File(folder, folder.getName() + ".pde");
             if (main.isFile()) {
-                found.add(SketchInfo.read(folder, main));
+                found.add(SketchInfo.read(folder, main, classes));
             }
         }
         return new Catalog(root, List.copyOf(found));
@@ -105,10 +117,11 @@ public final class Catalog {
      * @param folder  the sketch folder
      * @param title   the header's first line, e.g. "Circle/Point"
      * @param section the header's "Tutorial section ..." line, or "" if there is none
+     * @param classes where its compiled class, problems and line map are found
      */
-    public record SketchInfo(String name, File folder, String title, String section) {
+    public record SketchInfo(String name, File folder, String title, String section, ClassLoader classes) {
 
-        static SketchInfo read(File folder, File mainTab) {
+        static SketchInfo read(File folder, File mainTab, ClassLoader classes) {
             List<String> lines;
             try {
                 lines = Files.readAllLines(mainTab.toPath(), StandardCharsets.UTF_8);
@@ -140,7 +153,13 @@ public final class Catalog {
                     section = text;
                 }
             }
-            return new SketchInfo(folder.getName(), folder, title, section);
+            return new SketchInfo(folder.getName(), folder, title, section, classes);
+        }
+
+        /** @return the sketch's name, as test reports and messages show it */
+        @Override
+        public String toString() {
+            return name;
         }
 
         /** @return the sketch's screenshot, which may not exist yet */
@@ -164,14 +183,64 @@ public final class Catalog {
         }
 
         /**
+         * What stopped this sketch from building, as the build reported it.
+         *
+         * @return its problems, one {@code sketches/<Name>/<Tab>.pde:<line>: <message>} a line,
+         *         or "" when it built (or was not built at all)
+         */
+        public String errors() {
+            String resource = SketchBuild.PACKAGE + "/" + name + SketchBuild.ERRORS_SUFFIX;
+            try (var in = classes.getResourceAsStream(resource)) {
+                return in == null ? "" : new String(in.readAllBytes(), StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                throw new UncheckedIOException("cannot read " + resource, e);
+            }
+        }
+
+        /**
+         * Where in the sketch's tabs an exception was thrown: the innermost place in the
+         * sketch's own code, through the line map the build wrote beside its class.
+         *
+         * @param thrown an exception from a running sketch
+         * @return {@code sketches/<Name>/<Tab>.pde:<line>}, or "" if no frame is the sketch's
+         */
+        public String locate(Throwable thrown) {
+            String className = SketchBuild.PACKAGE + "." + name;
+            String resource = SketchBuild.PACKAGE + "/" + name + SketchBuild.LINES_SUFFIX;
+            List<String> lines;
+            try (var in = classes.getResourceAsStream(resource)) {
+                if (in == null) {
+                    return "";
+                }
+                lines = new String(in.readAllBytes(), StandardCharsets.UTF_8).lines().toList();
+            } catch (IOException e) {
+                return "";
+            }
+            for (Throwable t = thrown; t != null; t = t.getCause()) {
+                for (StackTraceElement e : t.getStackTrace()) {
+                    boolean ours = e.getClassName().equals(className) || e.getClassName().startsWith(className + "$");
+                    if (ours && e.getLineNumber() >= 1 && e.getLineNumber() <= lines.size()) {
+                        return folder.getPath().replace(File.separatorChar, '/') + "/" + lines.get(e.getLineNumber() - 1);
+                    }
+                }
+            }
+            return "";
+        }
+
+        /**
          * Makes a fresh instance of the compiled sketch.
          *
          * @return the sketch, not yet running
-         * @throws IllegalStateException if the sketch was not compiled
+         * @throws IllegalStateException if the sketch did not build (the message names each
+         *         problem by tab and line) or was not built
          */
         public PApplet newInstance() {
+            String errors = errors();
+            if (!errors.isEmpty()) {
+                throw new IllegalStateException(name + " does not build:\n" + errors);
+            }
             try {
-                return (PApplet) Class.forName("sketches." + name).getDeclaredConstructor().newInstance();
+                return (PApplet) Class.forName(SketchBuild.PACKAGE + "." + name, true, classes).getDeclaredConstructor().newInstance();
             } catch (ReflectiveOperationException e) {
                 throw new IllegalStateException("sketch " + name + " is not compiled: run it through gradle", e);
             }

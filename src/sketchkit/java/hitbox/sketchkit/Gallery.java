@@ -30,6 +30,8 @@ public final class Gallery extends PApplet {
     private final Catalog catalog;
     private final Consumer<Catalog.SketchInfo> opener;
     private final List<PImage> thumbs = new ArrayList<>();
+    /** Each sketch's build problems ("" when it built), shown in place of its thumbnail. */
+    private final List<String> errors = new ArrayList<>();
     private float scroll;
     private String status = "Click a sketch to open it. Close its window to come back.";
 
@@ -81,6 +83,7 @@ public final class Gallery extends PApplet {
                 image.resize(Math.round(image.width * scale), Math.round(image.height * scale));
             }
             thumbs.add(image);
+            errors.add(info.errors());
         }
     }
 
@@ -100,7 +103,15 @@ public final class Gallery extends PApplet {
             fill(i == hovered ? color(60, 70, 96) : color(38, 42, 52));
             rect(x, y, CELL_W - 12, CELL_H - 12, 6);
             PImage thumb = thumbs.get(i);
-            if (thumb != null) {
+            if (!errors.get(i).isEmpty()) {
+                // A sketch that does not build shows its first problem, by tab and line.
+                fill(90, 30, 34);
+                rect(x + 6, y + 6, THUMB_W, THUMB_H);
+                fill(255, 200, 200);
+                textAlign(LEFT, TOP);
+                textSize(11);
+                text("does not build:\n" + errors.get(i).lines().findFirst().orElse(""), x + 12, y + 12, THUMB_W - 12, THUMB_H - 12);
+            } else if (thumb != null) {
                 image(thumb, x + 6 + (THUMB_W - thumb.width) / 2f, y + 6 + (THUMB_H - thumb.height) / 2f);
             } else {
                 fill(60);
@@ -166,7 +177,9 @@ public final class Gallery extends PApplet {
     @Override
     public void mousePressed() {
         int i = indexAt(mouseX, mouseY);
-        if (i >= 0) {
+        if (i >= 0 && !errors.get(i).isEmpty()) {
+            status = catalog.sketches().get(i).name() + " does not build: " + errors.get(i).lines().findFirst().orElse("");
+        } else if (i >= 0) {
             opener.accept(catalog.sketches().get(i));
         }
     }

@@ -1,5 +1,6 @@
 package hitbox.sketchkit;
 
+import java.lang.reflect.Field;
 import java.util.Optional;
 
 import processing.core.PApplet;
@@ -7,6 +8,9 @@ import processing.core.PApplet;
 /**
  * What {@code gradle run} starts: the gallery of every sketch, or one sketch by name
  * ({@code gradle run -Psketch=S02_CirclePoint}).
+ *
+ * <p>A sketch that does not build, or that throws, ends the program with its problem named by
+ * tab and line and a non-zero exit code, rather than leaving an empty window open.
  */
 public final class Launcher {
     private Launcher() {
@@ -37,11 +41,52 @@ public final class Launcher {
             Gallery.open(catalog);
             return;
         }
-        Optional<Catalog.SketchInfo> sketch = catalog.find(args[0]);
-        if (sketch.isEmpty()) {
+        Optional<Catalog.SketchInfo> found = catalog.find(args[0]);
+        if (found.isEmpty()) {
             System.err.println("No sketch named \"" + args[0] + "\". The sketches are: " + catalog.names());
             System.exit(2);
         }
-        PApplet.runSketch(new String[] {sketch.get().name()}, sketch.get().newInstance());
+        Catalog.SketchInfo sketch = found.get();
+        if (!sketch.errors().isEmpty()) {
+            System.err.print(sketch.name() + " does not build:\n" + sketch.errors());
+            System.exit(1);
+        }
+        PApplet instance = sketch.newInstance();
+        PApplet.runSketch(new String[] {PApplet.ARGS_SKETCH_FOLDER + "=" + sketch.folder().getAbsolutePath(),
+                sketch.name()}, instance);
+        // Processing's own handler prints an exception and leaves the window open; this one
+        // names the tab and line and ends the program, as the IDE stops a sketch that throws.
+        Thread.setDefaultUncaughtExceptionHandler((thread, thrown) -> fail(sketch, thrown));
+        // An exception in setup() may have reached Processing's handler before this one was
+        // set: look for it while the first frames start.
+        for (int i = 0; i < 20; i++) {
+            Throwable early = processingsUncaught();
+            if (early != null) {
+                fail(sketch, early);
+            }
+            try {
+                Thread.sleep(100);
+            } catch (InterruptedException e) {
+                return;
+            }
+        }
+    }
+
+    private static void fail(Catalog.SketchInfo sketch, Throwable thrown) {
+        String where = sketch.locate(thrown);
+        System.err.println(sketch.name() + " stopped" + (where.isEmpty() ? "" : " at " + where) + ": " + thrown);
+        thrown.printStackTrace();
+        System.exit(1);
+    }
+
+    /** What Processing's own uncaught-exception handler kept, if anything. */
+    private static Throwable processingsUncaught() {
+        try {
+            Field field = PApplet.class.getDeclaredField("uncaughtThrowable");
+            field.setAccessible(true);
+            return (Throwable) field.get(null);
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            return null;
+        }
     }
 }

@@ -44,6 +44,7 @@ public final class SketchRun<S extends PApplet> {
     private Script script = new Script();
     private int frames = -1;
     private boolean fast = true;
+    private File folder;
     private final List<Consumer<? super S>> checks = new ArrayList<>();
     private final Map<Integer, File> saves = new HashMap<>();
     private final List<Integer> captures = new ArrayList<>();
@@ -61,6 +62,19 @@ public final class SketchRun<S extends PApplet> {
      */
     public static <S extends PApplet> SketchRun<S> of(S sketch) {
         return new SketchRun<>(sketch);
+    }
+
+    /**
+     * Where a sketch's {@code sketchPath()} points, so that {@code loadImage("map.png")} reads
+     * its {@code data/} folder as in the IDE: its folder under the sketches folder when there
+     * is one, else the working directory.
+     *
+     * @param sketch a sketch
+     * @return its folder
+     */
+    public static File sketchFolder(PApplet sketch) {
+        File folder = new File(System.getProperty(Catalog.SKETCHES_PROPERTY, "sketches"), sketch.getClass().getSimpleName());
+        return folder.isDirectory() ? folder : new File(".");
     }
 
     /** @return true if windows can be opened (a display, real or {@code xvfb-run -a}) */
@@ -90,6 +104,18 @@ public final class SketchRun<S extends PApplet> {
             throw new IllegalArgumentException("frames must be >= 1, was " + count);
         }
         this.frames = count;
+        return this;
+    }
+
+    /**
+     * Sets the sketch's folder, whose {@code data/} its {@code loadImage()} and
+     * {@code loadStrings()} read, when it is not under the sketches folder.
+     *
+     * @param sketchFolder the folder that holds the sketch's tabs
+     * @return this run
+     */
+    public SketchRun<S> folder(File sketchFolder) {
+        this.folder = Objects.requireNonNull(sketchFolder, "sketchFolder");
         return this;
     }
 
@@ -154,7 +180,8 @@ public final class SketchRun<S extends PApplet> {
         sketch.registerMethod("pre", hooks);
         sketch.registerMethod("post", hooks);
         String name = sketch.getClass().getSimpleName();
-        PApplet.runSketch(new String[] {PApplet.ARGS_LOCATION + "=40,40", name}, sketch);
+        PApplet.runSketch(new String[] {PApplet.ARGS_LOCATION + "=40,40",
+                PApplet.ARGS_SKETCH_FOLDER + "=" + (folder != null ? folder : sketchFolder(sketch)).getAbsolutePath(), name}, sketch);
         // Processing's own handler only prints; this one also ends the wait. Only this run's
         // animation thread counts (before its first frame, any thread: setup() may throw).
         Thread.setDefaultUncaughtExceptionHandler((t, e) -> {

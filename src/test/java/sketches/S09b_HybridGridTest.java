@@ -1,0 +1,120 @@
+package sketches;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Random;
+import java.util.Set;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+import hitbox.Grid;
+import hitbox.Rect;
+import hitbox.Sweep;
+import hitbox.processing.Overlay;
+import hitbox.sketchkit.Script;
+import hitbox.sketchkit.SketchRun;
+
+/** A pixel player on a tile map, moved by Grid.move every frame: it lands, jumps, stops at walls, and is never inside a tile. */
+class S09b_HybridGridTest {
+
+    @BeforeAll
+    static void needsDisplay() {
+        assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
+    }
+
+    @Test
+    void falling_landsOnATileTop_andStays() {
+        List<Float> ys = new ArrayList<>();
+        List<Boolean> ground = new ArrayList<>();
+        S09b_HybridGrid s = SketchRun.of(new S09b_HybridGrid()).frames(90).everyFrame(k -> {
+            ys.add(k.player.y());
+            ground.add(k.onGround);
+        }).run().sketch();
+        assertFalse(ground.get(0), "it starts in the air");
+        assertTrue(s.onGround, "it has landed");
+        float bottom = s.player.bottom();
+        assertEquals(bottom, s.grid.cellY(s.grid.rowAt(bottom)), "standing exactly on a row line: " + bottom);
+        assertTrue(s.grid.isSolid(s.grid.colAt(s.player.x()), s.grid.rowAt(bottom))
+                || s.grid.isSolid(s.grid.colAt(s.player.right() - 0.01f), s.grid.rowAt(bottom)), "on a solid tile");
+        assertEquals(0f, s.vy, "and stopped falling");
+        int landed = ground.indexOf(true);
+        for (int f = landed; f < 90; f++) {
+            assertTrue(ground.get(f), "once down it stays down, frame " + (f + 1));
+            assertEquals(ys.get(landed), ys.get(f), "without sinking, frame " + (f + 1));
+        }
+    }
+
+    @Test
+    void longRunWithJumps_neverEndsAFrameInsideATile_andEveryStepIsGridMove() {
+        Random random = new Random(5);
+        Script script = new Script().frames(6000);
+        for (int f = 1; f < 5900; ) {
+            int length = 5 + random.nextInt(70);
+            script.hold(f, random.nextBoolean() ? "LEFT" : "RIGHT", length);
+            if (random.nextInt(3) > 0) {
+                script.hold(f + random.nextInt(length), random.nextBoolean() ? "UP" : "SPACE", 1);
+            }
+            f += length + 1 + random.nextInt(8);
+        }
+        Set<Integer> rowsStoodOn = new HashSet<>();
+        int[] walls = new int[1];
+        int[] heads = new int[1];
+        Rect[] previous = new Rect[1];
+        SketchRun.of(new S09b_HybridGrid()).script(script).everyFrame(s -> {
+            Grid g = s.grid;
+            Rect p = s.player;
+            assertFalse(g.rectOverlapsSolid(p.x(), p.y(), p.w(), p.h()), "frame " + s.frameCount + ": inside a tile at " + p);
+            // The frame's move is exactly Grid.move from where the player was.
+            Sweep.Move expected = g.move(s.before, s.movedX, s.movedY);
+            assertEquals(expected, s.last, "frame " + s.frameCount);
+            assertEquals(g.moveObstacles(s.before, s.movedX, s.movedY), s.checked);
+            assertTrue(s.checked.size() <= 9, "a move of a few pixels checks a few tiles: " + s.checked.size());
+            if (previous[0] != null) {
+                assertEquals(previous[0], s.before, "each move starts where the last one ended");
+            }
+            previous[0] = p;
+            if (s.onGround) {
+                rowsStoodOn.add(g.rowAt(p.bottom()));
+            }
+            walls[0] += s.last.hitWall() ? 1 : 0;
+            heads[0] += s.last.hitHead() ? 1 : 0;
+        }).run();
+        assertTrue(rowsStoodOn.size() >= 2, "stood on the floor and at least one platform: rows " + rowsStoodOn);
+        assertTrue(walls[0] > 0, "ran into a wall");
+        assertTrue(heads[0] > 0, "bumped its head");
+    }
+
+    @Test
+    void fastFall_neverTunnels() {
+        // A fall of up to 60 px a frame, more than two tiles: still lands on the first floor below.
+        S09b_HybridGrid s = new S09b_HybridGrid();
+        s.maxFall = 60;
+        s.gravity = 6;
+        s.player = new Rect(400, 0, 18, 28);
+        SketchRun.of(s).frames(40).everyFrame(k -> assertFalse(
+                k.grid.rectOverlapsSolid(k.player.x(), k.player.y(), k.player.w(), k.player.h()), "inside a tile")).run();
+        assertTrue(s.onGround);
+        assertEquals(8 * 24f, s.player.bottom(), "on the first tiles below x 400: row 8's top");
+    }
+
+    @Test
+    void overlay_outlinesTheCheckedTiles() {
+        Script plain = new Script().frames(60);
+        Script maths = new Script().frames(60).key(2, 'd');
+        SketchRun.Result<S09b_HybridGrid> off = SketchRun.of(new S09b_HybridGrid()).script(plain).run();
+        SketchRun.Result<S09b_HybridGrid> on = SketchRun.of(new S09b_HybridGrid()).script(maths).run();
+        assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame()) > 1000, "the overlay changes what is drawn");
+        Rect tile = on.sketch().checked.get(0);
+        int x = (int) tile.x() + 1;
+        int y = (int) tile.bottom();  // its bottom edge: the top may be under the player's red landed line
+        assertTrue(SketchPixels.count(on.lastFrame(), x, y - 1, x + 10, y + 1, Overlay.GUIDE) > 0, "a checked tile is outlined");
+        assertEquals(0, SketchPixels.count(off.lastFrame(), x, y - 1, x + 10, y + 1, Overlay.GUIDE), "not without the overlay");
+    }
+}
