@@ -43,9 +43,11 @@ import java.util.Arrays;
  * <p>A grid is the sketch's level, not a value: {@link #set} and the fill methods change it.
  * It is not safe to change from one thread while another reads it. Reading and writing maps
  * as text and filling them at random live in a class of their own; this class keeps the
- * cells, their terrain, and the pixel tests. It is still longer than most (about 650 lines):
- * it is the public face of all of those, each method with its full javadoc, and the pixel
- * tests share the cell arithmetic that must stay next to the cells.
+ * cells, their terrain, and the pixel tests. It is still longer than most (about 800 lines):
+ * it is the public face of all of those and of sight, routes, pixel moves and picture maps,
+ * each method with its full javadoc; the work of those is in GridMaps, GridSight, GridPaths,
+ * GridMove and GridImages, and the pixel tests share the cell arithmetic that must stay
+ * next to the cells.
  */
 public final class Grid {
 
