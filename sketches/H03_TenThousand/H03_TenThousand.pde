@@ -1,0 +1,196 @@
+/**
+ * 10,000 bouncers
+ * Homework 2: 10,000 bouncers, through a broad phase
+ *
+ * Homework 2 a hundred times over: 10,000 small boxes bounce off each other, off 24 obstacles
+ * and off the window. Testing every pair would be 50 million tests a frame. Instead, every
+ * frame each bouncer is put into a BroadPhase at its new place, and pairs() reports every
+ * overlapping pair once: two bouncers coming together swap speeds (equal masses, an elastic
+ * bounce), and a bouncer in an obstacle is pushed out the short way (Snap.pushOut) and turned
+ * back on that axis. The grid finds all the pairs with a few tens of thousands of tests, in
+ * about a millisecond; the time of that collision step is on screen, beside the frame rate,
+ * which drawing 10,000 boxes limits. Bouncers that hit something this frame flash red.
+ *
+ * Everything random comes from randomSeed, so every run is the same.
+ *
+ * Try this: press 1 to 5 to switch structures and compare their collision steps; brute force
+ * keeps only 1,500 bouncers moving and is still the slowest; make the bouncers bigger.
+ * Keys: 1 grid, 2 sweep and prune, 3 dynamic tree, 4 quadtree, 5 brute force (1,500
+ * bouncers), d shows the maths (tests this frame against n(n-1)/2, and the structure's cells
+ * around the mouse).
+ */
+import hitbox.*;
+import hitbox.processing.*;
+
+int n = 10000;
+int bruteForceCap = 1500;
+float size = 3;                  // every bouncer is size x size
+int obstacleCount = 24;
+
+float[] x = new float[n];
+float[] y = new float[n];
+float[] vx = new float[n];
+float[] vy = new float[n];
+int[] flash = new int[n];        // 1: hit something this frame (drawn red)
+Rect[] obstacles = new Rect[obstacleCount];
+
+// One of each structure; bouncer i is id i, obstacle k is id n + k.
+BroadPhase[] structures = {
+  BroadPhase.grid(), BroadPhase.sweepAndPrune(), BroadPhase.dynamicTree(),
+  BroadPhase.quadtree(), BroadPhase.bruteForce()
+};
+int current = 0;
+int active = n;                  // the bouncers that move: all, or the brute-force cap
+
+int pairsThisFrame;
+int hitsThisFrame;
+float stepMillis;                // this frame's collision step: put every bouncer, then pairs
+float smoothMillis;              // the same, smoothed for reading
+boolean showMaths = false;
+
+void setup() {
+  size(800, 600);
+  randomSeed(4);
+  placeObstacles();
+  for (int i = 0; i < n; i++) {
+    do {
+      x[i] = random(0, width - size);
+      y[i] = random(0, height - size);
+    } while (inAnObstacle(x[i], y[i]));
+    float speed = random(0.5, 2);
+    float angle = random(TWO_PI);
+    vx[i] = speed * cos(angle);
+    vy[i] = speed * sin(angle);
+  }
+  for (BroadPhase structure : structures) {
+    for (int k = 0; k < obstacleCount; k++) {
+      structure.put(n + k, obstacles[k]);
+    }
+  }
+}
+
+// Obstacles apart from each other and from the window's edges by more than a bouncer, so a
+// bouncer pushed out of one never lands in another, nor outside the window.
+void placeObstacles() {
+  int k = 0;
+  while (k < obstacleCount) {
+    float w = random(30, 90);
+    float h = random(20, 70);
+    Rect candidate = new Rect(random(10, width - w - 10), random(10, height - h - 10), w, h);
+    Rect around = new Rect(candidate.x() - 8, candidate.y() - 8, w + 16, h + 16);
+    boolean free = true;
+    for (int j = 0; j < k; j++) {
+      free = free && !around.overlaps(obstacles[j]);
+    }
+    if (free) {
+      obstacles[k++] = candidate;
+    }
+  }
+}
+
+boolean inAnObstacle(float px, float py) {
+  for (Rect o : obstacles) {
+    if (Collide.rectRect(px, py, size, size, o.x(), o.y(), o.w(), o.h())) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void draw() {
+  background(Palette.BACKGROUND);
+  active = current == 4 ? bruteForceCap : n;
+  for (int i = 0; i < active; i++) {
+    x[i] += vx[i];
+    y[i] += vy[i];
+    int crossed = Edges.rectCrossed(x[i], y[i], size, size, width, height);
+    vx[i] = Edges.bounceX(crossed, vx[i]);
+    vy[i] = Edges.bounceY(crossed, vy[i]);
+    x[i] = Edges.rectClampX(x[i], size, width);
+    y[i] = Edges.rectClampY(y[i], size, height);
+  }
+
+  // The collision step, timed: every bouncer into the broad phase, then every pair.
+  BroadPhase world = structures[current];
+  long start = System.nanoTime();
+  for (int i = 0; i < active; i++) {
+    world.put(i, x[i], y[i], size, size);
+  }
+  pairsThisFrame = 0;
+  hitsThisFrame = 0;
+  world.pairs((a, b) -> bounce(a, b));
+  stepMillis = (System.nanoTime() - start) / 1e6;
+  smoothMillis = frameCount == 1 ? stepMillis : 0.9 * smoothMillis + 0.1 * stepMillis;
+
+  drawBouncers();
+  noStroke();
+  fill(Palette.OBSTACLE);
+  for (Rect o : obstacles) {
+    Draw.shape(g, o);
+  }
+  if (showMaths) {
+    drawMaths();
+  }
+  Overlay.label(g, 8, 8, world + ": " + nfc(active) + " bouncers\ncollision step "
+      + nf(smoothMillis, 0, 2) + " ms   frame rate " + round(frameRate) + " fps");
+  Overlay.hint(g, "1 grid  2 sweep and prune  3 dynamic tree  4 quadtree  5 brute force   d: show the maths");
+}
+
+// One overlapping pair, a < b: two obstacles (nothing to do), a bouncer in an obstacle, or two bouncers.
+void bounce(int a, int b) {
+  pairsThisFrame++;
+  if (a >= n) {
+    return;
+  }
+  if (b >= n) {
+    Rect o = obstacles[b - n];
+    Snap.Push push = Snap.pushOut(x[a], y[a], size, size, o.x(), o.y(), o.w(), o.h());
+    x[a] = push.x();
+    y[a] = push.y();
+    if (push.side() == Side.LEFT || push.side() == Side.RIGHT) {
+      vx[a] = push.side() == Side.LEFT ? -abs(vx[a]) : abs(vx[a]);
+    } else {
+      vy[a] = push.side() == Side.TOP ? -abs(vy[a]) : abs(vy[a]);
+    }
+    flash[a] = 1;
+    hitsThisFrame++;
+  } else if ((x[b] - x[a]) * (vx[b] - vx[a]) + (y[b] - y[a]) * (vy[b] - vy[a]) < 0) {
+    // Coming together: swap speeds. (Moving apart already, they are left to separate.)
+    float t = vx[a];
+    vx[a] = vx[b];
+    vx[b] = t;
+    t = vy[a];
+    vy[a] = vy[b];
+    vy[b] = t;
+    flash[a] = 1;
+    flash[b] = 1;
+    hitsThisFrame++;
+  }
+}
+
+// 10,000 rect() calls are slow: each bouncer is written straight into the pixels.
+void drawBouncers() {
+  loadPixels();
+  int calm = Palette.PLAYER;
+  int hit = Palette.HIT;
+  for (int i = 0; i < active; i++) {
+    int c = flash[i] > 0 ? hit : calm;
+    flash[i] = max(0, flash[i] - 1);
+    int left = (int) x[i];
+    int top = (int) y[i];
+    for (int py = top; py < top + size && py < height; py++) {
+      for (int px = left; px < left + size && px < width; px++) {
+        pixels[py * width + px] = c;
+      }
+    }
+  }
+  updatePixels();
+}
+
+void keyPressed() {
+  if (key == 'd') {
+    showMaths = !showMaths;
+  } else if (key >= '1' && key <= '5') {
+    current = key - '1';
+  }
+}
