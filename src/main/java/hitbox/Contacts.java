@@ -113,6 +113,11 @@ final class Contacts {
                     + " overlaps(...) to test a segment for a hit, or a sweep or ray cast to find"
                     + " where a moving shape first touches it");
         }
+        if (a instanceof Ellipse || b instanceof Ellipse || a instanceof Capsule || b instanceof Capsule) {
+            throw new IllegalArgumentException("contact is not yet computed for " + (a instanceof Ellipse
+                    || a instanceof Capsule ? "a" : "b") + ", a " + (a instanceof Ellipse || a instanceof Capsule
+                    ? a : b).getClass().getSimpleName() + ": use overlaps(...) to test it");
+        }
         if (a instanceof Circle c) {
             if (b instanceof Circle d) {
                 return Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());

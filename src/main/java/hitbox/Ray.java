@@ -110,10 +110,16 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * @param shape a circle, rectangle, segment or polygon, not null
      * @return the nearest hit, or null if the ray does not reach the shape (within
      *         {@link #maxDistance()})
-     * @throws IllegalArgumentException if the shape is null
+     * @throws IllegalArgumentException if the shape is null, or an {@link Ellipse} or a
+     *                                  {@link Capsule} (not cast yet: cast at its
+     *                                  {@link Shape#bounds() bounds} for a first answer)
      */
     public RayHit cast(Shape shape) {
         Check.notNull("shape", shape);
+        if (shape instanceof Ellipse || shape instanceof Capsule) {
+            throw new IllegalArgumentException("shape: a ray is not cast at a " + shape.getClass().getSimpleName()
+                    + " yet; cast it at shape.bounds() for a first answer");
+        }
         double limit = limit(dx, dy, maxDistance);
         if (shape instanceof Circle c) {
             return castCircle(c, limit);
