@@ -14,7 +14,7 @@ package hitbox;
  * radius; rectangles are top-left corner, width and height (Processing's {@code CORNER}
  * mode).
  *
- * <p>This class is longer than most (about 930 lines): it is the tutorial's whole table of
+ * <p>This class is longer than most (about 970 lines): it is the tutorial's whole table of
  * tests, one public method per pair with its full javadoc (the ellipses and capsules
  * included); the polygon, ellipse and capsule maths is in package-private helpers
  * ({@code Polygons}, {@code Ellipses}, {@code Capsules}).
@@ -889,5 +889,45 @@ public final class Collide {
             return polygonLine(xy, x1, y1, x2, y2);
         }
         return Capsules.polygon(xy, x1, y1, x2, y2, r);
+    }
+
+    // ---------------------------------------------------------------- arcs
+
+    /**
+     * Is the point inside the arc Processing fills for
+     * {@code arc(x, y, 2 * radiusX, 2 * radiusY, start, stop, mode)} (the default
+     * {@code CENTER} ellipse mode)? The outline does not count.
+     *
+     * <p>Angles are radians, clockwise on screen from the right (y grows down), exactly as
+     * {@code arc()} takes them: nothing is filled unless {@code stop > start}; both angles are
+     * brought up to 0 or more by adding {@code TWO_PI}, and a span over {@code TWO_PI} is the
+     * whole ellipse; on a squashed ellipse the angles are its parametric angles, as Java2D
+     * draws them (the point at angle a is {@code (x + radiusX cos a, y + radiusY sin a)}).
+     * The modes are Processing's: {@code PIE} (3; also 0, {@code arc()} without a mode, and
+     * any other value) fills the slice from the centre, which is a vision cone or a sword
+     * swing; {@code OPEN} (1) and {@code CHORD} (2) fill the part cut off by the chord
+     * between the arc's ends. A start so far below 0 that adding {@code TWO_PI} in float
+     * cannot bring it up (Processing's own loop would not end) fills nothing.
+     *
+     * <p>Decided in double with {@code atan2}: the answer can differ from the pixels only
+     * within rounding of the outline.
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX its horizontal radius (half of {@code arc()}'s width)
+     * @param radiusY its vertical radius
+     * @param start   the start angle, radians
+     * @param stop    the stop angle, radians
+     * @param mode    Processing's {@code OPEN} (1), {@code CHORD} (2) or {@code PIE} (3)
+     * @param px      the point's x
+     * @param py      the point's y
+     * @return true if the point is strictly inside the filled arc
+     */
+    public static boolean arcPoint(float x, float y, float radiusX, float radiusY, float start, float stop, int mode,
+                                   float px, float py) {
+        if (Check.nan(x, y, radiusX, radiusY, start) || Check.nan(stop, px, py, 0, 0) || !(radiusX > 0 && radiusY > 0)) {
+            return false;
+        }
+        return Arcs.contains(x, y, radiusX, radiusY, start, stop, mode, px, py);
     }
 }
