@@ -114,9 +114,11 @@ final class Contacts {
                     + " where a moving shape first touches it");
         }
         if (a instanceof Ellipse || b instanceof Ellipse || a instanceof Capsule || b instanceof Capsule) {
-            throw new IllegalArgumentException("contact is not yet computed for " + (a instanceof Ellipse
-                    || a instanceof Capsule ? "a" : "b") + ", a " + (a instanceof Ellipse || a instanceof Capsule
-                    ? a : b).getClass().getSimpleName() + ": use overlaps(...) to test it");
+            if (!Supports.convex(a) || !Supports.convex(b)) {
+                throw new IllegalArgumentException("contact with an ellipse or a capsule needs a convex other shape, but "
+                        + (Supports.convex(a) ? "b" : "a") + " is a concave polygon: split it into convex ones");
+            }
+            return Overlaps.test(a, b) ? Supports.contact(a, b) : null;
         }
         if (a instanceof Circle c) {
             if (b instanceof Circle d) {
