@@ -473,8 +473,9 @@ public final class Sweep {
      * turns about its hub. A straight sweep of a fast-turning thin shape misses what its tip
      * sweeps through; this one never does (conservative advancement: each step is shorter
      * than the gap left, so nothing is passed through). The hit is where the gap first falls
-     * below {@code 1e-3} pixels: the mover at that t does not overlap the obstacle; its normal
-     * points from the mover into the obstacle. Costs many support evaluations per step: use
+     * below {@code 1e-3} pixels while closing in (a mover turning away from what it touches
+     * is not stopped): the mover at that t does not overlap the obstacle; its normal points
+     * from the mover into the obstacle. Costs many support evaluations per step: use
      * it for a few fast movers, after a bounds test.
      *
      * @param mover    the turning shape where it starts, a convex polygon, not null

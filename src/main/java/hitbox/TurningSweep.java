@@ -12,6 +12,11 @@ import java.util.List;
  * gap is a lower bound (a separating direction's gap never exceeds the distance), so the
  * mover never passes through anything, however fast it turns.
  *
+ * <p>Touching (a gap below {@link #TOUCH}) is a hit only while the gap is closing; a
+ * mover leaving a shape it touches moves on, and may come within {@link #TOUCH} minus the
+ * gap of it for that one step: the only overlap it can make, and only with what it was
+ * already touching.
+ *
  * <p>The gap between convex pieces is {@code -(h_A(n) + h_B(-n))} maximised over the
  * direction n, as in {@link Supports}; a concave polygon obstacle is its convex pieces.
  */
@@ -50,16 +55,20 @@ final class TurningSweep {
         double t = 0;
         double[] normal = new double[2];
         for (int step = 0; step < MAX_STEPS; step++) {
-            double[] a = at(xy, px, py, vx, vy, turn, t);
-            double gap = Double.POSITIVE_INFINITY;
-            for (double[] piece : pieces) {
-                gap = Math.min(gap, gap(a, piece, obstacle, normal, gap));
-            }
-            if (gap <= TOUCH) {
-                return SweptPairs.hit((float) t, normal[0], normal[1]);
-            }
+            double gap = gap(xy, px, py, vx, vy, turn, t, pieces, obstacle, normal);
             if (speed == 0) {
                 return null;
+            }
+            if (gap <= TOUCH) {
+                // Touching: a hit if the mover is closing in, not if it is leaving (a blade
+                // turning back from the post it just touched). One TOUCH of motion on, the
+                // gap tells which.
+                double later = t + TOUCH / speed;
+                if (later > 1 || gap(xy, px, py, vx, vy, turn, later, pieces, obstacle, new double[2]) <= gap) {
+                    return SweptPairs.hit((float) t, normal[0], normal[1]);
+                }
+                t = later;
+                continue;
             }
             // Advance by most of the safe step, so the gap shrinks towards TOUCH and never past 0.
             t += (gap - TOUCH / 2) / speed;
@@ -68,6 +77,17 @@ final class TurningSweep {
             }
         }
         return SweptPairs.hit((float) t, normal[0], normal[1]);
+    }
+
+    /** The least gap at time t over the obstacle's pieces; its direction into {@code normal}. */
+    private static double gap(float[] xy, float px, float py, float vx, float vy, float turn, double t,
+                              List<double[]> pieces, Shape obstacle, double[] normal) {
+        double[] a = at(xy, px, py, vx, vy, turn, t);
+        double gap = Double.POSITIVE_INFINITY;
+        for (double[] piece : pieces) {
+            gap = Math.min(gap, gap(a, piece, obstacle, normal, gap));
+        }
+        return gap;
     }
 
     /** The obstacle as convex vertex lists; circles, ellipses and capsules are one piece, kept as the shape. */

@@ -49,6 +49,19 @@ class SweepTurningTest {
     }
 
     @Test
+    void touchingAndTurningAway_isNoHit_turningBackIsOne() {
+        Polygon blade = Polygon.rotatedRect(200, 200, 160, 4, 0);
+        Rect post = new Rect(241, 241, 2, 2);
+        float turn = (float) (Math.PI / 2);
+        Hit hit = Sweep.turningTimeOfImpact(blade, 200, 200, 0, 0, turn, post);
+        Polygon touching = Sweep.turnedAt(blade, 200, 200, 0, 0, turn, hit.t());
+        assertNull(Sweep.turningTimeOfImpact(touching, 200, 200, 0, 0, -turn, post), "turning away");
+        Hit again = Sweep.turningTimeOfImpact(touching, 200, 200, 0, 0, turn, post);
+        assertNotNull(again, "turning on into it");
+        assertEquals(0, again.t(), 0.01);
+    }
+
+    @Test
     void startsOverlapping_andBadArguments() {
         Polygon blade = Polygon.rotatedRect(100, 100, 120, 2, 0);
         assertTrue(Sweep.turningTimeOfImpact(blade, 100, 100, 0, 0, 1, new Circle(100, 100, 3)).alreadyOverlapping());
