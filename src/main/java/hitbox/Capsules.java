@@ -48,28 +48,13 @@ final class Capsules {
         return nearOrigin(ax - px, ay - py, bx - px, by - py, reach, false);
     }
 
-    /** Do the closed segments AB and CD meet? Exact orientation signs. */
-    static boolean segmentsMeet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
-        double o1 = Lines.orient(ax, ay, bx, by, cx, cy);
-        double o2 = Lines.orient(ax, ay, bx, by, dx, dy);
-        double o3 = Lines.orient(cx, cy, dx, dy, ax, ay);
-        double o4 = Lines.orient(cx, cy, dx, dy, bx, by);
-        if (Lines.opposite(o1, o2) && Lines.opposite(o3, o4)) {
-            return true;
-        }
-        return (o1 == 0 && Lines.inBox(ax, ay, bx, by, cx, cy))
-                || (o2 == 0 && Lines.inBox(ax, ay, bx, by, dx, dy))
-                || (o3 == 0 && Lines.inBox(cx, cy, dx, dy, ax, ay))
-                || (o4 == 0 && Lines.inBox(cx, cy, dx, dy, bx, by));
-    }
-
     /** Are the closed segments AB and CD closer than reach (reach > 0 for a meeting to count)? */
     static boolean segmentsWithin(double ax, double ay, double bx, double by,
                                   double cx, double cy, double dx, double dy, double reach) {
         if (!(reach > 0)) {
             return false;
         }
-        return segmentsMeet(ax, ay, bx, by, cx, cy, dx, dy)
+        return Lines.segmentsMeet(ax, ay, bx, by, cx, cy, dx, dy)
                 || pointWithin(ax, ay, bx, by, cx, cy, reach) || pointWithin(ax, ay, bx, by, dx, dy, reach)
                 || pointWithin(cx, cy, dx, dy, ax, ay, reach) || pointWithin(cx, cy, dx, dy, bx, by, reach);
     }

@@ -254,17 +254,7 @@ public final class Collide {
         if (Check.nan(x1, y1, x2, y2, x3) || Check.nan(y3, x4, y4, 0, 0)) {
             return false;
         }
-        double d1 = Lines.orient(x3, y3, x4, y4, x1, y1);
-        double d2 = Lines.orient(x3, y3, x4, y4, x2, y2);
-        double d3 = Lines.orient(x1, y1, x2, y2, x3, y3);
-        double d4 = Lines.orient(x1, y1, x2, y2, x4, y4);
-        if (Lines.opposite(d1, d2) && Lines.opposite(d3, d4)) {
-            return true;
-        }
-        return (d1 == 0 && Lines.inBox(x3, y3, x4, y4, x1, y1))
-                || (d2 == 0 && Lines.inBox(x3, y3, x4, y4, x2, y2))
-                || (d3 == 0 && Lines.inBox(x1, y1, x2, y2, x3, y3))
-                || (d4 == 0 && Lines.inBox(x1, y1, x2, y2, x4, y4));
+        return Lines.segmentsMeet(x1, y1, x2, y2, x3, y3, x4, y4);
     }
 
     /**

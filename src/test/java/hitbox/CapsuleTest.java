@@ -181,22 +181,7 @@ class CapsuleTest {
     /** Random capsules against random shapes of every kind, both orders, against the sampled oracle. */
     @Test
     void agreesWithTheSampledOracle_everyKind() {
-        Random rnd = new Random(20261125);
-        int overlapping = 0, apart = 0;
-        for (int i = 0; i < 3000; i++) {
-            Capsule k = Sampled.capsule(rnd);
-            Shape other = Sampled.any(rnd);
-            boolean answer = k.overlaps(other);
-            assertEquals(answer, other.overlaps(k), "both orders for " + k + " and " + other);
-            if (answer) {
-                overlapping++;
-                assertTrue(Sampled.overlap(Sampled.scaled(k, 1.02), other), "says overlapping, but grown 2% it is apart: " + k + " " + other);
-            } else {
-                apart++;
-                assertFalse(Sampled.overlap(Sampled.scaled(k, 0.98), other), "says apart, but shrunk 2% it overlaps: " + k + " " + other);
-            }
-        }
-        assertTrue(overlapping > 500 && apart > 500, overlapping + " overlapping, " + apart + " apart");
+        Sampled.assertAgreesWithOracle(20261125L, 3000, Sampled::capsule);
     }
 
     /**

@@ -231,22 +231,7 @@ class EllipseTest {
     /** Random ellipses against random shapes of every kind, both orders, against the sampled oracle. */
     @Test
     void agreesWithTheSampledOracle_everyKind() {
-        Random rnd = new Random(20261124);
-        int overlapping = 0, apart = 0;
-        for (int i = 0; i < 3000; i++) {
-            Ellipse e = Sampled.ellipse(rnd);
-            Shape other = Sampled.any(rnd);
-            boolean answer = e.overlaps(other);
-            assertEquals(answer, other.overlaps(e), "both orders for " + e + " and " + other);
-            if (answer) {
-                overlapping++;
-                assertTrue(Sampled.overlap(Sampled.scaled(e, 1.02), other), "says overlapping, but grown 2% it is apart: " + e + " " + other);
-            } else {
-                apart++;
-                assertFalse(Sampled.overlap(Sampled.scaled(e, 0.98), other), "says apart, but shrunk 2% it overlaps: " + e + " " + other);
-            }
-        }
-        assertTrue(overlapping > 500 && apart > 500, overlapping + " overlapping, " + apart + " apart");
+        Sampled.assertAgreesWithOracle(20261124L, 3000, Sampled::ellipse);
     }
 
     /**

@@ -1,8 +1,13 @@
 package hitbox;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.function.Function;
 
 /**
  * An oracle for overlap tests that shares no code with the library: each shape is its
@@ -144,6 +149,30 @@ final class Sampled {
             return new Capsule(k.x1(), k.y1(), k.x2(), k.y2(), (float) (k.r() * f));
         }
         throw new IllegalArgumentException(String.valueOf(s));
+    }
+
+    /**
+     * Random shapes from {@code make} against random shapes of every kind: both orders agree,
+     * a pair said to overlap overlaps when the first is grown 2%, a pair said to be apart is
+     * apart when it is shrunk 2%. Both answers must come up often.
+     */
+    static void assertAgreesWithOracle(long seed, int count, Function<Random, Shape> make) {
+        Random rnd = new Random(seed);
+        int overlapping = 0, apart = 0;
+        for (int i = 0; i < count; i++) {
+            Shape s = make.apply(rnd);
+            Shape other = any(rnd);
+            boolean answer = s.overlaps(other);
+            assertEquals(answer, other.overlaps(s), "both orders for " + s + " and " + other);
+            if (answer) {
+                overlapping++;
+                assertTrue(overlap(scaled(s, 1.02), other), "says overlapping, but grown 2% it is apart: " + s + " " + other);
+            } else {
+                apart++;
+                assertFalse(overlap(scaled(s, 0.98), other), "says apart, but shrunk 2% it overlaps: " + s + " " + other);
+            }
+        }
+        assertTrue(overlapping > count / 6 && apart > count / 6, overlapping + " overlapping, " + apart + " apart");
     }
 
     // ------------------------------------------------------------------ random shapes, modest sizes
