@@ -27,7 +27,7 @@ final class TurningSweep {
     /** Closer than this (pixels) counts as touching: the hit. */
     static final double TOUCH = 1e-3;
     private static final int MAX_STEPS = 2000;
-    private static final int DIRECTIONS = 128;
+    private static final int DIRECTIONS = 32;
 
     /** The mover's vertices at time t: turned by t * turn about the pivot, then moved by t * v. */
     static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t) {
