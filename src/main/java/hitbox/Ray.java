@@ -24,6 +24,9 @@ import java.util.Arrays;
  * <p>The direction need not be of unit length; distances are always in pixels. For
  * whole-number coordinates and directions, whether a ray hits is decided exactly.
  *
+ * <p>A little over the usual size (about 470 lines): the public raw-float distances and
+ * the cast at each of the six shape kinds, each with its normal, belong together.
+ *
  * <p>Reference: Christer Ericson, <i>Real-Time Collision Detection</i> (2005), 5.3
  * "Intersecting Lines, Rays, and (Directed) Segments" (slabs for boxes, a quadratic for
  * spheres, orientation tests for segments).

@@ -52,8 +52,9 @@ package hitbox;
  * {@code double}: for whole-number coordinates and velocities every decision (hit or not,
  * which side) is exact.
  *
- * <p>This class is longer than most (about 580 lines) because it is the public face of every
- * swept pair, each with its full javadoc; the maths is in package-private kernels.
+ * <p>This class is longer than most (about 660 lines) because it is the public face of every
+ * swept pair and of the turning sweep, each with its full javadoc; the maths is in
+ * package-private kernels ({@code SweptPairs}, {@code MoveAndSlide}, {@code TurningSweep}).
  *
  * <p>Reference: Christer Ericson, <i>Real-Time Collision Detection</i> (2005), 5.5
  * "Dynamic Intersection Tests" (moving sphere against sphere, moving sphere against AABB as
