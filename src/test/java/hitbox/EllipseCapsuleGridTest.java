@@ -13,7 +13,8 @@ import net.jqwik.api.constraints.IntRange;
 /**
  * Ellipses and capsules on a small whole-number grid, zero radii and point segments included,
  * where touching is the common case: every pair answers the same in both orders and moved by
- * up to a million pixels (the decisions work on differences, exactly).
+ * up to a million pixels (the decisions work on differences, exactly); capsules against
+ * circles and capsules match distances computed exactly in integers.
  */
 class EllipseCapsuleGridTest {
 
@@ -37,5 +38,52 @@ class EllipseCapsuleGridTest {
         boolean ab = a.overlaps(b);
         assertEquals(ab, b.overlaps(a), () -> "symmetric: " + a + " and " + b);
         assertEquals(ab, a.translated(dx, dy).overlaps(b.translated(dx, dy)), () -> a + " and " + b + " moved by " + dx + ", " + dy);
+    }
+
+    /** Capsule against circle and capsule against capsule on whole numbers, against exact integer arithmetic. */
+    @Property(tries = 3000)
+    void capsules_matchExactIntegerDistances(@ForAll @IntRange(min = 0, max = 8) int x1, @ForAll @IntRange(min = 0, max = 8) int y1,
+                                             @ForAll @IntRange(min = 0, max = 8) int x2, @ForAll @IntRange(min = 0, max = 8) int y2,
+                                             @ForAll @IntRange(min = 0, max = 8) int x3, @ForAll @IntRange(min = 0, max = 8) int y3,
+                                             @ForAll @IntRange(min = 0, max = 8) int x4, @ForAll @IntRange(min = 0, max = 8) int y4,
+                                             @ForAll @IntRange(min = 0, max = 4) int r1, @ForAll @IntRange(min = 0, max = 4) int r2) {
+        long reach = r1 + r2;
+        assertEquals(within(x1, y1, x2, y2, x3, y3, reach), Collide.capsuleCircle(x1, y1, x2, y2, r1, x3, y3, r2),
+                () -> "capsuleCircle " + x1 + "," + y1 + " " + x2 + "," + y2 + " r " + r1 + " circle " + x3 + "," + y3 + " r " + r2);
+        boolean meet = meet(x1, y1, x2, y2, x3, y3, x4, y4);
+        boolean expected = reach > 0 && (meet || within(x1, y1, x2, y2, x3, y3, reach) || within(x1, y1, x2, y2, x4, y4, reach)
+                || within(x3, y3, x4, y4, x1, y1, reach) || within(x3, y3, x4, y4, x2, y2, reach));
+        assertEquals(expected, Collide.capsuleCapsule(x1, y1, x2, y2, r1, x3, y3, x4, y4, r2), "capsuleCapsule");
+    }
+
+    /** Is (px, py) closer than reach to segment AB? In longs: exact. */
+    private static boolean within(long ax, long ay, long bx, long by, long px, long py, long reach) {
+        long ex = bx - ax, ey = by - ay, fx = px - ax, fy = py - ay;
+        long len2 = ex * ex + ey * ey, along = fx * ex + fy * ey;
+        if (len2 == 0 || along <= 0) {
+            return fx * fx + fy * fy < reach * reach;
+        }
+        if (along >= len2) {
+            long gx = px - bx, gy = py - by;
+            return gx * gx + gy * gy < reach * reach;
+        }
+        long cross = ex * fy - ey * fx;
+        return cross * cross < reach * reach * len2;
+    }
+
+    private static long orient(long ax, long ay, long bx, long by, long cx, long cy) {
+        return Long.signum((bx - ax) * (cy - ay) - (by - ay) * (cx - ax));
+    }
+
+    private static boolean on(long ax, long ay, long bx, long by, long px, long py) {
+        return orient(ax, ay, bx, by, px, py) == 0 && Math.min(ax, bx) <= px && px <= Math.max(ax, bx)
+                && Math.min(ay, by) <= py && py <= Math.max(ay, by);
+    }
+
+    private static boolean meet(long ax, long ay, long bx, long by, long cx, long cy, long dx, long dy) {
+        long o1 = orient(ax, ay, bx, by, cx, cy), o2 = orient(ax, ay, bx, by, dx, dy);
+        long o3 = orient(cx, cy, dx, dy, ax, ay), o4 = orient(cx, cy, dx, dy, bx, by);
+        return (o1 * o2 < 0 && o3 * o4 < 0) || on(ax, ay, bx, by, cx, cy) || on(ax, ay, bx, by, dx, dy)
+                || on(cx, cy, dx, dy, ax, ay) || on(cx, cy, dx, dy, bx, by);
     }
 }
