@@ -21,6 +21,12 @@ final class Bounds {
         if (s instanceof Segment g) {
             return Math.min(g.x1(), g.x2());
         }
+        if (s instanceof Ellipse e) {
+            return (double) e.x() - e.rx();
+        }
+        if (s instanceof Capsule k) {
+            return Math.min(k.x1(), k.x2()) - (double) k.r();
+        }
         return ((Polygon) s).bounds().x();
     }
 
@@ -34,6 +40,12 @@ final class Bounds {
         }
         if (s instanceof Segment g) {
             return Math.min(g.y1(), g.y2());
+        }
+        if (s instanceof Ellipse e) {
+            return (double) e.y() - e.ry();
+        }
+        if (s instanceof Capsule k) {
+            return Math.min(k.y1(), k.y2()) - (double) k.r();
         }
         return ((Polygon) s).bounds().y();
     }
@@ -49,6 +61,12 @@ final class Bounds {
         if (s instanceof Segment g) {
             return Math.max(g.x1(), g.x2());
         }
+        if (s instanceof Ellipse e) {
+            return (double) e.x() + e.rx();
+        }
+        if (s instanceof Capsule k) {
+            return Math.max(k.x1(), k.x2()) + (double) k.r();
+        }
         Rect b = ((Polygon) s).bounds();
         return (double) b.x() + b.w();
     }
@@ -63,6 +81,12 @@ final class Bounds {
         }
         if (s instanceof Segment g) {
             return Math.max(g.y1(), g.y2());
+        }
+        if (s instanceof Ellipse e) {
+            return (double) e.y() + e.ry();
+        }
+        if (s instanceof Capsule k) {
+            return Math.max(k.y1(), k.y2()) + (double) k.r();
         }
         Rect b = ((Polygon) s).bounds();
         return (double) b.y() + b.h();

@@ -113,6 +113,13 @@ final class Contacts {
                     + " overlaps(...) to test a segment for a hit, or a sweep or ray cast to find"
                     + " where a moving shape first touches it");
         }
+        if (a instanceof Ellipse || b instanceof Ellipse || a instanceof Capsule || b instanceof Capsule) {
+            if (!Supports.convex(a) || !Supports.convex(b)) {
+                throw new IllegalArgumentException("contact with an ellipse or a capsule needs a convex other shape, but "
+                        + (Supports.convex(a) ? "b" : "a") + " is a concave polygon: split it into convex ones");
+            }
+            return Overlaps.test(a, b) ? Supports.contact(a, b) : null;
+        }
         if (a instanceof Circle c) {
             if (b instanceof Circle d) {
                 return Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());

@@ -108,4 +108,19 @@ final class Lines {
         double x3 = s;
         return x3 != 0 ? x3 : x2 != 0 ? x2 : x1 != 0 ? x1 : x0;
     }
+
+    /** Do the closed segments AB and CD meet? Exact orientation signs. */
+    static boolean segmentsMeet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+        double o1 = Lines.orient(ax, ay, bx, by, cx, cy);
+        double o2 = Lines.orient(ax, ay, bx, by, dx, dy);
+        double o3 = Lines.orient(cx, cy, dx, dy, ax, ay);
+        double o4 = Lines.orient(cx, cy, dx, dy, bx, by);
+        if (Lines.opposite(o1, o2) && Lines.opposite(o3, o4)) {
+            return true;
+        }
+        return (o1 == 0 && Lines.inBox(ax, ay, bx, by, cx, cy))
+                || (o2 == 0 && Lines.inBox(ax, ay, bx, by, dx, dy))
+                || (o3 == 0 && Lines.inBox(cx, cy, dx, dy, ax, ay))
+                || (o4 == 0 && Lines.inBox(cx, cy, dx, dy, bx, by));
+    }
 }

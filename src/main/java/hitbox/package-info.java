@@ -22,8 +22,8 @@
  * <h2 id="touching">The touching rule</h2>
  * One rule for every pair, the tutorial's: <strong>touching is not colliding.</strong>
  * <ul>
- *   <li>Shapes with area (circles, rectangles, polygons) are open sets: their outline is not
- *       part of them. Two circles whose distance equals the sum of their radii, two
+ *   <li>Shapes with area (circles, rectangles, polygons, ellipses, capsules) are open sets:
+ *       their outline is not part of them. Two circles whose distance equals the sum of their radii, two
  *       rectangles side by side, a point exactly on an edge: none of them collide. In the
  *       tutorial's words this is {@code dist < r1 + r2} and
  *       {@code px > rx && px < rx + rw && py > ry && py < ry + rh}, strict inequalities.</li>
@@ -32,7 +32,8 @@
  *       inside of a shape. A segment lying along a rectangle's edge does not collide with
  *       it, because it never reaches the inside.</li>
  *   <li>A zero-size shape has no inside of its own: a circle of radius 0 behaves as a
- *       point, a rectangle of width or height 0 as a segment without its end points. It
+ *       point, a rectangle of width or height 0 as a segment without its end points, an
+ *       ellipse with a radius of 0 as its flat box, a capsule of radius 0 as its segment. It
  *       collides with a shape that has area only by reaching into that shape's inside.
  *       Between two zero-size shapes the same formulas give: a point never collides with a
  *       point or a flat rectangle, and two flat rectangles collide only when they cross

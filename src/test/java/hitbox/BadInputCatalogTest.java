@@ -67,7 +67,7 @@ class BadInputCatalogTest {
      */
     private static final Set<String> CHECKED = Set.of(
             "Rect.centered", "Rect.at", "Rect.translated", "Circle.translated", "Segment.translated",
-            "Polygon.translated", "Shape.translated", "Polygon.triangle", "Polygon.rotatedRect", "Polygon.regular", "Polygon.of",
+            "Polygon.translated", "Ellipse.translated", "Capsule.translated", "Shape.translated", "Polygon.triangle", "Polygon.rotatedRect", "Polygon.regular", "Polygon.of",
             "Ray.between", "Sweep.timeOfImpact", "Sweep.move", "Response.pushOutA", "Response.pushOutB",
             "Grid.parse", "Grid.fillRandom", "Grid.move", "Grid.moveObstacles", "Grid.fromPixels",
             // A broad phase refuses a bad box outright (issue 11), so a stored box always holds.
@@ -113,11 +113,13 @@ class BadInputCatalogTest {
             Map.entry("Hybrid.Counter.add", "any"),
             Map.entry("Segment.side", "0"),
             Map.entry("Rect.contains", "false"), Map.entry("Circle.contains", "false"),
-            Map.entry("Segment.contains", "false"), Map.entry("Polygon.contains", "false"));
+            Map.entry("Segment.contains", "false"), Map.entry("Polygon.contains", "false"),
+            Map.entry("Ellipse.contains", "false"), Map.entry("Capsule.contains", "false"));
 
     /** Parameter names that are sizes: a negative value is refused by checked methods. */
     private static final Set<String> SIZES = Set.of("w", "h", "r", "radius", "width", "height", "cellSize",
-            "cellWidth", "cellHeight", "maxDistance", "depth", "distance", "r1", "r2", "w1", "h1", "w2", "h2");
+            "cellWidth", "cellHeight", "maxDistance", "depth", "distance", "r1", "r2", "w1", "h1", "w2", "h2",
+            "radiusX", "radiusY", "radiusX1", "radiusY1", "radiusX2", "radiusY2");
 
     /** Parameters that may be +Infinity in a checked method (documented). */
     private static final Set<String> MAY_BE_INFINITE = Set.of("Ray.new.maxDistance", "BroadPhase.raycast.maxDistance");
@@ -370,6 +372,12 @@ class BadInputCatalogTest {
         if (c == Segment.class) {
             return new Segment(0, 0, 3, 4);
         }
+        if (c == Ellipse.class) {
+            return new Ellipse(1, 2, 4, 3);
+        }
+        if (c == Capsule.class) {
+            return new Capsule(0, 0, 3, 4, 2);
+        }
         if (c == Polygon.class || c == Shape.class) {
             return Polygon.of(0, 0, 10, 0, 0, 10);
         }
@@ -537,6 +545,12 @@ class BadInputCatalogTest {
         }
         if (type == Segment.class) {
             return new Segment(50, 0, 50, 20);
+        }
+        if (type == Ellipse.class) {
+            return new Ellipse(40, 40, 6, 4);
+        }
+        if (type == Capsule.class) {
+            return new Capsule(30, 40, 50, 40, 3);
         }
         if (type == Polygon.class) {
             return Polygon.of(20, 20, 30, 20, 20, 30);
