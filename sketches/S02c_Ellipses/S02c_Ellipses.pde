@@ -25,15 +25,12 @@ float mouseR = 30;                // the mouse circle's radius
 boolean circleMode;               // space: the mouse is a circle, not a point
 boolean showMaths;                // the 'd' overlay
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   for (int i = 0; i < ellipses.length; i++) {
     Ellipse e = ellipses[i];
@@ -66,7 +63,7 @@ public void draw() {
   Overlay.hint(g, "move the mouse over the ellipses     space: point / circle     d: show the maths");
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == ' ') {

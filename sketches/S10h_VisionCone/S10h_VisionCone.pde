@@ -18,7 +18,7 @@ import hitbox.processing.*;
 
 float gx = 110, gy = 200;         // the guard
 float facing = 0;                 // where the guard looks, radians (0 is to the right)
-float halfAngle = 0.55f;          // half the cone's width
+float halfAngle = 0.55;          // half the cone's width
 float range = 330;
 boolean turning = true;           // the guard sweeps its gaze back and forth
 
@@ -32,18 +32,15 @@ boolean seen;                      // this frame's answer, for the drawing and t
 boolean[] pointSeen = new boolean[3];
 boolean showMaths;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   if (turning) {
-    facing = 0.45f * sin(frameCount * 0.02f);
+    facing = 0.45 * sin(frameCount * 0.02);
   }
   // The player follows the mouse, but never into a wall.
   if (mouseX > 0 || mouseY > 0) {
@@ -98,7 +95,7 @@ boolean clearSight(float x, float y) {
   return true;
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == ' ') {

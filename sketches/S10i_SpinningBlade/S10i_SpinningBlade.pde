@@ -18,7 +18,7 @@ import hitbox.processing.*;
 
 float hubX = 300, hubY = 200;
 float angle = 0;                 // the blade's angle now
-float spin = 0.45f;               // radians a frame (the sign is the direction)
+float spin = 0.45;               // radians a frame (the sign is the direction)
 float bladeLength = 300, bladeWidth = 6;
 boolean turningSweep = true;     // t: the turning sweep, or only the end-of-frame test
 
@@ -34,15 +34,12 @@ Hit lastHit;                     // this frame's hit, for the overlay
 float lastTurn;                  // this frame's turn, for the overlay
 boolean showMaths;
 
-public void settings() {
+void setup() {
   size(600, 400);
-}
-
-public void setup() {
   textFont(createFont("SansSerif", 14));
 }
 
-public void draw() {
+void draw() {
   background(Palette.BACKGROUND);
   Polygon blade = Polygon.rotatedRect(hubX, hubY, bladeLength, bladeWidth, angle);
   lastTurn = spin;
@@ -97,7 +94,7 @@ public void draw() {
       + "     t: switch     d: show the maths");
 }
 
-public void keyPressed() {
+void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == 't') {

@@ -1,9 +1,11 @@
 package hitbox;
 
 /**
- * The tutorial's collision tests, one static method per pair of shapes, on plain floats.
+ * Collision tests, one static method per pair of shapes, on plain floats: the tutorial's
+ * (circle/point, circle/circle, rectangle/point, rectangle/rectangle) and the pairs its section
+ * 10 leaves to "the right maths" (lines, polygons, triangles).
  *
- * <p>Each method is the {@code if} statement the tutorial writes, made exact: the arithmetic is
+ * <p>The tutorial's four are the {@code if} statements it writes, made exact: the arithmetic is
  * done in {@code double}, so for whole-number coordinates up to about a million a touching case
  * is decided by the <a href="package-summary.html#touching">touching rule</a> and never by
  * rounding. The methods allocate nothing and never throw for any float: NaN in any argument
@@ -14,10 +16,10 @@ package hitbox;
  * radius; rectangles are top-left corner, width and height (Processing's {@code CORNER}
  * mode).
  *
- * <p>This class is longer than most (about 970 lines): it is the tutorial's whole table of
- * tests, one public method per pair with its full javadoc (the ellipses and capsules
- * included); the polygon, ellipse and capsule maths is in package-private helpers
- * ({@code Polygons}, {@code Ellipses}, {@code Capsules}).
+ * <p>This class is longer than most (about 970 lines): it is the whole table of tests, one
+ * public method per pair with its full javadoc (the ellipses and capsules included); the
+ * polygon, ellipse and capsule maths is in package-private helpers ({@code Polygons},
+ * {@code Ellipses}, {@code Capsules}).
  */
 public final class Collide {
     private Collide() {
@@ -113,7 +115,8 @@ public final class Collide {
     /**
      * Does the circle overlap the rectangle? Touching an edge or a corner is not overlapping.
      *
-     * <p>The tutorial's method: find the rectangle's point closest to the centre (clamp the
+     * <p>The usual method (the tutorial has no circle/rectangle code): find the rectangle's
+     * point closest to the centre (clamp the
      * centre into the rectangle), then test its distance against the radius. A circle of
      * radius 0 behaves as a point, so it collides only when strictly inside the rectangle.
      *
@@ -146,8 +149,9 @@ public final class Collide {
     /**
      * Is the point inside the polygon? A point on an edge or at a vertex is not inside.
      *
-     * <p>The tutorial's crossing test (count the edges a ray to the right crosses; odd is
-     * inside), made exact: each edge counts by the half-open rule (one end below the point,
+     * <p>The crossing test the video names (count the edges a ray to the right crosses; odd
+     * is inside; the tutorial has no polygon code), made exact: each edge counts by the
+     * half-open rule (one end below the point,
      * the other at or above it), so a ray through a vertex is counted by rule, and which side
      * of an edge the point lies on is an orientation sign, so vertical edges and points on an
      * edge are exact cases too. On a rectangle's four corners it answers exactly as
@@ -229,8 +233,9 @@ public final class Collide {
      * Do two line segments meet? Segments are closed: touching at an end counts, and so do
      * two collinear segments that overlap.
      *
-     * <p>Instead of the tutorial's division for the crossing point (which fails for parallel
-     * and vertical lines), four orientation signs: the segments cross when each one's ends lie
+     * <p>Instead of the usual division for the crossing point (which fails for parallel and
+     * vertical lines; the tutorial has no line code), four orientation signs: the segments
+     * cross when each one's ends lie
      * on opposite sides of the other's line. A zero sign means an end lies on the other's
      * line, and then it is a meeting point exactly when it is also within the other's extent.
      * A segment of length 0 is a point, so it meets a segment through it, and another
@@ -261,8 +266,8 @@ public final class Collide {
      * Does the segment reach into the circle? It must come closer to the centre than the
      * radius: a segment that only touches the outline (a tangent) does not collide.
      *
-     * <p>The tutorial's method: an end inside the circle, or else the point of the segment
-     * closest to the centre inside it. The closest point is not computed (that would divide):
+     * <p>The usual method (Jeff Thompson's; the tutorial has no line code): an end inside the
+     * circle, or else the point of the segment closest to the centre inside it. The closest point is not computed (that would divide):
      * whether it lies between the ends is the sign of a dot product, and its distance is
      * compared as {@code cross^2 < r^2 * length^2} with an exact product difference. A circle
      * of radius 0 has no inside, so no segment reaches it (a segment and a zero-size shape
@@ -304,8 +309,8 @@ public final class Collide {
 
     /**
      * Does the segment reach into the rectangle? Running along an edge or touching a corner
-     * does not; a segment wholly inside does (the tutorial's four line/line tests miss that
-     * case, since it crosses no edge).
+     * does not; a segment wholly inside does (the common recipe of four line/line tests misses
+     * that case, since it crosses no edge).
      *
      * <p>A separating-axis test: the segment misses the rectangle's open inside exactly when
      * it lies, end points included, on or beyond one side of the rectangle (left, right, top
@@ -501,7 +506,7 @@ public final class Collide {
      *
      * <p>The point is inside when it lies on the same side of all three edges: three
      * orientation signs, all positive or all negative (either winding). Exact, unlike the
-     * tutorial's sum of areas, which rounds. A flat triangle contains no point.
+     * common sum-of-areas recipe, which rounds. A flat triangle contains no point.
      *
      * @param x1 the first corner's x
      * @param y1 the first corner's y
@@ -529,7 +534,7 @@ public final class Collide {
     /**
      * Is the point inside the ellipse? Touching the outline is not inside.
      *
-     * <p>The tutorial's {@code (dx / rx)^2 + (dy / ry)^2 < 1}, multiplied out so nothing is
+     * <p>The ellipse's equation, {@code (dx / rx)^2 + (dy / ry)^2 < 1}, multiplied out so nothing is
      * divided, and decided exactly for every float. An ellipse with a radius of 0 contains
      * no point.
      *

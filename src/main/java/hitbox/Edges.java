@@ -61,8 +61,9 @@ public final class Edges {
     }
 
     /**
-     * Which window edges has the circle crossed? The tutorial's bouncing ball test,
-     * {@code x < r || x > width - r}, for each edge; a circle touching an edge has not crossed
+     * Which window edges has the circle crossed? The tutorial's bouncing ball
+     * tests its centre, {@code x < 0 || x > width}; Hitbox tests the circle's edge,
+     * {@code x < r || x > width - r}, for each edge, so the ball turns before it is half out; a circle touching an edge has not crossed
      * it.
      *
      * @param cx     the circle's centre x

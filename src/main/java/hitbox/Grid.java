@@ -382,9 +382,11 @@ public final class Grid {
      * cell among them.
      *
      * <p>The same seed and size give the same grid on every run and every Java version, since
-     * {@link java.util.Random}'s algorithm is fixed by its specification. The tutorial's
-     * 20 x 20 grid with 20% obstacles and the player at the top-left is
-     * {@code new Grid(20, 20, cellSize).fillRandom(0.2f, seed, 0, 0)}: 80 solid cells.
+     * {@link java.util.Random}'s algorithm is fixed by its specification. The tutorial
+     * flips a coin per cell ({@code random(1) < 0.2}), so its count of obstacles changes from
+     * run to run and one may land on the player; this makes exactly the asked share solid,
+     * e.g. {@code new Grid(20, 20, cellSize).fillRandom(0.2f, seed, 0, 0)}: 80 solid cells,
+     * the top-left one kept free.
      *
      * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
      * @param seed     the random seed: the same seed gives the same grid

@@ -404,7 +404,8 @@ public final class Motion {
     }
 
     /**
-     * One frame of the tutorial's bouncing box among many obstacles, made safe: reverse the
+     * One frame of a box bouncing among many obstacles and the window's edges (the tutorial's
+     * section 8 bounces a box off obstacles only), made safe: reverse the
      * speeds {@link #rectBlocked} reports, bounce off the window's edges, then move only along
      * the axes that are still free.
      *

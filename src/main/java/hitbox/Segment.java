@@ -1,7 +1,7 @@
 package hitbox;
 
 /**
- * A line segment between two end points: the tutorial's "line".
+ * A line segment between two end points: what a sketch draws with {@code line()}.
  *
  * <p>Closed: its end points belong to it, so segments that meet at an end intersect, and so do
  * collinear segments that overlap ({@link Collide#lineLine}). Like a point, it has no inside:

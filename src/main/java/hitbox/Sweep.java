@@ -5,7 +5,8 @@ package hitbox;
  * run into an obstacle? A swept test never tunnels: a small object moving thousands of
  * pixels a frame still hits a wall one pixel thick.
  *
- * <p>The tutorial moves an object and then tests where it landed, so a fast object can jump
+ * <p>The tutorial only tests positions (where an object landed, or where it would be next
+ * frame), so a fast object can jump
  * over a thin wall between two frames. A swept test looks at the whole motion instead: the
  * mover starts where it is and moves by {@code (vx, vy)} this frame; the answer is the
  * <em>time of impact</em> {@code t}, the fraction of the motion done when the mover's inside

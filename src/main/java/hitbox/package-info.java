@@ -20,7 +20,9 @@
  * top-left corner and its size, Processing's {@code CORNER} mode.
  *
  * <h2 id="touching">The touching rule</h2>
- * One rule for every pair, the tutorial's: <strong>touching is not colliding.</strong>
+ * One rule for every pair, the one the tutorial's {@code &&} tests keep: <strong>touching is
+ * not colliding.</strong> (Its flipped {@code ||} form, with the same strict comparisons, calls
+ * touching rectangles colliding.)
  * <ul>
  *   <li>Shapes with area (circles, rectangles, polygons, ellipses, capsules) are open sets:
  *       their outline is not part of them. Two circles whose distance equals the sum of their radii, two
