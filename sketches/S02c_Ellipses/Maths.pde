@@ -19,7 +19,7 @@ void drawMaths() {
 
   float u = (mouseX - e.x()) / e.rx();
   float v = (mouseY - e.y()) / e.ry();
-  int colour = hit[n] ? Overlay.HIT : Overlay.MISS;
+  color colour = hit[n] ? Overlay.HIT : Overlay.MISS;
   String test;
   if (circleMode) {
     test = "Collide.ellipseCircle: the circle's centre inside, or its distance\nto the outline < r = "

@@ -386,6 +386,91 @@ public final class Hits {
     }
 
     /** A growing list of ints, so {@code all} makes one pass without boxing. */
+    // ---- obstacles in a broad phase -----------------------------------------------------
+
+    /**
+     * Does the rectangle overlap any box of the broad phase? The same answer as
+     * {@link #any(float, float, float, float, List)} over the same boxes, found by asking the
+     * broad phase for the nearby ones only, so thousands of obstacles cost little.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return true if at least one stored box overlaps the rectangle (false for NaN)
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static boolean any(float x, float y, float w, float h, BroadPhase obstacles) {
+        return BroadPhaseHits.overlapping(obstacles, x, y, w, h).length > 0;
+    }
+
+    /**
+     * The smallest id of a box of the broad phase that the rectangle overlaps.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return the smallest overlapping id, or -1 if none overlaps (or for NaN)
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static int first(float x, float y, float w, float h, BroadPhase obstacles) {
+        int[] ids = BroadPhaseHits.overlapping(obstacles, x, y, w, h);
+        return ids.length > 0 ? ids[0] : -1;
+    }
+
+    /**
+     * How many boxes of the broad phase the rectangle overlaps.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return the number of overlapping boxes, 0 or more
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static int count(float x, float y, float w, float h, BroadPhase obstacles) {
+        return BroadPhaseHits.overlapping(obstacles, x, y, w, h).length;
+    }
+
+    /**
+     * The ids of all the boxes of the broad phase that the rectangle overlaps.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return a new array of the overlapping ids, ascending; empty if none
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static int[] all(float x, float y, float w, float h, BroadPhase obstacles) {
+        return BroadPhaseHits.overlapping(obstacles, x, y, w, h);
+    }
+
+    /**
+     * Calls {@code action} with the id of each box of the broad phase that the rectangle
+     * overlaps, ascending.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null; it may be changed
+     *                  in {@code action}, since the ids are found first
+     * @param action    what to do with each overlapping id, not null
+     * @throws IllegalArgumentException if {@code obstacles} or {@code action} is null
+     */
+    public static void each(float x, float y, float w, float h, BroadPhase obstacles, IntConsumer action) {
+        Check.notNull("action", action);
+        for (int id : BroadPhaseHits.overlapping(obstacles, x, y, w, h)) {
+            action.accept(id);
+        }
+    }
+
     private static final class Found {
         private int[] items = new int[8];
         private int size;

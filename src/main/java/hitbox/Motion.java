@@ -429,13 +429,66 @@ public final class Motion {
      */
     public static Step bounce(float x, float y, float w, float h, float vx, float vy,
                               List<Rect> obstacles, float width, float height) {
-        int blocked = rectBlocked(x, y, w, h, vx, vy, obstacles);
+        Check.notNull("obstacles", obstacles);
+        return bounce(x, y, w, h, vx, vy, width, height, (nvx, nvy) -> rectBlocked(x, y, w, h, nvx, nvy, obstacles));
+    }
+
+    /**
+     * Which axes of a moving rectangle's next move would run into any box of the broad phase:
+     * the same answer as {@link #rectBlocked(float, float, float, float, float, float, List)}
+     * over the same boxes, asking only the ones near the move.
+     *
+     * @param x         the mover's left edge
+     * @param y         the mover's top edge
+     * @param w         the mover's width
+     * @param h         the mover's height
+     * @param vx        the mover's horizontal speed
+     * @param vy        the mover's vertical speed
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, BroadPhase obstacles) {
+        return BroadPhaseHits.rectBlocked(x, y, w, h, vx, vy, obstacles);
+    }
+
+    /**
+     * {@link #bounce(float, float, float, float, float, float, List, float, float)} among the
+     * boxes of a broad phase: the same step, so a sketch with thousands of obstacles changes
+     * one argument.
+     *
+     * @param x         the box's left edge
+     * @param y         the box's top edge
+     * @param w         the box's width
+     * @param h         the box's height
+     * @param vx        its speed across, pixels per frame
+     * @param vy        its speed down, pixels per frame
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @param width     the window's width
+     * @param height    the window's height
+     * @return where the box is after this frame, its new speeds, and what blocked it
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static Step bounce(float x, float y, float w, float h, float vx, float vy,
+                              BroadPhase obstacles, float width, float height) {
+        Check.notNull("obstacles", obstacles);
+        return bounce(x, y, w, h, vx, vy, width, height, (nvx, nvy) -> rectBlocked(x, y, w, h, nvx, nvy, obstacles));
+    }
+
+    /** Which axes a move with these speeds would block, against whatever obstacles. */
+    private interface Blocked {
+        int at(float vx, float vy);
+    }
+
+    private static Step bounce(float x, float y, float w, float h, float vx, float vy,
+                               float width, float height, Blocked obstacles) {
+        int blocked = obstacles.at(vx, vy);
         vx = reverseX(blocked, vx);
         vy = reverseY(blocked, vy);
         int crossed = Edges.rectCrossed(x + vx, y + vy, w, h, width, height);
         vx = Edges.bounceX(crossed, vx);
         vy = Edges.bounceY(crossed, vy);
-        int still = rectBlocked(x, y, w, h, vx, vy, obstacles);
+        int still = obstacles.at(vx, vy);
         float nx = has(still, X) ? x : x + vx;
         float ny = has(still, Y) ? y : y + vy;
         return new Step(nx, ny, vx, vy, blocked, crossed);

@@ -522,6 +522,9 @@ class BadInputCatalogTest {
         if (type == Ray.class) {
             return new Ray(0, 0, 1, 0);
         }
+        if (type == BroadPhase.class) {
+            return receiver(BroadPhase.class);
+        }
         if (type == Hybrid.Stage.class) {
             return Hybrid.Stage.PRECISE;
         }
