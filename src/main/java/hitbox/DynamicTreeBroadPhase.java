@@ -28,6 +28,12 @@ import java.util.function.IntConsumer;
  * every pair of subtrees with no marked leaf (each node counts the marked leaves below it),
  * and then runs the exact test over the list. So every pair whose fat boxes overlap is in the
  * list, each once, and the walk costs in proportion to the leaves that left their fat boxes.
+ *
+ * <p>Nodes are made where a free slot is, so after many re-insertions a subtree's nodes are
+ * spread all over memory. Once the leaves have been re-inserted about half as many times as
+ * there are boxes, the next pairs() renumbers every node in depth-first order (into a second
+ * set of arrays, swapped in), so that a subtree, and the leaves next to each other in space,
+ * are next to each other in memory.
  */
 final class DynamicTreeBroadPhase extends AbstractBroadPhase {
     /** Pixels added on each side of a leaf's box (Box2D: 0.1 m, about 2 to 3 pixels at its usual scale). */
@@ -63,6 +69,13 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
     private int markedCount;
     /** How many marked leaves are in each node's subtree (a leaf: 1 if marked). */
     private int[] markedBelow = new int[0];
+
+    // Renumbering: the second set of node arrays, the new number of each node, and how many
+    // insertions there have been since the last renumbering.
+    private double[] ndSpare = new double[0];
+    private int[] nlSpare = new int[0];
+    private int[] renumbered = new int[0];
+    private int insertions;
 
     // ---------------------------------------------------------------- changes
 
@@ -153,6 +166,7 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
         freeNode = NONE;
         root = NONE;
         pairCount = 0;
+        insertions = 0;
         for (int i = 0; i < markedCount; i++) {
             marked[markedList[i]] = false;
         }
@@ -176,6 +190,9 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
                 int capacity = Math.max(16, 2 * nodes);
                 nd = Arrays.copyOf(nd, 8 * capacity);
                 nl = Arrays.copyOf(nl, 4 * capacity);
+                ndSpare = new double[8 * capacity];
+                nlSpare = new int[4 * capacity];
+                renumbered = new int[capacity];
                 marked = Arrays.copyOf(marked, capacity);
                 markedBelow = Arrays.copyOf(markedBelow, capacity);
             }
@@ -232,6 +249,7 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
     }
 
     private void insertLeaf(int leaf) {
+        insertions++;
         if (root == NONE) {
             root = leaf;
             nl[4 * leaf + PARENT] = NONE;
@@ -404,6 +422,58 @@ final class DynamicTreeBroadPhase extends AbstractBroadPhase {
             }
         }
         markedCount = 0;
+        if (root != NONE && 2L * insertions > count) {
+            renumber();
+        }
+    }
+
+    /**
+     * Renumbers the nodes in depth-first order, into the spare arrays, and swaps them in; the
+     * free nodes are dropped. Only between pairs() updates: no leaf is marked, every candidate
+     * is a leaf in the tree.
+     */
+    private void renumber() {
+        int n = number(root, 0);
+        for (int old = 0; old < nodes; old++) {
+            if (height(old) < 0) {
+                continue;  // free
+            }
+            int now = renumbered[old], l = 4 * old, m = 4 * now;
+            System.arraycopy(nd, 8 * old, ndSpare, 8 * now, 8);
+            boolean leaf = nl[l + CHILD1] == NONE;
+            nlSpare[m + CHILD1] = leaf ? NONE : renumbered[nl[l + CHILD1]];
+            nlSpare[m + CHILD2] = leaf ? nl[l + CHILD2] : renumbered[nl[l + CHILD2]];
+            nlSpare[m + PARENT] = nl[l + PARENT] == NONE ? NONE : renumbered[nl[l + PARENT]];
+            nlSpare[m + HEIGHT] = nl[l + HEIGHT];
+            if (leaf) {
+                leafOf[nl[l + CHILD2]] = now;
+            }
+        }
+        for (int i = 0; i < pairCount; i++) {
+            pairA[i] = renumbered[pairA[i]];
+            pairB[i] = renumbered[pairB[i]];
+        }
+        double[] d = nd;
+        nd = ndSpare;
+        ndSpare = d;
+        int[] l = nl;
+        nl = nlSpare;
+        nlSpare = l;
+        root = renumbered[root];
+        nodes = n;
+        freeNode = NONE;
+        insertions = 0;
+        Arrays.fill(markedBelow, 0, n, 0);  // no leaf is marked now; a freed node's old count must not carry over
+    }
+
+    /** Numbers the subtree from {@code next} on, node before children; returns the next free number. */
+    private int number(int node, int next) {
+        renumbered[node] = next++;
+        if (!isLeaf(node)) {
+            next = number(child1(node), next);
+            next = number(child2(node), next);
+        }
+        return next;
     }
 
     /** The new candidates within a subtree: none if it has no marked leaf. */
