@@ -31,6 +31,34 @@ final class Check {
         return value;
     }
 
+    /** Is any of the five values NaN? (No array, so the hot paths allocate nothing.) */
+    static boolean nan(float a, float b, float c, float d, float e) {
+        return a != a || b != b || c != c || d != d || e != e;
+    }
+
+    /** Is any of the values NaN? */
+    static boolean nan(float[] values) {
+        for (float v : values) {
+            if (v != v) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Is any of the five values NaN or infinite? */
+    static boolean notFinite(float a, float b, float c, float d, float e) {
+        return !(Float.isFinite(a) && Float.isFinite(b) && Float.isFinite(c) && Float.isFinite(d) && Float.isFinite(e));
+    }
+
+    /**
+     * The float nearest to v, held in the float range: an answer about shapes that span more
+     * than {@code Float.MAX_VALUE} (a distance, a point, a depth) stays finite. NaN stays NaN.
+     */
+    static float held(double v) {
+        return (float) Math.max(-Float.MAX_VALUE, Math.min(Float.MAX_VALUE, v));
+    }
+
     /** Returns {@code value}, or throws if it is null. */
     static <T> T notNull(String name, T value) {
         if (value == null) {

@@ -24,7 +24,7 @@ public record Circle(float x, float y, float r) implements Shape {
     public Circle {
         Check.finite("x", x);
         Check.finite("y", y);
-        Check.size("radius", r);
+        Check.size("radius r", r);
     }
 
     /** {@inheritDoc} Same as {@link Collide#circlePoint}. */
@@ -33,15 +33,17 @@ public record Circle(float x, float y, float r) implements Shape {
         return Collide.circlePoint(x, y, r, px, py);
     }
 
-    /** {@inheritDoc} */
+    /** {@inheritDoc} Rounded outwards, so the box holds the circle even when x - r is not a float. */
     @Override
     public Rect bounds() {
-        return new Rect(x - r, y - r, 2 * r, 2 * r);
+        return Bounds.enclosing(Bounds.left(this), Bounds.top(this), Bounds.right(this), Bounds.bottom(this));
     }
 
     /** {@inheritDoc} */
     @Override
     public Circle translated(float dx, float dy) {
-        return new Circle(x + dx, y + dy, r);
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
+        return new Circle(Check.finite("x + dx", x + dx), Check.finite("y + dy", y + dy), r);
     }
 }

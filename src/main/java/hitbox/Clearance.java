@@ -33,9 +33,15 @@ import java.util.List;
  * the problem. The move found may therefore leave an overlap that small, and candidates
  * that close in length tie (and go by the tie rule of {@link Contact}).
  *
+ * <p>The cutting into convex pieces is {@link Triangulation}'s.
+ *
+ * <p>The circle half of the search, whose pieces are round, is {@link CircleClearance}'s;
+ * the tolerance and the small geometry here are shared by both. At about 490 lines this is
+ * a little over the usual size: the polygon search's candidates, regions and lines of moves
+ * only make sense together.
+ *
  * <p>Reference: C. Ericson, <i>Real-Time Collision Detection</i>, 2005, section 3.11
- * (Minkowski sums and differences); D. Eberly, "Triangulation by Ear Clipping", 2002;
- * S. Hertel, K. Mehlhorn, "Fast triangulation of simple polygons", 1983.
+ * (Minkowski sums and differences).
  */
 final class Clearance {
     private Clearance() {
@@ -61,7 +67,7 @@ final class Clearance {
             }
             List<int[]> cuts = new ArrayList<>();
             List<double[]> pieces = new ArrayList<>();
-            for (int[] piece : convexPieces(xy, cuts)) {
+            for (int[] piece : Triangulation.convexPieces(xy, cuts)) {
                 double[] c = new double[2 * piece.length];
                 for (int k = 0; k < piece.length; k++) {
                     c[2 * k] = xy[2 * piece[k]];
@@ -188,7 +194,7 @@ final class Clearance {
             }
         }
         edges.sort((e, f) -> Double.compare(e[4], f[4]));
-        Contacts.Best best = new Contacts.Best(2 * tol);
+        Contacts.Shortest best = new Contacts.Shortest(2 * tol);
         List<double[]> inside = new ArrayList<>();
         for (double[] e : edges) {
             if (best.beyond(e[4])) {
@@ -249,7 +255,7 @@ final class Clearance {
      * overlapping over its whole length. Next to such a line both sides are covered by the
      * regions of the two pieces the cut separates, so nothing nearer is lost.
      */
-    private static void offerGap(Contacts.Best best, double[] e, double lo, double hi, double foot,
+    private static void offerGap(Contacts.Shortest best, double[] e, double lo, double hi, double foot,
                                  List<double[]> lines, double tol) {
         double ex = e[2] - e[0], ey = e[3] - e[1];
         double t = Math.max(lo, Math.min(hi, foot));
@@ -451,153 +457,6 @@ final class Clearance {
         return Math.sqrt(x * x + y * y);
     }
 
-    // ------------------------------------------------------------------------------ circles
-
-    /**
-     * A circle (first) of radius r &gt; 0 against a polygon (second) that it overlaps: the
-     * shortest move of the centre to a point at least r from the polygon. Normal from the
-     * circle to the polygon.
-     */
-    static Contact circle(float cx, float cy, float r, float[] xy) {
-        int n = xy.length / 2;
-        // Everything relative to the centre: the no-move point is the origin.
-        double[] p = new double[xy.length];
-        double extent = r;
-        for (int i = 0; i < n; i++) {
-            p[2 * i] = (double) xy[2 * i] - cx;
-            p[2 * i + 1] = (double) xy[2 * i + 1] - cy;
-            extent = Math.max(extent, Math.max(Math.abs(p[2 * i]), Math.abs(p[2 * i + 1])));
-        }
-        double tol = TOLERANCE * (1 + extent);
-        double turn = Polygons.winding(xy);
-
-        // The outline's pieces: each edge pushed out by r (x0, y0, x1, y1, nx, ny), and a
-        // circle of radius r around each corner.
-        List<double[]> offsets = new ArrayList<>();
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            double ex = p[2 * j] - p[2 * i], ey = p[2 * j + 1] - p[2 * i + 1];
-            double len = length(ex, ey);
-            if (len == 0) {
-                continue;
-            }
-            double nx = turn * ey / len, ny = -turn * ex / len;
-            offsets.add(new double[] {p[2 * i] + r * nx, p[2 * i + 1] + r * ny,
-                    p[2 * j] + r * nx, p[2 * j + 1] + r * ny, nx, ny});
-        }
-
-        Disc disc = new Disc(xy, cx, cy, p, r, tol);
-        Contacts.Best best = new Contacts.Best(2 * tol);
-        for (double[] o : offsets) {
-            offerCentre(best, o[0], o[1], disc);
-            double ex = o[2] - o[0], ey = o[3] - o[1];
-            double len2 = ex * ex + ey * ey;
-            double along = -(o[0] * ex + o[1] * ey);
-            if (along > 0 && along < len2) {
-                double t = along / len2;
-                double qx = o[0] + t * ex, qy = o[1] + t * ey;
-                // The centre moves to q, along the edge's normal: the polygon moves against it.
-                double s = o[0] * o[4] + o[1] * o[5];
-                if (s != 0 && !coveredCentre(qx, qy, disc)) {
-                    double sign = Math.signum(s);
-                    best.offer(-sign * o[4], -sign * o[5], Math.abs(s));
-                }
-            }
-        }
-        for (int i = 0; i < n; i++) {
-            double vx = p[2 * i], vy = p[2 * i + 1];
-            double d = length(vx, vy);
-            if (d > 0) {
-                double k = 1 - r / d;
-                offerCentre(best, vx * k, vy * k, disc);
-            }
-        }
-        // Crossings of two pieces, skipping any piece farther away than the best so far (a
-        // crossing lies on both pieces, so it is at least as far as either).
-        double[] offsetNear = new double[offsets.size()];
-        for (int i = 0; i < offsets.size(); i++) {
-            double[] o = offsets.get(i);
-            offsetNear[i] = segmentDistance(o[0], o[1], o[2], o[3]);
-        }
-        double[] circleNear = new double[n];
-        for (int v = 0; v < n; v++) {
-            circleNear[v] = length(p[2 * v], p[2 * v + 1]) - r;
-        }
-        for (int i = 0; i < offsets.size(); i++) {
-            if (best.beyond(offsetNear[i])) {
-                continue;
-            }
-            double[] o = offsets.get(i);
-            for (int j = i + 1; j < offsets.size(); j++) {
-                if (!best.beyond(offsetNear[j])) {
-                    double[] c = segmentCrossing(o, offsets.get(j));
-                    if (c != null) {
-                        offerCentre(best, c[0], c[1], disc);
-                    }
-                }
-            }
-            for (int v = 0; v < n; v++) {
-                if (!best.beyond(circleNear[v])) {
-                    for (double[] c : segmentCircle(o, p[2 * v], p[2 * v + 1], r)) {
-                        offerCentre(best, c[0], c[1], disc);
-                    }
-                }
-            }
-        }
-        for (int u = 0; u < n; u++) {
-            if (best.beyond(circleNear[u])) {
-                continue;
-            }
-            for (int v = u + 1; v < n; v++) {
-                if (!best.beyond(circleNear[v])) {
-                    for (double[] c : circleCircle(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], r)) {
-                        offerCentre(best, c[0], c[1], disc);
-                    }
-                }
-            }
-        }
-        return best.contact();
-    }
-
-    /**
-     * The circle search's fixed data: the polygon as given ({@code xy}) and relative to the
-     * circle's centre ({@code p}), the radius and the tolerance.
-     */
-    private record Disc(float[] xy, float cx, float cy, double[] p, double r, double tol) {
-    }
-
-    /** Offers moving the centre to (qx, qy), if the circle is clear there. */
-    private static void offerCentre(Contacts.Best best, double qx, double qy, Disc disc) {
-        double d = length(qx, qy);
-        if (d == 0 || best.beyond(d) || coveredCentre(qx, qy, disc)) {
-            return;
-        }
-        // The centre moves by q; the polygon, seen from the circle, moves by -q.
-        best.offer(-qx / d, -qy / d, d);
-    }
-
-    /**
-     * Would a circle of radius r centred at (qx, qy) overlap the polygon by more than tol?
-     * The inside test is the exact {@link Polygons#contains}, at the centre's place in the
-     * polygon's own coordinates; rounding that place matters only on the outline, where the
-     * distance test already answers (for r above tol).
-     */
-    private static boolean coveredCentre(double qx, double qy, Disc disc) {
-        if (Polygons.contains(disc.xy(), disc.cx() + qx, disc.cy() + qy)) {
-            return true;
-        }
-        double[] p = disc.p();
-        int n = p.length / 2;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            if (segmentDistance(p[2 * i] - qx, p[2 * i + 1] - qy, p[2 * j] - qx, p[2 * j + 1] - qy)
-                    < disc.r() - disc.tol()) {
-                return true;
-            }
-        }
-        return false;
-    }
-
     // ------------------------------------------------------------------------ small geometry
 
     /** Distance from the origin to the segment (x0, y0)-(x1, y1). */
@@ -631,185 +490,4 @@ final class Clearance {
         return new double[] {e[0] + t * ex, e[1] + t * ey};
     }
 
-    /** Where the segment (first four values of o) meets the circle of radius r about (cx, cy). */
-    private static double[][] segmentCircle(double[] o, double cx, double cy, double r) {
-        double ex = o[2] - o[0], ey = o[3] - o[1];
-        double gx = o[0] - cx, gy = o[1] - cy;
-        double a = ex * ex + ey * ey;
-        double b = gx * ex + gy * ey;
-        double c = gx * gx + gy * gy - r * r;
-        double disc = b * b - a * c;
-        if (a == 0 || disc < 0) {
-            return new double[0][];
-        }
-        double root = Math.sqrt(disc);
-        List<double[]> out = new ArrayList<>(2);
-        for (double t : new double[] {(-b - root) / a, (-b + root) / a}) {
-            if (t >= 0 && t <= 1) {
-                out.add(new double[] {o[0] + t * ex, o[1] + t * ey});
-            }
-        }
-        return out.toArray(new double[0][]);
-    }
-
-    /** Where two circles of the same radius r cross. */
-    private static double[][] circleCircle(double ax, double ay, double bx, double by, double r) {
-        double dx = bx - ax, dy = by - ay;
-        double d = length(dx, dy);
-        if (d == 0 || d > 2 * r) {
-            return new double[0][];
-        }
-        double h = Math.sqrt(Math.max(0, r * r - d * d / 4));
-        double mx = (ax + bx) / 2, my = (ay + by) / 2;
-        double px = -dy / d * h, py = dx / d * h;
-        return new double[][] {{mx + px, my + py}, {mx - px, my - py}};
-    }
-
-    // ------------------------------------------------------------------------- triangulation
-
-    /**
-     * Cuts a simple polygon into convex pieces: triangles by ear clipping, then, cut by cut,
-     * the two pieces on either side are merged whenever the union is still convex (Hertel and
-     * Mehlhorn's method: at most four times the fewest pieces possible, usually far fewer
-     * than triangles). Pieces are vertex indices in the polygon's winding; the cuts kept are
-     * added to {@code cuts}, each as two vertex indices.
-     *
-     * <p>Reference: S. Hertel, K. Mehlhorn, "Fast triangulation of simple polygons", 1983.
-     */
-    static List<int[]> convexPieces(double[] xy, List<int[]> cuts) {
-        List<int[]> diagonals = new ArrayList<>();
-        List<int[]> pieces = triangulate(xy, diagonals);
-        double turn = Math.signum(Polygons.doubleSignedArea(xy));
-        for (int[] d : diagonals) {
-            int p = pieceWithEdge(pieces, d[0], d[1]);
-            int q = pieceWithEdge(pieces, d[1], d[0]);
-            if (p < 0 || q < 0) {
-                cuts.add(d);
-                continue;
-            }
-            int[] merged = merge(pieces.get(p), pieces.get(q), d[0], d[1]);
-            if (convexAt(xy, merged, d[0], turn) && convexAt(xy, merged, d[1], turn)) {
-                pieces.set(p, merged);
-                pieces.remove(q);
-            } else {
-                cuts.add(d);
-            }
-        }
-        return pieces;
-    }
-
-    /** The piece that runs from vertex u straight to vertex w, or -1. */
-    private static int pieceWithEdge(List<int[]> pieces, int u, int w) {
-        for (int k = 0; k < pieces.size(); k++) {
-            int[] p = pieces.get(k);
-            for (int i = 0; i < p.length; i++) {
-                if (p[i] == u && p[(i + 1) % p.length] == w) {
-                    return k;
-                }
-            }
-        }
-        return -1;
-    }
-
-    /** Piece p (with edge u to w) and piece q (with edge w to u) joined along that edge. */
-    private static int[] merge(int[] p, int[] q, int u, int w) {
-        int[] out = new int[p.length + q.length - 2];
-        int i = 0;
-        while (p[i] != w) {
-            i++;
-        }
-        int k = 0;
-        for (int s = 0; s < p.length; s++) {
-            out[k++] = p[(i + s) % p.length]; // w ... u, all of p
-        }
-        int j = 0;
-        while (q[j] != u) {
-            j++;
-        }
-        for (int s = 1; s < q.length - 1; s++) {
-            out[k++] = q[(j + s) % q.length]; // after u, up to before w
-        }
-        return out;
-    }
-
-    /** Does the piece turn with the polygon (or go straight) at vertex v? */
-    private static boolean convexAt(double[] xy, int[] piece, int v, double turn) {
-        int n = piece.length;
-        for (int i = 0; i < n; i++) {
-            if (piece[i] == v) {
-                return orient(xy, piece[(i + n - 1) % n], v, piece[(i + 1) % n]) * turn >= 0;
-            }
-        }
-        return false;
-    }
-
-    /**
-     * Cuts a simple polygon into triangles by ear clipping; each triangle is three vertex
-     * indices in the polygon's winding, and each cut (two vertex indices) is added to
-     * {@code diagonals}. Straight vertices (on the line between their neighbours) are dropped
-     * on the way; they change nothing. Orientation tests only, exact for whole numbers.
-     *
-     * <p>Reference: D. Eberly, "Triangulation by Ear Clipping", 2002.
-     *
-     * @throws IllegalArgumentException if the polygon has no area or crosses itself (then no
-     *                                  ear can be found)
-     */
-    static List<int[]> triangulate(double[] xy, List<int[]> diagonals) {
-        int n = xy.length / 2;
-        double turn = Math.signum(Polygons.doubleSignedArea(xy));
-        if (turn == 0) {
-            throw new IllegalArgumentException("the polygon has no area, so it cannot be cut into triangles");
-        }
-        int[] v = new int[n];
-        for (int i = 0; i < n; i++) {
-            v[i] = i;
-        }
-        int count = n;
-        List<int[]> triangles = new ArrayList<>(n - 2);
-        while (count > 3) {
-            boolean cut = false;
-            for (int k = 0; k < count && !cut; k++) {
-                int a = v[(k + count - 1) % count], b = v[k], c = v[(k + 1) % count];
-                double o = orient(xy, a, b, c);
-                if (o == 0) {
-                    // Straight: b lies on the way from a to c, so dropping it changes nothing.
-                    cut = true;
-                } else if (o * turn > 0 && isEar(xy, v, count, a, b, c, turn)) {
-                    triangles.add(new int[] {a, b, c});
-                    diagonals.add(new int[] {a, c});
-                    cut = true;
-                }
-                if (cut) {
-                    System.arraycopy(v, k + 1, v, k, count - k - 1);
-                    count--;
-                }
-            }
-            if (!cut) {
-                throw new IllegalArgumentException("the polygon crosses itself, so it cannot be cut into triangles");
-            }
-        }
-        if (orient(xy, v[0], v[1], v[2]) != 0) {
-            triangles.add(new int[] {v[0], v[1], v[2]});
-        }
-        return triangles;
-    }
-
-    /** Is triangle a, b, c (turning with the polygon) free of every other remaining vertex? */
-    private static boolean isEar(double[] xy, int[] v, int count, int a, int b, int c, double turn) {
-        for (int k = 0; k < count; k++) {
-            int i = v[k];
-            if (i == a || i == b || i == c) {
-                continue;
-            }
-            // In the closed triangle: a vertex on the cut a-c would make the cut touch the outline.
-            if (orient(xy, a, b, i) * turn >= 0 && orient(xy, b, c, i) * turn >= 0 && orient(xy, c, a, i) * turn >= 0) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private static double orient(double[] xy, int a, int b, int c) {
-        return Lines.orient(xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1], xy[2 * c], xy[2 * c + 1]);
-    }
 }

@@ -1,14 +1,25 @@
 package hitbox;
 
 /**
- * The tutorial's collision tests, one static method per pair of shapes, on plain floats.
+ * Collision tests, one static method per pair of shapes, on plain floats: the tutorial's
+ * (circle/point, circle/circle, rectangle/point, rectangle/rectangle) and the pairs its section
+ * 10 leaves to "the right maths" (lines, polygons, triangles).
  *
- * <p>Each method is the {@code if} statement the tutorial writes, made exact: the arithmetic is
+ * <p>The tutorial's four are the {@code if} statements it writes, made exact: the arithmetic is
  * done in {@code double}, so for whole-number coordinates up to about a million a touching case
  * is decided by the <a href="package-summary.html#touching">touching rule</a> and never by
- * rounding. The methods allocate nothing and check nothing: NaN in any argument makes every
- * comparison false, so the answer is "no collision". Circles are centre and radius; rectangles
- * are top-left corner, width and height (Processing's {@code CORNER} mode).
+ * rounding. The methods allocate nothing and never throw for any float: NaN in any argument
+ * (a coordinate of a polygon's array included) answers "no collision", false (the package's
+ * <a href="package-summary.html#bad-input">NaN rule</a>); so does a negative size or radius.
+ * Infinite values are compared as the formulas compare them. The polygon methods throw only
+ * for a null array ({@link IllegalArgumentException} naming it). Circles are centre and
+ * radius; rectangles are top-left corner, width and height (Processing's {@code CORNER}
+ * mode).
+ *
+ * <p>This class is longer than most (about 970 lines): it is the whole table of tests, one
+ * public method per pair with its full javadoc (the ellipses and capsules included); the
+ * polygon, ellipse and capsule maths is in package-private helpers ({@code Polygons},
+ * {@code Ellipses}, {@code Capsules}).
  */
 public final class Collide {
     private Collide() {
@@ -30,7 +41,7 @@ public final class Collide {
     public static boolean circlePoint(float cx, float cy, float r, float px, float py) {
         double dx = (double) px - cx;
         double dy = (double) py - cy;
-        return dx * dx + dy * dy < (double) r * r;
+        return r > 0 && dx * dx + dy * dy < (double) r * r;
     }
 
     /**
@@ -49,6 +60,9 @@ public final class Collide {
      * @return true if the distance between the centres is less than the sum of the radii
      */
     public static boolean circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
+        if (!(r1 >= 0 && r2 >= 0)) {
+            return false;
+        }
         double dx = (double) x2 - x1;
         double dy = (double) y2 - y1;
         double reach = (double) r1 + r2;
@@ -93,14 +107,16 @@ public final class Collide {
      */
     public static boolean rectRect(float x1, float y1, float w1, float h1,
                                    float x2, float y2, float w2, float h2) {
-        return (double) x1 + w1 > x2 && x1 < (double) x2 + w2
+        return w1 >= 0 && h1 >= 0 && w2 >= 0 && h2 >= 0
+                && (double) x1 + w1 > x2 && x1 < (double) x2 + w2
                 && (double) y1 + h1 > y2 && y1 < (double) y2 + h2;
     }
 
     /**
      * Does the circle overlap the rectangle? Touching an edge or a corner is not overlapping.
      *
-     * <p>The tutorial's method: find the rectangle's point closest to the centre (clamp the
+     * <p>The usual method (the tutorial has no circle/rectangle code): find the rectangle's
+     * point closest to the centre (clamp the
      * centre into the rectangle), then test its distance against the radius. A circle of
      * radius 0 behaves as a point, so it collides only when strictly inside the rectangle.
      *
@@ -114,6 +130,9 @@ public final class Collide {
      * @return true if the circle's inside and the rectangle's inside overlap
      */
     public static boolean circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
+        if (!(r >= 0 && rw >= 0 && rh >= 0)) {
+            return false;
+        }
         double dx = cx - clamp(cx, rx, (double) rx + rw);
         double dy = cy - clamp(cy, ry, (double) ry + rh);
         double d2 = dx * dx + dy * dy;
@@ -130,8 +149,9 @@ public final class Collide {
     /**
      * Is the point inside the polygon? A point on an edge or at a vertex is not inside.
      *
-     * <p>The tutorial's crossing test (count the edges a ray to the right crosses; odd is
-     * inside), made exact: each edge counts by the half-open rule (one end below the point,
+     * <p>The crossing test the video names (count the edges a ray to the right crosses; odd
+     * is inside; the tutorial has no polygon code), made exact: each edge counts by the
+     * half-open rule (one end below the point,
      * the other at or above it), so a ray through a vertex is counted by rule, and which side
      * of an edge the point lies on is an orientation sign, so vertical edges and points on an
      * edge are exact cases too. On a rectangle's four corners it answers exactly as
@@ -149,6 +169,9 @@ public final class Collide {
      * @return true if the point is strictly inside
      */
     public static boolean polygonPoint(float[] xy, float px, float py) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(px, py, 0, 0, 0)) {
+            return false;
+        }
         return Polygons.contains(xy, px, py);
     }
 
@@ -171,6 +194,9 @@ public final class Collide {
      * @return true if this edge counts as a crossing
      */
     public static boolean rayCrossesEdge(float ax, float ay, float bx, float by, float px, float py) {
+        if (Check.nan(ax, ay, bx, by, px) || Float.isNaN(py)) {
+            return false;
+        }
         return Polygons.rayCrossing(ax, ay, bx, by, px, py) > 0;
     }
 
@@ -207,8 +233,9 @@ public final class Collide {
      * Do two line segments meet? Segments are closed: touching at an end counts, and so do
      * two collinear segments that overlap.
      *
-     * <p>Instead of the tutorial's division for the crossing point (which fails for parallel
-     * and vertical lines), four orientation signs: the segments cross when each one's ends lie
+     * <p>Instead of the usual division for the crossing point (which fails for parallel and
+     * vertical lines; the tutorial has no line code), four orientation signs: the segments
+     * cross when each one's ends lie
      * on opposite sides of the other's line. A zero sign means an end lies on the other's
      * line, and then it is a meeting point exactly when it is also within the other's extent.
      * A segment of length 0 is a point, so it meets a segment through it, and another
@@ -229,25 +256,18 @@ public final class Collide {
      */
     public static boolean lineLine(float x1, float y1, float x2, float y2,
                                    float x3, float y3, float x4, float y4) {
-        double d1 = Lines.orient(x3, y3, x4, y4, x1, y1);
-        double d2 = Lines.orient(x3, y3, x4, y4, x2, y2);
-        double d3 = Lines.orient(x1, y1, x2, y2, x3, y3);
-        double d4 = Lines.orient(x1, y1, x2, y2, x4, y4);
-        if (Lines.opposite(d1, d2) && Lines.opposite(d3, d4)) {
-            return true;
+        if (Check.nan(x1, y1, x2, y2, x3) || Check.nan(y3, x4, y4, 0, 0)) {
+            return false;
         }
-        return (d1 == 0 && Lines.inBox(x3, y3, x4, y4, x1, y1))
-                || (d2 == 0 && Lines.inBox(x3, y3, x4, y4, x2, y2))
-                || (d3 == 0 && Lines.inBox(x1, y1, x2, y2, x3, y3))
-                || (d4 == 0 && Lines.inBox(x1, y1, x2, y2, x4, y4));
+        return Lines.segmentsMeet(x1, y1, x2, y2, x3, y3, x4, y4);
     }
 
     /**
      * Does the segment reach into the circle? It must come closer to the centre than the
      * radius: a segment that only touches the outline (a tangent) does not collide.
      *
-     * <p>The tutorial's method: an end inside the circle, or else the point of the segment
-     * closest to the centre inside it. The closest point is not computed (that would divide):
+     * <p>The usual method (Jeff Thompson's; the tutorial has no line code): an end inside the
+     * circle, or else the point of the segment closest to the centre inside it. The closest point is not computed (that would divide):
      * whether it lies between the ends is the sign of a dot product, and its distance is
      * compared as {@code cross^2 < r^2 * length^2} with an exact product difference. A circle
      * of radius 0 has no inside, so no segment reaches it (a segment and a zero-size shape
@@ -265,6 +285,9 @@ public final class Collide {
      * @return true if some point of the segment is strictly inside the circle
      */
     public static boolean lineCircle(float x1, float y1, float x2, float y2, float cx, float cy, float r) {
+        if (Check.nan(x1, y1, x2, y2, cx) || Check.nan(cy, r, 0, 0, 0)) {
+            return false;
+        }
         if (!(r > 0)) {
             return false;
         }
@@ -286,8 +309,8 @@ public final class Collide {
 
     /**
      * Does the segment reach into the rectangle? Running along an edge or touching a corner
-     * does not; a segment wholly inside does (the tutorial's four line/line tests miss that
-     * case, since it crosses no edge).
+     * does not; a segment wholly inside does (the common recipe of four line/line tests misses
+     * that case, since it crosses no edge).
      *
      * <p>A separating-axis test: the segment misses the rectangle's open inside exactly when
      * it lies, end points included, on or beyond one side of the rectangle (left, right, top
@@ -310,6 +333,9 @@ public final class Collide {
      */
     public static boolean lineRect(float x1, float y1, float x2, float y2,
                                    float rx, float ry, float rw, float rh) {
+        if (Check.nan(x1, y1, x2, y2, rx) || Check.nan(ry, rw, rh, 0, 0)) {
+            return false;
+        }
         if (!(rw > 0 && rh > 0)) {
             return false;
         }
@@ -345,6 +371,9 @@ public final class Collide {
      * @return true if the insides of the circle and the polygon overlap
      */
     public static boolean polygonCircle(float[] xy, float cx, float cy, float r) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(cx, cy, r, 0, 0)) {
+            return false;
+        }
         int n = xy.length / 2;
         if (!(r >= 0) || n < 3) {
             return false;
@@ -376,6 +405,9 @@ public final class Collide {
      * @return true if the insides of the rectangle and the polygon overlap
      */
     public static boolean polygonRect(float[] xy, float rx, float ry, float rw, float rh) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(rx, ry, rw, rh, 0)) {
+            return false;
+        }
         if (!(rw >= 0 && rh >= 0)) {
             return false;
         }
@@ -414,7 +446,7 @@ public final class Collide {
      * @return true if some point of the segment is strictly inside the polygon
      */
     public static boolean polygonLine(float[] xy, float x1, float y1, float x2, float y2) {
-        if (Float.isNaN(x1) || Float.isNaN(y1) || Float.isNaN(x2) || Float.isNaN(y2)) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(x1, y1, x2, y2, 0)) {
             return false;
         }
         if (Polygons.contains(xy, x1, y1)) {
@@ -439,6 +471,9 @@ public final class Collide {
      * @return true if the insides of the polygons overlap
      */
     public static boolean polygonPolygon(float[] a, float[] b) {
+        if (Check.nan(Check.notNull("a", a)) || Check.nan(Check.notNull("b", b))) {
+            return false;
+        }
         int wa = Polygons.winding(a);
         int wb = Polygons.winding(b);
         if (wa == 0 || wb == 0 || Polygons.boundsApart(a, b)) {
@@ -459,12 +494,10 @@ public final class Collide {
         int m = Polygons.leftmost(b);
         int prev = Polygons.distinctNeighbour(b, m, b.length / 2 - 1);
         int next = Polygons.distinctNeighbour(b, m, 1);
-        double vx = b[2 * m];
-        double vy = b[2 * m + 1];
-        // The leftmost corner is convex, so the sum of its two edge directions points inside.
-        double dx = (b[2 * prev] - vx) + (b[2 * next] - vx);
-        double dy = (b[2 * prev + 1] - vy) + (b[2 * next + 1] - vy);
-        return Polygons.stepsInside(a, wa, vx, vy, dx, dy);
+        // The leftmost corner is convex, so the sum of its two edge directions points inside;
+        // summed exactly, since a corner can be thinner than a double's rounding.
+        return Polygons.stepsInsideExact(a, wa, b[2 * m], b[2 * m + 1], b[2 * prev], b[2 * prev + 1],
+                b[2 * next], b[2 * next + 1]);
     }
 
     /**
@@ -473,7 +506,7 @@ public final class Collide {
      *
      * <p>The point is inside when it lies on the same side of all three edges: three
      * orientation signs, all positive or all negative (either winding). Exact, unlike the
-     * tutorial's sum of areas, which rounds. A flat triangle contains no point.
+     * common sum-of-areas recipe, which rounds. A flat triangle contains no point.
      *
      * @param x1 the first corner's x
      * @param y1 the first corner's y
@@ -487,9 +520,407 @@ public final class Collide {
      */
     public static boolean trianglePoint(float x1, float y1, float x2, float y2, float x3, float y3,
                                         float px, float py) {
+        if (Check.nan(x1, y1, x2, y2, x3) || Check.nan(y3, px, py, 0, 0)) {
+            return false;
+        }
         double o1 = Lines.orient(x1, y1, x2, y2, px, py);
         double o2 = Lines.orient(x2, y2, x3, y3, px, py);
         double o3 = Lines.orient(x3, y3, x1, y1, px, py);
         return (o1 > 0 && o2 > 0 && o3 > 0) || (o1 < 0 && o2 < 0 && o3 < 0);
+    }
+
+    // ---------------------------------------------------------------- ellipses
+
+    /**
+     * Is the point inside the ellipse? Touching the outline is not inside.
+     *
+     * <p>The ellipse's equation, {@code (dx / rx)^2 + (dy / ry)^2 < 1}, multiplied out so nothing is
+     * divided, and decided exactly for every float. An ellipse with a radius of 0 contains
+     * no point.
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX its horizontal radius (half of {@code ellipse()}'s width)
+     * @param radiusY its vertical radius (half of {@code ellipse()}'s height)
+     * @param px      the point's x
+     * @param py      the point's y
+     * @return true if the point is strictly inside the ellipse
+     */
+    public static boolean ellipsePoint(float x, float y, float radiusX, float radiusY, float px, float py) {
+        if (Check.nan(x, y, radiusX, radiusY, px) || py != py) {
+            return false;
+        }
+        return Ellipses.point(x, y, radiusX, radiusY, px, py);
+    }
+
+    /**
+     * Do an ellipse and a circle overlap? Touching is not overlapping.
+     *
+     * <p>A circle of radius 0 is a point ({@link #ellipsePoint}); an ellipse with a radius of
+     * 0 is its flat box ({@link #circleRect}). Otherwise the circle's centre is tested
+     * against the ellipse and its distance to the outline (D. Eberly's robust bisection) is
+     * compared with r: touching on the ellipse's axes is exact, and elsewhere the answer can
+     * be wrong only when the gap or overlap is below about 1e-12 of the sizes involved.
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX its horizontal radius
+     * @param radiusY its vertical radius
+     * @param cx      the circle's centre x
+     * @param cy      the circle's centre y
+     * @param r       the circle's radius
+     * @return true if the insides overlap
+     */
+    public static boolean ellipseCircle(float x, float y, float radiusX, float radiusY, float cx, float cy, float r) {
+        if (Check.nan(x, y, radiusX, radiusY, cx) || Check.nan(cy, r, 0, 0, 0) || !(radiusX >= 0 && radiusY >= 0 && r >= 0)) {
+            return false;
+        }
+        if (r == 0) {
+            return Ellipses.point(x, y, radiusX, radiusY, cx, cy);
+        }
+        if (radiusX == 0 || radiusY == 0) {
+            float[] b = Ellipses.box(x, y, radiusX, radiusY);
+            return circleRect(cx, cy, r, b[0], b[1], b[2], b[3]);
+        }
+        return Ellipses.circle(x, y, radiusX, radiusY, cx, cy, r);
+    }
+
+    /**
+     * Do an ellipse and a rectangle overlap? Touching is not overlapping.
+     *
+     * <p>The rectangle's point nearest the centre (clamped, as in {@link #circleRect}) is
+     * tested with {@link #ellipsePoint}'s exact formula: an axis-aligned scaling turns the
+     * ellipse into a circle and keeps that point the nearest. An ellipse with a radius of 0
+     * is its flat box ({@link #rectRect}).
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX its horizontal radius
+     * @param radiusY its vertical radius
+     * @param rx      the rectangle's left edge
+     * @param ry      the rectangle's top edge
+     * @param rw      the rectangle's width
+     * @param rh      the rectangle's height
+     * @return true if the insides overlap
+     */
+    public static boolean ellipseRect(float x, float y, float radiusX, float radiusY, float rx, float ry, float rw, float rh) {
+        if (Check.nan(x, y, radiusX, radiusY, rx) || Check.nan(ry, rw, rh, 0, 0)
+                || !(radiusX >= 0 && radiusY >= 0 && rw >= 0 && rh >= 0)) {
+            return false;
+        }
+        if (radiusX == 0 || radiusY == 0) {
+            float[] b = Ellipses.box(x, y, radiusX, radiusY);
+            return rectRect(b[0], b[1], b[2], b[3], rx, ry, rw, rh);
+        }
+        return Ellipses.rect(x, y, radiusX, radiusY, rx, ry, rw, rh);
+    }
+
+    /**
+     * Does a segment reach into an ellipse? A segment touching the outline does not.
+     *
+     * <p>Scaled by {@code radiusY} along x and {@code radiusX} along y, the ellipse is a
+     * circle of radius {@code radiusX * radiusY}, and the test is {@link #lineCircle}'s, in
+     * double (exact for whole numbers up to about 4,000). An ellipse with a radius of 0 has no
+     * inside: a segment never collides with it.
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX its horizontal radius
+     * @param radiusY its vertical radius
+     * @param x1      the segment's first end x
+     * @param y1      the segment's first end y
+     * @param x2      the segment's second end x
+     * @param y2      the segment's second end y
+     * @return true if the segment reaches the ellipse's inside
+     */
+    public static boolean ellipseLine(float x, float y, float radiusX, float radiusY, float x1, float y1, float x2, float y2) {
+        if (Check.nan(x, y, radiusX, radiusY, x1) || Check.nan(y1, x2, y2, 0, 0) || !(radiusX > 0 && radiusY > 0)) {
+            return false;
+        }
+        return Ellipses.segment(x, y, radiusX, radiusY, x1, y1, x2, y2, false);
+    }
+
+    /**
+     * Do two ellipses overlap? Touching is not overlapping.
+     *
+     * <p>The first is scaled into a circle (products of floats, exact in double), and the
+     * second's outline is measured from its centre with D. Eberly's robust bisection: exact
+     * when they touch on the axes, and elsewhere wrong only when the gap or overlap is below
+     * about 1e-12 of the sizes involved. The two are taken in a fixed order, so swapping them
+     * never changes the answer. An ellipse with a radius of 0 is its flat box.
+     *
+     * @param x1       the first ellipse's centre x
+     * @param y1       the first ellipse's centre y
+     * @param radiusX1 the first ellipse's horizontal radius
+     * @param radiusY1 the first ellipse's vertical radius
+     * @param x2       the second ellipse's centre x
+     * @param y2       the second ellipse's centre y
+     * @param radiusX2 the second ellipse's horizontal radius
+     * @param radiusY2 the second ellipse's vertical radius
+     * @return true if the insides overlap
+     */
+    public static boolean ellipseEllipse(float x1, float y1, float radiusX1, float radiusY1,
+                                         float x2, float y2, float radiusX2, float radiusY2) {
+        if (Check.nan(x1, y1, radiusX1, radiusY1, x2) || Check.nan(y2, radiusX2, radiusY2, 0, 0)
+                || !(radiusX1 >= 0 && radiusY1 >= 0 && radiusX2 >= 0 && radiusY2 >= 0)) {
+            return false;
+        }
+        if (radiusX1 == 0 || radiusY1 == 0) {
+            float[] b = Ellipses.box(x1, y1, radiusX1, radiusY1);
+            return ellipseRect(x2, y2, radiusX2, radiusY2, b[0], b[1], b[2], b[3]);
+        }
+        if (radiusX2 == 0 || radiusY2 == 0) {
+            float[] b = Ellipses.box(x2, y2, radiusX2, radiusY2);
+            return ellipseRect(x1, y1, radiusX1, radiusY1, b[0], b[1], b[2], b[3]);
+        }
+        if (Ellipses.before(x2, y2, radiusX2, radiusY2, x1, y1, radiusX1, radiusY1)) {
+            return Ellipses.ellipse(x2, y2, radiusX2, radiusY2, x1, y1, radiusX1, radiusY1);
+        }
+        return Ellipses.ellipse(x1, y1, radiusX1, radiusY1, x2, y2, radiusX2, radiusY2);
+    }
+
+    /**
+     * Do a polygon and an ellipse overlap? Touching is not overlapping.
+     *
+     * <p>The ellipse's centre inside the polygon, or an edge reaching into the ellipse
+     * ({@link #ellipseLine}); an ellipse with a radius of 0 is its flat box
+     * ({@link #polygonRect}).
+     *
+     * @param xy      the polygon's vertices, as for {@link #polygonPoint}
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX its horizontal radius
+     * @param radiusY its vertical radius
+     * @return true if the insides overlap
+     * @throws IllegalArgumentException if {@code xy} is null
+     */
+    public static boolean polygonEllipse(float[] xy, float x, float y, float radiusX, float radiusY) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(x, y, radiusX, radiusY, 0)
+                || !(radiusX >= 0 && radiusY >= 0) || xy.length < 6) {
+            return false;
+        }
+        if (radiusX == 0 || radiusY == 0) {
+            float[] b = Ellipses.box(x, y, radiusX, radiusY);
+            return polygonRect(xy, b[0], b[1], b[2], b[3]);
+        }
+        return Ellipses.polygon(xy, x, y, radiusX, radiusY);
+    }
+
+    /**
+     * Do an ellipse and a capsule overlap? Touching is not overlapping.
+     *
+     * <p>Is the capsule's segment closer to the ellipse than r? The distance is found by
+     * bisection along the segment (the distance to a convex shape is convex along a line) on
+     * D. Eberly's point-to-ellipse distance: wrong only when the gap or overlap is below about
+     * 1e-9 of the sizes involved. A capsule of radius 0 is its segment ({@link #ellipseLine});
+     * an ellipse with a radius of 0 is its flat box ({@link #capsuleRect}).
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX its horizontal radius
+     * @param radiusY its vertical radius
+     * @param x1      the capsule's segment, first end x
+     * @param y1      the capsule's segment, first end y
+     * @param x2      the capsule's segment, second end x
+     * @param y2      the capsule's segment, second end y
+     * @param r       the capsule's radius
+     * @return true if the insides overlap
+     */
+    public static boolean ellipseCapsule(float x, float y, float radiusX, float radiusY,
+                                         float x1, float y1, float x2, float y2, float r) {
+        if (Check.nan(x, y, radiusX, radiusY, x1) || Check.nan(y1, x2, y2, r, 0)
+                || !(radiusX >= 0 && radiusY >= 0 && r >= 0)) {
+            return false;
+        }
+        if (radiusX == 0 || radiusY == 0) {
+            float[] b = Ellipses.box(x, y, radiusX, radiusY);
+            return capsuleRect(x1, y1, x2, y2, r, b[0], b[1], b[2], b[3]);
+        }
+        if (r == 0) {
+            return Ellipses.segment(x, y, radiusX, radiusY, x1, y1, x2, y2, false);
+        }
+        return Ellipses.segmentWithin(x, y, radiusX, radiusY, x1, y1, x2, y2, r);
+    }
+
+    // ---------------------------------------------------------------- capsules
+
+    /**
+     * Is the point inside the capsule (closer than r to its segment)? On the outline is not
+     * inside; a capsule of radius 0 contains no point.
+     *
+     * @param x1 the capsule's segment, first end x
+     * @param y1 the capsule's segment, first end y
+     * @param x2 the capsule's segment, second end x
+     * @param y2 the capsule's segment, second end y
+     * @param r  the capsule's radius
+     * @param px the point's x
+     * @param py the point's y
+     * @return true if the point is strictly inside
+     */
+    public static boolean capsulePoint(float x1, float y1, float x2, float y2, float r, float px, float py) {
+        if (Check.nan(x1, y1, x2, y2, r) || Check.nan(px, py, 0, 0, 0) || !(r > 0)) {
+            return false;
+        }
+        return Capsules.pointWithin(x1, y1, x2, y2, px, py, r);
+    }
+
+    /**
+     * Do a capsule and a circle overlap? The circle's centre closer to the capsule's segment
+     * than {@code r1 + r2}: {@link #circleCircle} with a segment for one centre, compared
+     * squared as exact signs of double products, so touching between whole numbers of modest
+     * size (up to about 2^20) is exact.
+     *
+     * @param x1 the capsule's segment, first end x
+     * @param y1 the capsule's segment, first end y
+     * @param x2 the capsule's segment, second end x
+     * @param y2 the capsule's segment, second end y
+     * @param r1 the capsule's radius
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param r2 the circle's radius
+     * @return true if the insides overlap
+     */
+    public static boolean capsuleCircle(float x1, float y1, float x2, float y2, float r1, float cx, float cy, float r2) {
+        if (Check.nan(x1, y1, x2, y2, r1) || Check.nan(cx, cy, r2, 0, 0) || !(r1 >= 0 && r2 >= 0)) {
+            return false;
+        }
+        return Capsules.pointWithin(x1, y1, x2, y2, cx, cy, (double) r1 + r2);
+    }
+
+    /**
+     * Do a capsule and a rectangle overlap? Touching is not overlapping. A capsule of radius 0
+     * is its segment ({@link #lineRect}); a flat rectangle is a segment without its ends.
+     *
+     * @param x1 the capsule's segment, first end x
+     * @param y1 the capsule's segment, first end y
+     * @param x2 the capsule's segment, second end x
+     * @param y2 the capsule's segment, second end y
+     * @param r  the capsule's radius
+     * @param rx the rectangle's left edge
+     * @param ry the rectangle's top edge
+     * @param rw the rectangle's width
+     * @param rh the rectangle's height
+     * @return true if the insides overlap
+     */
+    public static boolean capsuleRect(float x1, float y1, float x2, float y2, float r,
+                                      float rx, float ry, float rw, float rh) {
+        if (Check.nan(x1, y1, x2, y2, r) || Check.nan(rx, ry, rw, rh, 0) || !(r >= 0 && rw >= 0 && rh >= 0)) {
+            return false;
+        }
+        if (r == 0) {
+            return lineRect(x1, y1, x2, y2, rx, ry, rw, rh);
+        }
+        return Capsules.rect(x1, y1, x2, y2, r, rx, ry, rw, rh);
+    }
+
+    /**
+     * Does a segment reach into a capsule? The segments closer than r; a segment touching the
+     * outline does not, and a capsule of radius 0 never collides with a segment.
+     *
+     * @param x1 the capsule's segment, first end x
+     * @param y1 the capsule's segment, first end y
+     * @param x2 the capsule's segment, second end x
+     * @param y2 the capsule's segment, second end y
+     * @param r  the capsule's radius
+     * @param x3 the segment's first end x
+     * @param y3 the segment's first end y
+     * @param x4 the segment's second end x
+     * @param y4 the segment's second end y
+     * @return true if the segment reaches the capsule's inside
+     */
+    public static boolean capsuleLine(float x1, float y1, float x2, float y2, float r,
+                                      float x3, float y3, float x4, float y4) {
+        if (Check.nan(x1, y1, x2, y2, r) || Check.nan(x3, y3, x4, y4, 0)) {
+            return false;
+        }
+        return Capsules.segmentsWithin(x1, y1, x2, y2, x3, y3, x4, y4, r);
+    }
+
+    /**
+     * Do two capsules overlap? Their segments closer than {@code r1 + r2}; touching is not
+     * overlapping.
+     *
+     * @param x1 the first capsule's segment, first end x
+     * @param y1 the first capsule's segment, first end y
+     * @param x2 the first capsule's segment, second end x
+     * @param y2 the first capsule's segment, second end y
+     * @param r1 the first capsule's radius
+     * @param x3 the second capsule's segment, first end x
+     * @param y3 the second capsule's segment, first end y
+     * @param x4 the second capsule's segment, second end x
+     * @param y4 the second capsule's segment, second end y
+     * @param r2 the second capsule's radius
+     * @return true if the insides overlap
+     */
+    public static boolean capsuleCapsule(float x1, float y1, float x2, float y2, float r1,
+                                         float x3, float y3, float x4, float y4, float r2) {
+        if (Check.nan(x1, y1, x2, y2, r1) || Check.nan(x3, y3, x4, y4, r2) || !(r1 >= 0 && r2 >= 0)) {
+            return false;
+        }
+        return Capsules.segmentsWithin(x1, y1, x2, y2, x3, y3, x4, y4, (double) r1 + r2);
+    }
+
+    /**
+     * Do a polygon and a capsule overlap? The capsule's first end inside the polygon, or an
+     * edge closer than r to its segment. A capsule of radius 0 is its segment
+     * ({@link #polygonLine}).
+     *
+     * @param xy the polygon's vertices, as for {@link #polygonPoint}
+     * @param x1 the capsule's segment, first end x
+     * @param y1 the capsule's segment, first end y
+     * @param x2 the capsule's segment, second end x
+     * @param y2 the capsule's segment, second end y
+     * @param r  the capsule's radius
+     * @return true if the insides overlap
+     * @throws IllegalArgumentException if {@code xy} is null
+     */
+    public static boolean polygonCapsule(float[] xy, float x1, float y1, float x2, float y2, float r) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(x1, y1, x2, y2, r) || !(r >= 0) || xy.length < 6) {
+            return false;
+        }
+        if (r == 0) {
+            return polygonLine(xy, x1, y1, x2, y2);
+        }
+        return Capsules.polygon(xy, x1, y1, x2, y2, r);
+    }
+
+    // ---------------------------------------------------------------- arcs
+
+    /**
+     * Is the point inside the arc Processing fills for
+     * {@code arc(x, y, 2 * radiusX, 2 * radiusY, start, stop, mode)} (the default
+     * {@code CENTER} ellipse mode)? The outline does not count.
+     *
+     * <p>Angles are radians, clockwise on screen from the right (y grows down), exactly as
+     * {@code arc()} takes them: nothing is filled unless {@code stop > start}; both angles are
+     * brought up to 0 or more by adding {@code TWO_PI}, and a span over {@code TWO_PI} is the
+     * whole ellipse; on a squashed ellipse the angles are its parametric angles, as Java2D
+     * draws them (the point at angle a is {@code (x + radiusX cos a, y + radiusY sin a)}).
+     * The modes are Processing's: {@code PIE} (3; also 0, {@code arc()} without a mode, and
+     * any other value) fills the slice from the centre, which is a vision cone or a sword
+     * swing; {@code OPEN} (1) and {@code CHORD} (2) fill the part cut off by the chord
+     * between the arc's ends. A start so far below 0 that adding {@code TWO_PI} in float
+     * cannot bring it up (Processing's own loop would not end) fills nothing.
+     *
+     * <p>Decided in double with {@code atan2}: the answer can differ from the pixels only
+     * within rounding of the outline.
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX its horizontal radius (half of {@code arc()}'s width)
+     * @param radiusY its vertical radius
+     * @param start   the start angle, radians
+     * @param stop    the stop angle, radians
+     * @param mode    Processing's {@code OPEN} (1), {@code CHORD} (2) or {@code PIE} (3)
+     * @param px      the point's x
+     * @param py      the point's y
+     * @return true if the point is strictly inside the filled arc
+     */
+    public static boolean arcPoint(float x, float y, float radiusX, float radiusY, float start, float stop, int mode,
+                                   float px, float py) {
+        if (Check.nan(x, y, radiusX, radiusY, start) || Check.nan(stop, px, py, 0, 0) || !(radiusX > 0 && radiusY > 0)) {
+            return false;
+        }
+        return Arcs.contains(x, y, radiusX, radiusY, start, stop, mode, px, py);
     }
 }

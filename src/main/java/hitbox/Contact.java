@@ -14,7 +14,8 @@ package hitbox;
  * <a href="package-summary.html#touching">touching rule</a>, which is exactly when the depth
  * would be 0 or less: shapes that touch have depth 0 and give null, so a returned contact
  * always has {@code depth > 0}. (A hair's-width overlap that rounds to a depth of 0 gives
- * the smallest positive float, {@link Float#MIN_VALUE}.) Swapping the shapes gives the same
+ * the smallest positive float, {@link Float#MIN_VALUE}; a depth past the float range, for
+ * shapes spanning more than {@code Float.MAX_VALUE}, is held at {@code Float.MAX_VALUE}.) Swapping the shapes gives the same
  * depth and the opposite normal, {@link #flipped()}, except where the two directions are
  * exactly equally short (see below).
  *
@@ -98,7 +99,8 @@ public record Contact(float nx, float ny, float depth) {
      * @param b the second shape, not null
      * @return the contact, with its normal pointing from a to b, or null when apart
      * @throws IllegalArgumentException if a shape is null or is a {@link Segment}, which has
-     *                                  no area to push out of
+     *                                  no area to push out of, or is a concave polygon against
+     *                                  an {@link Ellipse} or a {@link Capsule}
      */
     public static Contact between(Shape a, Shape b) {
         return Contacts.between(Check.notNull("a", a), Check.notNull("b", b));
@@ -118,17 +120,12 @@ public record Contact(float nx, float ny, float depth) {
      * @param x2 the second circle's centre x
      * @param y2 the second circle's centre y
      * @param r2 the second circle's radius
-     * @return the contact, or null when the circles touch or are apart
-     * @throws IllegalArgumentException if a value is NaN or infinite, or a radius is negative
+     * @return the contact, or null when the circles touch or are apart, and for NaN or
+     *         infinite input or a negative radius (never throws)
      */
     public static Contact circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
-        Check.finite("x1", x1);
-        Check.finite("y1", y1);
-        Check.size("r1", r1);
-        Check.finite("x2", x2);
-        Check.finite("y2", y2);
-        Check.size("r2", r2);
-        if (!Collide.circleCircle(x1, y1, r1, x2, y2, r2)) {
+        if (Check.notFinite(x1, y1, r1, x2, y2) || Check.notFinite(r2, 0, 0, 0, 0) || r1 < 0 || r2 < 0
+                || !Collide.circleCircle(x1, y1, r1, x2, y2, r2)) {
             return null;
         }
         double dx = (double) x2 - x1;
@@ -158,36 +155,15 @@ public record Contact(float nx, float ny, float depth) {
      * @param ry the rectangle's top edge
      * @param rw the rectangle's width
      * @param rh the rectangle's height
-     * @return the contact, normal from the circle to the rectangle, or null when apart
-     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
+     * @return the contact, normal from the circle to the rectangle, or null when apart, and
+     *         for NaN or infinite input or a negative size (never throws)
      */
     public static Contact circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
-        Check.finite("cx", cx);
-        Check.finite("cy", cy);
-        Check.size("r", r);
-        Check.finite("rx", rx);
-        Check.finite("ry", ry);
-        Check.size("rw", rw);
-        Check.size("rh", rh);
-        if (!Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
+        if (Check.notFinite(cx, cy, r, rx, ry) || Check.notFinite(rw, rh, 0, 0, 0) || r < 0 || rw < 0 || rh < 0
+                || !Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
             return null;
         }
-        double right = (double) rx + rw;
-        double bottom = (double) ry + rh;
-        double dx = Collide.clamp(cx, rx, right) - cx;
-        double dy = Collide.clamp(cy, ry, bottom) - cy;
-        double dist = Math.sqrt(dx * dx + dy * dy);
-        if (dist > 0) {
-            return of(dx / dist, dy / dist, r - dist);
-        }
-        // The centre is in the closed rectangle: leave through the nearest edge. The circle
-        // going up out of the top means the rectangle moves down, normal (0, 1).
-        Contacts.Best best = new Contacts.Best();
-        best.offer(0, 1, (double) cy - ry + r);
-        best.offer(0, -1, bottom - cy + r);
-        best.offer(1, 0, (double) cx - rx + r);
-        best.offer(-1, 0, right - cx + r);
-        return best.contact();
+        return Contacts.circleRect(cx, cy, r, rx, ry, rw, rh, false);
     }
 
     /**
@@ -201,12 +177,14 @@ public record Contact(float nx, float ny, float depth) {
      * @param cx the circle's centre x
      * @param cy the circle's centre y
      * @param r  the circle's radius
-     * @return the contact, or null when apart
-     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
+     * @return the contact, or null when apart, and for NaN or infinite input or a negative
+     *         size (never throws)
      */
     public static Contact rectCircle(float rx, float ry, float rw, float rh, float cx, float cy, float r) {
-        Contact c = circleRect(cx, cy, r, rx, ry, rw, rh);
-        return c == null ? null : c.flipped();
+        if (Check.notFinite(cx, cy, r, rx, ry) || Check.notFinite(rw, rh, 0, 0, 0) || r < 0 || rw < 0 || rh < 0) {
+            return null;
+        }
+        return Contacts.circleRect(cx, cy, r, rx, ry, rw, rh, true);
     }
 
     /**
@@ -226,29 +204,19 @@ public record Contact(float nx, float ny, float depth) {
      * @param y2 the second rectangle's top edge
      * @param w2 the second rectangle's width
      * @param h2 the second rectangle's height
-     * @return the contact, or null when apart
-     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
+     * @return the contact, or null when apart, and for NaN or infinite input or a negative
+     *         size (never throws)
      */
     public static Contact rectRect(float x1, float y1, float w1, float h1,
                                    float x2, float y2, float w2, float h2) {
-        Check.finite("x1", x1);
-        Check.finite("y1", y1);
-        Check.size("w1", w1);
-        Check.size("h1", h1);
-        Check.finite("x2", x2);
-        Check.finite("y2", y2);
-        Check.size("w2", w2);
-        Check.size("h2", h2);
-        if (!Collide.rectRect(x1, y1, w1, h1, x2, y2, w2, h2)) {
+        if (Check.notFinite(x1, y1, w1, h1, x2) || Check.notFinite(y2, w2, h2, 0, 0)
+                || w1 < 0 || h1 < 0 || w2 < 0 || h2 < 0 || !Collide.rectRect(x1, y1, w1, h1, x2, y2, w2, h2)) {
             return null;
         }
-        // Each candidate: how far the second rectangle moves that way until the edges meet.
-        Contacts.Best best = new Contacts.Best();
-        best.offer(0, 1, (double) y1 + h1 - y2);
-        best.offer(0, -1, (double) y2 + h2 - y1);
-        best.offer(1, 0, (double) x1 + w1 - x2);
-        best.offer(-1, 0, (double) x2 + w2 - x1);
-        return best.contact();
+        // The first rectangle's shortest way out of the second (exact depths, exact ties in
+        // the tie rule's order): the same push Snap.pushOut makes.
+        Side side = RectPush.leastOverlap(x1, y1, w1, h1, x2, y2, w2, h2);
+        return of(RectPush.normalX(side), RectPush.normalY(side), RectPush.depth(side, x1, y1, w1, h1, x2, y2, w2, h2));
     }
 
     /**
@@ -281,17 +249,15 @@ public record Contact(float nx, float ny, float depth) {
      * @return the side of b that a is against
      */
     public Side side() {
-        if (Math.abs(ny) >= Math.abs(nx)) {
-            return ny > 0 ? Side.TOP : Side.BOTTOM;
-        }
-        return nx > 0 ? Side.LEFT : Side.RIGHT;
+        return Side.ofNormal(nx, ny);
     }
 
     /**
      * A contact from double-precision results. The depth is rounded to float and kept above
-     * 0; the normal is a unit vector already.
+     * 0, and held at {@code Float.MAX_VALUE} for shapes so big that it is past the float
+     * range (found by fuzzing); the normal is a unit vector already.
      */
     static Contact of(double nx, double ny, double depth) {
-        return new Contact((float) nx, (float) ny, Math.max((float) depth, Float.MIN_VALUE));
+        return new Contact((float) nx, (float) ny, Math.max(Check.held(depth), Float.MIN_VALUE));
     }
 }

@@ -9,14 +9,15 @@ final class Contacts {
     }
 
     /**
-     * The shortest push seen so far, with the tie rule of {@link Contact}: among equal depths
+     * The shortest push seen so far (not to be confused with {@link Earliest}, the first
+     * entry of a sweep), with the tie rule of {@link Contact}: among equal depths
      * the more vertical normal wins, then the larger {@code nx * ny}, then the larger ny,
      * then the larger nx. The keys after the first are unchanged when every normal is
      * reversed, or (for the last two) only meet between exactly opposite normals, so
      * {@code contact(b, a)} picks the reverse of {@code contact(a, b)} whenever the input is
      * not symmetric.
      */
-    static final class Best {
+    static final class Shortest {
         double nx;
         double ny;
         double depth = Double.POSITIVE_INFINITY;
@@ -25,13 +26,25 @@ final class Contacts {
          * a tolerance of their own (see {@link Clearance}); 0 for the exact pairs.
          */
         final double tolerance;
+        /**
+         * Are the candidates offered from the second shape's side ({@code contact(b, a)}, to
+         * be reported for {@code contact(a, b)})? Then the tie rule is applied to the normals
+         * as they will be reported, turned round, so the rule does not depend on which shape
+         * the pair's code puts first.
+         */
+        final boolean flip;
 
-        Best() {
-            this(0);
+        Shortest() {
+            this(0, false);
         }
 
-        Best(double tolerance) {
+        Shortest(double tolerance) {
+            this(tolerance, false);
+        }
+
+        Shortest(double tolerance, boolean flip) {
             this.tolerance = tolerance;
+            this.flip = flip;
         }
 
         /**
@@ -42,7 +55,9 @@ final class Contacts {
          */
         void offer(double nx, double ny, double depth) {
             double slack = slack(Math.min(depth, this.depth));
-            if (depth < this.depth - slack || (depth <= this.depth + slack && preferred(nx, ny, this.nx, this.ny))) {
+            double f = flip ? -1 : 1;
+            if (depth < this.depth - slack
+                    || (depth <= this.depth + slack && preferred(f * nx, f * ny, f * this.nx, f * this.ny))) {
                 this.nx = nx;
                 this.ny = ny;
                 this.depth = depth;
@@ -66,9 +81,10 @@ final class Contacts {
             return depth != Double.POSITIVE_INFINITY;
         }
 
-        /** The best push as a contact, or null if nothing was offered. */
+        /** The best push as a contact (turned round if {@link #flip}), or null if nothing was offered. */
         Contact contact() {
-            return found() ? Contact.of(nx, ny, depth) : null;
+            double f = flip ? -1 : 1;
+            return found() ? Contact.of(f * nx, f * ny, depth) : null;
         }
     }
 
@@ -86,6 +102,9 @@ final class Contacts {
         return nx > ox;
     }
 
+    /** The four axis directions. */
+    private static final int[][] AXES = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
+
     static Contact between(Shape a, Shape b) {
         if (a instanceof Segment || b instanceof Segment) {
             String which = a instanceof Segment ? "a" : "b";
@@ -94,23 +113,62 @@ final class Contacts {
                     + " overlaps(...) to test a segment for a hit, or a sweep or ray cast to find"
                     + " where a moving shape first touches it");
         }
+        if (a instanceof Ellipse || b instanceof Ellipse || a instanceof Capsule || b instanceof Capsule) {
+            if (!Supports.convex(a) || !Supports.convex(b)) {
+                throw new IllegalArgumentException("contact with an ellipse or a capsule needs a convex other shape, but "
+                        + (Supports.convex(a) ? "b" : "a") + " is a concave polygon: split it into convex ones");
+            }
+            return Overlaps.test(a, b) ? Supports.contact(a, b) : null;
+        }
         if (a instanceof Circle c) {
             if (b instanceof Circle d) {
                 return Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
             }
-            if (b instanceof Rect r) {
-                return Contact.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
-            }
-            return circlePolygon(c.x(), c.y(), c.r(), (Polygon) b);
+            return circleWith(c, b, false);
         }
-        if (b instanceof Circle) {
-            Contact c = between(b, a);
-            return c == null ? null : c.flipped();
+        if (b instanceof Circle c) {
+            // Computed from the circle's side, reported from a's: the tie rule sees a's normals.
+            return circleWith(c, a, true);
         }
         if (a instanceof Rect r && b instanceof Rect s) {
             return Contact.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
         }
         return polygonal(a, b);
+    }
+
+    /** A circle against a rectangle or polygon, reported from the circle's side or (flip) the other's. */
+    private static Contact circleWith(Circle c, Shape other, boolean flip) {
+        if (other instanceof Rect r) {
+            return circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h(), flip);
+        }
+        return circlePolygon(c.x(), c.y(), c.r(), (Polygon) other, flip);
+    }
+
+    /**
+     * A circle (first) against a rectangle, valid values; normal from the circle to the
+     * rectangle, or from the rectangle to the circle if {@code flip}.
+     */
+    static Contact circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh, boolean flip) {
+        if (!Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
+            return null;
+        }
+        double right = (double) rx + rw;
+        double bottom = (double) ry + rh;
+        double dx = Collide.clamp(cx, rx, right) - cx;
+        double dy = Collide.clamp(cy, ry, bottom) - cy;
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        double f = flip ? -1 : 1;
+        if (dist > 0) {
+            return Contact.of(f * dx / dist, f * dy / dist, r - dist);
+        }
+        // The centre is in the closed rectangle: leave through the nearest edge. The circle
+        // going up out of the top means the rectangle moves down, normal (0, 1).
+        Shortest best = new Shortest(0, flip);
+        best.offer(0, 1, (double) cy - ry + r);
+        best.offer(0, -1, bottom - cy + r);
+        best.offer(1, 0, (double) cx - rx + r);
+        best.offer(-1, 0, right - cx + r);
+        return best.contact();
     }
 
     /** Rectangles and polygons, at least one of them a polygon. */
@@ -130,25 +188,29 @@ final class Contacts {
      * {@link Clearance#circle}, since pushing out of the nearest edge can land the circle in
      * another part of the polygon.
      */
-    static Contact circlePolygon(float cx, float cy, float r, Polygon p) {
+    static Contact circlePolygon(float cx, float cy, float r, Polygon p, boolean flip) {
         float[] xy = p.raw();
-        Contact near = closestFeature(cx, cy, r, xy);
+        Contact near = closestFeature(cx, cy, r, xy, flip);
         if (near == null || r == 0 || p.isConvex()) {
             return near;
         }
         // The search cannot come back empty for shapes that overlap; if rounding ever made it,
         // the closest-feature answer is still a push that clears the nearest edge.
-        Contact clear = Clearance.circle(cx, cy, r, xy);
+        Contact clear = CircleClearance.circle(cx, cy, r, xy, flip);
         return clear != null ? clear : near;
     }
 
     /**
      * The circle pushed out through the polygon's closest edge or vertex: the circle leaves
      * along the feature's outward direction so that it ends at distance r from it. Normal from
-     * the circle to the polygon; null when the circle does not overlap (its centre is outside
-     * and at least r from the outline).
+     * the circle to the polygon (or the other way if {@code flip}); null when the circle does
+     * not overlap (its centre is outside and at least r from the outline). Features whose
+     * distances differ only by rounding (within {@link Contact#TIE}) are all offered, so the
+     * tie rule decides between them, not the rounding. A centre exactly on a convex corner
+     * may leave in any direction of the corner's cone of outward directions, all equally
+     * short: the cone's ends (the edge normals) and the axis directions inside it are offered.
      */
-    static Contact closestFeature(float cx, float cy, float r, float[] xy) {
+    static Contact closestFeature(float cx, float cy, float r, float[] xy, boolean flip) {
         int n = xy.length / 2;
         // Each edge's nearest point to the centre: its interior (distance^2, edge) or its
         // first vertex. The second vertex is the next edge's first, so it is not repeated.
@@ -181,11 +243,12 @@ final class Contacts {
         if (!(depth > 0)) {
             return null;
         }
-        // Every feature at the least distance is offered, so ties follow the rule in Best.
+        // Every feature at the least distance is offered, so ties follow the rule in Shortest.
         double turn = Polygons.winding(xy);
-        Best best = new Best();
+        Shortest best = new Shortest(0, flip);
+        double near = min + 2 * Contact.TIE * min;
         for (int i = 0; i < n; i++) {
-            if (d2[i] != min) {
+            if (!(d2[i] <= near)) {
                 continue;
             }
             if (interior[i]) {
@@ -197,11 +260,23 @@ final class Contacts {
                 double sign = inside ? -1 : 1;
                 best.offer(sign * vx / dist, sign * vy / dist, depth);
             } else {
-                // The centre is on vertex i: leave along either neighbouring edge's normal.
+                // The centre is on vertex i: leave along either neighbouring edge's normal, or,
+                // at a convex corner, along any direction between them (an axis one, say).
                 for (int e : new int[] {(i + n - 1) % n, i}) {
                     double[] out = Polygons.outwardNormal(xy, e, turn);
                     if (out != null) {
                         best.offer(-out[0], -out[1], depth);
+                    }
+                }
+                int h = Polygons.distinctNeighbour(xy, i, n - 1), k = Polygons.distinctNeighbour(xy, i, 1);
+                double ax = (double) xy[2 * h] - xy[2 * i], ay = (double) xy[2 * h + 1] - xy[2 * i + 1];
+                double bx = (double) xy[2 * k] - xy[2 * i], by = (double) xy[2 * k + 1] - xy[2 * i + 1];
+                if (turn * Lines.orient(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]) > 0) {
+                    for (int[] d : AXES) {
+                        // In the outward cone: pointing away from both neighbouring edges.
+                        if (d[0] * ax + d[1] * ay <= 0 && d[0] * bx + d[1] * by <= 0) {
+                            best.offer(-d[0], -d[1], depth);
+                        }
                     }
                 }
             }

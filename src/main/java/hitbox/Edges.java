@@ -17,15 +17,19 @@ package hitbox;
  *
  * <p>Crossing follows the <a href="package-summary.html#touching">touching rule</a>: a shape
  * that only touches an edge (a ball of radius 10 at {@code x = 10}) has not crossed it; one
- * that reaches past it, even by a little, has. The answer is a set of bit flags,
- * {@link #LEFT}, {@link #RIGHT}, {@link #TOP} and {@link #BOTTOM}, or {@link #NONE}; test one
- * with {@link #has(int, int)} or {@code (crossed & Edges.LEFT) != 0}. A shape bigger than the
- * window crosses both opposite edges at once.
+ * that reaches past it, even by a little, has. The answer is a set of sides in
+ * {@link Side}'s <a href="Side.html#bits">bit scheme</a>: {@link #LEFT}, {@link #RIGHT},
+ * {@link #TOP} and {@link #BOTTOM} are {@code Side.LEFT.bit()} and so on, or {@link #NONE};
+ * test one with {@link #has(int, int)}, {@link Side#has(int, Side)} or
+ * {@code (crossed & Edges.LEFT) != 0}, and get an {@code EnumSet} with {@link Side#setOf}.
+ * A shape bigger than the window crosses both opposite edges at once.
  *
  * <p>Circles are centre and radius, rectangles top-left corner and size, as everywhere in
  * Hitbox; for a point use {@link #pointCrossed}, or a circle of radius 0 with the others.
- * Nothing is checked: with a NaN argument the crossing tests answer {@link #NONE}, and the
- * other methods answer NaN or hand the value back unchanged.
+ * Nothing is checked and nothing throws (the <a href="package-summary.html#bad-input">NaN
+ * rule</a>): with a NaN argument the crossing tests answer {@link #NONE}, the bounce methods
+ * hand the speed back unchanged, and the wrap and clamp methods answer NaN (a NaN position)
+ * or hand the position back unchanged (a NaN size or window).
  */
 public final class Edges {
     private Edges() {
@@ -33,13 +37,13 @@ public final class Edges {
 
     /** No edge crossed: the shape is inside the window (touching an edge is inside). */
     public static final int NONE = 0;
-    /** The left edge, {@code x = 0}. */
+    /** The left edge, {@code x = 0}: {@code Side.LEFT.bit()}, 1. */
     public static final int LEFT = 1;
-    /** The right edge, {@code x = width}. */
+    /** The right edge, {@code x = width}: {@code Side.RIGHT.bit()}, 2. */
     public static final int RIGHT = 2;
-    /** The top edge, {@code y = 0}. */
+    /** The top edge, {@code y = 0}: {@code Side.TOP.bit()}, 4. */
     public static final int TOP = 4;
-    /** The bottom edge, {@code y = height}. */
+    /** The bottom edge, {@code y = height}: {@code Side.BOTTOM.bit()}, 8. */
     public static final int BOTTOM = 8;
 
     /**
@@ -57,8 +61,9 @@ public final class Edges {
     }
 
     /**
-     * Which window edges has the circle crossed? The tutorial's bouncing ball test,
-     * {@code x < r || x > width - r}, for each edge; a circle touching an edge has not crossed
+     * Which window edges has the circle crossed? The tutorial's bouncing ball
+     * tests its centre, {@code x < 0 || x > width}; Hitbox tests the circle's edge,
+     * {@code x < r || x > width - r}, for each edge, so the ball turns before it is half out; a circle touching an edge has not crossed
      * it.
      *
      * @param cx     the circle's centre x
@@ -109,8 +114,15 @@ public final class Edges {
         return rectCrossed(b.x(), b.y(), b.w(), b.h(), width, height);
     }
 
-    /** The one crossing rule: strictly beyond an edge, in double so touching is exact. */
+    /**
+     * The one crossing rule: strictly beyond an edge, in double so touching is exact. A NaN
+     * anywhere crosses nothing.
+     */
     private static int crossed(double left, double right, double top, double bottom, float width, float height) {
+        if (Double.isNaN(left) || Double.isNaN(right) || Double.isNaN(top) || Double.isNaN(bottom)
+                || Float.isNaN(width) || Float.isNaN(height)) {
+            return NONE;
+        }
         int edges = NONE;
         if (left < 0) {
             edges |= LEFT;
@@ -146,14 +158,7 @@ public final class Edges {
      * @return the names of the edges in {@code crossed}, joined by {@code |}
      */
     public static String describe(int crossed) {
-        StringBuilder s = new StringBuilder();
-        String[] names = {"LEFT", "RIGHT", "TOP", "BOTTOM"};
-        for (int i = 0; i < names.length; i++) {
-            if ((crossed & (1 << i)) != 0) {
-                s.append(s.length() == 0 ? "" : "|").append(names[i]);
-            }
-        }
-        return s.length() == 0 ? "NONE" : s.toString();
+        return Side.describe(crossed);
     }
 
     /**
@@ -280,11 +285,14 @@ public final class Edges {
         // a hair outside [0, loop]; pull it back so the promised range always holds.
         wrapped = Math.min(Math.max(wrapped, 0), loop);
         float result = (float) (wrapped - after);
-        if ((double) result + after > loop) {
-            result = Math.nextDown(result);
-        } else if ((double) result + after < 0) {
-            result = Math.nextUp(result);
+        // The promised range is [-after, window + before]; rounding the far end's position in
+        // double cannot see a step that small next to a big shape, so clamp to it directly.
+        double top = (double) window + before;
+        float hi = (float) top;
+        if (hi > top) {
+            hi = Math.nextDown(hi);
         }
+        result = Math.min(Math.max(result, -after), hi);
         return result;
     }
 

@@ -1,7 +1,6 @@
 package hitbox;
 
 import java.util.Arrays;
-import java.util.Random;
 
 /**
  * A grid of cells, each holding a terrain number: the tutorial's tile map, for maze and
@@ -42,7 +41,13 @@ import java.util.Random;
  * Or filled at random, reproducibly, with {@link #fillRandom(float, long, int, int)}.
  *
  * <p>A grid is the sketch's level, not a value: {@link #set} and the fill methods change it.
- * It is not safe to change from one thread while another reads it.
+ * It is not safe to change from one thread while another reads it. Reading and writing maps
+ * as text and filling them at random live in a class of their own; this class keeps the
+ * cells, their terrain, and the pixel tests. It is still longer than most (about 800 lines):
+ * it is the public face of all of those and of sight, routes, pixel moves and picture maps,
+ * each method with its full javadoc; the work of those is in GridMaps, GridSight, GridPaths,
+ * GridMove and GridImages, and the pixel tests share the cell arithmetic that must stay
+ * next to the cells.
  */
 public final class Grid {
 
@@ -57,7 +62,8 @@ public final class Grid {
     private final int rows;
     private final float cellWidth;
     private final float cellHeight;
-    private final int[] cells;
+    /** The cells' terrains, row by row; read and written by {@link GridMaps} too. */
+    final int[] cells;
     private int[] passable = new int[0];
 
     /**
@@ -79,7 +85,7 @@ public final class Grid {
             throw new IllegalArgumentException("rows must be > 0, was " + rows);
         }
         if ((long) cols * rows > MAX_CELLS) {
-            throw new IllegalArgumentException("a grid of " + cols + " x " + rows + " cells is too big: at most "
+            throw new IllegalArgumentException("a grid of cols x rows = " + cols + " x " + rows + " cells is too big: at most "
                     + MAX_CELLS + " cells fit in one grid");
         }
         this.cols = cols;
@@ -161,51 +167,7 @@ public final class Grid {
      *                                  size is bad
      */
     public static Grid parse(String map, float cellWidth, float cellHeight) {
-        Check.notNull("map", map);
-        String[] lines = map.split("\r\n|\r|\n", -1);
-        int first = 0;
-        int last = lines.length - 1;
-        while (first <= last && lines[first].isEmpty()) {
-            first++;
-        }
-        while (last >= first && lines[last].isEmpty()) {
-            last--;
-        }
-        if (first > last) {
-            throw new IllegalArgumentException("map has no rows: write one line of cells per row, "
-                    + "'#' for solid and '.' for empty");
-        }
-        int width = lines[first].length();
-        Grid grid = new Grid(width, last - first + 1, cellWidth, cellHeight);
-        for (int i = first; i <= last; i++) {
-            String line = lines[i];
-            if (line.length() != width) {
-                throw new IllegalArgumentException("map line " + (i + 1) + " has " + line.length()
-                        + " cells, but line " + (first + 1) + " has " + width
-                        + ": every row needs the same width (use '.' for empty cells; editors and"
-                        + " text blocks may strip spaces at the end of a line)");
-            }
-            for (int col = 0; col < width; col++) {
-                grid.cells[(i - first) * width + col] = terrainOf(line.charAt(col), i + 1, col + 1);
-            }
-        }
-        return grid;
-    }
-
-    private static int terrainOf(char c, int line, int column) {
-        if (c == '#') {
-            return SOLID;
-        }
-        if (c == '.' || c == ' ') {
-            return EMPTY;
-        }
-        if (c >= '0' && c <= '9') {
-            return c - '0';
-        }
-        String shown = Character.isISOControl(c) || Character.isWhitespace(c) || Character.isSpaceChar(c)
-                ? "(code " + (int) c + ", a tab or other invisible character)" : "'" + c + "'";
-        throw new IllegalArgumentException("map line " + line + ", column " + column + ": unknown character "
-                + shown + "; use '#' for solid, '.' or ' ' for empty, or a digit 0-9 for a terrain type");
+        return GridMaps.parse(map, cellWidth, cellHeight);
     }
 
     /**
@@ -216,17 +178,7 @@ public final class Grid {
      * @return the map, one line per row
      */
     public String toMap() {
-        StringBuilder s = new StringBuilder((cols + 1) * rows);
-        for (int row = 0; row < rows; row++) {
-            if (row > 0) {
-                s.append('\n');
-            }
-            for (int col = 0; col < cols; col++) {
-                int t = cells[row * cols + col];
-                s.append(t == EMPTY ? '.' : t == SOLID ? '#' : t >= 2 && t <= 9 ? (char) ('0' + t) : '?');
-            }
-        }
-        return s.toString();
+        return GridMaps.toMap(this);
     }
 
     /** @return the grid's size and its map, for printing */
@@ -430,9 +382,11 @@ public final class Grid {
      * cell among them.
      *
      * <p>The same seed and size give the same grid on every run and every Java version, since
-     * {@link java.util.Random}'s algorithm is fixed by its specification. The tutorial's
-     * 20 x 20 grid with 20% obstacles and the player at the top-left is
-     * {@code new Grid(20, 20, cellSize).fillRandom(0.2f, seed, 0, 0)}: 80 solid cells.
+     * {@link java.util.Random}'s algorithm is fixed by its specification. The tutorial
+     * flips a coin per cell ({@code random(1) < 0.2}), so its count of obstacles changes from
+     * run to run and one may land on the player; this makes exactly the asked share solid,
+     * e.g. {@code new Grid(20, 20, cellSize).fillRandom(0.2f, seed, 0, 0)}: 80 solid cells,
+     * the top-left one kept free.
      *
      * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
      * @param seed     the random seed: the same seed gives the same grid
@@ -446,34 +400,8 @@ public final class Grid {
         return fill(fraction, seed, index(freeCol, freeRow));
     }
 
-    /** Partial Fisher-Yates shuffle: the first {@code solid} indices of a shuffle are solid. */
     private Grid fill(float fraction, long seed, int free) {
-        if (!(fraction >= 0 && fraction <= 1)) {
-            throw new IllegalArgumentException("fraction must be between 0 and 1, was " + fraction
-                    + " (for 20% solid cells write 0.2)");
-        }
-        int n = cells.length;
-        int[] order = new int[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        int candidates = n;
-        if (free >= 0) {
-            // Move the free cell to the end and shuffle only the others.
-            order[free] = n - 1;
-            order[n - 1] = free;
-            candidates = n - 1;
-        }
-        int solid = (int) Math.min(Math.round((double) fraction * n), candidates);
-        Random random = new Random(seed);
-        Arrays.fill(cells, EMPTY);
-        for (int i = 0; i < solid; i++) {
-            int j = i + random.nextInt(candidates - i);
-            int t = order[i];
-            order[i] = order[j];
-            order[j] = t;
-            cells[order[i]] = SOLID;
-        }
+        GridMaps.fillRandom(cells, fraction, seed, free);
         return this;
     }
 
@@ -547,16 +475,25 @@ public final class Grid {
 
     /**
      * A cell as a rectangle in pixels, for drawing or for testing against shapes. Works for
-     * cells outside the grid too.
+     * cells outside the grid too, any int column and row, with the boundaries of
+     * {@link #cellX} and {@link #cellY}; a cell beyond the float range (about 3e38 pixels
+     * away) is held back at its edge.
      *
      * @param col the column
      * @param row the row
-     * @return the rectangle the cell covers
+     * @return the rectangle the cell covers, never null
      */
     public Rect cellRect(int col, int row) {
-        float x = cellX(col);
-        float y = cellY(row);
-        return new Rect(x, y, cellX(col + 1) - x, cellY(row + 1) - y);
+        // The same float boundaries every pixel test uses; the next index in long, so that the
+        // last column does not overflow. A cell beyond the float range is held at it.
+        float x = edge(col, cellWidth), right = edge(col + 1L, cellWidth);
+        float y = edge(row, cellHeight), bottom = edge(row + 1L, cellHeight);
+        float w = right - x, h = bottom - y;
+        if (Float.isFinite(x) && Float.isFinite(y) && Float.isFinite(w) && Float.isFinite(h)) {
+            return new Rect(x, y, w, h);
+        }
+        return Bounds.enclosing((double) col * cellWidth, (double) row * cellHeight,
+                (col + 1L) * (double) cellWidth, (row + 1L) * (double) cellHeight);
     }
 
     /** Cell boundaries: the float nearest i * size. Every pixel test goes through this. */
@@ -606,6 +543,9 @@ public final class Grid {
      * @return true if the rectangle overlaps a solid cell or the outside of the grid
      */
     public boolean rectOverlapsSolid(float x, float y, float w, float h) {
+        if (Check.nan(x, y, w, h, 0) || w < 0 || h < 0) {
+            return false;
+        }
         double right = (double) x + w;
         double bottom = (double) y + h;
         if (reachesOutside(x, right, y, bottom)) {
@@ -642,6 +582,9 @@ public final class Grid {
      * @return true if the circle overlaps a solid cell or the outside of the grid
      */
     public boolean circleOverlapsSolid(float cx, float cy, float r) {
+        if (Check.nan(cx, cy, r, 0, 0) || r < 0) {
+            return false;
+        }
         double left = (double) cx - r;
         double right = (double) cx + r;
         double top = (double) cy - r;
@@ -740,8 +683,8 @@ public final class Grid {
      * @param y0 the first point's y
      * @param x1 the second point's x
      * @param y1 the second point's y
-     * @return true if no solid cell is in the way
-     * @throws IllegalArgumentException if a coordinate is NaN or infinite; the message names it
+     * @return true if no solid cell is in the way; false for a NaN or infinite coordinate
+     *         (the package's NaN rule: no result, so no sight; never throws)
      */
     public boolean lineOfSight(float x0, float y0, float x1, float y1) {
         return GridSight.lineOfSight(this, x0, y0, x1, y1);

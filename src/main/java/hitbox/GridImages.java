@@ -18,10 +18,10 @@ final class GridImages {
         Check.notNull("pixels", pixels);
         Check.notNull("colors", colors);
         if (width <= 0 || height <= 0) {
-            throw new IllegalArgumentException("the picture must be at least 1 x 1 pixels, was " + width + " x " + height);
+            throw new IllegalArgumentException("the picture must be at least 1 x 1 pixels, was width x height = " + width + " x " + height);
         }
         if (pixels.length != (long) width * height) {
-            throw new IllegalArgumentException("pixels has " + pixels.length + " values, but a " + width + " x "
+            throw new IllegalArgumentException("pixels has " + pixels.length + " values, but a width x height = " + width + " x "
                     + height + " picture has " + (long) width * height);
         }
         if (pixelsPerCell <= 0) {
@@ -63,7 +63,7 @@ final class GridImages {
         if (size % pixelsPerCell != 0) {
             int less = size / pixelsPerCell * pixelsPerCell;
             throw new IllegalArgumentException("the picture is " + size + " pixels " + wideOrHigh + ", not a whole number of "
-                    + pixelsPerCell + "-pixel cells (" + (less > 0 ? less + " or " : "") + (less + pixelsPerCell)
+                    + "pixelsPerCell = " + pixelsPerCell + "-pixel cells (" + (less > 0 ? less + " or " : "") + (less + pixelsPerCell)
                     + " would be)");
         }
     }

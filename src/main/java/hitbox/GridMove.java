@@ -45,7 +45,7 @@ final class GridMove {
         int r0 = grid.rowAt(Math.nextDown(Math.nextDown((float) top)));
         int r1 = grid.rowAt(Math.nextUp(Math.nextUp((float) bottom)));
         if (saturated(c0) || saturated(c1) || saturated(r0) || saturated(r1)) {
-            throw new IllegalArgumentException("a move of " + mover + " by (" + vx + ", " + vy + ") goes more than "
+            throw new IllegalArgumentException("a move of " + mover + " by (vx, vy) = (" + vx + ", " + vy + ") goes more than "
                     + Integer.MAX_VALUE + " cells from the grid");
         }
         long cells = ((long) c1 - c0 + 1) * ((long) r1 - r0 + 1);

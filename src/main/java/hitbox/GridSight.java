@@ -25,10 +25,9 @@ final class GridSight {
 
     /** See {@link Grid#lineOfSight}. */
     static boolean lineOfSight(Grid grid, float x0, float y0, float x1, float y1) {
-        Check.finite("x0", x0);
-        Check.finite("y0", y0);
-        Check.finite("x1", x1);
-        Check.finite("y1", y1);
+        if (Check.notFinite(x0, y0, x1, y1, 0)) {
+            return false;  // the NaN rule: no result, so no sight
+        }
         if (reachesOutside(grid, x0, y0) || reachesOutside(grid, x1, y1)) {
             // An end strictly outside the grid's rectangle: the segment runs through cells
             // beyond the edges, all solid, and reaches into one unless it lies on a grid line

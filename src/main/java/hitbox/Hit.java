@@ -5,12 +5,16 @@ package hitbox;
  * {@code Sweep.timeOfImpact} method.
  *
  * <p>{@code t} is the fraction of this frame's motion done at the moment of impact: move the
- * mover by {@code (t * vx, t * vy)} and it touches the obstacle without overlapping it. The
- * normal is the obstacle's outward surface normal where it was hit, a unit vector pointing
- * back towards the mover (y grows down, so landing on a floor gives {@code (0, -1)}).
- * {@link #side()} names the side of the <em>obstacle</em> that was hit, as in
- * {@link Side}: for a round or slanted surface it is the side the normal mostly faces (a
- * normal exactly at 45 degrees counts as {@link Side#TOP} or {@link Side#BOTTOM}).
+ * mover the way a sketch does, {@code x + t * vx} and {@code y + t * vy} in {@code float},
+ * and it stands against the obstacle without overlapping it, as close as floats allow (see
+ * {@link Sweep}). The normal is a unit vector <em>from the mover into the obstacle</em>, the
+ * package's one convention (the obstacle's inward surface normal where it was hit; y grows
+ * down, so landing on a floor gives {@code (0, 1)}), so it goes straight to
+ * {@link Response#bounce(float, float, float, float, float)}.
+ * {@link #side()} names the side of the <em>obstacle</em> that was hit, by the one rule of
+ * {@link Side#ofNormal}: for a round or slanted surface it is the side the normal mostly
+ * points into (a normal exactly at 45 degrees counts as {@link Side#TOP} or
+ * {@link Side#BOTTOM}).
  *
  * <p>When the two shapes already overlap at the start of the motion there is no moment of
  * impact to report: {@code t} is 0, the normal is {@code (0, 0)} and the side is
@@ -19,8 +23,8 @@ package hitbox;
  * {@code t = 0} with a real normal and side.
  *
  * @param t    the fraction of the motion done at impact, from 0 to 1
- * @param nx   the obstacle's surface normal at the impact, x part (unit length, or 0)
- * @param ny   the obstacle's surface normal at the impact, y part (unit length, or 0)
+ * @param nx   the normal from the mover into the obstacle, x part (unit length, or 0)
+ * @param ny   the normal from the mover into the obstacle, y part (unit length, or 0)
  * @param side the side of the obstacle that was hit, {@link Side#NONE} if the shapes
  *             already overlapped
  */
@@ -30,8 +34,8 @@ public record Hit(float t, float nx, float ny, Side side) {
      * Makes a hit, checking its values.
      *
      * @param t the fraction of the motion done at impact, from 0 to 1
-     * @param nx the obstacle's surface normal at the impact, x part (unit length, or 0)
-     * @param ny the obstacle's surface normal at the impact, y part (unit length, or 0)
+     * @param nx the normal from the mover into the obstacle, x part (unit length, or 0)
+     * @param ny the normal from the mover into the obstacle, y part (unit length, or 0)
      * @param side the side of the obstacle that was hit, {@link Side#NONE} if the shapes already overlapped
      *
      * @throws IllegalArgumentException if {@code t} is not between 0 and 1, the normal is

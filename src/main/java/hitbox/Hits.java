@@ -27,16 +27,19 @@ import java.util.function.IntConsumer;
  * object as {@code shape} ({@code ==}) is skipped, so a ball can be tested against the list of
  * all the balls. An equal but separate shape is not skipped.
  *
- * <p>Costs: {@code any}, {@code first}, {@code count} and {@code each} allocate nothing;
- * {@code all} allocates the array it returns. The list or array and each element must not be
- * null (the message names the index); do not add to or remove from the list during
- * {@code each}: collect the indices with {@code all} first, then remove from the last.
+ * <p>Costs: {@code any}, {@code first}, {@code count} and {@code each} allocate nothing on a
+ * list (on an array, only a fixed-size view of it, {@link Arrays#asList}); {@code all}
+ * allocates the array it returns. The list or array and each element must not be null (an
+ * {@link IllegalArgumentException} names the index); do not add to or remove from the list
+ * during {@code each}: collect the indices with {@code all} first, then remove from the last.
+ * Every question has one implementation, on a list; the array overloads hand a view of the
+ * array to it.
  */
 public final class Hits {
     private Hits() {
     }
 
-    // ---- a shape against a list of shapes ---------------------------------------------
+    // ---- a shape against a list (or an array) of shapes ----------------------------
 
     /**
      * Does the shape overlap any of the others?
@@ -59,7 +62,7 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
      */
     public static int first(Shape shape, List<? extends Shape> others) {
-        return next(check(shape), check("others", others), 0);
+        return next(Check.notNull("shape", shape), Check.notNull("others", others), 0);
     }
 
     /**
@@ -71,13 +74,11 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
      */
     public static int count(Shape shape, List<? extends Shape> others) {
-        check(shape);
-        check("others", others);
-        int count = 0;
-        for (int i = next(shape, others, 0); i >= 0; i = next(shape, others, i + 1)) {
-            count++;
+        int n = 0;
+        for (int i = first(shape, others); i >= 0; i = next(shape, others, i + 1)) {
+            n++;
         }
-        return count;
+        return n;
     }
 
     /**
@@ -89,12 +90,8 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
      */
     public static int[] all(Shape shape, List<? extends Shape> others) {
-        check(shape);
-        check("others", others);
         Found found = new Found();
-        for (int i = next(shape, others, 0); i >= 0; i = next(shape, others, i + 1)) {
-            found.add(i);
-        }
+        each(shape, others, found::add);
         return found.toArray();
     }
 
@@ -110,14 +107,15 @@ public final class Hits {
      *                                  {@code action} is null
      */
     public static void each(Shape shape, List<? extends Shape> others, IntConsumer action) {
-        check(shape);
-        check("others", others);
+        Check.notNull("shape", shape);
+        Check.notNull("others", others);
         Check.notNull("action", action);
         for (int i = next(shape, others, 0); i >= 0; i = next(shape, others, i + 1)) {
             action.accept(i);
         }
     }
 
+    /** The first index from {@code from} on whose shape overlaps {@code shape} (never itself), or -1. */
     private static int next(Shape shape, List<? extends Shape> others, int from) {
         for (int i = from, n = others.size(); i < n; i++) {
             Shape other = element(others, i, "others");
@@ -128,10 +126,8 @@ public final class Hits {
         return -1;
     }
 
-    // ---- a shape against an array of shapes -------------------------------------------
-
     /**
-     * Does the shape overlap any of the others?
+     * Does the shape overlap any of the others? {@link #any(Shape, List)} for an array.
      *
      * @param shape  the shape, not null
      * @param others the shapes to test against, not null and with no null element
@@ -139,11 +135,12 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
      */
     public static boolean any(Shape shape, Shape[] others) {
-        return first(shape, others) >= 0;
+        return any(shape, view("others", others));
     }
 
     /**
-     * The index of the first of the others that the shape overlaps.
+     * The index of the first of the others that the shape overlaps. {@link #first(Shape, List)}
+     * for an array.
      *
      * @param shape  the shape, not null
      * @param others the shapes to test against, not null and with no null element
@@ -151,11 +148,11 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
      */
     public static int first(Shape shape, Shape[] others) {
-        return next(check(shape), check("others", others), 0);
+        return first(shape, view("others", others));
     }
 
     /**
-     * How many of the others the shape overlaps.
+     * How many of the others the shape overlaps. {@link #count(Shape, List)} for an array.
      *
      * @param shape  the shape, not null
      * @param others the shapes to test against, not null and with no null element
@@ -163,17 +160,12 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
      */
     public static int count(Shape shape, Shape[] others) {
-        check(shape);
-        check("others", others);
-        int count = 0;
-        for (int i = next(shape, others, 0); i >= 0; i = next(shape, others, i + 1)) {
-            count++;
-        }
-        return count;
+        return count(shape, view("others", others));
     }
 
     /**
      * The indices of all the others that the shape overlaps, in order.
+     * {@link #all(Shape, List)} for an array.
      *
      * @param shape  the shape, not null
      * @param others the shapes to test against, not null and with no null element
@@ -181,18 +173,12 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
      */
     public static int[] all(Shape shape, Shape[] others) {
-        check(shape);
-        check("others", others);
-        Found found = new Found();
-        for (int i = next(shape, others, 0); i >= 0; i = next(shape, others, i + 1)) {
-            found.add(i);
-        }
-        return found.toArray();
+        return all(shape, view("others", others));
     }
 
     /**
      * Calls {@code action} with the index of each of the others that the shape overlaps, in
-     * order, allocating nothing.
+     * order. {@link #each(Shape, List, IntConsumer)} for an array.
      *
      * @param shape  the shape, not null
      * @param others the shapes to test against, not null and with no null element
@@ -201,25 +187,10 @@ public final class Hits {
      *                                  {@code action} is null
      */
     public static void each(Shape shape, Shape[] others, IntConsumer action) {
-        check(shape);
-        check("others", others);
-        Check.notNull("action", action);
-        for (int i = next(shape, others, 0); i >= 0; i = next(shape, others, i + 1)) {
-            action.accept(i);
-        }
+        each(shape, view("others", others), action);
     }
 
-    private static int next(Shape shape, Shape[] others, int from) {
-        for (int i = from; i < others.length; i++) {
-            Shape other = element(others, i, "others");
-            if (other != shape && shape.overlaps(other)) {
-                return i;
-            }
-        }
-        return -1;
-    }
-
-    // ---- a raw-float rectangle against a list of rectangles ---------------------------
+    // ---- a raw-float rectangle against a list (or an array) of rectangles -------------
 
     /**
      * Does the rectangle overlap any of the rects? Each test is {@link Collide#rectRect}.
@@ -229,7 +200,7 @@ public final class Hits {
      * @param w     the rectangle's width
      * @param h     the rectangle's height
      * @param rects the rectangles to test against, not null and with no null element
-     * @return true if at least one of them overlaps the rectangle
+     * @return true if at least one of them overlaps the rectangle (false for NaN)
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static boolean any(float x, float y, float w, float h, List<Rect> rects) {
@@ -244,11 +215,11 @@ public final class Hits {
      * @param w     the rectangle's width
      * @param h     the rectangle's height
      * @param rects the rectangles to test against, not null and with no null element
-     * @return the smallest index of an overlapping rectangle, or -1 if none overlaps
+     * @return the smallest index of an overlapping rectangle, or -1 if none overlaps (or for NaN)
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static int first(float x, float y, float w, float h, List<Rect> rects) {
-        return next(x, y, w, h, check("rects", rects), 0);
+        return next(x, y, w, h, Check.notNull("rects", rects), 0);
     }
 
     /**
@@ -263,12 +234,11 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static int count(float x, float y, float w, float h, List<Rect> rects) {
-        check("rects", rects);
-        int count = 0;
-        for (int i = next(x, y, w, h, rects, 0); i >= 0; i = next(x, y, w, h, rects, i + 1)) {
-            count++;
+        int n = 0;
+        for (int i = first(x, y, w, h, rects); i >= 0; i = next(x, y, w, h, rects, i + 1)) {
+            n++;
         }
-        return count;
+        return n;
     }
 
     /**
@@ -283,11 +253,8 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static int[] all(float x, float y, float w, float h, List<Rect> rects) {
-        check("rects", rects);
         Found found = new Found();
-        for (int i = next(x, y, w, h, rects, 0); i >= 0; i = next(x, y, w, h, rects, i + 1)) {
-            found.add(i);
-        }
+        each(x, y, w, h, rects, found::add);
         return found.toArray();
     }
 
@@ -305,7 +272,7 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code rects}, an element or {@code action} is null
      */
     public static void each(float x, float y, float w, float h, List<Rect> rects, IntConsumer action) {
-        check("rects", rects);
+        Check.notNull("rects", rects);
         Check.notNull("action", action);
         for (int i = next(x, y, w, h, rects, 0); i >= 0; i = next(x, y, w, h, rects, i + 1)) {
             action.accept(i);
@@ -322,40 +289,41 @@ public final class Hits {
         return -1;
     }
 
-    // ---- a raw-float rectangle against an array of rectangles -------------------------
-
     /**
-     * Does the rectangle overlap any of the rects? Each test is {@link Collide#rectRect}.
+     * Does the rectangle overlap any of the rects? {@link #any(float, float, float, float, List)}
+     * for an array.
      *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
      * @param w     the rectangle's width
      * @param h     the rectangle's height
      * @param rects the rectangles to test against, not null and with no null element
-     * @return true if at least one of them overlaps the rectangle
+     * @return true if at least one of them overlaps the rectangle (false for NaN)
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static boolean any(float x, float y, float w, float h, Rect[] rects) {
-        return first(x, y, w, h, rects) >= 0;
+        return any(x, y, w, h, view("rects", rects));
     }
 
     /**
-     * The index of the first of the rects that the rectangle overlaps.
+     * The index of the first of the rects that the rectangle overlaps; see
+     * {@link #first(float, float, float, float, List)}.
      *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
      * @param w     the rectangle's width
      * @param h     the rectangle's height
      * @param rects the rectangles to test against, not null and with no null element
-     * @return the smallest index of an overlapping rectangle, or -1 if none overlaps
+     * @return the smallest index of an overlapping rectangle, or -1 if none overlaps (or for NaN)
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static int first(float x, float y, float w, float h, Rect[] rects) {
-        return next(x, y, w, h, check("rects", rects), 0);
+        return first(x, y, w, h, view("rects", rects));
     }
 
     /**
-     * How many of the rects the rectangle overlaps.
+     * How many of the rects the rectangle overlaps; see
+     * {@link #count(float, float, float, float, List)}.
      *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
@@ -366,16 +334,12 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static int count(float x, float y, float w, float h, Rect[] rects) {
-        check("rects", rects);
-        int count = 0;
-        for (int i = next(x, y, w, h, rects, 0); i >= 0; i = next(x, y, w, h, rects, i + 1)) {
-            count++;
-        }
-        return count;
+        return count(x, y, w, h, view("rects", rects));
     }
 
     /**
-     * The indices of all the rects that the rectangle overlaps, in order.
+     * The indices of all the rects that the rectangle overlaps, in order; see
+     * {@link #all(float, float, float, float, List)}.
      *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
@@ -386,17 +350,12 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static int[] all(float x, float y, float w, float h, Rect[] rects) {
-        check("rects", rects);
-        Found found = new Found();
-        for (int i = next(x, y, w, h, rects, 0); i >= 0; i = next(x, y, w, h, rects, i + 1)) {
-            found.add(i);
-        }
-        return found.toArray();
+        return all(x, y, w, h, view("rects", rects));
     }
 
     /**
      * Calls {@code action} with the index of each of the rects that the rectangle overlaps,
-     * in order, allocating nothing.
+     * in order; see {@link #each(float, float, float, float, List, IntConsumer)}.
      *
      * @param x      the rectangle's left edge
      * @param y      the rectangle's top edge
@@ -407,52 +366,111 @@ public final class Hits {
      * @throws IllegalArgumentException if {@code rects}, an element or {@code action} is null
      */
     public static void each(float x, float y, float w, float h, Rect[] rects, IntConsumer action) {
-        check("rects", rects);
-        Check.notNull("action", action);
-        for (int i = next(x, y, w, h, rects, 0); i >= 0; i = next(x, y, w, h, rects, i + 1)) {
-            action.accept(i);
-        }
-    }
-
-    private static int next(float x, float y, float w, float h, Rect[] rects, int from) {
-        for (int i = from; i < rects.length; i++) {
-            Rect r = element(rects, i, "rects");
-            if (Collide.rectRect(x, y, w, h, r.x(), r.y(), r.w(), r.h())) {
-                return i;
-            }
-        }
-        return -1;
+        each(x, y, w, h, view("rects", rects), action);
     }
 
     // ---- shared checks, also used by Motion ------------------------------------------
 
-    private static Shape check(Shape shape) {
-        return Check.notNull("shape", shape);
-    }
-
-    private static <T> T check(String name, T collection) {
-        return Check.notNull(name, collection);
+    /** A fixed-size list view of the array (no copy), after checking it is there. */
+    static <T> List<T> view(String name, T[] array) {
+        return Arrays.asList(Check.notNull(name, array));
     }
 
     /** Element i of a list, or a learner's message naming the index if it is null. */
     static <T> T element(List<? extends T> list, int i, String name) {
         T t = list.get(i);
         if (t == null) {
-            throw new IllegalArgumentException(name + "[" + i + "] is null; remove it from the list or give it a value");
-        }
-        return t;
-    }
-
-    /** Element i of an array, or a learner's message naming the index if it is null. */
-    static <T> T element(T[] array, int i, String name) {
-        T t = array[i];
-        if (t == null) {
-            throw new IllegalArgumentException(name + "[" + i + "] is null; an array of shapes needs every slot filled");
+            throw new IllegalArgumentException(name + "[" + i + "] is null; remove it or give it a value");
         }
         return t;
     }
 
     /** A growing list of ints, so {@code all} makes one pass without boxing. */
+    // ---- obstacles in a broad phase -----------------------------------------------------
+
+    /**
+     * Does the rectangle overlap any box of the broad phase? The same answer as
+     * {@link #any(float, float, float, float, List)} over the same boxes, found by asking the
+     * broad phase for the nearby ones only, so thousands of obstacles cost little.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return true if at least one stored box overlaps the rectangle (false for NaN)
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static boolean any(float x, float y, float w, float h, BroadPhase obstacles) {
+        return BroadPhaseHits.overlapping(obstacles, x, y, w, h).length > 0;
+    }
+
+    /**
+     * The smallest id of a box of the broad phase that the rectangle overlaps.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return the smallest overlapping id, or -1 if none overlaps (or for NaN)
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static int first(float x, float y, float w, float h, BroadPhase obstacles) {
+        int[] ids = BroadPhaseHits.overlapping(obstacles, x, y, w, h);
+        return ids.length > 0 ? ids[0] : -1;
+    }
+
+    /**
+     * How many boxes of the broad phase the rectangle overlaps.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return the number of overlapping boxes, 0 or more
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static int count(float x, float y, float w, float h, BroadPhase obstacles) {
+        return BroadPhaseHits.overlapping(obstacles, x, y, w, h).length;
+    }
+
+    /**
+     * The ids of all the boxes of the broad phase that the rectangle overlaps.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return a new array of the overlapping ids, ascending; empty if none
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static int[] all(float x, float y, float w, float h, BroadPhase obstacles) {
+        return BroadPhaseHits.overlapping(obstacles, x, y, w, h);
+    }
+
+    /**
+     * Calls {@code action} with the id of each box of the broad phase that the rectangle
+     * overlaps, ascending.
+     *
+     * @param x         the rectangle's left edge
+     * @param y         the rectangle's top edge
+     * @param w         the rectangle's width
+     * @param h         the rectangle's height
+     * @param obstacles the obstacles, each stored under its id, not null; it may be changed
+     *                  in {@code action}, since the ids are found first
+     * @param action    what to do with each overlapping id, not null
+     * @throws IllegalArgumentException if {@code obstacles} or {@code action} is null
+     */
+    public static void each(float x, float y, float w, float h, BroadPhase obstacles, IntConsumer action) {
+        Check.notNull("action", action);
+        for (int id : BroadPhaseHits.overlapping(obstacles, x, y, w, h)) {
+            action.accept(id);
+        }
+    }
+
     private static final class Found {
         private int[] items = new int[8];
         private int size;

@@ -91,38 +91,10 @@ public final class Hybrid {
     public static Result check(Shape a, Shape b) {
         Check.notNull("a", a);
         Check.notNull("b", b);
-        // Each shape's bounding box in double, without making a Rect (Circle.bounds()
-        // allocates, and rounds x - r to a float, which could cut the box a hair short).
-        if (a instanceof Circle c) {
-            return against(b, (double) c.x() - c.r(), (double) c.y() - c.r(), (double) c.x() + c.r(), (double) c.y() + c.r(), a);
-        }
-        if (a instanceof Rect r) {
-            return against(b, r.x(), r.y(), (double) r.x() + r.w(), (double) r.y() + r.h(), a);
-        }
-        if (a instanceof Segment g) {
-            return against(b, Math.min(g.x1(), g.x2()), Math.min(g.y1(), g.y2()), Math.max(g.x1(), g.x2()), Math.max(g.y1(), g.y2()), a);
-        }
-        Rect p = a.bounds();
-        return against(b, p.x(), p.y(), polygonEnd(p.x(), p.w()), polygonEnd(p.y(), p.h()), a);
-    }
-
-    private static Result against(Shape b, double al, double at, double ar, double ab, Shape a) {
-        if (b instanceof Circle c) {
-            return stages(al, at, ar, ab, (double) c.x() - c.r(), (double) c.y() - c.r(), (double) c.x() + c.r(), (double) c.y() + c.r(), a, b);
-        }
-        if (b instanceof Rect r) {
-            return stages(al, at, ar, ab, r.x(), r.y(), (double) r.x() + r.w(), (double) r.y() + r.h(), a, b);
-        }
-        if (b instanceof Segment g) {
-            return stages(al, at, ar, ab, Math.min(g.x1(), g.x2()), Math.min(g.y1(), g.y2()), Math.max(g.x1(), g.x2()), Math.max(g.y1(), g.y2()), a, b);
-        }
-        Rect p = b.bounds();
-        return stages(al, at, ar, ab, p.x(), p.y(), polygonEnd(p.x(), p.w()), polygonEnd(p.y(), p.h()), a, b);
-    }
-
-    /** A polygon's cached bounds hold a float width, rounded: widen by one unit in its last place. */
-    private static double polygonEnd(float start, float size) {
-        return (double) start + size + Math.ulp(size);
+        // Each shape's bounding box in double, the same extents Shape.bounds() rounds
+        // outwards, read without making a Rect.
+        return stages(Bounds.left(a), Bounds.top(a), Bounds.right(a), Bounds.bottom(a),
+                Bounds.left(b), Bounds.top(b), Bounds.right(b), Bounds.bottom(b), a, b);
     }
 
     private static Result stages(double al, double at, double ar, double ab,

@@ -1,5 +1,7 @@
 package hitbox;
 
+import java.math.BigDecimal;
+
 /**
  * Segment maths behind {@link Collide} and {@link Segment}, built on exact orientation tests.
  *
@@ -14,11 +16,38 @@ final class Lines {
     /**
      * The orientation of c seen from the line a to b: positive for one turn, negative for the
      * other, 0 when the three points are collinear. It is the cross product (b - a) x (c - a),
-     * twice the signed area of the triangle abc. Exact for whole-number floats up to 2^24,
-     * since each product fits a double's 53-bit mantissa.
+     * twice the signed area of the triangle abc.
+     *
+     * <p>Its sign is exact for every finite input, however large or mixed in size the
+     * coordinates (1e16 next to 1, say, where the differences themselves round): the value is
+     * computed in double, and when it is within the rounding error of 0 (Shewchuk's error
+     * bound), it is computed again exactly, in {@link BigDecimal}. The slow path runs only
+     * for points within rounding of a line; its value is then the exact one, rounded.
+     *
+     * <p>Reference: J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic and Fast
+     * Robust Geometric Predicates", Discrete &amp; Computational Geometry 18 (1997): the
+     * error bound of orient2d's first stage.
      */
     static double orient(double ax, double ay, double bx, double by, double cx, double cy) {
-        return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+        double left = (bx - ax) * (cy - ay);
+        double right = (by - ay) * (cx - ax);
+        double det = left - right;
+        double bound = ORIENT_ERROR * (Math.abs(left) + Math.abs(right));
+        if (det > bound || -det > bound || Double.isNaN(det) || Double.isInfinite(bound)) {
+            return det;
+        }
+        return exactOrient(ax, ay, bx, by, cx, cy).doubleValue();
+    }
+
+    /** Shewchuk's ccwerrboundA, (3 + 16 eps) eps with eps = 2^-53. */
+    private static final double ORIENT_ERROR = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+
+    /** The orientation in exact arithmetic. */
+    static BigDecimal exactOrient(double ax, double ay, double bx, double by, double cx, double cy) {
+        BigDecimal x = new BigDecimal(ax), y = new BigDecimal(ay);
+        BigDecimal ex = new BigDecimal(bx).subtract(x), ey = new BigDecimal(by).subtract(y);
+        BigDecimal fx = new BigDecimal(cx).subtract(x), fy = new BigDecimal(cy).subtract(y);
+        return ex.multiply(fy).subtract(ey.multiply(fx));
     }
 
     /** Is the point in the closed axis-aligned box spanned by a and b? */
@@ -78,5 +107,20 @@ final class Lines {
         double x2 = (j - av) + (i - bv);
         double x3 = s;
         return x3 != 0 ? x3 : x2 != 0 ? x2 : x1 != 0 ? x1 : x0;
+    }
+
+    /** Do the closed segments AB and CD meet? Exact orientation signs. */
+    static boolean segmentsMeet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+        double o1 = Lines.orient(ax, ay, bx, by, cx, cy);
+        double o2 = Lines.orient(ax, ay, bx, by, dx, dy);
+        double o3 = Lines.orient(cx, cy, dx, dy, ax, ay);
+        double o4 = Lines.orient(cx, cy, dx, dy, bx, by);
+        if (Lines.opposite(o1, o2) && Lines.opposite(o3, o4)) {
+            return true;
+        }
+        return (o1 == 0 && Lines.inBox(ax, ay, bx, by, cx, cy))
+                || (o2 == 0 && Lines.inBox(ax, ay, bx, by, dx, dy))
+                || (o3 == 0 && Lines.inBox(cx, cy, dx, dy, ax, ay))
+                || (o4 == 0 && Lines.inBox(cx, cy, dx, dy, bx, by));
     }
 }

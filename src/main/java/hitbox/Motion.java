@@ -37,20 +37,32 @@ import java.util.List;
  * <p>Obstacles are rectangles; movers are rectangles or circles. The next positions are
  * computed as a sketch does, {@code x + vx} in {@code float}, and tested with
  * {@link Collide#rectRect} and {@link Collide#circleRect}. The raw-float methods allocate
- * nothing and check nothing (a NaN gives {@link #NONE}); the array and list overloads check
+ * nothing, check nothing and never throw: a NaN in any argument gives {@link #NONE} (the
+ * <a href="package-summary.html#bad-input">NaN rule</a>); the array and list overloads check
  * that the obstacles are there.
+ *
+ * <p>The answer is an {@code int} in {@link Side}'s <a href="Side.html#bits">bit scheme</a>:
+ * a blocked axis sets the bits of both its sides ({@link #X} is {@code LEFT | RIGHT}, {@link #Y}
+ * is {@code TOP | BOTTOM}), since the next-position check knows the axis, not which face;
+ * {@code Motion.has(blocked, Motion.X)} and {@code Side.has(blocked, Side.LEFT)} both read it.
  */
 public final class Motion {
     private Motion() {
     }
 
-    /** Neither axis is blocked: move freely. */
+    /** Neither axis is blocked: move freely. 0. */
     public static final int NONE = 0;
-    /** The horizontal move is blocked: reverse (or stop) {@code vx}. */
-    public static final int X = 1;
-    /** The vertical move is blocked: reverse (or stop) {@code vy}. */
-    public static final int Y = 2;
-    /** Both axes are blocked, {@code X | Y}: reverse both speeds. */
+    /**
+     * The horizontal move is blocked: reverse (or stop) {@code vx}. In {@link Side}'s
+     * <a href="Side.html#bits">bit scheme</a> it is the two walls, {@code LEFT | RIGHT}: 3.
+     */
+    public static final int X = 3;
+    /**
+     * The vertical move is blocked: reverse (or stop) {@code vy}. In {@link Side}'s bit
+     * scheme, {@code TOP | BOTTOM}: 12.
+     */
+    public static final int Y = 12;
+    /** Both axes are blocked, {@code X | Y}: reverse both speeds. 15. */
     public static final int BOTH = X | Y;
 
     // ---- rectangle mover --------------------------------------------------------------
@@ -75,6 +87,9 @@ public final class Motion {
      */
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy,
                                   float ox, float oy, float ow, float oh) {
+        if (Check.nan(x, y, w, h, vx) || Check.nan(vy, ox, oy, ow, oh)) {
+            return NONE;
+        }
         float nx = x + vx;
         float ny = y + vy;
         int blocked = (Collide.rectRect(nx, y, w, h, ox, oy, ow, oh) ? X : NONE)
@@ -119,12 +134,7 @@ public final class Motion {
      * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
      */
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, Rect[] obstacles) {
-        Check.notNull("obstacles", obstacles);
-        int blocked = NONE;
-        for (int i = 0; i < obstacles.length && blocked != BOTH; i++) {
-            blocked |= rectBlocked(x, y, w, h, vx, vy, Hits.element(obstacles, i, "obstacles"));
-        }
-        return blocked;
+        return rectBlocked(x, y, w, h, vx, vy, Hits.view("obstacles", obstacles));
     }
 
     /**
@@ -171,6 +181,9 @@ public final class Motion {
      */
     public static int circleBlocked(float cx, float cy, float r, float vx, float vy,
                                     float ox, float oy, float ow, float oh) {
+        if (Check.nan(cx, cy, r, vx, vy) || Check.nan(ox, oy, ow, oh, 0)) {
+            return NONE;
+        }
         float nx = cx + vx;
         float ny = cy + vy;
         int blocked = (Collide.circleRect(nx, cy, r, ox, oy, ow, oh) ? X : NONE)
@@ -213,12 +226,7 @@ public final class Motion {
      * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
      */
     public static int circleBlocked(float cx, float cy, float r, float vx, float vy, Rect[] obstacles) {
-        Check.notNull("obstacles", obstacles);
-        int blocked = NONE;
-        for (int i = 0; i < obstacles.length && blocked != BOTH; i++) {
-            blocked |= circleBlocked(cx, cy, r, vx, vy, Hits.element(obstacles, i, "obstacles"));
-        }
-        return blocked;
+        return circleBlocked(cx, cy, r, vx, vy, Hits.view("obstacles", obstacles));
     }
 
     /**
@@ -390,16 +398,14 @@ public final class Motion {
      * @return the name of the answer
      */
     public static String describe(int blocked) {
-        return switch (blocked & BOTH) {
-            case X -> "X";
-            case Y -> "Y";
-            case BOTH -> "BOTH";
-            default -> "NONE";
-        };
+        boolean x = has(blocked, X);
+        boolean y = has(blocked, Y);
+        return x && y ? "BOTH" : x ? "X" : y ? "Y" : "NONE";
     }
 
     /**
-     * One frame of the tutorial's bouncing box among many obstacles, made safe: reverse the
+     * One frame of a box bouncing among many obstacles and the window's edges (the tutorial's
+     * section 8 bounces a box off obstacles only), made safe: reverse the
      * speeds {@link #rectBlocked} reports, bounce off the window's edges, then move only along
      * the axes that are still free.
      *
@@ -423,20 +429,74 @@ public final class Motion {
      */
     public static Step bounce(float x, float y, float w, float h, float vx, float vy,
                               List<Rect> obstacles, float width, float height) {
-        int blocked = rectBlocked(x, y, w, h, vx, vy, obstacles);
+        Check.notNull("obstacles", obstacles);
+        return bounce(x, y, w, h, vx, vy, width, height, (nvx, nvy) -> rectBlocked(x, y, w, h, nvx, nvy, obstacles));
+    }
+
+    /**
+     * Which axes of a moving rectangle's next move would run into any box of the broad phase:
+     * the same answer as {@link #rectBlocked(float, float, float, float, float, float, List)}
+     * over the same boxes, asking only the ones near the move.
+     *
+     * @param x         the mover's left edge
+     * @param y         the mover's top edge
+     * @param w         the mover's width
+     * @param h         the mover's height
+     * @param vx        the mover's horizontal speed
+     * @param vy        the mover's vertical speed
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, BroadPhase obstacles) {
+        return BroadPhaseHits.rectBlocked(x, y, w, h, vx, vy, obstacles);
+    }
+
+    /**
+     * {@link #bounce(float, float, float, float, float, float, List, float, float)} among the
+     * boxes of a broad phase: the same step, so a sketch with thousands of obstacles changes
+     * one argument.
+     *
+     * @param x         the box's left edge
+     * @param y         the box's top edge
+     * @param w         the box's width
+     * @param h         the box's height
+     * @param vx        its speed across, pixels per frame
+     * @param vy        its speed down, pixels per frame
+     * @param obstacles the obstacles, each stored under its id, not null
+     * @param width     the window's width
+     * @param height    the window's height
+     * @return where the box is after this frame, its new speeds, and what blocked it
+     * @throws IllegalArgumentException if {@code obstacles} is null
+     */
+    public static Step bounce(float x, float y, float w, float h, float vx, float vy,
+                              BroadPhase obstacles, float width, float height) {
+        Check.notNull("obstacles", obstacles);
+        return bounce(x, y, w, h, vx, vy, width, height, (nvx, nvy) -> rectBlocked(x, y, w, h, nvx, nvy, obstacles));
+    }
+
+    /** Which axes a move with these speeds would block, against whatever obstacles. */
+    private interface Blocked {
+        int at(float vx, float vy);
+    }
+
+    private static Step bounce(float x, float y, float w, float h, float vx, float vy,
+                               float width, float height, Blocked obstacles) {
+        int blocked = obstacles.at(vx, vy);
         vx = reverseX(blocked, vx);
         vy = reverseY(blocked, vy);
         int crossed = Edges.rectCrossed(x + vx, y + vy, w, h, width, height);
         vx = Edges.bounceX(crossed, vx);
         vy = Edges.bounceY(crossed, vy);
-        int still = rectBlocked(x, y, w, h, vx, vy, obstacles);
+        int still = obstacles.at(vx, vy);
         float nx = has(still, X) ? x : x + vx;
         float ny = has(still, Y) ? y : y + vy;
         return new Step(nx, ny, vx, vy, blocked, crossed);
     }
 
     /**
-     * What one {@link #bounce} frame did.
+     * What one {@link #bounce} frame did. A plain carrier of the answer: it takes any value,
+     * NaN included, since {@code bounce} works on plain floats and never throws.
      *
      * @param x       the box's new left edge
      * @param y       the box's new top edge
@@ -444,7 +504,8 @@ public final class Motion {
      * @param vy      its new speed down
      * @param blocked the axes an obstacle blocked before the move ({@link #X}, {@link #Y},
      *                {@link #BOTH} or {@link #NONE}): non-zero means it hit an obstacle
-     * @param crossed the window edges the move would have crossed ({@link Edges} flags)
+     * @param crossed the window edges the move would have crossed ({@link Edges} flags, in
+     *                {@link Side}'s bit scheme)
      */
     public record Step(float x, float y, float vx, float vy, int blocked, int crossed) {
 

@@ -4,18 +4,20 @@ package hitbox;
  * The one table behind {@link Shape#overlaps}: every pair of shape kinds, in either order,
  * routed to the {@link Collide} method for that pair.
  *
- * <p>The kinds are taken in a fixed order (circle, rectangle, segment, polygon): the pair is
+ * <p>The kinds are taken in a fixed order (ellipse, capsule, circle, rectangle, segment, polygon): the pair is
  * handed to the method of its earlier kind, with the arguments swapped if they came the
  * other way round, so each unordered pair has exactly one line of code and
  * {@code a.overlaps(b) == b.overlaps(a)} holds by construction.
  *
  * <table>
  *   <caption>Which Collide method answers each pair</caption>
- *   <tr><th></th><th>Circle</th><th>Rect</th><th>Segment</th><th>Polygon</th></tr>
- *   <tr><th>Circle</th><td>circleCircle</td><td>circleRect</td><td>lineCircle</td><td>polygonCircle</td></tr>
- *   <tr><th>Rect</th><td></td><td>rectRect</td><td>lineRect</td><td>polygonRect</td></tr>
- *   <tr><th>Segment</th><td></td><td></td><td>lineLine</td><td>polygonLine</td></tr>
- *   <tr><th>Polygon</th><td></td><td></td><td></td><td>polygonPolygon</td></tr>
+ *   <tr><th></th><th>Circle</th><th>Rect</th><th>Segment</th><th>Polygon</th><th>Ellipse</th><th>Capsule</th></tr>
+ *   <tr><th>Circle</th><td>circleCircle</td><td>circleRect</td><td>lineCircle</td><td>polygonCircle</td><td></td><td></td></tr>
+ *   <tr><th>Rect</th><td></td><td>rectRect</td><td>lineRect</td><td>polygonRect</td><td></td><td></td></tr>
+ *   <tr><th>Segment</th><td></td><td></td><td>lineLine</td><td>polygonLine</td><td></td><td></td></tr>
+ *   <tr><th>Polygon</th><td></td><td></td><td></td><td>polygonPolygon</td><td></td><td></td></tr>
+ *   <tr><th>Ellipse</th><td>ellipseCircle</td><td>ellipseRect</td><td>ellipseLine</td><td>polygonEllipse</td><td>ellipseEllipse</td><td>ellipseCapsule</td></tr>
+ *   <tr><th>Capsule</th><td>capsuleCircle</td><td>capsuleRect</td><td>capsuleLine</td><td>polygonCapsule</td><td></td><td>capsuleCapsule</td></tr>
  * </table>
  */
 final class Overlaps {
@@ -23,6 +25,18 @@ final class Overlaps {
     }
 
     static boolean test(Shape a, Shape b) {
+        if (a instanceof Ellipse e) {
+            return ellipseWith(e, b);
+        }
+        if (b instanceof Ellipse e) {
+            return ellipseWith(e, a);
+        }
+        if (a instanceof Capsule k) {
+            return capsuleWith(k, b);
+        }
+        if (b instanceof Capsule k) {
+            return capsuleWith(k, a);
+        }
         if (a instanceof Circle c) {
             return circleWith(c, b);
         }
@@ -42,6 +56,45 @@ final class Overlaps {
             return segmentWith(s, a);
         }
         return Collide.polygonPolygon(((Polygon) a).raw(), ((Polygon) b).raw());
+    }
+
+    /** An ellipse with anything. */
+    private static boolean ellipseWith(Ellipse e, Shape other) {
+        float x = e.x(), y = e.y(), a = e.rx(), b = e.ry();
+        if (other instanceof Ellipse f) {
+            return Collide.ellipseEllipse(x, y, a, b, f.x(), f.y(), f.rx(), f.ry());
+        }
+        if (other instanceof Capsule k) {
+            return Collide.ellipseCapsule(x, y, a, b, k.x1(), k.y1(), k.x2(), k.y2(), k.r());
+        }
+        if (other instanceof Circle c) {
+            return Collide.ellipseCircle(x, y, a, b, c.x(), c.y(), c.r());
+        }
+        if (other instanceof Rect r) {
+            return Collide.ellipseRect(x, y, a, b, r.x(), r.y(), r.w(), r.h());
+        }
+        if (other instanceof Segment s) {
+            return Collide.ellipseLine(x, y, a, b, s.x1(), s.y1(), s.x2(), s.y2());
+        }
+        return Collide.polygonEllipse(((Polygon) other).raw(), x, y, a, b);
+    }
+
+    /** A capsule with anything but an ellipse. */
+    private static boolean capsuleWith(Capsule k, Shape other) {
+        float x1 = k.x1(), y1 = k.y1(), x2 = k.x2(), y2 = k.y2(), r = k.r();
+        if (other instanceof Capsule o) {
+            return Collide.capsuleCapsule(x1, y1, x2, y2, r, o.x1(), o.y1(), o.x2(), o.y2(), o.r());
+        }
+        if (other instanceof Circle c) {
+            return Collide.capsuleCircle(x1, y1, x2, y2, r, c.x(), c.y(), c.r());
+        }
+        if (other instanceof Rect q) {
+            return Collide.capsuleRect(x1, y1, x2, y2, r, q.x(), q.y(), q.w(), q.h());
+        }
+        if (other instanceof Segment s) {
+            return Collide.capsuleLine(x1, y1, x2, y2, r, s.x1(), s.y1(), s.x2(), s.y2());
+        }
+        return Collide.polygonCapsule(((Polygon) other).raw(), x1, y1, x2, y2, r);
     }
 
     private static boolean circleWith(Circle c, Shape other) {

@@ -5,7 +5,8 @@ import java.util.Arrays;
 /**
  * Pixel-perfect collision: which pixels of a sprite are solid, as an immutable bit mask.
  *
- * <p>The tutorial's last step tests two images pixel by pixel. That is exact but slow, so a
+ * <p>The tutorial names pixel-perfect detection as the last, most precise stage; testing two
+ * images pixel by pixel is exact but slow, so a
  * mask stores each row as bits, 64 pixels to a {@code long}: two masks are compared a
  * whole word at a time (shift one row's bits into line with the other's and AND them), 64
  * pixels per step instead of one. Sprites a few hundred pixels on a side cost a few

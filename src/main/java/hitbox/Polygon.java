@@ -1,5 +1,7 @@
 package hitbox;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
 import java.util.Arrays;
 
 /**
@@ -15,6 +17,13 @@ import java.util.Arrays;
  * a new one ({@link #translated}).
  */
 public final class Polygon implements Shape {
+
+    /**
+     * The most sides {@link #regular} makes: 4096. Checking an outline compares every pair of
+     * edges, so more would take seconds, and far more cannot be a float polygon at all.
+     */
+    public static final int MAX_SIDES = 4096;
+
     private final float[] xy;
     private final Rect bounds;
     /**
@@ -90,6 +99,12 @@ public final class Polygon implements Shape {
      *                                  one line
      */
     public static Polygon triangle(float x1, float y1, float x2, float y2, float x3, float y3) {
+        Check.finite("x1", x1);
+        Check.finite("y1", y1);
+        Check.finite("x2", x2);
+        Check.finite("y2", y2);
+        Check.finite("x3", x3);
+        Check.finite("y3", y3);
         return of(x1, y1, x2, y2, x3, y3);
     }
 
@@ -112,8 +127,8 @@ public final class Polygon implements Shape {
     public static Polygon rotatedRect(float cx, float cy, float w, float h, float angle) {
         Check.finite("cx", cx);
         Check.finite("cy", cy);
-        Check.positive("width", w);
-        Check.positive("height", h);
+        Check.positive("width w", w);
+        Check.positive("height h", h);
         Check.finite("angle", angle);
         double cos = Math.cos(angle);
         double sin = Math.sin(angle);
@@ -125,7 +140,7 @@ public final class Polygon implements Shape {
             xy[i] = (float) (cx + corners[i] * cos - corners[i + 1] * sin);
             xy[i + 1] = (float) (cy + corners[i] * sin + corners[i + 1] * cos);
         }
-        return of(xy);
+        return rounded(xy, "cx = " + cx + ", cy = " + cy + ", w = " + w + ", h = " + h + ", angle = " + angle);
     }
 
     /**
@@ -138,7 +153,9 @@ public final class Polygon implements Shape {
      * @param sides  how many sides, 3 or more
      * @return the regular polygon
      * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
-     *                                  or there are fewer than 3 sides
+     *                                  there are fewer than 3 or more than {@link #MAX_SIDES}
+     *                                  sides, or rounding to float makes the corners meet
+     *                                  (a radius too small for its centre)
      */
     public static Polygon regular(float cx, float cy, float radius, int sides) {
         return regular(cx, cy, radius, sides, 0);
@@ -155,15 +172,16 @@ public final class Polygon implements Shape {
      * @param angle  the direction of the first corner, in radians
      * @return the regular polygon
      * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
-     *                                  or there are fewer than 3 sides
+     *                                  there are fewer than 3 or more than {@link #MAX_SIDES}
+     *                                  sides, or rounding to float makes the corners meet
      */
     public static Polygon regular(float cx, float cy, float radius, int sides, float angle) {
         Check.finite("cx", cx);
         Check.finite("cy", cy);
         Check.positive("radius", radius);
         Check.finite("angle", angle);
-        if (sides < 3) {
-            throw new IllegalArgumentException("sides must be >= 3, was " + sides);
+        if (sides < 3 || sides > MAX_SIDES) {
+            throw new IllegalArgumentException("sides must be from 3 to " + MAX_SIDES + ", was " + sides);
         }
         float[] xy = new float[2 * sides];
         for (int i = 0; i < sides; i++) {
@@ -171,7 +189,20 @@ public final class Polygon implements Shape {
             xy[2 * i] = (float) (cx + radius * Math.cos(a));
             xy[2 * i + 1] = (float) (cy + radius * Math.sin(a));
         }
-        return of(xy);
+        return rounded(xy, "cx = " + cx + ", cy = " + cy + ", radius = " + radius + ", sides = " + sides + ", angle = " + angle);
+    }
+
+    /**
+     * The polygon of computed corners, or a message naming the arguments that gave corners
+     * which rounding to float made invalid (a huge centre, a tiny size, many sides).
+     */
+    private static Polygon rounded(float[] xy, String arguments) {
+        try {
+            return of(xy);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("the corners from " + arguments + " round to an outline a polygon"
+                    + " cannot have: " + e.getMessage(), e);
+        }
     }
 
     /** @return how many vertices the polygon has */
@@ -190,7 +221,7 @@ public final class Polygon implements Shape {
      * @throws IllegalArgumentException if {@code i} is out of range
      */
     public float x(int i) {
-        return xy[2 * index("vertex index", i)];
+        return xy[2 * index("vertex index i", i)];
     }
 
     /**
@@ -199,7 +230,7 @@ public final class Polygon implements Shape {
      * @throws IllegalArgumentException if {@code i} is out of range
      */
     public float y(int i) {
-        return xy[2 * index("vertex index", i) + 1];
+        return xy[2 * index("vertex index i", i) + 1];
     }
 
     /**
@@ -210,7 +241,7 @@ public final class Polygon implements Shape {
      * @throws IllegalArgumentException if {@code i} is out of range
      */
     public Segment edge(int i) {
-        int k = (index("edge index", i) + 1) % size();
+        int k = (index("edge index i", i) + 1) % size();
         return new Segment(xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]);
     }
 
@@ -227,17 +258,28 @@ public final class Polygon implements Shape {
     /**
      * The area enclosed, always positive whatever the winding.
      *
+     * <p>Computed exactly (in {@link BigDecimal}) and rounded once, so it is right for any
+     * coordinates, 1e16 next to 1 included, where float or double sums would cancel.
+     *
      * <p>Reference: the shoelace formula (Gauss's area formula).
      *
-     * @return the area, in square pixels
+     * @return the area, in square pixels, above 0 ({@link Float#MIN_VALUE} at least, for a
+     *         polygon too thin for a float's area); {@link Float#POSITIVE_INFINITY} if it is
+     *         too large for a float
      */
     public float area() {
-        return (float) (Math.abs(Polygons.doubleSignedArea(Polygons.toDouble(xy))) / 2);
+        // Every polygon Polygon.of makes has area; one too thin for a float still gets the
+        // smallest positive float, not 0 (found by fuzzing).
+        float area = Polygons.exactDoubleSignedArea(Polygons.toDouble(xy)).abs().floatValue() / 2;
+        return Math.max(area, Float.MIN_VALUE);
     }
 
     /**
      * The centroid: the balance point of the enclosed area (for a concave polygon it may lie
      * outside the polygon).
+     *
+     * <p>Computed exactly (in {@link BigDecimal}) and rounded once, so it is right for any
+     * coordinates a polygon can have, and always finite.
      *
      * <p>Reference: the centroid of a polygon from the signed areas of the triangles fanned
      * out from vertex 0, each weighted at its own centroid.
@@ -245,22 +287,25 @@ public final class Polygon implements Shape {
      * @return the centroid
      */
     public Vec centroid() {
-        double ox = xy[0];
-        double oy = xy[1];
-        double sumX = 0;
-        double sumY = 0;
-        double twiceArea = 0;
+        BigDecimal ox = new BigDecimal(xy[0]);
+        BigDecimal oy = new BigDecimal(xy[1]);
+        BigDecimal sumX = BigDecimal.ZERO;
+        BigDecimal sumY = BigDecimal.ZERO;
+        BigDecimal twiceArea = BigDecimal.ZERO;
         for (int i = 1; i + 1 < size(); i++) {
-            double ax = xy[2 * i] - ox;
-            double ay = xy[2 * i + 1] - oy;
-            double bx = xy[2 * i + 2] - ox;
-            double by = xy[2 * i + 3] - oy;
-            double t = ax * by - ay * bx; // twice the signed area of triangle (0, a, b)
-            twiceArea += t;
-            sumX += t * (ax + bx); // the triangle's centroid is (0 + a + b) / 3
-            sumY += t * (ay + by);
+            BigDecimal ax = new BigDecimal(xy[2 * i]).subtract(ox);
+            BigDecimal ay = new BigDecimal(xy[2 * i + 1]).subtract(oy);
+            BigDecimal bx = new BigDecimal(xy[2 * i + 2]).subtract(ox);
+            BigDecimal by = new BigDecimal(xy[2 * i + 3]).subtract(oy);
+            BigDecimal t = ax.multiply(by).subtract(ay.multiply(bx)); // twice the signed area of (0, a, b)
+            twiceArea = twiceArea.add(t);
+            sumX = sumX.add(t.multiply(ax.add(bx))); // the triangle's centroid is (0 + a + b) / 3
+            sumY = sumY.add(t.multiply(ay.add(by)));
         }
-        return new Vec((float) (ox + sumX / (3 * twiceArea)), (float) (oy + sumY / (3 * twiceArea)));
+        // A polygon Polygon.of accepts has area, exactly; the division is rounded once.
+        BigDecimal three = twiceArea.multiply(BigDecimal.valueOf(3));
+        MathContext mc = new MathContext(60);
+        return new Vec(ox.add(sumX.divide(three, mc)).floatValue(), oy.add(sumY.divide(three, mc)).floatValue());
     }
 
     /**
@@ -305,6 +350,8 @@ public final class Polygon implements Shape {
      */
     @Override
     public Polygon translated(float dx, float dy) {
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
         float[] moved = xy.clone();
         boolean exact = true;
         for (int i = 0; i < moved.length; i += 2) {
@@ -312,11 +359,16 @@ public final class Polygon implements Shape {
             moved[i + 1] += dy;
             exact &= moved[i] == (double) xy[i] + dx && moved[i + 1] == (double) xy[i + 1] + dy;
         }
-        if (!exact) {
-            return of(moved);
-        }
         for (int i = 0; i < moved.length; i++) {
-            Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2), moved[i]);
+            Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2) + (i % 2 == 0 ? " + dx" : " + dy"), moved[i]);
+        }
+        if (!exact) {
+            try {
+                return of(moved);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("moving by dx = " + dx + ", dy = " + dy + " rounds the outline: "
+                        + e.getMessage(), e);
+            }
         }
         // Every coordinate moved exactly, so every orientation and the concave vertex are kept.
         return new Polygon(moved, concaveVertex);

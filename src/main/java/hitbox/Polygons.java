@@ -1,5 +1,7 @@
 package hitbox;
 
+import java.math.BigDecimal;
+
 /**
  * Polygon maths behind {@link Collide} and {@link Polygon}; {@code xy} is x0, y0, x1, y1, ....
  *
@@ -78,7 +80,7 @@ final class Polygons {
         }
     }
 
-    /** The bounding rectangle of the vertices. */
+    /** The bounding rectangle of the vertices, rounded outwards ({@link Bounds#enclosing}). */
     static Rect bounds(float[] xy) {
         float minX = xy[0], maxX = xy[0], minY = xy[1], maxY = xy[1];
         for (int i = 2; i < xy.length; i += 2) {
@@ -87,7 +89,7 @@ final class Polygons {
             minY = Math.min(minY, xy[i + 1]);
             maxY = Math.max(maxY, xy[i + 1]);
         }
-        return new Rect(minX, minY, maxX - minX, maxY - minY);
+        return Bounds.enclosing(minX, minY, maxX, maxY);
     }
 
     /**
@@ -256,6 +258,23 @@ final class Polygons {
      * @param w the polygon's {@link #winding}, not 0
      */
     static boolean stepsInside(float[] xy, int w, double px, double py, double dx, double dy) {
+        int at = locate(xy, px, py);
+        if (at >= 0) {
+            return cornerContains(w, xy, at, dx, dy);
+        }
+        if (at < -1) {
+            int i = -at - 2, k = (i + 1) % (xy.length / 2);
+            return w * (((double) xy[2 * k] - xy[2 * i]) * dy - ((double) xy[2 * k + 1] - xy[2 * i + 1]) * dx) > 0;
+        }
+        return contains(xy, px, py);
+    }
+
+    /**
+     * Where the point is on the outline: the index of the vertex it is on, or
+     * {@code -(i + 2)} if it is inside edge i (on it, not at its far end), or -1 if it is not
+     * on the outline. Exact.
+     */
+    private static int locate(float[] xy, double px, double py) {
         int n = xy.length / 2;
         for (int i = 0; i < n; i++) {
             double ax = xy[2 * i];
@@ -264,14 +283,50 @@ final class Polygons {
             double bx = xy[2 * k];
             double by = xy[2 * k + 1];
             if (ax == px && ay == py) {
-                return cornerContains(w, xy, i, dx, dy);
+                return i;
             }
             if (Lines.orient(ax, ay, bx, by, px, py) == 0 && Lines.inBox(ax, ay, bx, by, px, py)
                     && !(bx == px && by == py)) {
-                return w * ((bx - ax) * dy - (by - ay) * dx) > 0;
+                return -(i + 2);
             }
         }
-        return contains(xy, px, py);
+        return -1;
+    }
+
+    /**
+     * {@link #stepsInside} from vertex v of another polygon, in the direction
+     * {@code (p - v) + (q - v)} between its neighbours p and q, decided in exact arithmetic
+     * (the direction and every cross product in {@link BigDecimal}): a corner can be far
+     * thinner than a double's rounding (coordinates of 1e38 next to 1e-45), and a rounded
+     * direction would fall out of it. Runs once per polygon pair.
+     */
+    static boolean stepsInsideExact(float[] xy, int w, float vx, float vy, float px, float py, float qx, float qy) {
+        BigDecimal bvx = new BigDecimal(vx), bvy = new BigDecimal(vy);
+        BigDecimal dx = new BigDecimal(px).subtract(bvx).add(new BigDecimal(qx).subtract(bvx));
+        BigDecimal dy = new BigDecimal(py).subtract(bvy).add(new BigDecimal(qy).subtract(bvy));
+        int n = xy.length / 2;
+        int at = locate(xy, vx, vy);
+        if (at >= 0) {
+            int h = distinctNeighbour(xy, at, n - 1);
+            int j = distinctNeighbour(xy, at, 1);
+            double ax = xy[2 * at], ay = xy[2 * at + 1];
+            int turn = w * Double.compare(Lines.orient(xy[2 * h], xy[2 * h + 1], ax, ay, xy[2 * j], xy[2 * j + 1]), 0);
+            boolean insideIn = w * crossSign(xy[2 * h], xy[2 * h + 1], ax, ay, dx, dy) > 0;
+            boolean insideOut = w * crossSign(ax, ay, xy[2 * j], xy[2 * j + 1], dx, dy) > 0;
+            return turn >= 0 ? insideIn && insideOut : insideIn || insideOut;
+        }
+        if (at < -1) {
+            int i = -at - 2, k = (i + 1) % n;
+            return w * crossSign(xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1], dx, dy) > 0;
+        }
+        return contains(xy, vx, vy);
+    }
+
+    /** The exact sign of (b - a) x d. */
+    private static int crossSign(double ax, double ay, double bx, double by, BigDecimal dx, BigDecimal dy) {
+        BigDecimal ex = new BigDecimal(bx).subtract(new BigDecimal(ax));
+        BigDecimal ey = new BigDecimal(by).subtract(new BigDecimal(ay));
+        return ex.multiply(dy).subtract(ey.multiply(dx)).signum();
     }
 
     /**
@@ -339,8 +394,27 @@ final class Polygons {
     }
 
     /**
+     * Twice the signed area, exactly (the shoelace formula in {@link BigDecimal}): no
+     * rounding, no overflow, whatever the coordinates. Its sign follows {@link Lines#orient}.
+     */
+    static BigDecimal exactDoubleSignedArea(double[] xy) {
+        int n = xy.length / 2;
+        BigDecimal sum = BigDecimal.ZERO;
+        for (int i = 1; i + 1 < n; i++) {
+            sum = sum.add(Lines.exactOrient(xy[0], xy[1], xy[2 * i], xy[2 * i + 1], xy[2 * i + 2], xy[2 * i + 3]));
+        }
+        return sum;
+    }
+
+    /** The winding as the sign of the exact area: +1, -1, or 0 for none. */
+    static int areaSign(double[] xy) {
+        return exactDoubleSignedArea(xy).signum();
+    }
+
+    /**
      * Twice the signed area (shoelace formula), measured from vertex 0 so that large but
-     * nearby coordinates keep their precision. Its sign follows {@link Lines#orient}.
+     * nearby coordinates keep their precision; a double, rounded (see
+     * {@link #exactDoubleSignedArea} for the exact one). Its sign follows {@link Lines#orient}.
      */
     static double doubleSignedArea(double[] xy) {
         int n = xy.length / 2;

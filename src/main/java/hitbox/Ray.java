@@ -13,10 +13,19 @@ import java.util.Arrays;
  * or only touches a corner or a circle's outline, does not hit it. It hits a segment
  * wherever it touches it, end points included; running along a segment it hits the nearer
  * end. A ray that starts inside a shape with area hits it at distance 0 (what a game wants
- * from line of sight: the view is blocked), with the normal pointing back along the ray.
+ * from line of sight: the view is blocked), with the normal pointing along the ray. A ray of
+ * length 0 ({@code maxDistance} 0) goes nowhere: it hits only a shape it starts inside, or a
+ * segment it starts on.
+ *
+ * <p>A hit's normal follows the package's one convention, <em>from the mover into what it
+ * hit</em>: here from the ray into the shape, the shape's inward surface normal, so a bullet
+ * bounces off a wall with {@code Response.bounce(dx, dy, hit.nx(), hit.ny(), 1)}.
  *
  * <p>The direction need not be of unit length; distances are always in pixels. For
  * whole-number coordinates and directions, whether a ray hits is decided exactly.
+ *
+ * <p>A little over the usual size (about 470 lines): the public raw-float distances and
+ * the cast at each of the six shape kinds, each with its normal, belong together.
  *
  * <p>Reference: Christer Ericson, <i>Real-Time Collision Detection</i> (2005), 5.3
  * "Intersecting Lines, Rays, and (Directed) Segments" (slabs for boxes, a quadratic for
@@ -101,13 +110,19 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
     /**
      * Where does this ray first meet the shape?
      *
-     * @param shape a circle, rectangle, segment or polygon, not null
+     * @param shape any shape, not null
      * @return the nearest hit, or null if the ray does not reach the shape (within
      *         {@link #maxDistance()})
      * @throws IllegalArgumentException if the shape is null
      */
     public RayHit cast(Shape shape) {
         Check.notNull("shape", shape);
+        if (shape instanceof Ellipse e) {
+            return castEllipse(e, limit(dx, dy, maxDistance));
+        }
+        if (shape instanceof Capsule k) {
+            return castCapsule(k, limit(dx, dy, maxDistance));
+        }
         double limit = limit(dx, dy, maxDistance);
         if (shape instanceof Circle c) {
             return castCircle(c, limit);
@@ -124,7 +139,8 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
     // ---------------------------------------------------------------- raw floats, no allocation
 
     /**
-     * How far along a ray is the first point inside the circle? Allocates and checks nothing.
+     * How far along a ray is the first point inside the circle? Allocates nothing and never
+     * throws.
      *
      * @param ox          the ray's origin x
      * @param oy          the ray's origin y
@@ -136,15 +152,20 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * @param r           the circle's radius
      * @return the distance in pixels, 0 if the origin is inside, or
      *         {@link Float#POSITIVE_INFINITY} if the ray does not go into the circle (also for
-     *         NaN input or a direction of (0, 0))
+     *         NaN or infinite input, a direction of (0, 0), a negative maxDistance or a
+     *         negative radius)
      */
     public static float distanceToCircle(float ox, float oy, float dx, float dy, float maxDistance,
                                          float cx, float cy, float r) {
+        if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(cx, cy, r, 0, 0)) {
+            return Float.POSITIVE_INFINITY;
+        }
         return distance(circleParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), cx, cy, r), dx, dy);
     }
 
     /**
-     * How far along a ray is the first point inside the rectangle? Allocates and checks nothing.
+     * How far along a ray is the first point inside the rectangle? Allocates nothing and never
+     * throws.
      *
      * @param ox          the ray's origin x
      * @param oy          the ray's origin y
@@ -157,14 +178,20 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * @param rh          the rectangle's height
      * @return the distance in pixels, 0 if the origin is inside, or
      *         {@link Float#POSITIVE_INFINITY} if the ray does not go into the rectangle
+     *         (also for NaN or infinite input, a direction of (0, 0), a negative
+     *         maxDistance or a negative size)
      */
     public static float distanceToRect(float ox, float oy, float dx, float dy, float maxDistance,
                                        float rx, float ry, float rw, float rh) {
+        if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(rx, ry, rw, rh, 0)) {
+            return Float.POSITIVE_INFINITY;
+        }
         return distance(rectParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), rx, ry, rw, rh), dx, dy);
     }
 
     /**
-     * How far along a ray is the first point of the segment? Allocates and checks nothing.
+     * How far along a ray is the first point of the segment? Allocates nothing and never
+     * throws.
      *
      * @param ox          the ray's origin x
      * @param oy          the ray's origin y
@@ -176,30 +203,42 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * @param x2          the segment's second end, x
      * @param y2          the segment's second end, y
      * @return the distance in pixels, or {@link Float#POSITIVE_INFINITY} if the ray does not
-     *         reach the segment
+     *         reach the segment (also for NaN or infinite input, a direction of (0, 0) or a
+     *         negative maxDistance)
      */
     public static float distanceToSegment(float ox, float oy, float dx, float dy, float maxDistance,
                                           float x1, float y1, float x2, float y2) {
+        if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(x1, y1, x2, y2, 0)) {
+            return Float.POSITIVE_INFINITY;
+        }
         return distance(segmentParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), x1, y1, x2, y2), dx, dy);
     }
 
     // ---------------------------------------------------------------- the maths, in units of (dx, dy)
 
+    /**
+     * A ray the raw-float methods answer "no hit" for: a NaN or infinite origin or direction,
+     * a direction of (0, 0), or a NaN or negative reach.
+     */
+    private static boolean badRay(float ox, float oy, float dx, float dy, float maxDistance) {
+        return Check.notFinite(ox, oy, dx, dy, 0) || (dx == 0 && dy == 0) || !(maxDistance >= 0);
+    }
+
     /** How far the ray reaches in units of its direction; exactly 1 when it ends at (ox + dx, oy + dy). */
     static double limit(float dx, float dy, float maxDistance) {
         if (maxDistance == Float.POSITIVE_INFINITY) {
-            return Sweep.INF;
+            return Slabs.INF;
         }
         double length = Math.hypot(dx, dy);
         return maxDistance == (float) length ? 1 : maxDistance / length;
     }
 
     private static float distance(double s, float dx, float dy) {
-        return s == Sweep.INF ? Float.POSITIVE_INFINITY : (float) (s * Math.hypot(dx, dy));
+        return s == Slabs.INF ? Float.POSITIVE_INFINITY : (float) (s * Math.hypot(dx, dy));
     }
 
     private static double circleParam(float ox, float oy, float dx, float dy, double limit, float cx, float cy, float r) {
-        double s = Sweep.discEntry((double) ox - cx, (double) oy - cy, dx, dy, r, limit);
+        double s = Discs.entry((double) ox - cx, (double) oy - cy, dx, dy, r, limit);
         return s < 0 ? 0 : s;
     }
 
@@ -207,11 +246,8 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         if (Collide.rectPoint(rx, ry, rw, rh, ox, oy)) {
             return 0;
         }
-        double loX = (double) rx - ox, hiX = (double) rx + rw - ox;
-        double loY = (double) ry - oy, hiY = (double) ry + rh - oy;
-        double enter = Math.max(Sweep.slabEnter(loX, hiX, dx), Sweep.slabEnter(loY, hiY, dy));
-        double exit = Math.min(Sweep.slabExit(loX, hiX, dx), Sweep.slabExit(loY, hiY, dy));
-        return Sweep.firstTime(enter, exit, limit);
+        return Slabs.boxTime((double) rx - ox, (double) rx + rw - ox, (double) ry - oy, (double) ry + rh - oy,
+                dx, dy, limit);
     }
 
     /**
@@ -233,27 +269,27 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
                 uNum = -uNum;
             }
             if (!(sNum >= 0 && uNum >= 0 && uNum <= denom)) {
-                return Sweep.INF;
+                return Slabs.INF;
             }
             double s = sNum / denom;
-            return s <= limit ? s : Sweep.INF;
+            return s <= limit ? s : Slabs.INF;
         }
         if (uNum != 0) {
-            return Sweep.INF;  // parallel, on another line (or NaN: uNum != 0 is true, so no hit)
+            return Slabs.INF;  // parallel, on another line (or NaN: uNum != 0 is true, so no hit)
         }
         // On the same line: the ray meets the part of the segment between its ends' projections.
         double dd = (double) dx * dx + (double) dy * dy;
         double s1 = (wx * dx + wy * dy) / dd;
         double s2 = (((double) x2 - ox) * dx + ((double) y2 - oy) * dy) / dd;
         double lo = Math.min(s1, s2), hi = Math.max(s1, s2);
-        return hi >= 0 && lo <= limit ? Math.max(lo, 0) : Sweep.INF;
+        return hi >= 0 && lo <= limit ? Math.max(lo, 0) : Slabs.INF;
     }
 
     // ---------------------------------------------------------------- shapes, with normals
 
     private RayHit castCircle(Circle c, double limit) {
         double s = circleParam(ox, oy, dx, dy, limit, c.x(), c.y(), c.r());
-        if (s == Sweep.INF) {
+        if (s == Slabs.INF) {
             return null;
         }
         if (s == 0 && Collide.circlePoint(c.x(), c.y(), c.r(), ox, oy)) {
@@ -262,21 +298,65 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         return hitAt(s, ox + s * dx - c.x(), oy + s * dy - c.y());
     }
 
+    /**
+     * An ellipse: scaled by ry along x and rx along y it is a circle of radius rx ry, and the
+     * ray's parameter is the same in both planes. The normal is the outline's gradient.
+     */
+    private RayHit castEllipse(Ellipse e, double limit) {
+        double a = e.rx(), b = e.ry();
+        double s = Discs.entry(((double) ox - e.x()) * b, ((double) oy - e.y()) * a, dx * b, dy * a, a * b, limit);
+        if (s == Slabs.INF) {
+            return null;
+        }
+        if (s < 0) {
+            return inside();
+        }
+        double hx = ox + s * dx - e.x(), hy = oy + s * dy - e.y();
+        return hitAt(s, hx / (a * a), hy / (b * b));
+    }
+
+    /**
+     * A capsule: the first entry into either end's disc or the rectangle between them (in the
+     * segment's own frame); the normal points from the segment's nearest point to the hit.
+     */
+    private RayHit castCapsule(Capsule k, double limit) {
+        if (Collide.capsulePoint(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), ox, oy)) {
+            return inside();
+        }
+        double s = Math.min(Discs.entry((double) ox - k.x1(), (double) oy - k.y1(), dx, dy, k.r(), limit),
+                Discs.entry((double) ox - k.x2(), (double) oy - k.y2(), dx, dy, k.r(), limit));
+        double ex = (double) k.x2() - k.x1(), ey = (double) k.y2() - k.y1(), len = Math.hypot(ex, ey);
+        if (len > 0) {
+            double ux = ex / len, uy = ey / len;
+            double px = (double) ox - k.x1(), py = (double) oy - k.y1();
+            double along = px * ux + py * uy, across = -px * uy + py * ux;
+            double va = dx * ux + dy * uy, vc = -dx * uy + dy * ux;
+            s = Math.min(s, Slabs.boxTime(-along, len - along, -k.r() - across, k.r() - across, va, vc, limit));
+        }
+        if (s == Slabs.INF) {
+            return null;
+        }
+        s = Math.max(s, 0);
+        double hx = ox + s * dx, hy = oy + s * dy;
+        double t = len == 0 ? 0 : Collide.clamp(((hx - k.x1()) * ex + (hy - k.y1()) * ey) / (len * len), 0, 1);
+        double nx = hx - (k.x1() + t * ex), ny = hy - (k.y1() + t * ey);
+        return nx == 0 && ny == 0 ? hitAt(s, -dx, -dy) : hitAt(s, nx, ny);
+    }
+
     private RayHit castRect(Rect r, double limit) {
         if (Collide.rectPoint(r.x(), r.y(), r.w(), r.h(), ox, oy)) {
             return inside();
         }
         // y first, as in Sweep: a ray into a corner exactly counts as hitting top or bottom.
-        Sweep.Clip clip = new Sweep.Clip()
-                .slab((double) r.y() - oy, (double) r.y() + r.h() - oy, dy, 0, 1)
-                .slab((double) r.x() - ox, (double) r.x() + r.w() - ox, dx, 1, 0);
-        double s = Sweep.firstTime(clip.enter, clip.exit, limit);
-        return s == Sweep.INF ? null : hitAt(s, clip.nx, clip.ny);
+        Slabs.Clip clip = Slabs.box((double) r.x() - ox, (double) r.x() + r.w() - ox,
+                (double) r.y() - oy, (double) r.y() + r.h() - oy, dx, dy);
+        double s = clip.firstTime(limit);
+        return s == Slabs.INF ? null : hitAt(s, clip.nx, clip.ny);
     }
 
     private RayHit castSegment(Segment g, double limit) {
         double s = segmentParam(ox, oy, dx, dy, limit, g.x1(), g.y1(), g.x2(), g.y2());
-        if (s == Sweep.INF) {
+        if (s == Slabs.INF) {
             return null;
         }
         double nx = -((double) g.y2() - g.y1()), ny = (double) g.x2() - g.x1();
@@ -303,8 +383,8 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         boolean onOutline = false;
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
-            double s = segmentParam(ox, oy, dx, dy, Sweep.INF, p.x(i), p.y(i), p.x(j), p.y(j));
-            if (s == Sweep.INF) {
+            double s = segmentParam(ox, oy, dx, dy, Slabs.INF, p.x(i), p.y(i), p.x(j), p.y(j));
+            if (s == Slabs.INF) {
                 continue;
             }
             onOutline |= s == 0;
@@ -358,8 +438,8 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         double sx = 0, sy = 0;
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
-            double at = segmentParam(ox, oy, dx, dy, Sweep.INF, p.x(i), p.y(i), p.x(j), p.y(j));
-            if (at != Sweep.INF && Math.abs(at - s) <= SAME_EVENT * scale) {
+            double at = segmentParam(ox, oy, dx, dy, Slabs.INF, p.x(i), p.y(i), p.x(j), p.y(j));
+            if (at != Slabs.INF && Math.abs(at - s) <= SAME_EVENT * scale) {
                 double[] out = Polygons.outwardNormal(p.raw(), i, turn); // edges of a Polygon have length
                 if (out[0] * dx + out[1] * dy < 0) {
                     sx += out[0];
@@ -370,6 +450,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         return sx == 0 && sy == 0 ? new double[] {-dx, -dy} : new double[] {sx, sy};
     }
 
+    /** The hit of a ray that starts inside: distance 0, the normal along the ray. */
     private RayHit inside() {
         return hitAt(0, -dx, -dy);
     }
@@ -378,9 +459,14 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         return hitAt(s, normal[0], normal[1]);
     }
 
-    private RayHit hitAt(double s, double nx, double ny) {
-        double len = Math.hypot(nx, ny);
-        return new RayHit((float) (s * Math.hypot(dx, dy)), (float) (ox + s * dx), (float) (oy + s * dy),
-                (float) (nx / len), (float) (ny / len));
+    /**
+     * The hit at parameter s, given the shape's <em>outward</em> normal there (facing the
+     * ray); the hit carries it turned round, from the ray into the shape.
+     */
+    private RayHit hitAt(double s, double outX, double outY) {
+        double len = Math.hypot(outX, outY);
+        // Held in the float range: a ray across a polygon wider than it cannot say more.
+        return new RayHit(Check.held(s * Math.hypot(dx, dy)), Check.held(ox + s * dx), Check.held(oy + s * dy),
+                (float) (-outX / len), (float) (-outY / len));
     }
 }

@@ -3,15 +3,19 @@ package hitbox;
 /**
  * Where a {@link Ray} first meets a shape: the answer of {@link Ray#cast}.
  *
- * <p>The normal is the shape's outward surface normal at the hit point, a unit vector facing
- * back against the ray. A ray that starts inside a shape with area hits it at once: distance
- * 0, the point is the ray's origin and the normal points straight back along the ray.
+ * <p>The normal points <em>from the ray into the shape</em>, the package's one convention for
+ * every result (the shape's inward surface normal at the hit point, a unit vector), so it
+ * goes straight to {@link Response#bounce(float, float, float, float, float)}. A ray that
+ * starts inside a shape with area hits it at once: distance 0, the point is the ray's origin
+ * and the normal points along the ray. {@link #side()} names the side of the shape that was
+ * hit, by the same rule as {@link Hit#side()}. For a shape that spans more than the float
+ * range, the distance and the point are held at {@code Float.MAX_VALUE}.
  *
  * @param distance how far along the ray the hit is, in pixels (0 or more)
  * @param x        the hit point's x
  * @param y        the hit point's y
- * @param nx       the surface normal at the hit point, x part (unit length)
- * @param ny       the surface normal at the hit point, y part (unit length)
+ * @param nx       the normal from the ray into the shape, x part (unit length)
+ * @param ny       the normal from the ray into the shape, y part (unit length)
  */
 public record RayHit(float distance, float x, float y, float nx, float ny) {
 
@@ -21,8 +25,8 @@ public record RayHit(float distance, float x, float y, float nx, float ny) {
      * @param distance how far along the ray the hit is, in pixels (0 or more)
      * @param x the hit point's x
      * @param y the hit point's y
-     * @param nx the surface normal at the hit point, x part (unit length)
-     * @param ny the surface normal at the hit point, y part (unit length)
+     * @param nx the normal from the ray into the shape, x part (unit length)
+     * @param ny the normal from the ray into the shape, y part (unit length)
      *
      * @throws IllegalArgumentException if a value is NaN or infinite, or the distance is
      *                                  negative
@@ -33,5 +37,15 @@ public record RayHit(float distance, float x, float y, float nx, float ny) {
         Check.finite("y", y);
         Check.finite("nx", nx);
         Check.finite("ny", ny);
+    }
+
+    /**
+     * Which side of the shape the ray hit, from the normal: {@link Side#TOP} for a ray coming
+     * down onto it, and so on ({@link Side#ofNormal}).
+     *
+     * @return the side hit; {@link Side#NONE} only for a hand-made hit with a zero normal
+     */
+    public Side side() {
+        return Side.ofNormal(nx, ny);
     }
 }

@@ -27,8 +27,8 @@ public record Rect(float x, float y, float w, float h) implements Shape {
     public Rect {
         Check.finite("x", x);
         Check.finite("y", y);
-        Check.size("width", w);
-        Check.size("height", h);
+        Check.size("width w", w);
+        Check.size("height h", h);
     }
 
     /**
@@ -46,9 +46,9 @@ public record Rect(float x, float y, float w, float h) implements Shape {
         // caller passed rather than the corner computed from it.
         Check.finite("cx", cx);
         Check.finite("cy", cy);
-        Check.size("width", w);
-        Check.size("height", h);
-        return new Rect(cx - w / 2, cy - h / 2, w, h);
+        Check.size("width w", w);
+        Check.size("height h", h);
+        return new Rect(Check.finite("cx - w / 2", cx - w / 2), Check.finite("cy - h / 2", cy - h / 2), w, h);
     }
 
     /** @return the right edge, {@code x + w} */
@@ -105,7 +105,9 @@ public record Rect(float x, float y, float w, float h) implements Shape {
     /** {@inheritDoc} */
     @Override
     public Rect translated(float dx, float dy) {
-        return new Rect(x + dx, y + dy, w, h);
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
+        return new Rect(Check.finite("x + dx", x + dx), Check.finite("y + dy", y + dy), w, h);
     }
 
     /**
@@ -117,6 +119,6 @@ public record Rect(float x, float y, float w, float h) implements Shape {
      * @throws IllegalArgumentException if a value is NaN or infinite
      */
     public Rect at(float newX, float newY) {
-        return new Rect(newX, newY, w, h);
+        return new Rect(Check.finite("newX", newX), Check.finite("newY", newY), w, h);
     }
 }

@@ -8,6 +8,12 @@ package hitbox;
  * The contact's normal points from a to b, so "a" and "b" below are the first and second
  * shape given to {@link Contact#between}.
  *
+ * <p>One normal convention, the package's: a {@link Contact}'s normal points from a to b, a
+ * {@link Hit}'s and a {@link RayHit}'s from the mover into what it hit, and every method here
+ * takes that normal as it comes. The methods on plain floats never throw (a NaN gives the
+ * value back unchanged); those that take a contact or a shape check their arguments as
+ * constructors do.
+ *
  * <p>Velocity responses act only when a is moving into b (its velocity has a part along the
  * normal). A velocity that already moves a away from b is returned unchanged: reflecting it
  * would turn it back into b, and an object that is still overlapping after its first bounce
@@ -167,6 +173,9 @@ public final class Response {
      */
     public static Vec bounce(float vx, float vy, Contact contact, float restitution) {
         Check.notNull("contact", contact);
+        Check.finite("vx", vx);
+        Check.finite("vy", vy);
+        checkRestitution(restitution);
         return bounce(vx, vy, contact.nx(), contact.ny(), restitution);
     }
 
@@ -202,37 +211,37 @@ public final class Response {
 
     /**
      * The bounce on plain floats: velocity (vx, vy) against a surface whose normal (nx, ny)
-     * points from the mover into what it hits. The normal need not have length 1 (it is
-     * scaled to 1), so {@code (bx - ax, by - ay)} between two centres will do.
+     * points from the mover into what it hits, the package's one convention: pass a
+     * {@link Contact}'s, a {@link Hit}'s or a {@link RayHit}'s normal as it is,
+     * {@code Response.bounce(vx, vy, hit.nx(), hit.ny(), 1)}. The normal need not have length
+     * 1 (it is scaled to 1), so {@code (bx - ax, by - ay)} between two centres will do.
+     *
+     * <p>Never throws (the <a href="package-summary.html#bad-input">NaN rule</a>): a NaN or
+     * infinite value, or a normal of (0, 0), gives no bounce, the velocity back unchanged; a
+     * restitution outside [0, 1] is taken as the nearest end of that range.
      *
      * @param vx          the mover's velocity x
      * @param vy          the mover's velocity y
-     * @param nx          the normal's x, pointing from the mover to the obstacle
+     * @param nx          the normal's x, pointing from the mover into the obstacle
      * @param ny          the normal's y
      * @param restitution from 0 (stop) to 1 (perfect bounce)
      * @return the new velocity; unchanged if the mover is not moving into the obstacle
-     * @throws IllegalArgumentException if a value is NaN or infinite, the normal is (0, 0), or
-     *                                  restitution is outside [0, 1]
      */
     public static Vec bounce(float vx, float vy, float nx, float ny, float restitution) {
-        Check.finite("vx", vx);
-        Check.finite("vy", vy);
-        Check.finite("nx", nx);
-        Check.finite("ny", ny);
-        Check.finite("restitution", restitution);
-        if (restitution < 0 || restitution > 1) {
-            throw new IllegalArgumentException("restitution must be between 0 and 1, was " + restitution);
+        if (Check.notFinite(vx, vy, nx, ny, restitution)) {
+            return new Vec(vx, vy);
         }
+        double e = Math.min(Math.max(restitution, 0), 1);
         double len = Math.hypot(nx, ny);
         if (len == 0) {
-            throw new IllegalArgumentException("the normal (nx, ny) must not be (0, 0): it gives the direction of the hit");
+            return new Vec(vx, vy);
         }
         double ux = nx / len, uy = ny / len;
         double into = vx * ux + vy * uy;
         if (!(into > 0)) {
             return new Vec(vx, vy);
         }
-        double k = (1 + (double) restitution) * into;
+        double k = (1 + e) * into;
         return new Vec((float) (vx - k * ux), (float) (vy - k * uy));
     }
 
@@ -267,14 +276,15 @@ public final class Response {
 
     /**
      * The slide on plain floats: velocity (vx, vy) against a surface whose normal (nx, ny)
-     * points from the mover into the obstacle, any length but 0.
+     * points from the mover into the obstacle (a contact's, hit's or ray hit's normal as it
+     * is), any length. Never throws: NaN, infinite or a (0, 0) normal gives the velocity back
+     * unchanged.
      *
      * @param vx the mover's velocity x
      * @param vy the mover's velocity y
-     * @param nx the normal's x, pointing from the mover to the obstacle
+     * @param nx the normal's x, pointing from the mover into the obstacle
      * @param ny the normal's y
      * @return the new velocity; unchanged if the mover is not moving into the obstacle
-     * @throws IllegalArgumentException if a value is NaN or infinite, or the normal is (0, 0)
      */
     public static Vec slide(float vx, float vy, float nx, float ny) {
         return bounce(vx, vy, nx, ny, 0);
@@ -318,21 +328,46 @@ public final class Response {
         if (contact == null) {
             return a;
         }
-        Rect box = a.bounds();
-        float scale = Math.max(Math.max(Math.abs(box.x()), Math.abs(box.right())),
-                Math.max(Math.max(Math.abs(box.y()), Math.abs(box.bottom())), contact.depth()));
-        double extra = 0;
-        S moved = a;
-        // 64 doublings of a float step reach far past any depth: the loop always ends apart.
-        for (int i = 0; i < 64; i++) {
-            double d = contact.depth() + extra;
-            moved = (S) a.translated((float) (-d * contact.nx()), (float) (-d * contact.ny()));
+        // Along the normal, by the depth and then by more: doubling from the smallest step
+        // that can move a coordinate until a is clear, then halving back to the shortest clear
+        // move found, so a is left touching b (to within float rounding), never beyond it.
+        double depth = contact.depth();
+        double extra = Math.ulp(depth);
+        S clear = null;
+        for (int i = 0; i < 200 && clear == null; i++) {
+            S moved = movedBy(a, contact, depth + extra);
             if (!moved.overlaps(b)) {
-                return moved;
+                clear = moved;
+            } else {
+                extra *= 2;
             }
-            extra = extra == 0 ? Math.ulp(scale) : extra * 2;
         }
-        return moved;
+        if (clear == null) {
+            return movedBy(a, contact, depth + extra);
+        }
+        double lo = extra / 2, hi = extra;
+        for (int i = 0; i < 64 && lo < hi; i++) {
+            double mid = (lo + hi) / 2;
+            if (mid == lo || mid == hi) {
+                break;
+            }
+            S moved = movedBy(a, contact, depth + mid);
+            if (moved.overlaps(b)) {
+                lo = mid;
+            } else {
+                hi = mid;
+                clear = moved;
+            }
+        }
+        // No extra at all may already be clear (a depth rounded up).
+        S exact = movedBy(a, contact, depth);
+        return exact.overlaps(b) ? clear : exact;
+    }
+
+    /** a moved against the contact normal by d. */
+    @SuppressWarnings("unchecked")
+    private static <S extends Shape> S movedBy(S a, Contact contact, double d) {
+        return (S) a.translated((float) (-d * contact.nx()), (float) (-d * contact.ny()));
     }
 
     @SuppressWarnings("unchecked")
@@ -341,6 +376,13 @@ public final class Response {
         checkShare(share);
         double d = (double) signedShare * contact.depth();
         return (S) s.translated((float) (d * contact.nx()), (float) (d * contact.ny()));
+    }
+
+    private static void checkRestitution(float restitution) {
+        Check.finite("restitution", restitution);
+        if (restitution < 0 || restitution > 1) {
+            throw new IllegalArgumentException("restitution must be between 0 and 1, was " + restitution);
+        }
     }
 
     private static void checkShare(float share) {

@@ -1,7 +1,7 @@
 package hitbox;
 
 /**
- * A line segment between two end points: the tutorial's "line".
+ * A line segment between two end points: what a sketch draws with {@code line()}.
  *
  * <p>Closed: its end points belong to it, so segments that meet at an end intersect, and so do
  * collinear segments that overlap ({@link Collide#lineLine}). Like a point, it has no inside:
@@ -40,16 +40,19 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
         return Lines.segmentPoint(x1, y1, x2, y2, px, py);
     }
 
-    /** {@inheritDoc} */
+    /** {@inheritDoc} Rounded outwards, so the box holds both ends even when their distance is not a float. */
     @Override
     public Rect bounds() {
-        return new Rect(Math.min(x1, x2), Math.min(y1, y2), Math.abs(x2 - x1), Math.abs(y2 - y1));
+        return Bounds.enclosing(Bounds.left(this), Bounds.top(this), Bounds.right(this), Bounds.bottom(this));
     }
 
     /** {@inheritDoc} */
     @Override
     public Segment translated(float dx, float dy) {
-        return new Segment(x1 + dx, y1 + dy, x2 + dx, y2 + dy);
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
+        return new Segment(Check.finite("x1 + dx", x1 + dx), Check.finite("y1 + dy", y1 + dy),
+                Check.finite("x2 + dx", x2 + dx), Check.finite("y2 + dy", y2 + dy));
     }
 
     /**

@@ -1,5 +1,6 @@
 package hitbox;
 
+import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -81,8 +82,8 @@ public final class SeparatingAxis {
             Check.finite("minB", minB);
             Check.finite("maxB", maxB);
             if (minA > maxA || minB > maxB) {
-                throw new IllegalArgumentException("a shadow must not end before it starts, but a is ["
-                        + minA + ", " + maxA + "] and b is [" + minB + ", " + maxB + "]");
+                throw new IllegalArgumentException("a shadow must not end before it starts (minA <= maxA,"
+                        + " minB <= maxB), but a is [" + minA + ", " + maxA + "] and b is [" + minB + ", " + maxB + "]");
             }
             double length = Math.hypot(nx, ny);
             if (Math.abs(length - 1) > Contact.UNIT_TOLERANCE) {
@@ -129,7 +130,7 @@ public final class SeparatingAxis {
         double[] pb = convexCorners("b", b);
         List<Axis> axes = new ArrayList<>(pa.length / 2 + pb.length / 2);
         for (double[] owner : new double[][] {pa, pb}) {
-            double turn = Math.signum(Polygons.doubleSignedArea(owner));
+            double turn = Polygons.areaSign(owner);
             int n = owner.length / 2;
             for (int i = 0; i < n; i++) {
                 int j = (i + 1) % n;
@@ -183,7 +184,7 @@ public final class SeparatingAxis {
      * no axis and are skipped, which is still a complete test for convex sets.
      */
     static Contact contact(double[] a, double[] b) {
-        Contacts.Best best = new Contacts.Best();
+        Contacts.Shortest best = new Contacts.Shortest();
         return search(a, b, best) ? best.contact() : null;
     }
 
@@ -193,7 +194,7 @@ public final class SeparatingAxis {
      * {@code best}, each axis offers it the two pushes along it: b can go forward until its
      * shadow starts where a's ends, or back.
      */
-    private static boolean search(double[] a, double[] b, Contacts.Best best) {
+    private static boolean search(double[] a, double[] b, Contacts.Shortest best) {
         for (double[] owner : new double[][] {a, b}) {
             int n = owner.length / 2;
             for (int i = 0; i < n; i++) {
@@ -205,17 +206,51 @@ public final class SeparatingAxis {
                 }
                 double minA = min(a, mx, my), maxA = max(a, mx, my);
                 double minB = min(b, mx, my), maxB = max(b, mx, my);
-                if (maxA <= minB || maxB <= minA) {
+                double forward = maxA - minB, back = maxB - minA;
+                double bound = 1e-14 * Math.max(Math.max(Math.abs(minA), Math.abs(maxA)), Math.max(Math.abs(minB), Math.abs(maxB)));
+                if (Math.abs(forward) <= bound || Math.abs(back) <= bound) {
+                    // Within rounding of touching: decide on the exact axis, exactly. A
+                    // polygon thinner than a double's rounding of its size (found by
+                    // fuzzing) would otherwise look flat, and apart from itself.
+                    BigDecimal[] exact = exactOverlaps(owner, i, j, a, b);
+                    forward = exact[0].doubleValue();
+                    back = exact[1].doubleValue();
+                    if (exact[0].signum() <= 0 || exact[1].signum() <= 0) {
+                        return false;
+                    }
+                } else if (forward <= 0 || back <= 0) {
                     return false;
                 }
                 if (best != null) {
                     double len = Math.hypot(mx, my);
-                    best.offer(mx / len, my / len, (maxA - minB) / len);
-                    best.offer(-mx / len, -my / len, (maxB - minA) / len);
+                    best.offer(mx / len, my / len, forward / len);
+                    best.offer(-mx / len, -my / len, back / len);
                 }
             }
         }
         return true;
+    }
+
+    /**
+     * On the normal of edge i-j of {@code owner}, exactly: {maxA - minB, maxB - minA}, the
+     * overlaps of the two shadows (0 or less: apart or touching), in units of the normal.
+     */
+    private static BigDecimal[] exactOverlaps(double[] owner, int i, int j, double[] a, double[] b) {
+        BigDecimal mx = new BigDecimal(owner[2 * i + 1]).subtract(new BigDecimal(owner[2 * j + 1]));
+        BigDecimal my = new BigDecimal(owner[2 * j]).subtract(new BigDecimal(owner[2 * i]));
+        BigDecimal[] sa = shadow(a, mx, my), sb = shadow(b, mx, my);
+        return new BigDecimal[] {sa[1].subtract(sb[0]), sb[1].subtract(sa[0])};
+    }
+
+    /** {min, max} of the exact projections of the points onto (mx, my). */
+    private static BigDecimal[] shadow(double[] p, BigDecimal mx, BigDecimal my) {
+        BigDecimal lo = null, hi = null;
+        for (int k = 0; k < p.length; k += 2) {
+            BigDecimal v = new BigDecimal(p[k]).multiply(mx).add(new BigDecimal(p[k + 1]).multiply(my));
+            lo = lo == null || v.compareTo(lo) < 0 ? v : lo;
+            hi = hi == null || v.compareTo(hi) > 0 ? v : hi;
+        }
+        return new BigDecimal[] {lo, hi};
     }
 
     private static double min(double[] p, double mx, double my) {

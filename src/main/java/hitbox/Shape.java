@@ -4,11 +4,11 @@ package hitbox;
  * A shape in the plane: an immutable value that can be tested against any other shape.
  *
  * <p>The family is sealed so that {@link #overlaps} can answer for every pair: circles,
- * rectangles, segments and polygons. Each pair is decided by the same code as the matching
+ * rectangles, segments, polygons, ellipses and capsules. Each pair is decided by the same code as the matching
  * {@link Collide} method, and by the same <a href="package-summary.html#touching">touching
  * rule</a>, in either order: {@code a.overlaps(b) == b.overlaps(a)}.
  */
-public sealed interface Shape permits Circle, Rect, Segment, Polygon {
+public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, Capsule {
 
     /**
      * Does this shape collide with {@code other}? Touching is not colliding for shapes with
@@ -30,7 +30,9 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon {
      * @param other the other shape, not null
      * @return the contact, or null when the shapes are apart or touching
      * @throws IllegalArgumentException if {@code other} is null, or either shape is a
-     *                                  {@link Segment} (a segment has no area to push out of)
+     *                                  {@link Segment} (a segment has no area to push out of),
+     *                                  or a concave polygon meets an {@link Ellipse} or a
+     *                                  {@link Capsule}
      */
     default Contact contact(Shape other) {
         return Contact.between(this, Check.notNull("other", other));
@@ -47,10 +49,13 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon {
     boolean contains(float x, float y);
 
     /**
-     * The smallest axis-aligned rectangle that holds this shape: its hit box for a cheap
-     * first test.
+     * The smallest axis-aligned float rectangle that holds this shape: its hit box for a
+     * cheap first test. Rounded outwards: its far edges, {@code x + w} and {@code y + h}
+     * added in double as {@link Collide} adds them, are at or beyond the shape's, even when
+     * the exact size is not a float. (Only a shape reaching past the float range, a circle
+     * of radius near {@code Float.MAX_VALUE}, say, gets a box held back at the float range.)
      *
-     * @return the bounding rectangle
+     * @return the bounding rectangle, never null
      */
     Rect bounds();
 

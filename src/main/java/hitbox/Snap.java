@@ -35,8 +35,11 @@ package hitbox;
  * false for them, and for whole-number coordinates the edges meet exactly. When the exact
  * touching position is not a float, the mover is placed within one float step of it, on the
  * side where {@code Collide.rectRect} says they do not overlap. The
- * methods check nothing (a NaN position gives no overlap, {@link Side#NONE} and the position
- * unchanged); the answer for a push is a small immutable {@link Push}.
+ * raw-float methods check nothing and never throw (the <a href="package-summary.html#bad-input">NaN
+ * rule</a>): a NaN or infinite value gives no push, {@link Side#NONE} and the position
+ * unchanged. The answer for a push is a small immutable {@link Push}; it is never null,
+ * because it always carries a position ({@link Side#NONE} and the mover's own when there was
+ * nothing to push out of).
  */
 public final class Snap {
     private Snap() {
@@ -58,7 +61,7 @@ public final class Snap {
      *         {@code groundY}
      */
     public static float standY(float h, float groundY) {
-        return Sweep.touchBefore(groundY, h);
+        return RectPush.touchBefore(groundY, h);
     }
 
     /**
@@ -94,7 +97,8 @@ public final class Snap {
      * Where a push put the mover, and the side of the obstacle it was pushed to.
      *
      * <p>{@link Side#NONE} means the two did not overlap and the position is the mover's own,
-     * unchanged.
+     * unchanged. A plain carrier of the answer: it takes any position, NaN included, since
+     * the pushes work on plain floats and never throw; only the side must be given.
      *
      * @param x    the mover's new left edge
      * @param y    the mover's new top edge
@@ -182,10 +186,10 @@ public final class Snap {
      *         {@code (x, y)} if they do not overlap (touching is not overlapping)
      */
     public static Push pushOut(float x, float y, float w, float h, float ox, float oy, float ow, float oh) {
-        if (!Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
+        if (!Collide.rectRect(x, y, w, h, ox, oy, ow, oh) || Check.notFinite(x, y, w, h, 0) || Check.notFinite(ox, oy, ow, oh, 0)) {
             return new Push(x, y, Side.NONE);
         }
-        return place(leastOverlap(x, y, w, h, ox, oy, ow, oh), x, y, w, h, ox, oy, ow, oh);
+        return place(RectPush.leastOverlap(x, y, w, h, ox, oy, ow, oh), x, y, w, h, ox, oy, ow, oh);
     }
 
     /**
@@ -235,14 +239,15 @@ public final class Snap {
      */
     public static Push pushBack(float x, float y, float w, float h, float vx, float vy,
                                 float ox, float oy, float ow, float oh) {
-        if (!Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
+        if (!Collide.rectRect(x, y, w, h, ox, oy, ow, oh) || Check.notFinite(x, y, w, h, vx)
+                || Check.notFinite(vy, ox, oy, ow, oh)) {
             return new Push(x, y, Side.NONE);
         }
         Side vertical = vy > 0 ? Side.TOP : vy < 0 ? Side.BOTTOM : Side.NONE;
         Side horizontal = vx > 0 ? Side.LEFT : vx < 0 ? Side.RIGHT : Side.NONE;
         Side side;
         if (vertical == Side.NONE && horizontal == Side.NONE) {
-            side = leastOverlap(x, y, w, h, ox, oy, ow, oh);
+            side = RectPush.leastOverlap(x, y, w, h, ox, oy, ow, oh);
         } else if (horizontal == Side.NONE) {
             side = vertical;
         } else if (vertical == Side.NONE) {
@@ -250,8 +255,8 @@ public final class Snap {
         } else {
             // Time back to leave on each axis is depth / |speed|; compare the cross products
             // instead of dividing, so a tie is exact: ty <= tx  <=>  dy * |vx| <= dx * |vy|.
-            double dx = depth(horizontal, x, y, w, h, ox, oy, ow, oh);
-            double dy = depth(vertical, x, y, w, h, ox, oy, ow, oh);
+            double dx = RectPush.depth(horizontal, x, y, w, h, ox, oy, ow, oh);
+            double dy = RectPush.depth(vertical, x, y, w, h, ox, oy, ow, oh);
             side = dy * Math.abs((double) vx) <= dx * Math.abs((double) vy) ? vertical : horizontal;
         }
         return place(side, x, y, w, h, ox, oy, ow, oh);
@@ -276,42 +281,8 @@ public final class Snap {
                 obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
     }
 
-    /** The side with the shortest way out; ties in the order TOP, BOTTOM, LEFT, RIGHT. */
-    private static Side leastOverlap(float x, float y, float w, float h, float ox, float oy, float ow, float oh) {
-        Side best = WAYS_OUT[0];
-        double bestDepth = depth(best, x, y, w, h, ox, oy, ow, oh);
-        for (int i = 1; i < WAYS_OUT.length; i++) {
-            double d = depth(WAYS_OUT[i], x, y, w, h, ox, oy, ow, oh);
-            if (d < bestDepth) {
-                best = WAYS_OUT[i];
-                bestDepth = d;
-            }
-        }
-        return best;
-    }
-
-    /** The ways out in tie order; a constant so the loop allocates nothing. */
-    private static final Side[] WAYS_OUT = {Side.TOP, Side.BOTTOM, Side.LEFT, Side.RIGHT};
-
-    /** How far the mover must move to leave the obstacle through its {@code side}. */
-    private static double depth(Side side, float x, float y, float w, float h, float ox, float oy, float ow, float oh) {
-        return switch (side) {
-            case TOP -> (double) y + h - oy;
-            case BOTTOM -> (double) oy + oh - y;
-            case LEFT -> (double) x + w - ox;
-            case RIGHT -> (double) ox + ow - x;
-            case NONE -> throw new IllegalStateException("no way out through NONE");
-        };
-    }
-
     /** The mover placed against the obstacle's {@code side}, touching it. */
     private static Push place(Side side, float x, float y, float w, float h, float ox, float oy, float ow, float oh) {
-        return switch (side) {
-            case TOP -> new Push(x, Sweep.touchBefore(oy, h), side);
-            case BOTTOM -> new Push(x, Sweep.touchAfter((double) oy + oh), side);
-            case LEFT -> new Push(Sweep.touchBefore(ox, w), y, side);
-            case RIGHT -> new Push(Sweep.touchAfter((double) ox + ow), y, side);
-            case NONE -> new Push(x, y, side);
-        };
+        return new Push(RectPush.placedX(side, x, w, ox, ow), RectPush.placedY(side, y, h, oy, oh), side);
     }
 }

@@ -5,33 +5,57 @@ package hitbox;
  * run into an obstacle? A swept test never tunnels: a small object moving thousands of
  * pixels a frame still hits a wall one pixel thick.
  *
- * <p>The tutorial moves an object and then tests where it landed, so a fast object can jump
+ * <p>The tutorial only tests positions (where an object landed, or where it would be next
+ * frame), so a fast object can jump
  * over a thin wall between two frames. A swept test looks at the whole motion instead: the
  * mover starts where it is and moves by {@code (vx, vy)} this frame; the answer is the
  * <em>time of impact</em> {@code t}, the fraction of the motion done when the mover's inside
- * starts to overlap the obstacle's, so {@code x + t * vx, y + t * vy} is where it touches.
+ * starts to overlap the obstacle's.
+ *
+ * <h2 id="t">What t promises</h2>
+ * {@code t} is a {@code float} in [0, 1], and it is the <em>largest</em> float for which the
+ * mover, moved the way a sketch moves it ({@code x + t * vx} and {@code y + t * vy}, in
+ * {@code float}), does not overlap the obstacle ({@link Collide}'s test), while at the next
+ * float up it does. So moving a sketch's object by {@code t} never leaves it a hair inside,
+ * and it stands as close as floats allow. Where rounding leaves the moved position unchanged
+ * over a range of {@code t} (a mover far from the origin moving slowly), {@code t} is the end
+ * of that range, so a mover that touches at the start and moves in gets a {@code t} at which
+ * its float position has not moved: 0 or a hair above. If the float positions never overlap
+ * during the motion although the exact path does (a graze thinner than a float step), the
+ * hit is reported with {@code t = 1}.
  *
  * <p>The <a href="package-summary.html#touching">touching rule</a> holds throughout:
  * <ul>
- *   <li>Already overlapping at the start (exactly what {@link Collide} says): {@code t = 0}.</li>
- *   <li>Touching at the start and moving into the obstacle: the insides start to overlap at
- *       once, so {@code t = 0} too.</li>
+ *   <li>Already overlapping at the start (exactly what {@link Collide} says): {@code t = 0},
+ *       and a {@link Hit} says {@link Hit#alreadyOverlapping()}.</li>
  *   <li>Touching at the start and moving away, or sliding along the obstacle's edge (a box
  *       moving sideways with its bottom level with a platform's top): the insides never
  *       overlap, so it is no hit.</li>
- *   <li>Only reaching the obstacle at the very end of the motion ({@code t = 1}, touching):
- *       no hit this frame.</li>
+ *   <li>Only reaching the obstacle at the very end of the motion (touching at 1): no hit
+ *       this frame.</li>
  * </ul>
+ *
+ * <h2>Answers, normals and bad input</h2>
  * No hit is {@link Float#POSITIVE_INFINITY} for the {@code float} methods and {@code null}
- * for the {@link Hit} methods, so {@code t <= 1} reads "it hits this frame".
+ * for the {@link Hit} methods, so {@code t <= 1} reads "it hits this frame". A hit's normal
+ * points <em>from the mover into the obstacle</em> (landing on a floor gives (0, 1)), the
+ * package's one convention, so it goes straight to {@link Response#bounce(float, float,
+ * float, float, float)}. The methods on plain floats never throw: NaN or an infinite value in
+ * any argument, or a negative size, gives "no hit". The methods on shapes check their
+ * arguments as constructors do.
  *
  * <p>Three levels, as elsewhere in the library: {@link #rectRect} and {@link #circleCircle}
- * return only {@code t} and allocate nothing; the {@code ...Hit} methods on plain floats and
- * the {@code timeOfImpact} methods on shapes return a {@link Hit} with the surface normal and
- * the {@link Side} hit; {@link #move} walks a box through a list of obstacles, sliding along
- * what it hits. Entry and exit times are computed in {@code double}: for whole-number
- * coordinates and velocities every decision (hit or not, which side) is exact. The float
- * methods check nothing: NaN or an infinite velocity gives "no hit".
+ * return only {@code t}; the {@code ...Hit} methods on plain floats and the
+ * {@code timeOfImpact} methods on shapes return a {@link Hit} with the normal and the
+ * {@link Side} hit; {@link #move} walks a box through a list of obstacles, sliding along what
+ * it hits (the walk itself lives in a class of its own). The maths is shared with
+ * {@link Ray}: slabs for boxes, discs for round parts. Entry times are computed in
+ * {@code double}: for whole-number coordinates and velocities every decision (hit or not,
+ * which side) is exact.
+ *
+ * <p>This class is longer than most (about 660 lines) because it is the public face of every
+ * swept pair and of the turning sweep, each with its full javadoc; the maths is in
+ * package-private kernels ({@code SweptPairs}, {@code MoveAndSlide}, {@code TurningSweep}).
  *
  * <p>Reference: Christer Ericson, <i>Real-Time Collision Detection</i> (2005), 5.5
  * "Dynamic Intersection Tests" (moving sphere against sphere, moving sphere against AABB as
@@ -42,15 +66,13 @@ public final class Sweep {
     /** How many times {@link #move} stops at an obstacle and slides on before giving up. */
     public static final int MAX_SLIDES = 4;
 
-    static final double INF = Double.POSITIVE_INFINITY;
-
     /** The answer when the shapes already overlap at the start. */
-    private static final Hit OVERLAPPING = new Hit(0, 0, 0, Side.NONE);
+    static final Hit OVERLAPPING = new Hit(0, 0, 0, Side.NONE);
 
     private Sweep() {
     }
 
-    // ---------------------------------------------------------------- time only, no allocation
+    // ---------------------------------------------------------------- time only
 
     /**
      * When does a moving rectangle first overlap a standing one? Swept box against box.
@@ -68,14 +90,22 @@ public final class Sweep {
      * @param oy the obstacle's top edge
      * @param ow the obstacle's width
      * @param oh the obstacle's height
-     * @return the time of impact in [0, 1]; 0 if the rectangles already overlap (exactly when
-     *         {@link Collide#rectRect} says so) or touch and the mover moves in;
+     * @return the time of impact in [0, 1] (see <a href="#t">what t promises</a>); 0 if the
+     *         rectangles already overlap (exactly when {@link Collide#rectRect} says so);
      *         {@link Float#POSITIVE_INFINITY} if their insides do not start to overlap within
-     *         the motion
+     *         the motion, or for NaN, infinite or negative input
      */
     public static float rectRect(float x, float y, float w, float h, float vx, float vy,
                                  float ox, float oy, float ow, float oh) {
-        return (float) rectRectTime(x, y, w, h, vx, vy, ox, oy, ow, oh);
+        if (Check.notFinite(x, y, w, h, vx) || Check.notFinite(vy, ox, oy, ow, oh)) {
+            return Float.POSITIVE_INFINITY;
+        }
+        if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
+            return 0;
+        }
+        double te = SweptPairs.rectRectTime(x, y, w, h, vx, vy, ox, oy, ow, oh);
+        return te == Slabs.INF ? Float.POSITIVE_INFINITY
+                : SweptPairs.lastClear(te, t -> Collide.rectRect(x + t * vx, y + t * vy, w, h, ox, oy, ow, oh));
     }
 
     /**
@@ -92,17 +122,18 @@ public final class Sweep {
      * @param ox the obstacle's centre x
      * @param oy the obstacle's centre y
      * @param or the obstacle's radius
-     * @return the time of impact in [0, 1]; 0 if the circles already overlap (exactly when
-     *         {@link Collide#circleCircle} says so) or touch and the mover moves in;
-     *         {@link Float#POSITIVE_INFINITY} if they do not start to overlap within the motion
+     * @return the time of impact in [0, 1] (see <a href="#t">what t promises</a>); 0 if the
+     *         circles already overlap (exactly when {@link Collide#circleCircle} says so);
+     *         {@link Float#POSITIVE_INFINITY} if they do not start to overlap within the
+     *         motion, or for NaN, infinite or negative input
      */
     public static float circleCircle(float x, float y, float r, float vx, float vy,
                                      float ox, float oy, float or) {
-        if (Collide.circleCircle(x, y, r, ox, oy, or)) {
-            return 0;
+        Earliest e = SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or);
+        if (e == null || !e.found()) {
+            return Float.POSITIVE_INFINITY;
         }
-        double t = discEntry((double) x - ox, (double) y - oy, vx, vy, (double) r + or, 1);
-        return t < 0 ? 0 : (float) t;
+        return e.inside ? 0 : SweptPairs.lastClear(e.t, t -> Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
     }
 
     // ---------------------------------------------------------------- richer answers, on floats
@@ -125,18 +156,23 @@ public final class Sweep {
      * @param oy the obstacle's top edge
      * @param ow the obstacle's width
      * @param oh the obstacle's height
-     * @return the hit, or null if the insides do not start to overlap within the motion
+     * @return the hit, normal from the mover into the obstacle; null if the insides do not
+     *         start to overlap within the motion, or for NaN, infinite or negative input
      */
     public static Hit rectRectHit(float x, float y, float w, float h, float vx, float vy,
                                   float ox, float oy, float ow, float oh) {
-        return rectRectHit(x, y, w, h, (double) vx, vy, ox, oy, ow, oh);
+        if (Check.notFinite(x, y, w, h, vx) || Check.notFinite(vy, ox, oy, ow, oh)) {
+            return null;
+        }
+        return SweptPairs.hit(SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh), false,
+                t -> Collide.rectRect(x + t * vx, y + t * vy, w, h, ox, oy, ow, oh));
     }
 
     /**
      * Where does a moving circle first run into a standing one?
      *
-     * <p>Same time as {@link #circleCircle}; the normal points from the obstacle's centre to
-     * the mover's at the impact, and the side is the one the normal mostly faces.
+     * <p>Same time as {@link #circleCircle}; the normal points from the mover's centre to the
+     * obstacle's at the impact, and the side is the one the normal points into.
      *
      * @param x  the mover's centre x at the start
      * @param y  the mover's centre y at the start
@@ -146,16 +182,13 @@ public final class Sweep {
      * @param ox the obstacle's centre x
      * @param oy the obstacle's centre y
      * @param or the obstacle's radius
-     * @return the hit, or null if the circles do not start to overlap within the motion
+     * @return the hit, or null if the circles do not start to overlap within the motion, or
+     *         for NaN, infinite or negative input
      */
     public static Hit circleCircleHit(float x, float y, float r, float vx, float vy,
                                       float ox, float oy, float or) {
-        if (Collide.circleCircle(x, y, r, ox, oy, or)) {
-            return OVERLAPPING;
-        }
-        Best best = new Best();
-        best.disc((double) x - ox, (double) y - oy, vx, vy, (double) r + or, 1);
-        return best.hit();
+        return SweptPairs.hit(SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or), false,
+                t -> Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
     }
 
     /**
@@ -165,8 +198,8 @@ public final class Sweep {
      * <p>The circle's inside overlaps the rectangle's while its centre is inside the rectangle
      * grown by the radius, a box with rounded corners; the centre's straight path is tested
      * against the two crossing boxes and the four corner circles that make it up. A hit on a
-     * face gives that face's normal; a hit on a corner gives the normal pointing from the
-     * corner to the centre.
+     * face gives that face's normal, turned into the rectangle; a hit on a corner gives the
+     * normal pointing from the centre to the corner.
      *
      * @param cx the circle's centre x at the start
      * @param cy the circle's centre y at the start
@@ -179,35 +212,12 @@ public final class Sweep {
      * @param rh the rectangle's height
      * @return the hit ({@code t = 0} with {@link Side#NONE} if {@link Collide#circleRect}
      *         says they already overlap), or null if they do not start to overlap within the
-     *         motion
+     *         motion, or for NaN, infinite or negative input
      */
     public static Hit circleRectHit(float cx, float cy, float r, float vx, float vy,
                                     float rx, float ry, float rw, float rh) {
-        if (Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
-            return OVERLAPPING;
-        }
-        if (!finite(vx, vy)) {
-            return null;
-        }
-        Best best = new Best();
-        double left = rx, right = (double) rx + rw, top = ry, bottom = (double) ry + rh;
-        // The rounded box is the union of two crossing boxes and four corner circles; the
-        // first entry into the union is the first entry into any of them. Where a box and a
-        // corner circle are entered at the same moment the point is where the circle meets
-        // the box's real face, so the circles go first (ties keep the first), and each box
-        // puts its real faces first: the wide box's are left and right, the tall box's top
-        // and bottom.
-        best.disc(cx - left, cy - top, vx, vy, r, 1);
-        best.disc(cx - right, cy - top, vx, vy, r, 1);
-        best.disc(cx - left, cy - bottom, vx, vy, r, 1);
-        best.disc(cx - right, cy - bottom, vx, vy, r, 1);
-        best.clip(new Clip()
-                .slab(left - r - cx, right + r - cx, vx, 1, 0)
-                .slab(top - cy, bottom - cy, vy, 0, 1), 1);
-        best.clip(new Clip()
-                .slab(top - r - cy, bottom + r - cy, vy, 0, 1)
-                .slab(left - cx, right - cx, vx, 1, 0), 1);
-        return best.hit();
+        return SweptPairs.hit(SweptPairs.circleRectEntry(cx, cy, r, vx, vy, rx, ry, rw, rh), false,
+                t -> Collide.circleRect(cx + t * vx, cy + t * vy, r, rx, ry, rw, rh));
     }
 
     /**
@@ -230,32 +240,12 @@ public final class Sweep {
      * @param x2 the segment's second end, x
      * @param y2 the segment's second end, y
      * @return the hit, or null if the segment does not reach the rectangle's inside within
-     *         the motion
+     *         the motion, or for NaN, infinite or negative input
      */
     public static Hit rectSegmentHit(float x, float y, float w, float h, float vx, float vy,
                                      float x1, float y1, float x2, float y2) {
-        if (!(w > 0 && h > 0) || !finite(vx, vy)) {
-            return null;
-        }
-        double left = x, right = (double) x + w, top = y, bottom = (double) y + h;
-        Clip clip = new Clip()
-                .slab(Math.min(y1, y2) - bottom, Math.max(y1, y2) - top, vy, 0, 1)
-                .slab(Math.min(x1, x2) - right, Math.max(x1, x2) - left, vx, 1, 0);
-        double ex = (double) x2 - x1, ey = (double) y2 - y1;
-        if (ex != 0 || ey != 0) {
-            // Across the segment: n = (-ey, ex). The segment projects to one value, the box
-            // to an interval found from its corners.
-            double nx = -ey, ny = ex;
-            double s = nx * x1 + ny * y1;
-            double base = nx * left + ny * top;
-            double lo = base + Math.min(0, nx * w) + Math.min(0, ny * h);
-            double hi = base + Math.max(0, nx * w) + Math.max(0, ny * h);
-            double len = Math.hypot(ex, ey);
-            clip.slab(s - hi, s - lo, nx * vx + ny * vy, nx / len, ny / len);
-        }
-        Best best = new Best();
-        best.clip(clip, 1);
-        return best.hit();
+        return SweptPairs.hit(SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2), false,
+                t -> Collide.lineRect(x1, y1, x2, y2, x + t * vx, y + t * vy, w, h));
     }
 
     /**
@@ -274,31 +264,13 @@ public final class Sweep {
      * @param y1 the segment's first end, y
      * @param x2 the segment's second end, x
      * @param y2 the segment's second end, y
-     * @return the hit, or null if the circle does not reach the segment within the motion
+     * @return the hit, or null if the circle does not reach the segment within the motion,
+     *         or for NaN, infinite or negative input
      */
     public static Hit circleSegmentHit(float cx, float cy, float r, float vx, float vy,
                                        float x1, float y1, float x2, float y2) {
-        if (!(r > 0) || !finite(vx, vy)) {
-            return null;
-        }
-        Best best = new Best();
-        // End circles first: at a tie the point is where an end circle meets the face, and
-        // the circle's normal is the true one there.
-        best.disc((double) cx - x1, (double) cy - y1, vx, vy, r, 1);
-        best.disc((double) cx - x2, (double) cy - y2, vx, vy, r, 1);
-        double ex = (double) x2 - x1, ey = (double) y2 - y1;
-        double len2 = ex * ex + ey * ey;
-        if (len2 > 0) {
-            double len = Math.sqrt(len2);
-            double px = (double) cx - x1, py = (double) cy - y1;
-            double across = -ey * px + ex * py;
-            double along = ex * px + ey * py;
-            double half = r * len;
-            best.clip(new Clip()
-                    .slab(-half - across, half - across, -ey * vx + ex * vy, -ey / len, ex / len)
-                    .slab(-along, len2 - along, ex * vx + ey * vy, ex / len, ey / len), 1);
-        }
-        return best.hit();
+        return SweptPairs.hit(SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2), false,
+                t -> Collide.lineCircle(x1, y1, x2, y2, cx + t * vx, cy + t * vy, r));
     }
 
     // ---------------------------------------------------------------- on shapes
@@ -307,10 +279,10 @@ public final class Sweep {
      * Where does a moving rectangle first run into a standing one? Same as
      * {@link #rectRectHit}.
      *
-     * @param mover    the moving rectangle, where it starts
+     * @param mover    the moving rectangle, where it starts, not null
      * @param vx       its motion this frame, x part
      * @param vy       its motion this frame, y part
-     * @param obstacle the standing rectangle
+     * @param obstacle the standing rectangle, not null
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
@@ -324,10 +296,10 @@ public final class Sweep {
      * Where does a moving circle first run into a standing one? Same as
      * {@link #circleCircleHit}.
      *
-     * @param mover    the moving circle, where it starts
+     * @param mover    the moving circle, where it starts, not null
      * @param vx       its motion this frame, x part
      * @param vy       its motion this frame, y part
-     * @param obstacle the standing circle
+     * @param obstacle the standing circle, not null
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
@@ -341,10 +313,10 @@ public final class Sweep {
      * Where does a moving circle first run into a standing rectangle? Same as
      * {@link #circleRectHit}.
      *
-     * @param mover    the moving circle, where it starts
+     * @param mover    the moving circle, where it starts, not null
      * @param vx       its motion this frame, x part
      * @param vy       its motion this frame, y part
-     * @param obstacle the standing rectangle
+     * @param obstacle the standing rectangle, not null
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
@@ -356,30 +328,32 @@ public final class Sweep {
 
     /**
      * Where does a moving rectangle first run into a standing circle? The same motion seen
-     * from the other shape: the circle moving by {@code (-vx, -vy)} into the rectangle, with
-     * the normal turned round so it is the circle's.
+     * from the other shape: the circle moving by {@code (-vx, -vy)} into the rectangle; the
+     * normal still points from the mover (the rectangle) into the circle.
      *
-     * @param mover    the moving rectangle, where it starts
+     * @param mover    the moving rectangle, where it starts, not null
      * @param vx       its motion this frame, x part
      * @param vy       its motion this frame, y part
-     * @param obstacle the standing circle
+     * @param obstacle the standing circle, not null
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
     public static Hit timeOfImpact(Rect mover, float vx, float vy, Circle obstacle) {
         checkArgs(mover, vx, vy, obstacle);
-        return reversed(circleRectHit(obstacle.x(), obstacle.y(), obstacle.r(), -vx, -vy,
-                mover.x(), mover.y(), mover.w(), mover.h()));
+        float x = mover.x(), y = mover.y(), w = mover.w(), h = mover.h();
+        float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
+        return SweptPairs.hit(SweptPairs.circleRectEntry(cx, cy, r, -vx, -vy, x, y, w, h), true,
+                t -> Collide.circleRect(cx, cy, r, x + t * vx, y + t * vy, w, h));
     }
 
     /**
      * Where does a moving rectangle first run into a standing segment? Same as
      * {@link #rectSegmentHit}.
      *
-     * @param mover    the moving rectangle, where it starts
+     * @param mover    the moving rectangle, where it starts, not null
      * @param vx       its motion this frame, x part
      * @param vy       its motion this frame, y part
-     * @param obstacle the standing segment
+     * @param obstacle the standing segment, not null
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
@@ -391,29 +365,32 @@ public final class Sweep {
 
     /**
      * Where does a moving segment first run into a standing rectangle? The rectangle moving
-     * by {@code (-vx, -vy)} into the segment, with the normal turned round.
+     * by {@code (-vx, -vy)} into the segment; the normal points from the segment into the
+     * rectangle.
      *
-     * @param mover    the moving segment, where it starts
+     * @param mover    the moving segment, where it starts, not null
      * @param vx       its motion this frame, x part
      * @param vy       its motion this frame, y part
-     * @param obstacle the standing rectangle
+     * @param obstacle the standing rectangle, not null
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
     public static Hit timeOfImpact(Segment mover, float vx, float vy, Rect obstacle) {
         checkArgs(mover, vx, vy, obstacle);
-        return reversed(rectSegmentHit(obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h(),
-                -vx, -vy, mover.x1(), mover.y1(), mover.x2(), mover.y2()));
+        float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
+        float rx = obstacle.x(), ry = obstacle.y(), rw = obstacle.w(), rh = obstacle.h();
+        return SweptPairs.hit(SweptPairs.rectSegmentEntry(rx, ry, rw, rh, -vx, -vy, x1, y1, x2, y2), true,
+                t -> Collide.lineRect(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, rx, ry, rw, rh));
     }
 
     /**
      * Where does a moving circle first run into a standing segment? Same as
      * {@link #circleSegmentHit}.
      *
-     * @param mover    the moving circle, where it starts
+     * @param mover    the moving circle, where it starts, not null
      * @param vx       its motion this frame, x part
      * @param vy       its motion this frame, y part
-     * @param obstacle the standing segment
+     * @param obstacle the standing segment, not null
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
@@ -425,29 +402,32 @@ public final class Sweep {
 
     /**
      * Where does a moving segment first run into a standing circle? The circle moving by
-     * {@code (-vx, -vy)} into the segment, with the normal turned round.
+     * {@code (-vx, -vy)} into the segment; the normal points from the segment into the
+     * circle.
      *
-     * @param mover    the moving segment, where it starts
+     * @param mover    the moving segment, where it starts, not null
      * @param vx       its motion this frame, x part
      * @param vy       its motion this frame, y part
-     * @param obstacle the standing circle
+     * @param obstacle the standing circle, not null
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
     public static Hit timeOfImpact(Segment mover, float vx, float vy, Circle obstacle) {
         checkArgs(mover, vx, vy, obstacle);
-        return reversed(circleSegmentHit(obstacle.x(), obstacle.y(), obstacle.r(), -vx, -vy,
-                mover.x1(), mover.y1(), mover.x2(), mover.y2()));
+        float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
+        float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
+        return SweptPairs.hit(SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2), true,
+                t -> Collide.lineCircle(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, cx, cy, r));
     }
 
     /**
      * Where does a moving shape first run into a standing one, for any pair that has a swept
      * test: circles, rectangles and segments, except a segment against a segment.
      *
-     * @param mover    the moving shape, where it starts
+     * @param mover    the moving shape, where it starts, not null
      * @param vx       its motion this frame, x part
      * @param vy       its motion this frame, y part
-     * @param obstacle the standing shape
+     * @param obstacle the standing shape, not null
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null, the velocity is NaN or infinite,
      *                                  or the pair has no swept test (polygons, two segments)
@@ -487,6 +467,80 @@ public final class Sweep {
                 + " yet; sweep their bounds() instead");
     }
 
+    /**
+     * Where does a convex polygon that moves <em>and turns</em> this frame first run into a
+     * standing shape? At time t in [0, 1] the mover is turned by {@code t * turn} radians
+     * about the pivot (clockwise on screen for a positive turn, as Processing's
+     * {@code rotate}) and moved by {@code t * (vx, vy)}, the pivot with it: a spinning blade
+     * turns about its hub. A straight sweep of a fast-turning thin shape misses what its tip
+     * sweeps through; this one never does (conservative advancement: each step is shorter
+     * than the gap left, so nothing is passed through). The hit is where the gap first falls
+     * below {@code 1e-3} pixels while closing in (a mover turning away from what it touches
+     * is not stopped): the mover at that t does not overlap the obstacle; its normal points
+     * from the mover into the obstacle. Costs many support evaluations per step: use
+     * it for a few fast movers, after a bounds test.
+     *
+     * @param mover    the turning shape where it starts, a convex polygon, not null
+     * @param pivotX   the point it turns about, x
+     * @param pivotY   the point it turns about, y
+     * @param vx       the pivot's motion this frame, x part
+     * @param vy       the pivot's motion this frame, y part
+     * @param turn     how far it turns this frame, in radians
+     * @param obstacle the standing shape, any kind (a concave polygon is taken as its convex
+     *                 pieces), not null
+     * @return the hit, {@link Hit#alreadyOverlapping() already overlapping} at t = 0, or null
+     *         if there is none this frame
+     * @throws IllegalArgumentException if a shape is null, the mover is not convex, or a
+     *                                  number is NaN or infinite
+     */
+    public static Hit turningTimeOfImpact(Polygon mover, float pivotX, float pivotY, float vx, float vy, float turn,
+                                          Shape obstacle) {
+        checkArgs(mover, vx, vy, obstacle);
+        Check.finite("pivotX", pivotX);
+        Check.finite("pivotY", pivotY);
+        Check.finite("turn", turn);
+        if (!mover.isConvex()) {
+            throw new IllegalArgumentException("mover must be a convex polygon; split a concave one into convex ones");
+        }
+        return TurningSweep.timeOfImpact(mover, pivotX, pivotY, vx, vy, turn, obstacle);
+    }
+
+    /**
+     * The turning mover of {@link #turningTimeOfImpact} at time t: turned by
+     * {@code t * turn} about the pivot and moved by {@code t * (vx, vy)}. For drawing where
+     * it was hit.
+     *
+     * @param mover  the shape where it starts, not null
+     * @param pivotX the point it turns about, x
+     * @param pivotY the point it turns about, y
+     * @param vx     the pivot's motion this frame, x part
+     * @param vy     the pivot's motion this frame, y part
+     * @param turn   how far it turns this frame, radians
+     * @param t      the time, usually the hit's t
+     * @return the polygon at time t
+     * @throws IllegalArgumentException if the mover is null, a number is NaN or infinite, or
+     *                                  the turned polygon would leave the float range or
+     *                                  collapse (vertices rounded onto each other)
+     */
+    public static Polygon turnedAt(Polygon mover, float pivotX, float pivotY, float vx, float vy, float turn, float t) {
+        checkArgs(mover, vx, vy, mover);
+        Check.finite("pivotX", pivotX);
+        Check.finite("pivotY", pivotY);
+        Check.finite("turn", turn);
+        Check.finite("t", t);
+        double[] xy = TurningSweep.at(mover.raw(), pivotX, pivotY, vx, vy, turn, t);
+        float[] f = new float[xy.length];
+        for (int i = 0; i < xy.length; i++) {
+            f[i] = (float) xy[i];
+        }
+        try {
+            return Polygon.of(f);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("pivotX, pivotY, vx, vy, turn and t move the polygon out of the float range"
+                    + " or squash it: " + e.getMessage(), e);
+        }
+    }
+
     // ---------------------------------------------------------------- move and slide
 
     /**
@@ -501,71 +555,21 @@ public final class Sweep {
      * touching is not colliding. Cost: the obstacles are looked at once per slide, so pass
      * the ones near the box.
      *
-     * @param mover     the box, where it starts
+     * @param mover     the box, where it starts, not null
      * @param vx        its motion this frame, x part
      * @param vy        its motion this frame, y part
-     * @param obstacles the standing boxes (walls, platforms, tiles)
+     * @param obstacles the standing boxes (walls, platforms, tiles), not null, no null element
      * @return where the box ends, the velocity to keep, and the sides it hit
      * @throws IllegalArgumentException if an argument or an obstacle is null, or the velocity
      *                                  is NaN or infinite
      */
     public static Move move(Rect mover, float vx, float vy, Iterable<Rect> obstacles) {
         checkArgs(mover, vx, vy, "obstacles", obstacles);
+        int i = 0;
         for (Rect o : obstacles) {
-            Check.notNull("every obstacle", o);
+            Check.notNull("obstacles[" + i++ + "]", o);
         }
-        final float x0 = mover.x(), y0 = mover.y(), w = mover.w(), h = mover.h();
-        float x = x0, y = y0;
-        double mx = vx, my = vy;  // the motion still to do this frame
-        float keepVx = vx, keepVy = vy;
-        int sides = 0;
-        for (int stop = 0; stop < MAX_SLIDES && (mx != 0 || my != 0); stop++) {
-            double first = INF;
-            Rect hitRect = null;
-            for (Rect o : obstacles) {
-                if (!Collide.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
-                    double t = rectRectTime(x, y, w, h, mx, my, o.x(), o.y(), o.w(), o.h());
-                    if (t < first) {
-                        first = t;
-                        hitRect = o;
-                    }
-                }
-            }
-            if (hitRect == null) {
-                float[] end = safeAlong(x, y, w, h, mx, my, 1, (float) (x + mx), (float) (y + my), x0, y0, obstacles);
-                x = end[0];
-                y = end[1];
-                break;
-            }
-            Hit hit = rectRectHit(x, y, w, h, mx, my, hitRect.x(), hitRect.y(), hitRect.w(), hitRect.h());
-            Side side = hit == null ? Side.NONE : hit.side();
-            if (side == Side.NONE) {
-                break;  // cannot happen: the box is never left overlapping an obstacle it did not start in
-            }
-            // Stand exactly against the face hit (rounding could leave it a hair inside),
-            // the other coordinate where the motion had got to.
-            float tx = (float) (x + first * mx), ty = (float) (y + first * my);
-            switch (side) {
-                case LEFT -> tx = touchBefore(hitRect.x(), w);
-                case RIGHT -> tx = touchAfter((double) hitRect.x() + hitRect.w());
-                case TOP -> ty = touchBefore(hitRect.y(), h);
-                default -> ty = touchAfter((double) hitRect.y() + hitRect.h());
-            }
-            float[] at = safeAlong(x, y, w, h, mx, my, first, tx, ty, x0, y0, obstacles);
-            x = at[0];
-            y = at[1];
-            mx *= 1 - first;
-            my *= 1 - first;
-            if (side.isWall()) {
-                mx = 0;
-                keepVx = 0;
-            } else {
-                my = 0;
-                keepVy = 0;
-            }
-            sides |= Move.bit(side);
-        }
-        return new Move(x, y, keepVx, keepVy, sides);
+        return MoveAndSlide.move(mover, vx, vy, obstacles);
     }
 
     /**
@@ -577,8 +581,9 @@ public final class Sweep {
      * @param vx    the velocity to keep, x part: the one passed in, or 0 if a wall stopped it
      * @param vy    the velocity to keep, y part: the one passed in, or 0 if it landed or hit
      *              its head
-     * @param sides the obstacle sides hit, one bit {@code 1 << side.ordinal()} per
-     *              {@link Side}; read it with {@link #hit(Side)}
+     * @param sides the obstacle sides hit, in {@link Side}'s <a href="Side.html#bits">bit
+     *              scheme</a> ({@code Side.TOP.bit()} if it landed, and so on); read it with
+     *              {@link #hit(Side)} or {@link #sideSet()}
      */
     public record Move(float x, float y, float vx, float vy, int sides) {
 
@@ -589,7 +594,7 @@ public final class Sweep {
          * @param y the box's top edge after the move
          * @param vx the velocity to keep, x part: the one passed in, or 0 if a wall stopped it
          * @param vy the velocity to keep, y part: the one passed in, or 0 if it landed or hit its head
-         * @param sides the obstacle sides hit, one bit {@code 1 << side.ordinal()} per {@link Side}; read it with {@link #hit(Side)}
+         * @param sides the obstacle sides hit, in {@link Side}'s bit scheme
          *
          * @throws IllegalArgumentException if a value is NaN or infinite, or {@code sides}
          *                                  has a bit that names no side
@@ -599,9 +604,9 @@ public final class Sweep {
             Check.finite("y", y);
             Check.finite("vx", vx);
             Check.finite("vy", vy);
-            int all = bit(Side.TOP) | bit(Side.BOTTOM) | bit(Side.LEFT) | bit(Side.RIGHT);
-            if ((sides & ~all) != 0) {
-                throw new IllegalArgumentException("sides must only have the bits of TOP, BOTTOM, LEFT and RIGHT, was " + sides);
+            if ((sides & ~Side.ALL_BITS) != 0) {
+                throw new IllegalArgumentException("sides must only have the bits of TOP, BOTTOM, LEFT and RIGHT"
+                        + " (Side.ALL_BITS), was " + sides);
             }
         }
 
@@ -611,10 +616,15 @@ public final class Sweep {
          * @param side the obstacle's side, not null
          * @return true if the box hit that side during the move ({@link Side#NONE}: true if
          *         it hit nothing)
+         * @throws IllegalArgumentException if {@code side} is null
          */
         public boolean hit(Side side) {
-            Check.notNull("side", side);
-            return side == Side.NONE ? sides == 0 : (sides & bit(side)) != 0;
+            return Side.has(sides, side);
+        }
+
+        /** @return the obstacle sides hit, as a new set (empty if it hit nothing) */
+        public java.util.EnumSet<Side> sideSet() {
+            return Side.setOf(sides);
         }
 
         /** @return true if the box came down on the top of an obstacle: it stands, and may jump */
@@ -636,184 +646,6 @@ public final class Sweep {
         public boolean hitAnything() {
             return sides != 0;
         }
-
-        static int bit(Side side) {
-            return 1 << side.ordinal();
-        }
-    }
-
-    // ---------------------------------------------------------------- the shared machinery
-
-    /** Time of impact of two boxes, the motion given in double (the rest of a move). */
-    static double rectRectTime(float x, float y, float w, float h, double vx, double vy,
-                               float ox, float oy, float ow, float oh) {
-        if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
-            return 0;
-        }
-        if (!finite(vx, vy)) {
-            return INF;
-        }
-        // The same sums as Collide.rectRect, so the signs agree exactly with it.
-        double loX = ox - ((double) x + w), hiX = ((double) ox + ow) - x;
-        double loY = oy - ((double) y + h), hiY = ((double) oy + oh) - y;
-        double enter = Math.max(slabEnter(loX, hiX, vx), slabEnter(loY, hiY, vy));
-        double exit = Math.min(slabExit(loX, hiX, vx), slabExit(loY, hiY, vy));
-        return firstTime(enter, exit, 1);
-    }
-
-    private static Hit rectRectHit(float x, float y, float w, float h, double vx, double vy,
-                                   float ox, float oy, float ow, float oh) {
-        if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
-            return OVERLAPPING;
-        }
-        if (!finite(vx, vy)) {
-            return null;
-        }
-        // y first: a corner hit, where both axes are entered at once, counts as top or bottom.
-        Clip clip = new Clip()
-                .slab(oy - ((double) y + h), ((double) oy + oh) - y, vy, 0, 1)
-                .slab(ox - ((double) x + w), ((double) ox + ow) - x, vx, 1, 0);
-        Best best = new Best();
-        best.clip(clip, 1);
-        return best.hit();
-    }
-
-    /**
-     * When does {@code t * v} enter the open interval (lo, hi)? -infinity if it is always
-     * inside ({@code v = 0}), +infinity if never, NaN for NaN input.
-     */
-    static double slabEnter(double lo, double hi, double v) {
-        if (v > 0) {
-            return lo / v;
-        }
-        if (v < 0) {
-            return hi / v;
-        }
-        if (v == 0) {
-            return lo < 0 && 0 < hi ? Double.NEGATIVE_INFINITY : INF;
-        }
-        return Double.NaN;
-    }
-
-    /** When does {@code t * v} leave the open interval (lo, hi)? See {@link #slabEnter}. */
-    static double slabExit(double lo, double hi, double v) {
-        if (v > 0) {
-            return hi / v;
-        }
-        if (v < 0) {
-            return lo / v;
-        }
-        if (v == 0) {
-            return lo < 0 && 0 < hi ? INF : Double.NEGATIVE_INFINITY;
-        }
-        return Double.NaN;
-    }
-
-    /**
-     * The start of the open time interval (enter, exit) clipped to [0, limit): the time of
-     * impact, or +infinity if the interval is empty, over before 0, or starts at the limit
-     * or later.
-     */
-    static double firstTime(double enter, double exit, double limit) {
-        return enter < exit && exit > 0 && enter < limit ? Math.max(enter, 0) : INF;
-    }
-
-    /**
-     * When does the point {@code d + t v} enter the open disc of radius {@code reach} around
-     * the origin, for t in [0, limit)? -infinity if it starts inside, +infinity if it never
-     * enters (a path that only touches the outline does not).
-     */
-    static double discEntry(double dx, double dy, double vx, double vy, double reach, double limit) {
-        if (!(reach > 0) || !finite(vx, vy)) {
-            return INF;  // a point has no inside to enter
-        }
-        double c = dx * dx + dy * dy - reach * reach;
-        if (c < 0) {
-            return Double.NEGATIVE_INFINITY;
-        }
-        double b = dx * vx + dy * vy;
-        if (!(b < 0)) {
-            return INF;  // moving away, sideways along the outline, not at all, or NaN
-        }
-        double a = vx * vx + vy * vy;
-        double disc = b * b - a * c;
-        if (!(disc > 0)) {
-            return INF;  // the path misses the disc or only touches it
-        }
-        if (c == 0) {
-            return 0;  // touching and moving in
-        }
-        // The entry t1 is before the limit when the point is inside at the limit, or when
-        // the closest approach (-b / a) comes before it; decided without the square root.
-        boolean beforeLimit = limit == INF || a * limit * limit + 2 * b * limit + c < 0 || -b < a * limit;
-        if (!beforeLimit) {
-            return INF;
-        }
-        // t1 = (-b - sqrt(disc)) / a, written without cancellation.
-        return Math.min(c / (Math.sqrt(disc) - b), limit);
-    }
-
-    static boolean finite(double vx, double vy) {
-        return Math.abs(vx) < INF && Math.abs(vy) < INF;
-    }
-
-    /**
-     * The float that puts a box of this size right before the edge, touching, not over it:
-     * its far end {@code p + size}, added in double as {@link Collide} does, is at most
-     * {@code edge}. That is {@code edge - size} when it is a float (it is for whole numbers);
-     * else the rounded start may sit a hair past, and the loop steps down (once at most).
-     */
-    static float touchBefore(float edge, float size) {
-        float p = (float) ((double) edge - size);
-        while ((double) p + size > edge) {
-            p = Math.nextDown(p);
-        }
-        return p;
-    }
-
-    /** The float at or right after the edge: a start that meets the edge from beyond. */
-    static float touchAfter(double edge) {
-        float p = (float) edge;
-        while (p < edge) {
-            p = Math.nextUp(p);
-        }
-        return p;
-    }
-
-    /**
-     * The wanted stop (tx, ty) if it overlaps no obstacle (except those the box started in);
-     * otherwise, which only rounding can cause, the farthest point along the motion before
-     * {@code t} that is clear, found by halving. The start (x, y) is always clear.
-     */
-    private static float[] safeAlong(float x, float y, float w, float h, double mx, double my, double t,
-                                     float tx, float ty, float x0, float y0, Iterable<Rect> obstacles) {
-        if (clear(tx, ty, w, h, x0, y0, obstacles)) {
-            return new float[] {tx, ty};
-        }
-        float bestX = x, bestY = y;
-        double lo = 0, hi = t;
-        for (int i = 0; i < 64 && lo < hi; i++) {
-            double mid = (lo + hi) / 2;
-            float px = (float) (x + mid * mx), py = (float) (y + mid * my);
-            if (clear(px, py, w, h, x0, y0, obstacles)) {
-                lo = mid;
-                bestX = px;
-                bestY = py;
-            } else {
-                hi = mid;
-            }
-        }
-        return new float[] {bestX, bestY};
-    }
-
-    private static boolean clear(float x, float y, float w, float h, float x0, float y0, Iterable<Rect> obstacles) {
-        for (Rect o : obstacles) {
-            if (Collide.rectRect(x, y, w, h, o.x(), o.y(), o.w(), o.h())
-                    && !Collide.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
-                return false;
-            }
-        }
-        return true;
     }
 
     private static void checkArgs(Object mover, float vx, float vy, Object obstacle) {
@@ -825,106 +657,5 @@ public final class Sweep {
         Check.finite("vx", vx);
         Check.finite("vy", vy);
         Check.notNull(obstacleName, obstacle);
-    }
-
-    /** The hit seen from the other shape: same time, the normal turned round. */
-    private static Hit reversed(Hit hit) {
-        if (hit == null || hit.alreadyOverlapping()) {
-            return hit;
-        }
-        return hit(hit.t(), -hit.nx(), -hit.ny());
-    }
-
-    /** A hit at time t with the normal (nx, ny) made unit length, and the side it faces. */
-    static Hit hit(double t, double nx, double ny) {
-        double len = Math.hypot(nx, ny);
-        double ux = len > 0 ? nx / len : 0, uy = len > 0 ? ny / len : 0;
-        return new Hit((float) Math.min(Math.max(t, 0), 1), (float) ux, (float) uy, sideOf(ux, uy));
-    }
-
-    /** The side of an obstacle whose outward normal is (nx, ny); ties go to top or bottom. */
-    static Side sideOf(double nx, double ny) {
-        if (nx == 0 && ny == 0) {
-            return Side.NONE;
-        }
-        if (Math.abs(ny) >= Math.abs(nx)) {
-            return ny < 0 ? Side.TOP : Side.BOTTOM;
-        }
-        return nx < 0 ? Side.LEFT : Side.RIGHT;
-    }
-
-    /**
-     * A point moving through the intersection of open slabs {@code lo < t * v < hi}, one per
-     * axis: the time it is inside all of them, and the normal of the face entered last.
-     * Cyrus-Beck clipping; box against box is two slabs, box against segment three.
-     */
-    static final class Clip {
-        double enter = Double.NEGATIVE_INFINITY;
-        double exit = INF;
-        double nx;
-        double ny;
-
-        /**
-         * Adds the slab {@code lo < t * v < hi} across the unit axis (ax, ay). Entering it
-         * from below means coming in against the axis, so the face's normal is -axis.
-         */
-        Clip slab(double lo, double hi, double v, double ax, double ay) {
-            double in = slabEnter(lo, hi, v);
-            double out = slabExit(lo, hi, v);
-            if (in > enter || Double.isNaN(in)) {
-                enter = in;
-                nx = v > 0 ? -ax : ax;
-                ny = v > 0 ? -ay : ay;
-            }
-            if (out < exit || Double.isNaN(out)) {
-                exit = out;
-            }
-            return this;
-        }
-
-        /** Is the point inside every slab at t = 0? */
-        boolean insideAtStart() {
-            return enter < 0 && exit > 0;
-        }
-    }
-
-    /** The earliest of several candidate entries, and whether any started inside already. */
-    static final class Best {
-        double t = INF;
-        double nx;
-        double ny;
-        boolean inside;
-
-        void clip(Clip clip, double limit) {
-            if (clip.insideAtStart()) {
-                inside = true;
-            }
-            offer(firstTime(clip.enter, clip.exit, limit), clip.nx, clip.ny);
-        }
-
-        /** A point {@code d + t v} entering the open disc of radius reach around the origin. */
-        void disc(double dx, double dy, double vx, double vy, double reach, double limit) {
-            double te = discEntry(dx, dy, vx, vy, reach, limit);
-            if (te == Double.NEGATIVE_INFINITY) {
-                inside = true;
-            } else {
-                offer(te, dx + te * vx, dy + te * vy);
-            }
-        }
-
-        void offer(double te, double ex, double ey) {
-            if (te < t) {
-                t = te;
-                nx = ex;
-                ny = ey;
-            }
-        }
-
-        Hit hit() {
-            if (inside) {
-                return OVERLAPPING;
-            }
-            return t == INF ? null : Sweep.hit(t, nx, ny);
-        }
     }
 }

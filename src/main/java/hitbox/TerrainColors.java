@@ -44,7 +44,7 @@ public final class TerrainColors {
         int i = find(rgb);
         if (i >= 0) {
             if (terrains[i] != terrain) {
-                throw new IllegalArgumentException("colour " + hex(rgb) + " already stands for terrain " + terrains[i]
+                throw new IllegalArgumentException("color " + hex(rgb) + " already stands for terrain " + terrains[i]
                         + ", so it cannot also be terrain " + terrain + ": give each terrain its own colour");
             }
             return this;

@@ -4,7 +4,9 @@ package hitbox;
  * A 2D vector: a velocity, a direction or a point, as an immutable value.
  *
  * <p>Processing sketches keep their own {@code PVector}s; this is what the library hands back
- * when an answer has two parts, such as the velocity after a bounce.
+ * when an answer has two parts, such as the velocity after a bounce. A plain carrier of
+ * numbers: it takes any float, NaN included, since it carries the answers of methods on
+ * plain floats, which never throw.
  *
  * @param x the x component
  * @param y the y component (down is positive, as in Processing)
@@ -16,17 +18,21 @@ public record Vec(float x, float y) {
 
     /**
      * @param other the vector to add
+     * @throws IllegalArgumentException if {@code other} is null
      * @return this + other
      */
     public Vec plus(Vec other) {
+        Check.notNull("other", other);
         return new Vec(x + other.x, y + other.y);
     }
 
     /**
      * @param other the vector to subtract
+     * @throws IllegalArgumentException if {@code other} is null
      * @return this - other
      */
     public Vec minus(Vec other) {
+        Check.notNull("other", other);
         return new Vec(x - other.x, y - other.y);
     }
 
@@ -40,9 +46,11 @@ public record Vec(float x, float y) {
 
     /**
      * @param other the other vector
+     * @throws IllegalArgumentException if {@code other} is null
      * @return the dot product
      */
     public float dot(Vec other) {
+        Check.notNull("other", other);
         return x * other.x + y * other.y;
     }
 

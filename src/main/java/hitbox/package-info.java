@@ -20,10 +20,12 @@
  * top-left corner and its size, Processing's {@code CORNER} mode.
  *
  * <h2 id="touching">The touching rule</h2>
- * One rule for every pair, the tutorial's: <strong>touching is not colliding.</strong>
+ * One rule for every pair, the one the tutorial's {@code &&} tests keep: <strong>touching is
+ * not colliding.</strong> (Its flipped {@code ||} form, with the same strict comparisons, calls
+ * touching rectangles colliding.)
  * <ul>
- *   <li>Shapes with area (circles, rectangles, polygons) are open sets: their outline is not
- *       part of them. Two circles whose distance equals the sum of their radii, two
+ *   <li>Shapes with area (circles, rectangles, polygons, ellipses, capsules) are open sets:
+ *       their outline is not part of them. Two circles whose distance equals the sum of their radii, two
  *       rectangles side by side, a point exactly on an edge: none of them collide. In the
  *       tutorial's words this is {@code dist < r1 + r2} and
  *       {@code px > rx && px < rx + rw && py > ry && py < ry + rh}, strict inequalities.</li>
@@ -32,7 +34,8 @@
  *       inside of a shape. A segment lying along a rectangle's edge does not collide with
  *       it, because it never reaches the inside.</li>
  *   <li>A zero-size shape has no inside of its own: a circle of radius 0 behaves as a
- *       point, a rectangle of width or height 0 as a segment without its end points. It
+ *       point, a rectangle of width or height 0 as a segment without its end points, an
+ *       ellipse with a radius of 0 as its flat box, a capsule of radius 0 as its segment. It
  *       collides with a shape that has area only by reaching into that shape's inside.
  *       Between two zero-size shapes the same formulas give: a point never collides with a
  *       point or a flat rectangle, and two flat rectangles collide only when they cross
@@ -60,11 +63,55 @@
  * never an exception). The tests work on concave
  * polygons without splitting them into triangles, and answer exactly, by orientation signs.
  *
- * <h2>Bad input</h2>
- * Shape constructors throw {@link java.lang.IllegalArgumentException} for NaN, infinite
- * values and negative sizes, naming the parameter and the value, for example
- * {@code "radius must be >= 0, was -1.0"}. The static {@code Collide} methods do not check
- * (they are the hot path): any comparison with NaN is false, so NaN input gives "no
- * collision".
+ * <h2 id="contract">One contract for every answer</h2>
+ * <ul>
+ *   <li><b>Normals.</b> Every normal a result carries points <em>from the first shape to
+ *       the second</em>, or, for a motion, <em>from the mover into what it hit</em> (dyn4j's
+ *       convention): {@link hitbox.Contact} from a to b, {@link hitbox.Hit} from the moving
+ *       shape into the obstacle, {@link hitbox.RayHit} from the ray into the shape. Landing on
+ *       a floor gives (0, 1) (y grows down). Every method of {@link hitbox.Response} takes
+ *       that normal as it comes: {@code Response.bounce(vx, vy, hit.nx(), hit.ny(), 1)}
+ *       bounces the mover off what it hit. The one exception is drawing data, not a result:
+ *       {@link hitbox.SeparatingAxis.Axis} is an edge's outward normal.</li>
+ *   <li><b>Sides.</b> Every "which side" answer is a {@link hitbox.Side}, named from the
+ *       obstacle (or the window): {@code TOP} is landed on, {@code BOTTOM} hit from below. A
+ *       normal gives its side by one rule, {@link hitbox.Side#ofNormal}. Answers that name
+ *       several sides at once ({@link hitbox.Edges}, {@link hitbox.Motion},
+ *       {@link hitbox.Sweep.Move#sides()}) are {@code int}s in one bit scheme, LEFT 1, RIGHT 2,
+ *       TOP 4, BOTTOM 8 ({@link hitbox.Side#bit()}), read with {@link hitbox.Side#has} or
+ *       {@link hitbox.Side#setOf} (an {@code EnumSet}).</li>
+ *   <li><b>No result.</b> An answer that is an object is {@code null} when there is none (no
+ *       contact, no hit, no ray hit, no bounds for an empty mask); a {@code float} time or
+ *       distance is {@link java.lang.Float#POSITIVE_INFINITY}, so {@code t <= 1} reads "hits
+ *       this frame"; an index is -1, as in {@link java.util.List#indexOf}; a boolean is
+ *       false; a set of sides is 0 ({@code NONE}). {@link hitbox.Side#NONE} is never "no
+ *       result" on its own: it is the side of a result that has no side (a hit that started
+ *       overlapping, a {@link hitbox.Snap.Push} that did not push).</li>
+ *   <li><b>Exact, and conservative where it rounds.</b> Decisions are exact for floats; a
+ *       float box that must hold a shape ({@link hitbox.Shape#bounds()}) is rounded
+ *       outwards; sums that could cancel or overflow in float (a polygon's area and centroid,
+ *       orientations of points far apart) are done in double or exactly.</li>
+ * </ul>
+ *
+ * <h2 id="bad-input">Bad input: the NaN rule</h2>
+ * <ul>
+ *   <li>A method whose arguments are all plain numbers ({@code Collide}, the raw-float
+ *       methods of {@code Contact}, {@code Sweep}, {@code Ray}, {@code Edges},
+ *       {@code Motion}, {@code Snap}, {@code Response}, {@code Grid}'s pixel tests) never
+ *       throws: a NaN anywhere, and likewise a negative size, answers "no result" for that
+ *       kind of answer (false, {@code NONE}, null, {@code +Infinity}), or hands the value
+ *       back unchanged where the answer is a position or a velocity. Infinite values either
+ *       take part in the comparisons as they are (for the {@code boolean} tests) or give "no
+ *       result" (for answers that would have to carry them); each method's documentation
+ *       says which.</li>
+ *   <li>Constructors and methods that take objects (shapes, contacts, lists) check what
+ *       they are given: they throw {@link java.lang.IllegalArgumentException} for null, NaN,
+ *       infinite values, negative sizes and out-of-range counts, with a message that names
+ *       the parameter and the value, for example {@code "radius must be >= 0, was -1.0"}.
+ *       Nothing throws anything else ({@code NullPointerException},
+ *       {@code NegativeArraySizeException}, {@code ArithmeticException}) for any input,
+ *       except {@link hitbox.Grid#get}/{@link hitbox.Grid#set}, whose out-of-grid cell is an
+ *       {@link java.lang.IndexOutOfBoundsException}, like a list's.</li>
+ * </ul>
  */
 package hitbox;

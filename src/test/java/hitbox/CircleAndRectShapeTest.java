@@ -61,12 +61,12 @@ class CircleAndRectShapeTest {
             yNaN            | 0         | NaN       | 1         | y must be a finite number, was NaN
             yInfinity       | 0         | Infinity  | 1         | y must be a finite number, was Infinity
             yMinusInfinity  | 0         | -Infinity | 1         | y must be a finite number, was -Infinity
-            radiusNaN       | 0         | 0         | NaN       | radius must be a finite number, was NaN
-            radiusInfinity  | 0         | 0         | Infinity  | radius must be a finite number, was Infinity
-            radiusMinusInf  | 0         | 0         | -Infinity | radius must be a finite number, was -Infinity
-            radiusNegative  | 0         | 0         | -1        | radius must be >= 0, was -1.0
-            radiusNegHalf   | 0         | 0         | -0.5      | radius must be >= 0, was -0.5
-            radiusNegTiny   | 0         | 0         | -1.4E-45  | radius must be >= 0, was -1.4E-45
+            radiusNaN       | 0         | 0         | NaN       | radius r must be a finite number, was NaN
+            radiusInfinity  | 0         | 0         | Infinity  | radius r must be a finite number, was Infinity
+            radiusMinusInf  | 0         | 0         | -Infinity | radius r must be a finite number, was -Infinity
+            radiusNegative  | 0         | 0         | -1        | radius r must be >= 0, was -1.0
+            radiusNegHalf   | 0         | 0         | -0.5      | radius r must be >= 0, was -0.5
+            radiusNegTiny   | 0         | 0         | -1.4E-45  | radius r must be >= 0, was -1.4E-45
             """)
     void circle_rejectsBadValuesNamingParameterAndValue(String scenario, float x, float y, float r, String message) {
         assertThrowsWithMessage(message, () -> new Circle(x, y, r));
@@ -80,14 +80,14 @@ class CircleAndRectShapeTest {
             yNaN            | 0         | NaN       | 1         | 1         | y must be a finite number, was NaN
             yInfinity       | 0         | Infinity  | 1         | 1         | y must be a finite number, was Infinity
             yMinusInfinity  | 0         | -Infinity | 1         | 1         | y must be a finite number, was -Infinity
-            widthNaN        | 0         | 0         | NaN       | 1         | width must be a finite number, was NaN
-            widthInfinity   | 0         | 0         | Infinity  | 1         | width must be a finite number, was Infinity
-            widthMinusInf   | 0         | 0         | -Infinity | 1         | width must be a finite number, was -Infinity
-            widthNegative   | 0         | 0         | -1        | 1         | width must be >= 0, was -1.0
-            heightNaN       | 0         | 0         | 1         | NaN       | height must be a finite number, was NaN
-            heightInfinity  | 0         | 0         | 1         | Infinity  | height must be a finite number, was Infinity
-            heightMinusInf  | 0         | 0         | 1         | -Infinity | height must be a finite number, was -Infinity
-            heightNegative  | 0         | 0         | 1         | -2.5      | height must be >= 0, was -2.5
+            widthNaN        | 0         | 0         | NaN       | 1         | width w must be a finite number, was NaN
+            widthInfinity   | 0         | 0         | Infinity  | 1         | width w must be a finite number, was Infinity
+            widthMinusInf   | 0         | 0         | -Infinity | 1         | width w must be a finite number, was -Infinity
+            widthNegative   | 0         | 0         | -1        | 1         | width w must be >= 0, was -1.0
+            heightNaN       | 0         | 0         | 1         | NaN       | height h must be a finite number, was NaN
+            heightInfinity  | 0         | 0         | 1         | Infinity  | height h must be a finite number, was Infinity
+            heightMinusInf  | 0         | 0         | 1         | -Infinity | height h must be a finite number, was -Infinity
+            heightNegative  | 0         | 0         | 1         | -2.5      | height h must be >= 0, was -2.5
             """)
     void rect_rejectsBadValuesNamingParameterAndValue(String scenario, float x, float y, float w, float h,
                                                       String message) {
@@ -99,10 +99,10 @@ class CircleAndRectShapeTest {
             cxNaN           | NaN       | 0   | 1   | 1   | cx must be a finite number, was NaN
             cxInfinity      | Infinity  | 0   | 1   | 1   | cx must be a finite number, was Infinity
             cyMinusInfinity | 0         | -Infinity | 1 | 1 | cy must be a finite number, was -Infinity
-            widthNegative   | 0         | 0   | -1  | 1   | width must be >= 0, was -1.0
-            widthNaN        | 0         | 0   | NaN | 1   | width must be a finite number, was NaN
-            heightNegative  | 0         | 0   | 1   | -3  | height must be >= 0, was -3.0
-            heightInfinity  | 0         | 0   | 1   | Infinity | height must be a finite number, was Infinity
+            widthNegative   | 0         | 0   | -1  | 1   | width w must be >= 0, was -1.0
+            widthNaN        | 0         | 0   | NaN | 1   | width w must be a finite number, was NaN
+            heightNegative  | 0         | 0   | 1   | -3  | height h must be >= 0, was -3.0
+            heightInfinity  | 0         | 0   | 1   | Infinity | height h must be a finite number, was Infinity
             """)
     void centered_rejectsBadValuesNamingParameterAndValue(String scenario, float cx, float cy, float w, float h,
                                                           String message) {
@@ -150,8 +150,8 @@ class CircleAndRectShapeTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', textBlock = """
-            newXNaN       | NaN      | 0        | x must be a finite number, was NaN
-            newYInfinity  | 0        | Infinity | y must be a finite number, was Infinity
+            newXNaN       | NaN      | 0        | newX must be a finite number, was NaN
+            newYInfinity  | 0        | Infinity | newY must be a finite number, was Infinity
             """)
     void at_rejectsBadValues(String scenario, float x, float y, String message) {
         assertThrowsWithMessage(message, () -> new Rect(1, 2, 3, 4).at(x, y));
@@ -184,9 +184,9 @@ class CircleAndRectShapeTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', textBlock = """
-            dxNaN        | NaN      | 0        | 0       | x must be a finite number, was NaN
-            dyInfinity   | 0        | Infinity | 0       | y must be a finite number, was Infinity
-            xOverflows   | 3.0E38   | 0        | 3.0E38  | x must be a finite number, was Infinity
+            dxNaN        | NaN      | 0        | 0       | dx must be a finite number, was NaN
+            dyInfinity   | 0        | Infinity | 0       | dy must be a finite number, was Infinity
+            xOverflows   | 3.0E38   | 0        | 3.0E38  | x + dx must be a finite number, was Infinity
             """)
     void translated_rejectsAMoveToABadValue(String scenario, float dx, float dy, float x, String message) {
         assertAll(

@@ -110,15 +110,15 @@ class GridImagesTest {
     void fromPixels_sizesThatDoNotFit_areNamed() {
         int[] six = new int[6];
         java.util.Arrays.fill(six, WHITE);
-        assertEquals("pixels has 6 values, but a 4 x 2 picture has 8",
+        assertEquals("pixels has 6 values, but a width x height = 4 x 2 picture has 8",
                 assertThrows(IllegalArgumentException.class, () -> Grid.fromPixels(six, 4, 2, 1, key(), 1)).getMessage());
-        assertEquals("the picture is 3 pixels wide, not a whole number of 2-pixel cells (2 or 4 would be)",
+        assertEquals("the picture is 3 pixels wide, not a whole number of pixelsPerCell = 2-pixel cells (2 or 4 would be)",
                 assertThrows(IllegalArgumentException.class, () -> Grid.fromPixels(six, 3, 2, 2, key(), 1)).getMessage());
-        assertEquals("the picture is 3 pixels high, not a whole number of 2-pixel cells (2 or 4 would be)",
+        assertEquals("the picture is 3 pixels high, not a whole number of pixelsPerCell = 2-pixel cells (2 or 4 would be)",
                 assertThrows(IllegalArgumentException.class, () -> Grid.fromPixels(six, 2, 3, 2, key(), 1)).getMessage());
-        assertEquals("the picture is 3 pixels wide, not a whole number of 4-pixel cells (4 would be)",
+        assertEquals("the picture is 3 pixels wide, not a whole number of pixelsPerCell = 4-pixel cells (4 would be)",
                 assertThrows(IllegalArgumentException.class, () -> Grid.fromPixels(new int[12], 3, 4, 4, key(), 1)).getMessage());
-        assertEquals("the picture must be at least 1 x 1 pixels, was 0 x 2",
+        assertEquals("the picture must be at least 1 x 1 pixels, was width x height = 0 x 2",
                 assertThrows(IllegalArgumentException.class, () -> Grid.fromPixels(new int[0], 0, 2, 1, key(), 1)).getMessage());
         assertEquals("pixelsPerCell must be > 0, was 0",
                 assertThrows(IllegalArgumentException.class, () -> Grid.fromPixels(six, 3, 2, 0, key(), 1)).getMessage());
@@ -145,7 +145,7 @@ class GridImagesTest {
         assertEquals(3, key.size());
         assertEquals(key, key.put(BLUE, 3), "the same pair again changes nothing");
         assertEquals(3, key.size());
-        assertEquals("colour #3070E0 already stands for terrain 3, so it cannot also be terrain 4: give each terrain its"
+        assertEquals("color #3070E0 already stands for terrain 3, so it cannot also be terrain 4: give each terrain its"
                 + " own colour", assertThrows(IllegalArgumentException.class, () -> key.put(0x3070E0, 4)).getMessage());
         assertEquals("colour #123456 is not in the key (#FFFFFF -> 0, #000000 -> 1, #3070E0 -> 3)",
                 assertThrows(IllegalArgumentException.class, () -> key.terrainOf(0x123456)).getMessage());

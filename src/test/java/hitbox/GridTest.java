@@ -41,7 +41,7 @@ class GridTest {
             "5 | 5 | 32 | -2 | cellHeight must be > 0, was -2.0",
             "5 | 5 | NaN | 32 | cellWidth must be a finite number, was NaN",
             "5 | 5 | 32 | Infinity | cellHeight must be a finite number, was Infinity",
-            "100000 | 100000 | 1 | 1 | a grid of 100000 x 100000 cells is too big: at most 2147483639 cells fit in one grid",
+            "100000 | 100000 | 1 | 1 | a grid of cols x rows = 100000 x 100000 cells is too big: at most 2147483639 cells fit in one grid",
     })
     void constructor_badInput_isNamed(int cols, int rows, float cw, float ch, String message) {
         assertEquals(message, assertThrows(IllegalArgumentException.class, () -> new Grid(cols, rows, cw, ch)).getMessage());

@@ -7,7 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 import net.jqwik.api.Assume;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
@@ -171,10 +173,10 @@ class MotionTest {
 
     @ParameterizedTest(name = "reverse({0}) of (3, -4)")
     @CsvSource({
-            "0, 3, -4",
-            "1, -3, -4",
-            "2, 3, 4",
-            "3, -3, 4",
+            "0, 3, -4",     // NONE
+            "3, -3, -4",    // X: LEFT | RIGHT in Side's bits
+            "12, 3, 4",     // Y: TOP | BOTTOM
+            "15, -3, 4",    // BOTH
     })
     void reverse_table(int blocked, float vx, float vy) {
         assertEquals(vx, Motion.reverseX(blocked, 3));
@@ -221,17 +223,25 @@ class MotionTest {
     }
 
     @Property
-    void blocked_agreesWithTheTutorialsChecksPlusTheCorner(
+    void blocked_agreesWithAnIntegerReference(
             @ForAll @IntRange(min = -60, max = 60) int x, @ForAll @IntRange(min = -60, max = 60) int y,
+            @ForAll @IntRange(min = 1, max = 30) int w, @ForAll @IntRange(min = 1, max = 30) int h,
             @ForAll @IntRange(min = -30, max = 30) int vx, @ForAll @IntRange(min = -30, max = 30) int vy) {
-        // Slow reference, straight from the tutorial's description.
-        Rect obstacle = new Rect(0, 0, 30, 20);
-        Rect mover = new Rect(x, y, 12, 9);
-        boolean bx = mover.translated(vx, 0).overlaps(obstacle);
-        boolean by = mover.translated(0, vy).overlaps(obstacle);
-        boolean both = mover.translated(vx, vy).overlaps(obstacle);
-        int expected = bx || by ? (bx ? Motion.X : 0) | (by ? Motion.Y : 0) : (both ? Motion.BOTH : Motion.NONE);
-        assertEquals(expected, Motion.blocked(mover, vx, vy, obstacle));
+        // An independent reference: open boxes on whole numbers, compared in int arithmetic
+        // (not through the library's overlap tests), and the class's rule in words: an axis is
+        // blocked if moving along it alone overlaps; if neither is but the whole move is, both.
+        int ox = 0, oy = 0, ow = 30, oh = 20;
+        boolean alongX = x + vx < ox + ow && ox < x + vx + w && y < oy + oh && oy < y + h;
+        boolean alongY = x < ox + ow && ox < x + w && y + vy < oy + oh && oy < y + vy + h;
+        boolean diagonal = x + vx < ox + ow && ox < x + vx + w && y + vy < oy + oh && oy < y + vy + h;
+        Set<Side> expected = EnumSet.noneOf(Side.class);
+        if (alongX || (!alongY && diagonal)) {
+            expected.addAll(EnumSet.of(Side.LEFT, Side.RIGHT));
+        }
+        if (alongY || (!alongX && diagonal)) {
+            expected.addAll(EnumSet.of(Side.TOP, Side.BOTTOM));
+        }
+        assertEquals(expected, Side.setOf(Motion.blocked(new Rect(x, y, w, h), vx, vy, new Rect(ox, oy, ow, oh))));
     }
 
     /** A box that moves like a sketch's: bounce off the window, then the obstacle check, then move. */

@@ -9,6 +9,7 @@ import java.util.List;
 
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.statistics.StatisticsReport;
 import net.jqwik.api.statistics.Statistics;
 import net.jqwik.api.constraints.IntRange;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -87,6 +88,7 @@ class NoTunnellingTest {
      * the path densely enough (steps shorter than the wall is thick) that no crossing can
      * fall between two samples.
      */
+    @StatisticsReport(onFailureOnly = true)
     @Property(tries = 1500)
     void sweptTests_neverMissAWallThePathCrosses(
             @ForAll @IntRange(min = -200, max = 200) int sx, @ForAll @IntRange(min = -200, max = 200) int sy,

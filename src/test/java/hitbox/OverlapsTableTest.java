@@ -8,6 +8,7 @@ import net.jqwik.api.Arbitrary;
 import net.jqwik.api.Combinators;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.statistics.StatisticsReport;
 import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
 import net.jqwik.api.statistics.Statistics;
@@ -214,6 +215,7 @@ class OverlapsTableTest {
         return Arbitraries.oneOf(circles, rects, segments, polygons);
     }
 
+    @StatisticsReport(onFailureOnly = true)
     @Property(tries = 3000)
     void overlaps_symmetricRoutedAndExact(@ForAll("shapes") Shape a, @ForAll("shapes") Shape b) {
         boolean ab = a.overlaps(b);

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import net.jqwik.api.Arbitrary;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.statistics.StatisticsReport;
 import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
 import net.jqwik.api.statistics.Statistics;
@@ -141,6 +142,7 @@ class PolygonLineTest {
         return TestShapes.simplePolygons(6, 7);
     }
 
+    @StatisticsReport(onFailureOnly = true)
     @Property(tries = 2000)
     void polygonLine_agreesWithExactReference(@ForAll("polygons") float[] xy,
                                               @ForAll @IntRange(min = -1, max = 7) int x1, @ForAll @IntRange(min = -1, max = 7) int y1,

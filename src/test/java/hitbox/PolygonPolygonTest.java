@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import net.jqwik.api.Arbitrary;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.statistics.StatisticsReport;
 import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
 import net.jqwik.api.statistics.Statistics;
@@ -102,6 +103,7 @@ class PolygonPolygonTest {
     }
 
     /** The second polygon is moved by up to 4 each way, so apart, touching and overlapping all come up. */
+    @StatisticsReport(onFailureOnly = true)
     @Property(tries = 2000)
     void polygonPolygon_agreesWithExactReference(@ForAll("polygons") float[] a, @ForAll("polygons") float[] b,
                                                  @ForAll @IntRange(min = -4, max = 4) int dx,

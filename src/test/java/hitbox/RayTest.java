@@ -15,7 +15,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * Rays against every kind of shape. Each table row gives the expected distance (Infinity: no
- * hit) and normal, and is also checked moved by a million pixels and with the direction
+ * hit) and normal (from the ray into the shape, the package's convention), and is also checked moved by a million pixels and with the direction
  * scaled (the distance is in pixels, so it must not change).
  */
 class RayTest {
@@ -25,13 +25,13 @@ class RayTest {
     @ParameterizedTest(name = "[{index}] {11}")
     @CsvSource({
             // ox, oy, dx, dy, max, cx, cy, r, distance, nx, ny, scenario
-            "0, 0, 1, 0, Infinity, 10, 0, 2, 8, -1, 0, head on",
-            "0, 0, 3, 4, Infinity, 6, 8, 5, 5, -0.6, -0.8, three-four-five",
+            "0, 0, 1, 0, Infinity, 10, 0, 2, 8, 1, 0, head on",
+            "0, 0, 3, 4, Infinity, 6, 8, 5, 5, 0.6, 0.8, three-four-five",
             "0, 2, 1, 0, Infinity, 10, 0, 2, Infinity, 0, 0, grazing the outline",
             "0, 0, 1, 0, 8, 10, 0, 2, Infinity, 0, 0, reaching the outline only at its end",
-            "0, 0, 1, 0, 8.5, 10, 0, 2, 8, -1, 0, reaching just inside",
-            "10, 1, 1, 0, Infinity, 10, 0, 2, 0, -1, 0, starting inside",
-            "8, 0, 1, 0, Infinity, 10, 0, 2, 0, -1, 0, starting on the outline heading in",
+            "0, 0, 1, 0, 8.5, 10, 0, 2, 8, 1, 0, reaching just inside",
+            "10, 1, 1, 0, Infinity, 10, 0, 2, 0, 1, 0, starting inside",
+            "8, 0, 1, 0, Infinity, 10, 0, 2, 0, 1, 0, starting on the outline heading in",
             "8, 0, -1, 0, Infinity, 10, 0, 2, Infinity, 0, 0, starting on the outline heading out",
             "0, 0, -1, 0, Infinity, 10, 0, 2, Infinity, 0, 0, circle behind",
             "0, 0, 1, 0, Infinity, 10, 0, 0, Infinity, 0, 0, a circle of radius 0",
@@ -47,19 +47,19 @@ class RayTest {
     @ParameterizedTest(name = "[{index}] {12}")
     @CsvSource({
             // ox, oy, dx, dy, max, rx, ry, rw, rh, distance, nx, ny, scenario
-            "0, 5, 1, 0, Infinity, 10, 0, 10, 10, 10, -1, 0, into the left side",
-            "30, 5, -1, 0, Infinity, 10, 0, 10, 10, 10, 1, 0, into the right side",
-            "5, -10, 0, 1, Infinity, 0, 0, 10, 10, 10, 0, -1, down onto the top",
-            "5, 20, 0, -1, Infinity, 0, 0, 10, 10, 10, 0, 1, up into the bottom",
-            "0, 5, 2, 0, Infinity, 10, 0, 10, 10, 10, -1, 0, direction not of unit length",
+            "0, 5, 1, 0, Infinity, 10, 0, 10, 10, 10, 1, 0, into the left side",
+            "30, 5, -1, 0, Infinity, 10, 0, 10, 10, 10, -1, 0, into the right side",
+            "5, -10, 0, 1, Infinity, 0, 0, 10, 10, 10, 0, 1, down onto the top",
+            "5, 20, 0, -1, Infinity, 0, 0, 10, 10, 10, 0, -1, up into the bottom",
+            "0, 5, 2, 0, Infinity, 10, 0, 10, 10, 10, 1, 0, direction not of unit length",
             "0, 0, 1, 0, Infinity, 10, 0, 10, 10, Infinity, 0, 0, along the top edge",
             "0, 20, 1, -1, Infinity, 0, 0, 10, 10, Infinity, 0, 0, touching only a corner",
-            "0, 0, 1, 1, Infinity, 10, 10, 10, 10, 14.142136, 0, -1, into a corner counts as the top",
-            "5, 5, 1, 0, Infinity, 0, 0, 10, 10, 0, -1, 0, starting inside",
-            "10, 5, 1, 0, Infinity, 10, 0, 10, 10, 0, -1, 0, starting on the edge heading in",
+            "0, 0, 1, 1, Infinity, 10, 10, 10, 10, 14.142136, 0, 1, into a corner counts as the top",
+            "5, 5, 1, 0, Infinity, 0, 0, 10, 10, 0, 1, 0, starting inside",
+            "10, 5, 1, 0, Infinity, 10, 0, 10, 10, 0, 1, 0, starting on the edge heading in",
             "10, 5, -1, 0, Infinity, 10, 0, 10, 10, Infinity, 0, 0, starting on the edge heading out",
             "0, 5, 1, 0, 10, 10, 0, 10, 10, Infinity, 0, 0, reaching the edge only at its end",
-            "0, 5, 1, 0, 10.5, 10, 0, 10, 10, 10, -1, 0, reaching just inside",
+            "0, 5, 1, 0, 10.5, 10, 0, 10, 10, 10, 1, 0, reaching just inside",
             "0, 5, 1, 0, Infinity, 10, 0, 0, 10, Infinity, 0, 0, a rectangle of width 0",
             "0, 5, -1, 0, Infinity, 10, 0, 10, 10, Infinity, 0, 0, rectangle behind",
     })
@@ -74,19 +74,19 @@ class RayTest {
     @ParameterizedTest(name = "[{index}] {12}")
     @CsvSource({
             // ox, oy, dx, dy, max, x1, y1, x2, y2, distance, nx, ny, scenario
-            "0, 0, 1, 0, Infinity, 10, -5, 10, 5, 10, -1, 0, across a wall",
-            "0, 0, 1, 0, Infinity, 10, 5, 10, -5, 10, -1, 0, across a wall given the other way",
-            "0, 0, 1, 0, Infinity, 10, 0, 10, 5, 10, -1, 0, touching its end counts",
+            "0, 0, 1, 0, Infinity, 10, -5, 10, 5, 10, 1, 0, across a wall",
+            "0, 0, 1, 0, Infinity, 10, 5, 10, -5, 10, 1, 0, across a wall given the other way",
+            "0, 0, 1, 0, Infinity, 10, 0, 10, 5, 10, 1, 0, touching its end counts",
             "0, 0, 1, 0, Infinity, 10, 1, 10, 5, Infinity, 0, 0, passing its end",
-            "0, 0, 1, 0, Infinity, 10, 0, 20, 0, 10, -1, 0, along it: the near end",
+            "0, 0, 1, 0, Infinity, 10, 0, 20, 0, 10, 1, 0, along it: the near end",
             "0, 0, 1, 0, Infinity, -20, 0, -10, 0, Infinity, 0, 0, along the line but behind",
-            "0, 0, 1, 0, Infinity, -5, 0, 5, 0, 0, -1, 0, starting on it along it",
-            "0, 0, 1, 0, Infinity, 0, -5, 0, 5, 0, -1, 0, starting on it across it",
+            "0, 0, 1, 0, Infinity, -5, 0, 5, 0, 0, 1, 0, starting on it along it",
+            "0, 0, 1, 0, Infinity, 0, -5, 0, 5, 0, 1, 0, starting on it across it",
             "0, 0, 1, 0, Infinity, 0, 1, 10, 1, Infinity, 0, 0, parallel",
-            "0, 0, 1, 0, 10, 10, -5, 10, 5, 10, -1, 0, reaching it exactly at the end",
+            "0, 0, 1, 0, 10, 10, -5, 10, 5, 10, 1, 0, reaching it exactly at the end",
             "0, 0, 1, 0, 9, 10, -5, 10, 5, Infinity, 0, 0, falling short",
-            "0, 0, 1, 0, Infinity, 5, 0, 5, 0, 5, -1, 0, a segment of length 0",
-            "0, 0, 1, 0, Infinity, 10, -10, 20, 10, 15, -0.8944272, 0.4472136, a slanted wall",
+            "0, 0, 1, 0, Infinity, 5, 0, 5, 0, 5, 1, 0, a segment of length 0",
+            "0, 0, 1, 0, Infinity, 10, -10, 20, 10, 15, 0.8944272, -0.4472136, a slanted wall",
     })
     void cast_segment(float ox, float oy, float dx, float dy, float max, float x1, float y1, float x2, float y2,
                       float distance, float nx, float ny, String scenario) {
@@ -103,18 +103,18 @@ class RayTest {
     @ParameterizedTest(name = "[{index}] {8}")
     @CsvSource({
             // shape, ox, oy, dx, dy, distance, nx, ny, scenario
-            "TRIANGLE, 0, 0, 1, 0, 10, -1, 0, into a flat side",
-            "TRIANGLE, 30, 0, -1, 0, 10, 1, 0, head on into a vertex: the two sides' normals together",
+            "TRIANGLE, 0, 0, 1, 0, 10, 1, 0, into a flat side",
+            "TRIANGLE, 30, 0, -1, 0, 10, -1, 0, head on into a vertex: the two sides' normals together",
             "TRIANGLE, 20, -10, 0, 1, Infinity, 0, 0, touching only a vertex",
-            "TRIANGLE, 12, 0, 1, 0, 0, -1, 0, starting inside",
-            "TRIANGLE, 10, 0, 1, 0, 0, -1, 0, starting on a side heading in",
+            "TRIANGLE, 12, 0, 1, 0, 0, 1, 0, starting inside",
+            "TRIANGLE, 10, 0, 1, 0, 0, 1, 0, starting on a side heading in",
             "TRIANGLE, 10, 0, -1, 0, Infinity, 0, 0, starting on a side heading out",
-            "U, 15, 40, 0, -1, 30, 0, 1, up through the notch to its top",
-            "U, -10, 20, 1, 0, 10, -1, 0, into the left arm",
-            "U, 15, 20, 1, 0, 5, -1, 0, from inside the notch to the right arm",
+            "U, 15, 40, 0, -1, 30, 0, -1, up through the notch to its top",
+            "U, -10, 20, 1, 0, 10, 1, 0, into the left arm",
+            "U, 15, 20, 1, 0, 5, 1, 0, from inside the notch to the right arm",
             "U, -10, 0, 1, 0, Infinity, 0, 0, along the top edge",
-            "U, -10, 10, 1, 0, 10, -1, 0, along the notch's top edge, into the left arm",
-            "U, 15, 15, -1, -1, 7.071068, 0.70710677, 0.70710677, through the inner corner",
+            "U, -10, 10, 1, 0, 10, 1, 0, along the notch's top edge, into the left arm",
+            "U, 15, 15, -1, -1, 7.071068, -0.70710677, -0.70710677, through the inner corner",
             "U, 40, 15, 1, 0, Infinity, 0, 0, pointing away",
     })
     void cast_polygon(String shape, float ox, float oy, float dx, float dy, float distance, float nx, float ny, String scenario) {
@@ -182,7 +182,7 @@ class RayTest {
         assertEquals(t <= 1, hit != null, "t = " + t);
         if (hit != null) {
             assertEquals(t * Math.hypot(dx, dy), hit.distance(), 1e-4);
-            assertTrue(hit.nx() * dx + hit.ny() * dy < 0, "the normal faces the ray");
+            assertTrue(hit.nx() * dx + hit.ny() * dy > 0, "the normal points from the ray into the shape");
         }
     }
 

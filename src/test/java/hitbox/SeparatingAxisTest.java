@@ -102,7 +102,7 @@ class SeparatingAxisTest {
     @ParameterizedTest
     @CsvSource({
         "1, 1, 0, 1, 0, 1, 'the axis (nx, ny) must have length 1, but (1.0, 1.0) has length 1.4142135'",
-        "1, 0, 2, 1, 0, 1, 'a shadow must not end before it starts, but a is [2.0, 1.0] and b is [0.0, 1.0]'",
+        "1, 0, 2, 1, 0, 1, 'a shadow must not end before it starts (minA <= maxA, minB <= maxB), but a is [2.0, 1.0] and b is [0.0, 1.0]'",
         "1, 0, 0, 1, 0, NaN, 'maxB must be a finite number, was NaN'",
     })
     void axis_badValues_throw(float nx, float ny, float minA, float maxA, float minB, float maxB, String message) {

@@ -44,7 +44,7 @@ class SweepMoveTest {
     void move_standingWithGravity_slidesWithoutSinking() {
         Rect standing = new Rect(0, 5, 10, 10);
         Sweep.Move m = Sweep.move(standing, 7, 3, List.of(new Rect(-100, 15, 200, 10)));
-        assertEquals(new Sweep.Move(7, 5, 7, 0, 1 << Side.TOP.ordinal()), m);
+        assertEquals(new Sweep.Move(7, 5, 7, 0, Side.TOP.bit()), m);
     }
 
     @Test
@@ -126,11 +126,11 @@ class SweepMoveTest {
     void move_badArguments_throwWithTheirNames() {
         assertEquals("obstacles must not be null",
                 assertThrows(IllegalArgumentException.class, () -> Sweep.move(BOX, 1, 1, null)).getMessage());
-        assertEquals("every obstacle must not be null",
+        assertEquals("obstacles[1] must not be null",
                 assertThrows(IllegalArgumentException.class, () -> Sweep.move(BOX, 1, 1, Arrays.asList(BOX, null))).getMessage());
         assertEquals("vy must be a finite number, was Infinity",
                 assertThrows(IllegalArgumentException.class, () -> Sweep.move(BOX, 1, Float.POSITIVE_INFINITY, List.of())).getMessage());
-        assertThrows(IllegalArgumentException.class, () -> new Sweep.Move(0, 0, 0, 0, 1));
+        assertThrows(IllegalArgumentException.class, () -> new Sweep.Move(0, 0, 0, 0, 16));
     }
 
     /**

@@ -1,6 +1,8 @@
 package hitbox.processing;
 
+import hitbox.Capsule;
 import hitbox.Circle;
+import hitbox.Ellipse;
 import hitbox.Polygon;
 import hitbox.Rect;
 import hitbox.Segment;
@@ -17,8 +19,8 @@ public final class Draw {
     }
 
     /**
-     * Draws any shape: a circle by its radius, a rect in CORNER mode, a segment as a line, a
-     * polygon as a closed shape.
+     * Draws any shape: a circle or an ellipse by its radii, a rect in CORNER mode, a segment as
+     * a line, a polygon as a closed shape, a capsule as its outline (two half circles joined).
      *
      * @param g     where to draw, e.g. the sketch's {@code g}
      * @param shape the shape
@@ -32,6 +34,11 @@ public final class Draw {
             g.rect(r.x(), r.y(), r.w(), r.h());
         } else if (shape instanceof Segment s) {
             g.line(s.x1(), s.y1(), s.x2(), s.y2());
+        } else if (shape instanceof Ellipse e) {
+            g.ellipseMode(PConstants.CENTER);
+            g.ellipse(e.x(), e.y(), 2 * e.rx(), 2 * e.ry());
+        } else if (shape instanceof Capsule k) {
+            capsule(g, k);
         } else if (shape instanceof Polygon p) {
             g.beginShape();
             for (int i = 0; i < p.size(); i++) {
@@ -39,6 +46,29 @@ public final class Draw {
             }
             g.endShape(PConstants.CLOSE);
         }
+    }
+
+    /**
+     * Draws a capsule: half a circle round each end, joined by straight sides, as one closed
+     * shape (so fill and stroke look like any other shape's).
+     *
+     * @param g where to draw
+     * @param k the capsule
+     */
+    public static void capsule(PGraphics g, Capsule k) {
+        float dx = k.x2() - k.x1(), dy = k.y2() - k.y1();
+        float a = dx == 0 && dy == 0 ? 0 : (float) Math.atan2(dy, dx);
+        int steps = 24;
+        g.beginShape();
+        for (int i = 0; i <= steps; i++) {
+            float t = a - PConstants.HALF_PI + PConstants.PI * i / steps;
+            g.vertex(k.x2() + k.r() * (float) Math.cos(t), k.y2() + k.r() * (float) Math.sin(t));
+        }
+        for (int i = 0; i <= steps; i++) {
+            float t = a + PConstants.HALF_PI + PConstants.PI * i / steps;
+            g.vertex(k.x1() + k.r() * (float) Math.cos(t), k.y1() + k.r() * (float) Math.sin(t));
+        }
+        g.endShape(PConstants.CLOSE);
     }
 
     /**

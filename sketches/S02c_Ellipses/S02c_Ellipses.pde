@@ -1,0 +1,72 @@
+/**
+ * Ellipses: the tutorial's ball as the ellipse it is drawn with
+ * Tutorial section 2: Circle/Point, for ellipses
+ *
+ * ellipse(x, y, w, h) draws an ellipse with radii w / 2 and h / 2. A point is inside when
+ * (dx / rx)^2 + (dy / ry)^2 < 1: Collide.ellipsePoint(x, y, rx, ry, mouseX, mouseY). A circle
+ * against an ellipse is Collide.ellipseCircle, and two ellipses Collide.ellipseEllipse. Each
+ * ellipse turns red while the mouse (a point, or a circle) is inside it, green otherwise.
+ *
+ * Try this: make an ellipse flat (a radius of 0: it has no inside any more); give the mouse
+ * circle radius 0 and see it act as a point; squash an ellipse by changing its radii.
+ * Keys: space switches the mouse between a point and a circle, d shows the maths.
+ */
+import hitbox.*;
+import hitbox.processing.*;
+
+// The ellipses, as ellipse(x, y, w, h) draws them: centre and radii (w / 2, h / 2).
+Ellipse[] ellipses = {
+    new Ellipse(150, 200, 110, 45),
+    new Ellipse(380, 140, 40, 90),
+    new Ellipse(460, 310, 90, 60),
+};
+boolean[] hit = new boolean[3];   // this frame's answers, for the drawing and the tests
+float mouseR = 30;                // the mouse circle's radius
+boolean circleMode;               // space: the mouse is a circle, not a point
+boolean showMaths;                // the 'd' overlay
+
+void setup() {
+  size(600, 400);
+  textFont(createFont("SansSerif", 14));
+}
+
+void draw() {
+  background(Palette.BACKGROUND);
+  for (int i = 0; i < ellipses.length; i++) {
+    Ellipse e = ellipses[i];
+    // The whole idea: is the mouse (a point, or a circle) inside this ellipse?
+    if (circleMode) {
+      hit[i] = Collide.ellipseCircle(e.x(), e.y(), e.rx(), e.ry(), mouseX, mouseY, mouseR);
+    } else {
+      hit[i] = Collide.ellipsePoint(e.x(), e.y(), e.rx(), e.ry(), mouseX, mouseY);
+    }
+    noStroke();
+    fill(hit[i] ? Palette.HIT : Palette.MISS);
+    ellipse(e.x(), e.y(), 2 * e.rx(), 2 * e.ry());
+  }
+
+  // The mouse: a point, or a circle drawn as its outline.
+  if (circleMode) {
+    noFill();
+    stroke(Palette.NEUTRAL);
+    strokeWeight(2);
+    circle(mouseX, mouseY, 2 * mouseR);
+  }
+  stroke(Palette.BACKGROUND);
+  strokeWeight(2);
+  fill(Palette.NEUTRAL);
+  circle(mouseX, mouseY, 9);
+
+  if (showMaths) {
+    drawMaths();
+  }
+  Overlay.hint(g, "move the mouse over the ellipses     space: point / circle     d: show the maths");
+}
+
+void keyPressed() {
+  if (key == 'd') {
+    showMaths = !showMaths;
+  } else if (key == ' ') {
+    circleMode = !circleMode;
+  }
+}

@@ -1,0 +1,224 @@
+package hitbox.bench;
+
+import java.util.Random;
+import java.util.concurrent.TimeUnit;
+
+import hitbox.Capsule;
+import hitbox.Collide;
+import hitbox.Contact;
+import hitbox.Ellipse;
+import hitbox.Hit;
+import hitbox.Polygon;
+import hitbox.Rect;
+import hitbox.Sweep;
+import org.dyn4j.collision.continuous.ConservativeAdvancement;
+import org.dyn4j.collision.continuous.TimeOfImpact;
+import org.dyn4j.collision.narrowphase.Gjk;
+import org.dyn4j.collision.narrowphase.Penetration;
+import org.dyn4j.geometry.Circle;
+import org.dyn4j.geometry.Convex;
+import org.dyn4j.geometry.Rectangle;
+import org.dyn4j.geometry.Transform;
+import org.dyn4j.geometry.Vector2;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+
+/**
+ * The curved shapes and the turning sweep against dyn4j 6.0.0 (GJK for overlap, GJK + EPA for
+ * contact, conservative advancement for the turning time of impact), 256 pairs per call for
+ * the pair tests, on the same random pairs (about half of them overlapping).
+ */
+@State(Scope.Benchmark)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MICROSECONDS)
+public class ShapesBench {
+    static final int N = 256;
+    float[] x = new float[N + 1], y = new float[N + 1], a = new float[N + 1], b = new float[N + 1];
+    float[] x2 = new float[N + 1], y2 = new float[N + 1];
+    Ellipse[] ellipses = new Ellipse[N + 1];
+    Capsule[] capsules = new Capsule[N + 1];
+    Convex[] dynEllipses = new Convex[N + 1], dynCapsules = new Convex[N + 1], dynCircles = new Convex[N + 1];
+    Transform[] eT = new Transform[N + 1], cT = new Transform[N + 1];
+    final Gjk gjk = new Gjk();
+    final ConservativeAdvancement ca = new ConservativeAdvancement();
+    Polygon blade = Polygon.rotatedRect(200, 200, 160, 4, 0);
+    Rect post = new Rect(241, 241, 2, 2);
+    Convex dynBlade = new Rectangle(160, 4), dynPost = new Rectangle(2, 2);
+    Transform bladeT = new Transform(), postT = new Transform();
+
+    @Setup
+    public void setup() {
+        Random rnd = new Random(5);
+        for (int i = 0; i <= N; i++) {
+            x[i] = rnd.nextInt(300);
+            y[i] = rnd.nextInt(300);
+            a[i] = 10 + rnd.nextInt(40);
+            b[i] = 10 + rnd.nextInt(40);
+            ellipses[i] = new Ellipse(x[i], y[i], a[i], b[i]);
+            dynEllipses[i] = new org.dyn4j.geometry.Ellipse(2 * a[i], 2 * b[i]);
+            dynCircles[i] = new Circle(b[i]);
+            eT[i] = new Transform();
+            eT[i].setTranslation(x[i], y[i]);
+            // A capsule along x, length 2 a, radius b / 2 (dyn4j's Capsule(width, height) is the same, centred).
+            x2[i] = x[i] + 2 * a[i];
+            y2[i] = y[i];
+            capsules[i] = new Capsule(x[i], y[i], x2[i], y2[i], b[i] / 2);
+            dynCapsules[i] = new org.dyn4j.geometry.Capsule(2 * a[i] + b[i], b[i]);
+            cT[i] = new Transform();
+            cT[i].setTranslation(x[i] + a[i], y[i]);
+        }
+        bladeT.setTranslation(200, 200);
+        postT.setTranslation(242, 242);
+    }
+
+    @Benchmark
+    public int ellipseEllipse_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (Collide.ellipseEllipse(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], a[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseEllipse_dyn4j() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (gjk.detect(dynEllipses[i], eT[i], dynEllipses[i + 1], eT[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseCircle_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (Collide.ellipseCircle(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseCircle_dyn4j() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (gjk.detect(dynEllipses[i], eT[i], dynCircles[i + 1], eT[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int capsuleCapsule_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (Collide.capsuleCapsule(x[i], y[i], x2[i], y2[i], b[i] / 2, x[i + 1], y[i + 1], x2[i + 1], y2[i + 1], b[i + 1] / 2)) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int capsuleCapsule_dyn4j() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (gjk.detect(dynCapsules[i], cT[i], dynCapsules[i + 1], cT[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int capsuleCircle_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (Collide.capsuleCircle(x[i], y[i], x2[i], y2[i], b[i] / 2, x[i + 1], y[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int capsuleCircle_dyn4j() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (gjk.detect(dynCapsules[i], cT[i], dynCircles[i + 1], eT[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public double ellipseContact_hitbox() {
+        double s = 0;
+        for (int i = 0; i < N; i++) {
+            Contact c = Contact.between(ellipses[i], ellipses[i + 1]);
+            s += c == null ? 0 : c.depth();
+        }
+        return s;
+    }
+
+    @Benchmark
+    public double ellipseContact_dyn4j() {
+        double s = 0;
+        Penetration p = new Penetration();
+        for (int i = 0; i < N; i++) {
+            if (gjk.detect(dynEllipses[i], eT[i], dynEllipses[i + 1], eT[i + 1], p)) {
+                s += p.getDepth();
+            }
+        }
+        return s;
+    }
+
+    @Benchmark
+    public double capsuleContact_hitbox() {
+        double s = 0;
+        for (int i = 0; i < N; i++) {
+            Contact c = Contact.between(capsules[i], capsules[i + 1]);
+            s += c == null ? 0 : c.depth();
+        }
+        return s;
+    }
+
+    @Benchmark
+    public double capsuleContact_dyn4j() {
+        double s = 0;
+        Penetration p = new Penetration();
+        for (int i = 0; i < N; i++) {
+            if (gjk.detect(dynCapsules[i], cT[i], dynCapsules[i + 1], cT[i + 1], p)) {
+                s += p.getDepth();
+            }
+        }
+        return s;
+    }
+
+    /** One turning time of impact: a blade turning a quarter turn into a small post. */
+    @Benchmark
+    public float turningBlade_hitbox() {
+        Hit h = Sweep.turningTimeOfImpact(blade, 200, 200, 0, 0, (float) (Math.PI / 2), post);
+        return h == null ? 2 : h.t();
+    }
+
+    @Benchmark
+    public double turningBlade_dyn4j() {
+        TimeOfImpact toi = new TimeOfImpact();
+        boolean hit = ca.getTimeOfImpact(dynBlade, bladeT, new Vector2(0, 0), Math.PI / 2, dynPost, postT, new Vector2(0, 0), 0, toi);
+        return hit ? toi.getTime() : 2;
+    }
+}

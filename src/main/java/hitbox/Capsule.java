@@ -1,0 +1,66 @@
+package hitbox;
+
+/**
+ * A capsule: the points closer than {@code r} to a segment, a stadium with round ends. The
+ * usual shape for a top-down player or a thick laser.
+ *
+ * <p>Open, like every shape with area: a point at distance exactly r from the segment is not
+ * in it. A capsule whose segment is a point is a circle; a capsule of radius 0 has no inside
+ * and behaves as its segment does against shapes with area (it collides by reaching into
+ * their inside), but, like a circle of radius 0, never collides with a segment, a point or
+ * another shape without area. Every pair is "is the distance less than the sum of the
+ * radii?", compared exactly for whole numbers of modest size (see {@link Collide#capsuleCircle}).
+ *
+ * @param x1 the segment's first end x
+ * @param y1 the segment's first end y
+ * @param x2 the segment's second end x
+ * @param y2 the segment's second end y
+ * @param r  the radius, 0 or more
+ */
+public record Capsule(float x1, float y1, float x2, float y2, float r) implements Shape {
+
+    /**
+     * Makes a capsule, checking its values. Both ends may be the same point.
+     *
+     * @param x1 the segment's first end x
+     * @param y1 the segment's first end y
+     * @param x2 the segment's second end x
+     * @param y2 the segment's second end y
+     * @param r  the radius, 0 or more
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite, or the radius is negative
+     */
+    public Capsule {
+        Check.finite("x1", x1);
+        Check.finite("y1", y1);
+        Check.finite("x2", x2);
+        Check.finite("y2", y2);
+        Check.size("radius r", r);
+    }
+
+    /** {@inheritDoc} Same as {@link Collide#capsulePoint}. */
+    @Override
+    public boolean contains(float px, float py) {
+        return Collide.capsulePoint(x1, y1, x2, y2, r, px, py);
+    }
+
+    /** {@inheritDoc} Rounded outwards, so the box holds the round ends even when x1 - r is not a float. */
+    @Override
+    public Rect bounds() {
+        return Bounds.enclosing(Bounds.left(this), Bounds.top(this), Bounds.right(this), Bounds.bottom(this));
+    }
+
+    /** {@inheritDoc} */
+    @Override
+    public Capsule translated(float dx, float dy) {
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
+        return new Capsule(Check.finite("x1 + dx", x1 + dx), Check.finite("y1 + dy", y1 + dy),
+                Check.finite("x2 + dx", x2 + dx), Check.finite("y2 + dy", y2 + dy), r);
+    }
+
+    /** @return the segment between the capsule's two round ends */
+    public Segment segment() {
+        return new Segment(x1, y1, x2, y2);
+    }
+}

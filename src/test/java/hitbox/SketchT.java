@@ -1,0 +1,63 @@
+package hitbox;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The oracle for a sweep's {@code t}, independent of how Sweep computes it: the mover, moved
+ * the way a sketch moves it ({@code x + t * vx} in float), does not overlap the obstacle at
+ * {@code t} (by {@link Collide}), does at the next float up, and {@code t} lies within the
+ * float positions' rounding of the exact time of impact.
+ */
+final class SketchT {
+    private SketchT() {
+    }
+
+    /** Does the mover, moved by t in float as a sketch moves it, overlap the obstacle? */
+    interface At {
+        boolean overlaps(float t);
+    }
+
+    /**
+     * @param exact   the exact time of impact: +infinity for no hit, 0 for already
+     *                overlapping or touching and moving in
+     * @param got     the sweep's answer
+     * @param plateau how far t may lie from the exact time because float positions stand
+     *                still over a range of t (see {@link #plateau})
+     */
+    static void check(double exact, float got, At at, double plateau, String what) {
+        if (exact == Double.POSITIVE_INFINITY) {
+            assertEquals(Float.POSITIVE_INFINITY, got, what + ": no hit");
+            return;
+        }
+        if (at.overlaps(0)) {
+            assertEquals(0f, got, what + ": already overlapping");
+            return;
+        }
+        assertTrue(got >= 0 && got <= 1, what + ": t = " + got);
+        assertFalse(at.overlaps(got), what + ": the mover at t = " + got + " overlaps");
+        if (got < 1) {
+            assertTrue(at.overlaps(Math.nextUp(got)), what + ": the next float after t = " + got + " is still clear");
+        }
+        assertEquals(exact, got, plateau + 1e-6, what + ": t far from the exact time " + exact);
+    }
+
+    /**
+     * Two float steps of the largest coordinate, in units of the slower moving axis's motion:
+     * how long a float position can stand still while t grows.
+     */
+    static double plateau(float vx, float vy, float... coords) {
+        float m = 0;
+        for (float c : coords) {
+            m = Math.max(m, Math.abs(c));
+        }
+        double p = 0;
+        for (float v : new float[] {vx, vy}) {
+            if (v != 0) {
+                p = Math.max(p, 2 * Math.ulp(m) / Math.abs(v));
+            }
+        }
+        return p;
+    }
+}
