@@ -362,7 +362,8 @@ abstract class AbstractBroadPhase implements BroadPhase {
 
     /**
      * A shape query: the structure's box query over the shape's bounds (a hair larger, so
-     * rounding in the bounds loses nothing), then the exact shape test on each box found.
+     * rounding in the bounds loses nothing), then the exact shape test on each box found
+     * ({@link #overlapsBox}, which makes a small Rect for each).
      */
     private final class ShapeQuery implements IntConsumer {
         private Shape shape;
@@ -392,18 +393,12 @@ abstract class AbstractBroadPhase implements BroadPhase {
         }
     }
 
-    /** {@code shape.overlaps(new Rect(x, y, w, h))}, by the same Collide methods, without the Rect. */
+    /**
+     * Does the shape overlap the box? {@link Overlaps}, the one table behind
+     * {@link Shape#overlaps}, so every kind of shape, now and later, is answered as there.
+     */
     static boolean overlapsBox(Shape shape, float x, float y, float w, float h) {
-        if (shape instanceof Rect r) {
-            return Collide.rectRect(r.x(), r.y(), r.w(), r.h(), x, y, w, h);
-        }
-        if (shape instanceof Circle c) {
-            return Collide.circleRect(c.x(), c.y(), c.r(), x, y, w, h);
-        }
-        if (shape instanceof Segment g) {
-            return Collide.lineRect(g.x1(), g.y1(), g.x2(), g.y2(), x, y, w, h);
-        }
-        return Collide.polygonRect(((Polygon) shape).raw(), x, y, w, h);
+        return Overlaps.test(shape, new Rect(x, y, w, h));
     }
 
     // ---------------------------------------------------------------- rays

@@ -57,8 +57,9 @@ import java.util.function.IntConsumer;
  *       structure: {@link #put}, {@link #remove} and {@link #clear} then throw an
  *       {@link IllegalStateException}. Collect the ids, change afterwards.</li>
  *   <li>Once it has grown to its size, moving boxes with {@code put} and asking for pairs or
- *       queries allocates nothing. {@link #raycast} sorts its hits and may allocate for very
- *       many of them. Not thread-safe: one thread at a time.</li>
+ *       box queries allocates nothing. A shape query makes a small {@link Rect} for each box
+ *       it tests exactly; {@link #raycast} sorts its hits and may allocate for very many of
+ *       them. Not thread-safe: one thread at a time.</li>
  *   <li>Each structure's {@code toString()} is the name of its factory, for labels.</li>
  * </ul>
  */

@@ -210,6 +210,8 @@ class BroadPhaseContractTest {
                 new Segment(x, y, x + w, y),
                 Polygon.of(x, y, x + w + u, y, x, y + h + u),
                 new Rect(x, y, w, h),
+                new Ellipse(x, y, w / 2 + u, h / 3),
+                new Capsule(x, y, x + w, y + h / 2, h / 4),
             };
             for (Shape s : shapes) {
                 assertEquals(model.query(s), BroadPhaseModel.queryOf(bp, s), bp + " query(" + s + ")");
