@@ -40,10 +40,16 @@ final class GridMove {
         double right = Math.max(x, x + vx) + mover.w();
         double top = Math.min(y, y + vy);
         double bottom = Math.max(y, y + vy) + mover.h();
-        int c0 = grid.colAt(Math.nextDown(Math.nextDown((float) left)));
-        int c1 = grid.colAt(Math.nextUp(Math.nextUp((float) right)));
-        int r0 = grid.rowAt(Math.nextDown(Math.nextDown((float) top)));
-        int r1 = grid.rowAt(Math.nextUp(Math.nextUp((float) bottom)));
+        // Sweep.move moves the box in float (x + t * vx), which can land a few float steps
+        // from these double sums: a margin of a few steps of the largest magnitude involved
+        // keeps every cell the float path can touch (a cell touched only at the end still
+        // ends the move's speed on that axis).
+        double padX = 4 * Math.ulp((float) Math.max(Math.max(Math.abs(left), Math.abs(right)), Math.max(Math.abs(vx), mover.w())));
+        double padY = 4 * Math.ulp((float) Math.max(Math.max(Math.abs(top), Math.abs(bottom)), Math.max(Math.abs(vy), mover.h())));
+        int c0 = grid.colAt((float) (left - padX));
+        int c1 = grid.colAt((float) (right + padX));
+        int r0 = grid.rowAt((float) (top - padY));
+        int r1 = grid.rowAt((float) (bottom + padY));
         if (saturated(c0) || saturated(c1) || saturated(r0) || saturated(r1)) {
             throw new IllegalArgumentException("a move of " + mover + " by (vx, vy) = (" + vx + ", " + vy + ") goes more than "
                     + Integer.MAX_VALUE + " cells from the grid");

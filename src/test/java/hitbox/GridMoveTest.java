@@ -51,6 +51,19 @@ class GridMoveTest {
         return Sweep.move(m, vx, vy, cells);
     }
 
+    /**
+     * Found by the property below: the double sums put the move's end a hair above row 0,
+     * while the float move Sweep makes ends touching it, which stops the fall.
+     */
+    @Test
+    void move_endingTouchingACellPastTheDoubleSum_stillLands() {
+        Grid g = Grid.parse("........2\n...#....#", 3.0f, 13.3f);
+        Rect m = new Rect(25.5f, -19.95f, 2.25f, 13.3f);
+        Sweep.Move want = oracle(g, m, -4.5f, 6.65f);
+        assertEquals(0f, want.vy(), "the oracle lands on cell (8, 0)");
+        assertEquals(want, g.move(m, -4.5f, 6.65f));
+    }
+
     @Test
     void move_fallingOntoTheFloor_lands() {
         Grid g = level();
