@@ -69,7 +69,7 @@ public interface BroadPhase {
      * The reference: every pair tested, n(n-1)/2 tests for n boxes. Fast enough for a few
      * dozen boxes, and simple enough to trust.
      *
-     * @return an empty brute-force broad phase
+     * @return an empty brute-force broad phase, never null
      */
     static BroadPhase bruteForce() {
         return new BruteForceBroadPhase();
@@ -90,7 +90,7 @@ public interface BroadPhase {
      * frame. Any float coordinates work; beyond about 2^61 cells from the origin the cells are
      * shared, which is still exact but slower.
      *
-     * @return an empty grid
+     * @return an empty grid, never null
      */
     static BroadPhase grid() {
         return new HashGridBroadPhase(0);
@@ -101,7 +101,7 @@ public interface BroadPhase {
      * the right size (about the size of the larger boxes: most boxes should fit in a cell).
      *
      * @param cellSize the width and height of a cell of the finest grid, more than 0
-     * @return an empty grid
+     * @return an empty grid, never null
      * @throws IllegalArgumentException if {@code cellSize} is NaN, infinite, 0 or negative
      */
     static BroadPhase grid(float cellSize) {
@@ -118,7 +118,7 @@ public interface BroadPhase {
      * its square costs nothing to update. The smallest squares are 2^-16 pixels; beyond about
      * 3 * 10^13 pixels from the origin boxes share squares, which is still exact but slower.
      *
-     * @return an empty quadtree
+     * @return an empty quadtree, never null
      */
     static BroadPhase quadtree() {
         return new QuadtreeBroadPhase();
@@ -130,7 +130,7 @@ public interface BroadPhase {
      * do not). Pairs are found by sweeping from each box to the right for as long as the next
      * box starts before it ends.
      *
-     * @return an empty sweep and prune
+     * @return an empty sweep and prune, never null
      */
     static BroadPhase sweepAndPrune() {
         return new SweepAndPruneBroadPhase();
@@ -144,7 +144,7 @@ public interface BroadPhase {
      * and only the boxes that left theirs are looked up again; the exact test then runs over
      * that list.
      *
-     * @return an empty dynamic tree
+     * @return an empty dynamic tree, never null
      */
     static BroadPhase dynamicTree() {
         return new DynamicTreeBroadPhase();

@@ -59,7 +59,7 @@ public record Capsule(float x1, float y1, float x2, float y2, float r) implement
                 Check.finite("x2 + dx", x2 + dx), Check.finite("y2 + dy", y2 + dy), r);
     }
 
-    /** @return the segment between the capsule's two round ends */
+    /** @return the segment between the capsule's two round ends, never null */
     public Segment segment() {
         return new Segment(x1, y1, x2, y2);
     }

@@ -31,6 +31,9 @@ public final class Collide {
      * <p>The tutorial's {@code dist(px, py, cx, cy) < r}, compared squared so no square root
      * is taken. A circle of radius 0 contains no point.
      *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param cx the circle's centre x
      * @param cy the circle's centre y
      * @param r  the circle's radius (not its diameter)
@@ -50,6 +53,9 @@ public final class Collide {
      * <p>The tutorial's {@code dist(x1, y1, x2, y2) < r1 + r2}, compared squared. With radius 0
      * a circle behaves as a point, so {@code circleCircle(x, y, 0, ...)} is
      * {@link #circlePoint}; two circles of radius 0 never collide.
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the first circle's centre x
      * @param y1 the first circle's centre y
@@ -75,6 +81,9 @@ public final class Collide {
      * <p>The tutorial's {@code px > rx && px < rx + rw && py > ry && py < ry + rh}. A rectangle
      * of width or height 0 contains no point.
      *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param rx the rectangle's left edge
      * @param ry the rectangle's top edge
      * @param rw the rectangle's width
@@ -94,6 +103,9 @@ public final class Collide {
      * y1 + h1 > y2 && y1 < y2 + h2}. A rectangle of size 0 behaves as a point (or a segment
      * without its ends) and collides with a real rectangle only when it reaches into its
      * inside; two flat rectangles collide only when they cross like a plus sign.
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the first rectangle's left edge
      * @param y1 the first rectangle's top edge
@@ -119,6 +131,9 @@ public final class Collide {
      * point closest to the centre (clamp the
      * centre into the rectangle), then test its distance against the radius. A circle of
      * radius 0 behaves as a point, so it collides only when strictly inside the rectangle.
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx the circle's centre x
      * @param cy the circle's centre y
@@ -159,6 +174,9 @@ public final class Collide {
      *
      * <p>Reference: E. Haines, "Point in Polygon Strategies", Graphics Gems IV (1994).
      *
+     * <p>A NaN in any argument, a coordinate of {@code xy} included, answers false
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}: any simple polygon,
      *           convex or concave, in either winding (a polygon that crosses itself is read
      *           even-odd). Fewer than 3 vertices never contain a point; an odd last
@@ -167,6 +185,7 @@ public final class Collide {
      * @param px the point's x
      * @param py the point's y
      * @return true if the point is strictly inside
+     * @throws IllegalArgumentException if {@code xy} is null
      */
     public static boolean polygonPoint(float[] xy, float px, float py) {
         if (Check.nan(Check.notNull("xy", xy)) || Check.nan(px, py, 0, 0, 0)) {
@@ -184,6 +203,9 @@ public final class Collide {
      * grows down), and the crossing is to the right of the point. A corner the ray passes
      * through is counted once; a corner it only touches, twice or not at all. A point on the
      * edge gives false ({@code polygonPoint} then says "outside").
+     *
+     * <p>A NaN in any argument answers false
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param ax the edge's first end, x
      * @param ay the edge's first end, y
@@ -244,6 +266,9 @@ public final class Collide {
      * <p>Reference: T. Cormen, C. Leiserson, R. Rivest, C. Stein, Introduction to Algorithms,
      * section 33.1 (SEGMENTS-INTERSECT).
      *
+     * <p>A NaN in any argument answers false
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x1 the first segment's first end x
      * @param y1 the first segment's first end y
      * @param x2 the first segment's second end x
@@ -274,6 +299,9 @@ public final class Collide {
      * never collide); a negative radius also gives false. A segment of length 0 is a point.
      *
      * <p>Reference: J. Thompson, Collision Detection, "Line/Circle".
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the segment's first end x
      * @param y1 the segment's first end y
@@ -320,6 +348,9 @@ public final class Collide {
      *
      * <p>Reference: C. Ericson, Real-Time Collision Detection (2005), section 5.2.1
      * (separating-axis test).
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the segment's first end x
      * @param y1 the segment's first end y
@@ -369,6 +400,7 @@ public final class Collide {
      * @param cy the circle's centre y
      * @param r  the circle's radius
      * @return true if the insides of the circle and the polygon overlap
+     * @throws IllegalArgumentException if {@code xy} is null
      */
     public static boolean polygonCircle(float[] xy, float cx, float cy, float r) {
         if (Check.nan(Check.notNull("xy", xy)) || Check.nan(cx, cy, r, 0, 0)) {
@@ -403,6 +435,7 @@ public final class Collide {
      * @param rw the rectangle's width
      * @param rh the rectangle's height
      * @return true if the insides of the rectangle and the polygon overlap
+     * @throws IllegalArgumentException if {@code xy} is null
      */
     public static boolean polygonRect(float[] xy, float rx, float ry, float rw, float rh) {
         if (Check.nan(Check.notNull("xy", xy)) || Check.nan(rx, ry, rw, rh, 0)) {
@@ -438,12 +471,16 @@ public final class Collide {
      * orientation signs, no crossing points; the answer is the same walked either way. A
      * segment of length 0 is a point.
      *
+     * <p>A NaN in any argument, a coordinate of {@code xy} included, answers false
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}, as in {@link #polygonPoint}
      * @param x1 the segment's first end x
      * @param y1 the segment's first end y
      * @param x2 the segment's second end x
      * @param y2 the segment's second end y
      * @return true if some point of the segment is strictly inside the polygon
+     * @throws IllegalArgumentException if {@code xy} is null
      */
     public static boolean polygonLine(float[] xy, float x1, float y1, float x2, float y2) {
         if (Check.nan(Check.notNull("xy", xy)) || Check.nan(x1, y1, x2, y2, 0)) {
@@ -466,9 +503,13 @@ public final class Collide {
      * polygons too, where the separating-axis test does not. Time grows with the product of
      * the two vertex counts; far-apart polygons are rejected by their bounds first.
      *
+     * <p>A NaN anywhere in either array answers false
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param a the first polygon's vertices, {@code x0, y0, x1, y1, ...}, as in {@link #polygonPoint}
      * @param b the second polygon's vertices, the same way
      * @return true if the insides of the polygons overlap
+     * @throws IllegalArgumentException if {@code a} or {@code b} is null
      */
     public static boolean polygonPolygon(float[] a, float[] b) {
         if (Check.nan(Check.notNull("a", a)) || Check.nan(Check.notNull("b", b))) {
@@ -508,6 +549,9 @@ public final class Collide {
      * orientation signs, all positive or all negative (either winding). Exact, unlike the
      * common sum-of-areas recipe, which rounds. A flat triangle contains no point.
      *
+     * <p>A NaN in any argument answers false
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x1 the first corner's x
      * @param y1 the first corner's y
      * @param x2 the second corner's x
@@ -538,6 +582,9 @@ public final class Collide {
      * divided, and decided exactly for every float. An ellipse with a radius of 0 contains
      * no point.
      *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
      * @param radiusX its horizontal radius (half of {@code ellipse()}'s width)
@@ -561,6 +608,9 @@ public final class Collide {
      * against the ellipse and its distance to the outline (D. Eberly's robust bisection) is
      * compared with r: touching on the ellipse's axes is exact, and elsewhere the answer can
      * be wrong only when the gap or overlap is below about 1e-12 of the sizes involved.
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
@@ -593,6 +643,9 @@ public final class Collide {
      * ellipse into a circle and keeps that point the nearest. An ellipse with a radius of 0
      * is its flat box ({@link #rectRect}).
      *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
      * @param radiusX its horizontal radius
@@ -623,6 +676,9 @@ public final class Collide {
      * double (exact for whole numbers up to about 4,000). An ellipse with a radius of 0 has no
      * inside: a segment never collides with it.
      *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
      * @param radiusX its horizontal radius
@@ -648,6 +704,9 @@ public final class Collide {
      * when they touch on the axes, and elsewhere wrong only when the gap or overlap is below
      * about 1e-12 of the sizes involved. The two are taken in a fixed order, so swapping them
      * never changes the answer. An ellipse with a radius of 0 is its flat box.
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1       the first ellipse's centre x
      * @param y1       the first ellipse's centre y
@@ -686,12 +745,16 @@ public final class Collide {
      * ({@link #ellipseLine}); an ellipse with a radius of 0 is its flat box
      * ({@link #polygonRect}).
      *
+     * <p>A NaN in any argument, a coordinate of {@code xy} included, answers false, and so does
+     * a negative size (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param xy      the polygon's vertices, as for {@link #polygonPoint}
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
      * @param radiusX its horizontal radius
      * @param radiusY its vertical radius
      * @return true if the insides overlap
+     * @throws IllegalArgumentException if {@code xy} is null
      * @throws IllegalArgumentException if {@code xy} is null
      */
     public static boolean polygonEllipse(float[] xy, float x, float y, float radiusX, float radiusY) {
@@ -714,6 +777,9 @@ public final class Collide {
      * D. Eberly's point-to-ellipse distance: wrong only when the gap or overlap is below about
      * 1e-9 of the sizes involved. A capsule of radius 0 is its segment ({@link #ellipseLine});
      * an ellipse with a radius of 0 is its flat box ({@link #capsuleRect}).
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
@@ -748,6 +814,9 @@ public final class Collide {
      * Is the point inside the capsule (closer than r to its segment)? On the outline is not
      * inside; a capsule of radius 0 contains no point.
      *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x1 the capsule's segment, first end x
      * @param y1 the capsule's segment, first end y
      * @param x2 the capsule's segment, second end x
@@ -770,6 +839,9 @@ public final class Collide {
      * squared as exact signs of double products, so touching between whole numbers of modest
      * size (up to about 2^20) is exact.
      *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x1 the capsule's segment, first end x
      * @param y1 the capsule's segment, first end y
      * @param x2 the capsule's segment, second end x
@@ -790,6 +862,9 @@ public final class Collide {
     /**
      * Do a capsule and a rectangle overlap? Touching is not overlapping. A capsule of radius 0
      * is its segment ({@link #lineRect}); a flat rectangle is a segment without its ends.
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the capsule's segment, first end x
      * @param y1 the capsule's segment, first end y
@@ -817,6 +892,9 @@ public final class Collide {
      * Does a segment reach into a capsule? The segments closer than r; a segment touching the
      * outline does not, and a capsule of radius 0 never collides with a segment.
      *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x1 the capsule's segment, first end x
      * @param y1 the capsule's segment, first end y
      * @param x2 the capsule's segment, second end x
@@ -839,6 +917,9 @@ public final class Collide {
     /**
      * Do two capsules overlap? Their segments closer than {@code r1 + r2}; touching is not
      * overlapping.
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the first capsule's segment, first end x
      * @param y1 the first capsule's segment, first end y
@@ -865,6 +946,9 @@ public final class Collide {
      * edge closer than r to its segment. A capsule of radius 0 is its segment
      * ({@link #polygonLine}).
      *
+     * <p>A NaN in any argument, a coordinate of {@code xy} included, answers false, and so does
+     * a negative size (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param xy the polygon's vertices, as for {@link #polygonPoint}
      * @param x1 the capsule's segment, first end x
      * @param y1 the capsule's segment, first end y
@@ -872,6 +956,7 @@ public final class Collide {
      * @param y2 the capsule's segment, second end y
      * @param r  the capsule's radius
      * @return true if the insides overlap
+     * @throws IllegalArgumentException if {@code xy} is null
      * @throws IllegalArgumentException if {@code xy} is null
      */
     public static boolean polygonCapsule(float[] xy, float x1, float y1, float x2, float y2, float r) {
@@ -904,6 +989,9 @@ public final class Collide {
      *
      * <p>Decided in double with {@code atan2}: the answer can differ from the pixels only
      * within rounding of the outline.
+     *
+     * <p>A NaN in any argument answers false, and so does a negative radius; a mode other
+     * than 1 or 2 is read as {@code PIE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y

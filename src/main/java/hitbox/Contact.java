@@ -222,7 +222,7 @@ public record Contact(float nx, float ny, float depth) {
     /**
      * The same contact seen from b: the normal reversed, the depth kept.
      *
-     * @return the contact with the normal pointing from b to a
+     * @return the contact with the normal pointing from b to a, never null
      */
     public Contact flipped() {
         return new Contact(-nx, -ny, depth);
@@ -231,7 +231,7 @@ public record Contact(float nx, float ny, float depth) {
     /**
      * The normal as a vector.
      *
-     * @return (nx, ny), the unit normal from a to b
+     * @return (nx, ny), the unit normal from a to b, never null
      */
     public Vec normal() {
         return new Vec(nx, ny);
@@ -246,7 +246,7 @@ public record Contact(float nx, float ny, float depth) {
      * <p>The larger component decides; at exactly 45 degrees the vertical one wins, so
      * landing on a corner counts as landing. Never {@link Side#NONE}: a contact means a hit.
      *
-     * @return the side of b that a is against
+     * @return the side of b that a is against, never null
      */
     public Side side() {
         return Side.ofNormal(nx, ny);

@@ -155,7 +155,7 @@ public final class Edges {
      * The crossed edges as words, for printing: {@code "LEFT|TOP"}, or {@code "NONE"}.
      *
      * @param crossed the edges from one of the crossing tests
-     * @return the names of the edges in {@code crossed}, joined by {@code |}
+     * @return the names of the edges in {@code crossed}, joined by {@code |}, never null
      */
     public static String describe(int crossed) {
         return Side.describe(crossed);

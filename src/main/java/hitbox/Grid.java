@@ -119,7 +119,7 @@ public final class Grid {
      * numbers); see {@link #parse(String, float, float)} for the format.
      *
      * @param map the map, one line per row
-     * @return a new grid holding the map
+     * @return a new grid holding the map, never null
      * @throws IllegalArgumentException if the map is null or empty, its rows are not all the
      *                                  same width, or it holds an unknown character; the
      *                                  message names the line and column
@@ -134,7 +134,7 @@ public final class Grid {
      *
      * @param map      the map, one line per row
      * @param cellSize a cell's width and height in pixels, more than 0
-     * @return a new grid holding the map
+     * @return a new grid holding the map, never null
      * @throws IllegalArgumentException if the map is null or empty, its rows are not all the
      *                                  same width, it holds an unknown character (the message
      *                                  names the line and column), or the cell size is bad
@@ -160,7 +160,7 @@ public final class Grid {
      * @param map        the map, one line per row
      * @param cellWidth  a cell's width in pixels, more than 0
      * @param cellHeight a cell's height in pixels, more than 0
-     * @return a new grid holding the map
+     * @return a new grid holding the map, never null
      * @throws IllegalArgumentException if the map is null or empty, its rows are not all the
      *                                  same width, it holds an unknown character (the message
      *                                  names the line and column, counting from 1), or a cell
@@ -175,7 +175,7 @@ public final class Grid {
      * for {@link #EMPTY}, {@code '#'} for {@link #SOLID}, the digit for terrains 2 to 9 and
      * {@code '?'} for any other number; rows separated by {@code \n}.
      *
-     * @return the map, one line per row
+     * @return the map, one line per row, never null
      */
     public String toMap() {
         return GridMaps.toMap(this);
@@ -304,7 +304,7 @@ public final class Grid {
      * terrain is solid again.
      *
      * @param terrains the terrain numbers that are not solid
-     * @return this grid, for chaining
+     * @return this grid, for chaining, never null
      * @throws IllegalArgumentException if {@code terrains} is null or includes {@link #SOLID}
      */
     public Grid passable(int... terrains) {
@@ -354,7 +354,7 @@ public final class Grid {
      * Sets every cell to the same terrain.
      *
      * @param terrain the terrain number for every cell
-     * @return this grid, for chaining
+     * @return this grid, for chaining, never null
      */
     public Grid fill(int terrain) {
         Arrays.fill(cells, terrain);
@@ -368,7 +368,7 @@ public final class Grid {
      *
      * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
      * @param seed     the random seed: the same seed gives the same grid
-     * @return this grid, for chaining
+     * @return this grid, for chaining, never null
      * @throws IllegalArgumentException if {@code fraction} is not between 0 and 1
      */
     public Grid fillRandom(float fraction, long seed) {
@@ -392,7 +392,7 @@ public final class Grid {
      * @param seed     the random seed: the same seed gives the same grid
      * @param freeCol  the column of the cell to keep empty
      * @param freeRow  the row of the cell to keep empty
-     * @return this grid, for chaining
+     * @return this grid, for chaining, never null
      * @throws IllegalArgumentException  if {@code fraction} is not between 0 and 1
      * @throws IndexOutOfBoundsException if the free cell is not in the grid
      */
@@ -705,7 +705,7 @@ public final class Grid {
      * @param toCol   the goal's column, from 0 to {@code cols() - 1}
      * @param toRow   the goal's row, from 0 to {@code rows() - 1}
      * @return the route, or an empty array if there is none (the goal is walled off, or the
-     *         start or the goal is solid)
+     *         start or the goal is solid), never null
      * @throws IllegalArgumentException if a cell is not in the grid; the message names the
      *                                  parameter
      */
@@ -726,7 +726,7 @@ public final class Grid {
      * @param toRow   the goal's row, from 0 to {@code rows() - 1}
      * @param costs   what each step costs, not null
      * @return a cheapest route, or an empty array if there is none (or the start or the goal
-     *         is solid or impassable)
+     *         is solid or impassable), never null
      * @throws IllegalArgumentException if a cell is not in the grid (the message names the
      *                                  parameter), {@code costs} is null, or the search meets
      *                                  a cell whose terrain has no cost (the message names
@@ -752,7 +752,7 @@ public final class Grid {
      * @param mover the box, where it starts
      * @param vx    its motion this frame, x part
      * @param vy    its motion this frame, y part
-     * @return where the box ends, the velocity to keep, and the sides of the cells it hit
+     * @return where the box ends, the velocity to keep, and the sides of the cells it hit, never null
      * @throws IllegalArgumentException if {@code mover} is null, the velocity is NaN or
      *                                  infinite, or the box and its move span more than about
      *                                  four million cells
@@ -769,7 +769,7 @@ public final class Grid {
      * @param mover the box, where it starts
      * @param vx    its motion this frame, x part
      * @param vy    its motion this frame, y part
-     * @return the cells' rectangles, a new list
+     * @return the cells' rectangles, a new list, never null
      * @throws IllegalArgumentException as {@link #move} does
      */
     public java.util.List<Rect> moveObstacles(Rect mover, float vx, float vy) {
@@ -790,7 +790,7 @@ public final class Grid {
      * @param colors        which colour is which terrain
      * @param cellSize      a cell's width and height in the grid, in pixels, more than 0
      * @return a new grid of {@code width / pixelsPerCell} by {@code height / pixelsPerCell}
-     *         cells
+     *         cells, never null
      * @throws IllegalArgumentException if an argument is null, the sizes do not fit together
      *                                  (the picture is not a whole number of cells, or
      *                                  {@code pixels} is not {@code width * height} long), or

@@ -86,7 +86,7 @@ public final class Hits {
      *
      * @param shape  the shape, not null
      * @param others the shapes to test against, not null and with no null element
-     * @return a new array of the overlapping shapes' indices, ascending; empty if none
+     * @return a new array of the overlapping shapes' indices, ascending; empty if none, never null
      * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
      */
     public static int[] all(Shape shape, List<? extends Shape> others) {
@@ -169,7 +169,7 @@ public final class Hits {
      *
      * @param shape  the shape, not null
      * @param others the shapes to test against, not null and with no null element
-     * @return a new array of the overlapping shapes' indices, ascending; empty if none
+     * @return a new array of the overlapping shapes' indices, ascending; empty if none, never null
      * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
      */
     public static int[] all(Shape shape, Shape[] others) {
@@ -249,7 +249,7 @@ public final class Hits {
      * @param w     the rectangle's width
      * @param h     the rectangle's height
      * @param rects the rectangles to test against, not null and with no null element
-     * @return a new array of the overlapping rectangles' indices, ascending; empty if none
+     * @return a new array of the overlapping rectangles' indices, ascending; empty if none, never null
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static int[] all(float x, float y, float w, float h, List<Rect> rects) {
@@ -346,7 +346,7 @@ public final class Hits {
      * @param w     the rectangle's width
      * @param h     the rectangle's height
      * @param rects the rectangles to test against, not null and with no null element
-     * @return a new array of the overlapping rectangles' indices, ascending; empty if none
+     * @return a new array of the overlapping rectangles' indices, ascending; empty if none, never null
      * @throws IllegalArgumentException if {@code rects} or an element is null
      */
     public static int[] all(float x, float y, float w, float h, Rect[] rects) {
@@ -444,7 +444,7 @@ public final class Hits {
      * @param w         the rectangle's width
      * @param h         the rectangle's height
      * @param obstacles the obstacles, each stored under its id, not null
-     * @return a new array of the overlapping ids, ascending; empty if none
+     * @return a new array of the overlapping ids, ascending; empty if none, never null
      * @throws IllegalArgumentException if {@code obstacles} is null
      */
     public static int[] all(float x, float y, float w, float h, BroadPhase obstacles) {

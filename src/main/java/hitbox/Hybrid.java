@@ -85,7 +85,7 @@ public final class Hybrid {
      *
      * @param a one shape, not null
      * @param b the other shape, not null
-     * @return the answer (always {@code a.overlaps(b)}) and the stage that decided
+     * @return the answer (always {@code a.overlaps(b)}) and the stage that decided, never null
      * @throws IllegalArgumentException if a shape is null
      */
     public static Result check(Shape a, Shape b) {
@@ -134,7 +134,7 @@ public final class Hybrid {
      * @param bx where b's left column is
      * @param by where b's top row is
      * @return the answer (always {@code a.overlaps(b, bx - ax, by - ay)}) and the stage that
-     *         decided; masks with no solid pixel are apart at the first stage
+     *         decided; masks with no solid pixel are apart at the first stage, never null
      * @throws IllegalArgumentException if a mask is null
      */
     public static Result check(PixelMask a, int ax, int ay, PixelMask b, int bx, int by) {
@@ -193,7 +193,7 @@ public final class Hybrid {
          * {@code if (counter.add(Hybrid.check(a, b)).overlaps()) ...}.
          *
          * @param result the result to count, not null
-         * @return the same result
+         * @return the same result, never null
          * @throws IllegalArgumentException if result is null
          */
         public Result add(Result result) {

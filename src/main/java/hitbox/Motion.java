@@ -395,7 +395,7 @@ public final class Motion {
      * {@code "BOTH"}.
      *
      * @param blocked the axes from one of the checks
-     * @return the name of the answer
+     * @return the name of the answer, never null
      */
     public static String describe(int blocked) {
         boolean x = has(blocked, X);
@@ -424,7 +424,7 @@ public final class Motion {
      * @param obstacles the obstacles, none of them null
      * @param width     the window's width
      * @param height    the window's height
-     * @return where the box is after this frame, its new speeds, and what blocked it
+     * @return where the box is after this frame, its new speeds, and what blocked it, never null
      * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
      */
     public static Step bounce(float x, float y, float w, float h, float vx, float vy,
@@ -466,7 +466,7 @@ public final class Motion {
      * @param obstacles the obstacles, each stored under its id, not null
      * @param width     the window's width
      * @param height    the window's height
-     * @return where the box is after this frame, its new speeds, and what blocked it
+     * @return where the box is after this frame, its new speeds, and what blocked it, never null
      * @throws IllegalArgumentException if {@code obstacles} is null
      */
     public static Step bounce(float x, float y, float w, float h, float vx, float vy,

@@ -57,7 +57,7 @@ public final class PathCosts {
      * {@link Grid#path(int, int, int, int)} finds (and, with {@link #withDiagonals()}, diagonal
      * steps cost {@code sqrt(2)}).
      *
-     * @return the costs of a plain shortest route, straight steps only
+     * @return the costs of a plain shortest route, straight steps only, never null
      */
     public static PathCosts steps() {
         return STEPS;
@@ -71,7 +71,7 @@ public final class PathCosts {
      *
      * @param costByTerrain the costs, from terrain 0 up: 0 or more, or
      *                      {@link Float#POSITIVE_INFINITY} for impassable; the array is copied
-     * @return the costs, straight steps only
+     * @return the costs, straight steps only, never null
      * @throws IllegalArgumentException if the array is null or empty, or a cost is NaN or
      *                                  below 0; the message names the terrain
      */
@@ -95,7 +95,7 @@ public final class PathCosts {
      * diagonal step costs {@code sqrt(2)} times the cell it enters, and needs both cells beside
      * it to be enterable, so it never cuts a corner.
      *
-     * @return new costs that allow diagonal steps
+     * @return new costs that allow diagonal steps, never null
      */
     public PathCosts withDiagonals() {
         return new PathCosts(costs, uniform, true);

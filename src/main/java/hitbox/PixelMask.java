@@ -75,7 +75,7 @@ public final class PixelMask {
      * @param height         the image's height, 1 or more
      * @param alphaThreshold from 0 to 255: a pixel counts when its alpha is greater (0: any
      *                       pixel that is not fully transparent)
-     * @return the mask
+     * @return the mask, never null
      * @throws IllegalArgumentException if pixels is null, a size is not positive, the array
      *                                  does not hold {@code width * height} pixels, or the
      *                                  threshold is outside 0 to 255
@@ -106,7 +106,7 @@ public final class PixelMask {
      * A mask from a grid of booleans, {@code solid[y][x]}: rows top to bottom.
      *
      * @param solid the rows, all of the same length, at least one row of at least one pixel
-     * @return the mask
+     * @return the mask, never null
      * @throws IllegalArgumentException if the grid or a row is null or empty, or the rows
      *                                  differ in length
      */
@@ -148,7 +148,7 @@ public final class PixelMask {
      * }</pre>
      *
      * @param picture the rows, separated by line breaks
-     * @return the mask
+     * @return the mask, never null
      * @throws IllegalArgumentException if the picture is null or empty, a row is empty or of
      *                                  a different length, or it has another character
      */
@@ -340,7 +340,7 @@ public final class PixelMask {
      * The mask drawn as text, the format {@link #parse} reads: {@code '#'} for solid pixels,
      * {@code '.'} for empty ones, one line per row.
      *
-     * @return the picture
+     * @return the picture, never null
      */
     public String toPicture() {
         StringBuilder sb = new StringBuilder((width + 1) * height);

@@ -46,7 +46,7 @@ public final class Polygon implements Shape {
      * {@code setup()}) and move them with {@link #translated}.
      *
      * @param xy the vertices' coordinates, in pairs
-     * @return the polygon
+     * @return the polygon, never null
      * @throws IllegalArgumentException if there are fewer than 3 vertices, an odd number of
      *                                  coordinates, a NaN or infinite value, a vertex equal to
      *                                  the next one (or the last equal to the first), no area
@@ -64,7 +64,7 @@ public final class Polygon implements Shape {
      * The rectangle as a polygon: its corners top-left, top-right, bottom-right, bottom-left.
      *
      * @param rect the rectangle, with width and height above 0
-     * @return the polygon with the rectangle's four corners
+     * @return the polygon with the rectangle's four corners, never null
      * @throws IllegalArgumentException if {@code rect} is null or has width or height 0
      */
     public static Polygon of(Rect rect) {
@@ -94,7 +94,7 @@ public final class Polygon implements Shape {
      * @param y2 the second corner's y
      * @param x3 the third corner's x
      * @param y3 the third corner's y
-     * @return the triangle
+     * @return the triangle, never null
      * @throws IllegalArgumentException if a value is NaN or infinite, or the corners lie on
      *                                  one line
      */
@@ -121,7 +121,7 @@ public final class Polygon implements Shape {
      * @param w     the width, above 0
      * @param h     the height, above 0
      * @param angle the turn, in radians
-     * @return the turned rectangle
+     * @return the turned rectangle, never null
      * @throws IllegalArgumentException if a value is NaN or infinite, or a size is 0 or less
      */
     public static Polygon rotatedRect(float cx, float cy, float w, float h, float angle) {
@@ -151,7 +151,7 @@ public final class Polygon implements Shape {
      * @param cy     the centre's y
      * @param radius the distance from the centre to each corner, above 0
      * @param sides  how many sides, 3 or more
-     * @return the regular polygon
+     * @return the regular polygon, never null
      * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
      *                                  there are fewer than 3 or more than {@link #MAX_SIDES}
      *                                  sides, or rounding to float makes the corners meet
@@ -170,7 +170,7 @@ public final class Polygon implements Shape {
      * @param radius the distance from the centre to each corner, above 0
      * @param sides  how many sides, 3 or more
      * @param angle  the direction of the first corner, in radians
-     * @return the regular polygon
+     * @return the regular polygon, never null
      * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
      *                                  there are fewer than 3 or more than {@link #MAX_SIDES}
      *                                  sides, or rounding to float makes the corners meet
@@ -237,7 +237,7 @@ public final class Polygon implements Shape {
      * Edge i, from vertex i to vertex i + 1 (the last edge goes back to vertex 0).
      *
      * @param i the edge index, from 0 to {@code edgeCount() - 1}
-     * @return the edge as a segment
+     * @return the edge as a segment, never null
      * @throws IllegalArgumentException if {@code i} is out of range
      */
     public Segment edge(int i) {
@@ -245,7 +245,7 @@ public final class Polygon implements Shape {
         return new Segment(xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]);
     }
 
-    /** @return a copy of the coordinates, {@code x0, y0, x1, y1, ...} */
+    /** @return a copy of the coordinates, {@code x0, y0, x1, y1, ...}, never null */
     public float[] coordinates() {
         return xy.clone();
     }
@@ -284,7 +284,7 @@ public final class Polygon implements Shape {
      * <p>Reference: the centroid of a polygon from the signed areas of the triangles fanned
      * out from vertex 0, each weighted at its own centroid.
      *
-     * @return the centroid
+     * @return the centroid, never null
      */
     public Vec centroid() {
         BigDecimal ox = new BigDecimal(xy[0]);

@@ -92,7 +92,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * @param y1 the start's y
      * @param x2 the end's x
      * @param y2 the end's y
-     * @return the ray from (x1, y1) towards (x2, y2), reaching it and no farther
+     * @return the ray from (x1, y1) towards (x2, y2), reaching it and no farther, never null
      * @throws IllegalArgumentException if a value is NaN or infinite, or the points are the same
      */
     public static Ray between(float x1, float y1, float x2, float y2) {

@@ -38,7 +38,7 @@ public record Rect(float x, float y, float w, float h) implements Shape {
      * @param cy the centre's y
      * @param w  the width, 0 or more
      * @param h  the height, 0 or more
-     * @return the rectangle
+     * @return the rectangle, never null
      * @throws IllegalArgumentException if a value is NaN or infinite, or a size is negative
      */
     public static Rect centered(float cx, float cy, float w, float h) {
@@ -115,7 +115,7 @@ public record Rect(float x, float y, float w, float h) implements Shape {
      *
      * @param newX the new left edge
      * @param newY the new top edge
-     * @return the moved rectangle
+     * @return the moved rectangle, never null
      * @throws IllegalArgumentException if a value is NaN or infinite
      */
     public Rect at(float newX, float newY) {

@@ -31,7 +31,7 @@ public final class Response {
      * @param ax      any point that moves with a (its centre or its corner)
      * @param ay      that point's y
      * @param contact the contact between a and b, not null
-     * @return the point's new position
+     * @return the point's new position, never null
      * @throws IllegalArgumentException if the contact is null or a coordinate is NaN or
      *                                  infinite
      */
@@ -49,7 +49,7 @@ public final class Response {
      * @param ay      that point's y
      * @param contact the contact between a and b, not null
      * @param share   how much of the depth a moves, from 0 (a stays) to 1 (a moves it all)
-     * @return the point's new position
+     * @return the point's new position, never null
      * @throws IllegalArgumentException if the contact is null, a coordinate is NaN or
      *                                  infinite, or share is outside [0, 1]
      */
@@ -64,7 +64,7 @@ public final class Response {
      * @param bx      any point that moves with b (its centre or its corner)
      * @param by      that point's y
      * @param contact the contact between a and b, not null
-     * @return the point's new position
+     * @return the point's new position, never null
      * @throws IllegalArgumentException if the contact is null or a coordinate is NaN or
      *                                  infinite
      */
@@ -80,7 +80,7 @@ public final class Response {
      * @param by      that point's y
      * @param contact the contact between a and b, not null
      * @param share   how much of the depth b moves, from 0 (b stays) to 1 (b moves it all)
-     * @return the point's new position
+     * @return the point's new position, never null
      * @throws IllegalArgumentException if the contact is null, a coordinate is NaN or
      *                                  infinite, or share is outside [0, 1]
      */
@@ -95,7 +95,7 @@ public final class Response {
      * @param <S>     the kind of shape
      * @param a       the first shape of the contact, not null
      * @param contact the contact between a and b, not null
-     * @return a, moved so that it just touches b
+     * @return a, moved so that it just touches b, never null
      * @throws IllegalArgumentException if a shape or the contact is null, or the move gives a
      *                                  coordinate too large for a float
      */
@@ -111,7 +111,7 @@ public final class Response {
      * @param a       the first shape of the contact, not null
      * @param contact the contact between a and b, not null
      * @param share   how much of the depth a moves, from 0 to 1
-     * @return a, moved
+     * @return a, moved, never null
      * @throws IllegalArgumentException if a shape or the contact is null, share is outside
      *                                  [0, 1], or the move gives a coordinate too large for a
      *                                  float
@@ -126,7 +126,7 @@ public final class Response {
      * @param <S>     the kind of shape
      * @param b       the second shape of the contact, not null
      * @param contact the contact between a and b, not null
-     * @return b, moved so that it just touches a
+     * @return b, moved so that it just touches a, never null
      * @throws IllegalArgumentException if a shape or the contact is null, or the move gives a
      *                                  coordinate too large for a float
      */
@@ -142,7 +142,7 @@ public final class Response {
      * @param b       the second shape of the contact, not null
      * @param contact the contact between a and b, not null
      * @param share   how much of the depth b moves, from 0 to 1
-     * @return b, moved
+     * @return b, moved, never null
      * @throws IllegalArgumentException if a shape or the contact is null, share is outside
      *                                  [0, 1], or the move gives a coordinate too large for a
      *                                  float
@@ -167,7 +167,7 @@ public final class Response {
      * @param contact     the contact between a and b, not null
      * @param restitution how much of the speed into b comes back out, from 0 (a stops
      *                    against b) to 1 (a perfect mirror bounce)
-     * @return the new velocity
+     * @return the new velocity, never null
      * @throws IllegalArgumentException if the contact is null, a velocity part is NaN or
      *                                  infinite, or restitution is outside [0, 1]
      */
@@ -186,7 +186,7 @@ public final class Response {
      * @param vx      a's velocity x
      * @param vy      a's velocity y
      * @param contact the contact between a and b, not null
-     * @return the new velocity
+     * @return the new velocity, never null
      * @throws IllegalArgumentException if the contact is null or a velocity part is NaN or
      *                                  infinite
      */
@@ -200,7 +200,7 @@ public final class Response {
      * @param velocity    a's velocity, not null
      * @param contact     the contact between a and b, not null
      * @param restitution from 0 (stop) to 1 (perfect bounce)
-     * @return the new velocity
+     * @return the new velocity, never null
      * @throws IllegalArgumentException if an argument is null, the velocity is NaN or
      *                                  infinite, or restitution is outside [0, 1]
      */
@@ -225,7 +225,7 @@ public final class Response {
      * @param nx          the normal's x, pointing from the mover into the obstacle
      * @param ny          the normal's y
      * @param restitution from 0 (stop) to 1 (perfect bounce)
-     * @return the new velocity; unchanged if the mover is not moving into the obstacle
+     * @return the new velocity; unchanged if the mover is not moving into the obstacle, never null
      */
     public static Vec bounce(float vx, float vy, float nx, float ny, float restitution) {
         if (Check.notFinite(vx, vy, nx, ny, restitution)) {
@@ -253,7 +253,7 @@ public final class Response {
      * @param vx      a's velocity x
      * @param vy      a's velocity y
      * @param contact the contact between a and b, not null
-     * @return the new velocity
+     * @return the new velocity, never null
      * @throws IllegalArgumentException if the contact is null or a velocity part is NaN or
      *                                  infinite
      */
@@ -266,7 +266,7 @@ public final class Response {
      *
      * @param velocity a's velocity, not null
      * @param contact  the contact between a and b, not null
-     * @return the new velocity
+     * @return the new velocity, never null
      * @throws IllegalArgumentException if an argument is null or the velocity is NaN or
      *                                  infinite
      */
@@ -284,7 +284,7 @@ public final class Response {
      * @param vy the mover's velocity y
      * @param nx the normal's x, pointing from the mover into the obstacle
      * @param ny the normal's y
-     * @return the new velocity; unchanged if the mover is not moving into the obstacle
+     * @return the new velocity; unchanged if the mover is not moving into the obstacle, never null
      */
     public static Vec slide(float vx, float vy, float nx, float ny) {
         return bounce(vx, vy, nx, ny, 0);
@@ -318,7 +318,7 @@ public final class Response {
      * @param <S> the kind of shape
      * @param a   the shape to move, with area (circle, rect or polygon), not null
      * @param b   the shape it must leave, with area, not null
-     * @return a, moved out of b (or a itself if they do not overlap)
+     * @return a, moved out of b (or a itself if they do not overlap), never null
      * @throws IllegalArgumentException if a shape is null or a segment (see
      *                                  {@link Contact#between})
      */

@@ -122,7 +122,7 @@ public final class SeparatingAxis {
      * @param a the first polygon, convex
      * @param b the second polygon, convex
      * @return the axes, an unmodifiable list; the polygons overlap when no axis
-     *         {@link Axis#separates() separates} them
+     *         {@link Axis#separates() separates} them, never null
      * @throws IllegalArgumentException if a polygon is null or concave
      */
     public static List<Axis> axes(Polygon a, Polygon b) {

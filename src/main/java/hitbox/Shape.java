@@ -64,7 +64,7 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      *
      * @param dx how far to move right
      * @param dy how far to move down
-     * @return a new shape of the same kind, moved
+     * @return a new shape of the same kind, moved, never null
      * @throws IllegalArgumentException if the move gives a NaN or infinite coordinate
      */
     Shape translated(float dx, float dy);

@@ -75,7 +75,7 @@ public enum Side {
     /**
      * The side across from this one: TOP and BOTTOM, LEFT and RIGHT; NONE stays NONE.
      *
-     * @return the opposite side
+     * @return the opposite side, never null
      */
     public Side opposite() {
         return switch (this) {
@@ -157,7 +157,7 @@ public enum Side {
      * name no side are ignored.
      *
      * @param sides the sides, in the <a href="#bits">bit scheme</a>
-     * @return a new modifiable set; empty (never holding {@link #NONE}) when no bit is set
+     * @return a new modifiable set; empty (never holding {@link #NONE}) when no bit is set, never null
      */
     public static EnumSet<Side> setOf(int sides) {
         EnumSet<Side> set = EnumSet.noneOf(Side.class);
@@ -173,7 +173,7 @@ public enum Side {
      * The sides of a bit set as words, for printing: {@code "LEFT|TOP"}, or {@code "NONE"}.
      *
      * @param sides the sides, in the <a href="#bits">bit scheme</a>
-     * @return the names, in the order LEFT, RIGHT, TOP, BOTTOM, joined by {@code |}
+     * @return the names, in the order LEFT, RIGHT, TOP, BOTTOM, joined by {@code |}, never null
      */
     public static String describe(int sides) {
         StringBuilder s = new StringBuilder();

@@ -157,7 +157,7 @@ public final class Snap {
          * The mover at its new position.
          *
          * @param mover the rectangle that was pushed, not null
-         * @return {@code mover} moved to ({@link #x()}, {@link #y()}), its size kept
+         * @return {@code mover} moved to ({@link #x()}, {@link #y()}), its size kept, never null
          * @throws IllegalArgumentException if {@code mover} is null
          */
         public Rect applyTo(Rect mover) {
@@ -183,7 +183,7 @@ public final class Snap {
      * @param ow the obstacle's width
      * @param oh the obstacle's height
      * @return the mover's new position and the side hit; {@link Side#NONE} and
-     *         {@code (x, y)} if they do not overlap (touching is not overlapping)
+     *         {@code (x, y)} if they do not overlap (touching is not overlapping), never null
      */
     public static Push pushOut(float x, float y, float w, float h, float ox, float oy, float ow, float oh) {
         if (!Collide.rectRect(x, y, w, h, ox, oy, ow, oh) || Check.notFinite(x, y, w, h, 0) || Check.notFinite(ox, oy, ow, oh, 0)) {
@@ -199,7 +199,7 @@ public final class Snap {
      * @param mover    the rectangle to push, not null
      * @param obstacle the rectangle it must leave, not null
      * @return the mover's new position and the side hit, or {@link Side#NONE} and its own
-     *         position if they do not overlap
+     *         position if they do not overlap, never null
      * @throws IllegalArgumentException if {@code mover} or {@code obstacle} is null
      */
     public static Push pushOut(Rect mover, Rect obstacle) {
@@ -235,7 +235,7 @@ public final class Snap {
      * @param ow the obstacle's width
      * @param oh the obstacle's height
      * @return the mover's new position and the side hit; {@link Side#NONE} and
-     *         {@code (x, y)} if they do not overlap
+     *         {@code (x, y)} if they do not overlap, never null
      */
     public static Push pushBack(float x, float y, float w, float h, float vx, float vy,
                                 float ox, float oy, float ow, float oh) {
@@ -271,7 +271,7 @@ public final class Snap {
      * @param vy       the vertical speed of this frame's move
      * @param obstacle the rectangle it must leave, not null
      * @return the mover's new position and the side hit, or {@link Side#NONE} and its own
-     *         position if they do not overlap
+     *         position if they do not overlap, never null
      * @throws IllegalArgumentException if {@code mover} or {@code obstacle} is null
      */
     public static Push pushBack(Rect mover, float vx, float vy, Rect obstacle) {

@@ -517,7 +517,7 @@ public final class Sweep {
      * @param vy     the pivot's motion this frame, y part
      * @param turn   how far it turns this frame, radians
      * @param t      the time, usually the hit's t
-     * @return the polygon at time t
+     * @return the polygon at time t, never null
      * @throws IllegalArgumentException if the mover is null, a number is NaN or infinite, or
      *                                  the turned polygon would leave the float range or
      *                                  collapse (vertices rounded onto each other)
@@ -559,7 +559,7 @@ public final class Sweep {
      * @param vx        its motion this frame, x part
      * @param vy        its motion this frame, y part
      * @param obstacles the standing boxes (walls, platforms, tiles), not null, no null element
-     * @return where the box ends, the velocity to keep, and the sides it hit
+     * @return where the box ends, the velocity to keep, and the sides it hit, never null
      * @throws IllegalArgumentException if an argument or an obstacle is null, or the velocity
      *                                  is NaN or infinite
      */
@@ -622,7 +622,7 @@ public final class Sweep {
             return Side.has(sides, side);
         }
 
-        /** @return the obstacle sides hit, as a new set (empty if it hit nothing) */
+        /** @return the obstacle sides hit, as a new set (empty if it hit nothing), never null */
         public java.util.EnumSet<Side> sideSet() {
             return Side.setOf(sides);
         }

@@ -36,7 +36,7 @@ public final class TerrainColors {
      * @param color   the colour, as {@code 0xRRGGBB} or Processing's {@code color} (the alpha is
      *                ignored)
      * @param terrain the terrain number: {@link Grid#EMPTY}, {@link Grid#SOLID} or one of your own
-     * @return this key, for chaining
+     * @return this key, for chaining, never null
      * @throws IllegalArgumentException if the colour already stands for another terrain
      */
     public TerrainColors put(int color, int terrain) {

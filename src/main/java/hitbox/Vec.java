@@ -19,7 +19,7 @@ public record Vec(float x, float y) {
     /**
      * @param other the vector to add
      * @throws IllegalArgumentException if {@code other} is null
-     * @return this + other
+     * @return this + other, never null
      */
     public Vec plus(Vec other) {
         Check.notNull("other", other);
@@ -29,7 +29,7 @@ public record Vec(float x, float y) {
     /**
      * @param other the vector to subtract
      * @throws IllegalArgumentException if {@code other} is null
-     * @return this - other
+     * @return this - other, never null
      */
     public Vec minus(Vec other) {
         Check.notNull("other", other);
@@ -38,7 +38,7 @@ public record Vec(float x, float y) {
 
     /**
      * @param k the factor
-     * @return this vector scaled by k
+     * @return this vector scaled by k, never null
      */
     public Vec times(float k) {
         return new Vec(x * k, y * k);

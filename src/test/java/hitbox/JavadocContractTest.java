@@ -1,0 +1,457 @@
+package hitbox;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.sun.source.doctree.DocCommentTree;
+import com.sun.source.doctree.DocTree;
+import com.sun.source.doctree.ReturnTree;
+import com.sun.source.doctree.ThrowsTree;
+import com.sun.source.tree.ClassTree;
+import com.sun.source.tree.CompilationUnitTree;
+import com.sun.source.tree.MethodTree;
+import com.sun.source.tree.Tree;
+import com.sun.source.tree.VariableTree;
+import com.sun.source.util.DocTrees;
+import com.sun.source.util.JavacTask;
+import com.sun.source.util.TreePath;
+import com.sun.source.util.TreePathScanner;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.lang.reflect.Field;
+import java.net.URI;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import javax.lang.model.element.Modifier;
+import javax.tools.JavaCompiler;
+import javax.tools.JavaFileObject;
+import javax.tools.SimpleJavaFileObject;
+import javax.tools.StandardJavaFileManager;
+import javax.tools.ToolProvider;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Issue 10's last two "done when" items, read from the sources themselves: every public
+ * method and constructor of {@code hitbox} and {@code hitbox.processing} states, in its own
+ * javadoc, what a NaN does, what a missing object does, and what it answers when there is
+ * nothing to answer; and no class is over {@value #MAX_LINES} lines without saying why in
+ * its class doc.
+ *
+ * <p>The sources are parsed (not compiled) with the JDK's compiler tree API, so the rules
+ * see exactly what a reader of the javadoc sees. A method is held to a rule by its
+ * signature:
+ * <ul>
+ *   <li>a {@code float}, {@code double} or {@code float[]} parameter: the doc says
+ *       "NaN" (what a NaN argument does, or that it throws);</li>
+ *   <li>a parameter of a class type ({@code hitbox} only, where the bad-input catalog pins
+ *       that every such method refuses null): an {@code @throws IllegalArgumentException}
+ *       that mentions null;</li>
+ *   <li>a constructor, or a method in {@link BadInputCatalogTest}'s {@code CHECKED} table:
+ *       an {@code @throws IllegalArgumentException} (the catalog pins that it throws);</li>
+ *   <li>an object answer: the doc says "null" (null when there is none, or never null) or,
+ *       for a {@link Side}, "NONE"; a {@code float} time or distance: "Infinity"; an
+ *       {@code int} index: "-1".</li>
+ * </ul>
+ * Methods marked {@code @Override} are left to the method they override (the
+ * {@link Shape} and {@link BroadPhase} methods are checked where they are declared). The
+ * fixture tests show that a method without the sentences is reported, so the rules cannot
+ * pass by finding nothing to check.
+ */
+class JavadocContractTest {
+
+    /** The length above which a class must say why it is long. */
+    static final int MAX_LINES = 450;
+
+    /** The phrase a long class's doc uses to give its reason. */
+    private static final Pattern LONG_REASON = Pattern.compile("longer than most");
+
+    private static final List<Path> ROOTS = List.of(Path.of("src/main/java/hitbox"),
+            Path.of("src/processing/java/hitbox/processing"));
+
+    /** Plain carriers of raw-float answers: their constructors take any float (the catalog's CARRIERS). */
+    private static final Set<String> CARRIERS = Set.of("Vec", "Motion.Step", "Snap.Push");
+
+    /** Classes whose methods that take an object check their floats too (the catalog's CHECKS_OBJECT_CALLS). */
+    private static final Set<String> CHECKS_OBJECT_CALLS = Set.of("Response", "Sweep");
+
+    private static final Pattern NAN = Pattern.compile("\\bNaN\\b");
+    private static final Pattern NULL = Pattern.compile("\\bnull\\b");
+    private static final Pattern NONE = Pattern.compile("\\bNONE\\b");
+    private static final Pattern INFINITY = Pattern.compile("Infinity|POSITIVE_INFINITY");
+    private static final Pattern MINUS_ONE = Pattern.compile("(?<![\\w.])-1\\b");
+    /** Float answers that are a time or a distance, whose "nothing" is +Infinity. */
+    private static final Pattern TIME_OR_DISTANCE = Pattern.compile("(?i).*(time|distance|impact|toi).*");
+    /** Int answers that are an index, whose "nothing" is -1. */
+    private static final Pattern INDEX = Pattern.compile("(?i)(first|indexOf.*|.*Index|colAt|rowAt|index)");
+
+    // ------------------------------------------------------------------ the library
+
+    @Test
+    void everyPublicMethodAndConstructor_statesItsNanRangeAndNoResultBehaviour() {
+        List<String> problems = problems(parse(sources()), checkedTable());
+        assertTrue(problems.isEmpty(), problems.size() + " public members do not state their contract:\n"
+                + String.join("\n", problems));
+    }
+
+    @Test
+    void everyLongClass_saysWhyInItsClassDoc() {
+        List<String> problems = longClasses(parse(sources()));
+        assertTrue(problems.isEmpty(), String.join("\n", problems));
+    }
+
+    @Test
+    void theSourcesAndTheCatalogAreFound() {
+        // Guards against a rule that passes by reading nothing.
+        List<CompilationUnitTree> units = parse(sources()).units;
+        assertTrue(units.size() > 60, "found " + units.size() + " source files");
+        Set<String> checked = checkedTable();
+        assertTrue(checked.contains("Polygon.of") && checked.size() > 20, "CHECKED: " + checked);
+    }
+
+    // ------------------------------------------------------------------ the rules catch what they should
+
+    @Test
+    void aMethodWithoutTheSentences_isReported() {
+        String source = """
+                package hitbox;
+                /** A fixture. */
+                public final class Fixture {
+                    /**
+                     * Makes one.
+                     * @param r the radius
+                     */
+                    public Fixture(float r) { }
+                    /**
+                     * Does the shape hit? Compare it with null.
+                     * @param x a position
+                     * @param s a shape
+                     * @return the hit
+                     */
+                    public Hit hit(float x, Shape s) { return null; }
+                    /**
+                     * When.
+                     * @param vx a speed
+                     * @return the time
+                     */
+                    public static float timeOfImpact(float vx) { return 0; }
+                    /**
+                     * Which one.
+                     * @return its index
+                     */
+                    public int firstIndex() { return 0; }
+                    /**
+                     * Checked in the catalog.
+                     * @param k a count
+                     * @return a number
+                     */
+                    public int tiles(int k) { return k; }
+                    /**
+                     * A NaN answers null; never null otherwise.
+                     * @param x a position
+                     * @param s a shape
+                     * @return the hit, or null
+                     * @throws IllegalArgumentException if s is null
+                     */
+                    public Hit good(float x, Shape s) { return null; }
+                    /** Not public: not checked. @return x */
+                    Hit hidden(float x) { return null; }
+                    /** {@inheritDoc} */
+                    @Override
+                    public String toString() { return ""; }
+                }
+                """;
+        List<String> problems = problems(parse(List.of(new Source("Fixture.java", source))), Set.of("Fixture.tiles"));
+        assertEquals(List.of(
+                "Fixture#Fixture(float r): no NaN statement (it takes a float/double/float[])",
+                "Fixture#Fixture(float r): no @throws IllegalArgumentException (it checks its arguments)",
+                "Fixture#hit(float x, Shape s): no NaN statement (it takes a float/double/float[])",
+                "Fixture#hit(float x, Shape s): no @throws IllegalArgumentException naming null (it takes an object)",
+                "Fixture#hit(float x, Shape s): no no-result statement in @return (null / never null / NONE)",
+                "Fixture#timeOfImpact(float vx): no NaN statement (it takes a float/double/float[])",
+                "Fixture#timeOfImpact(float vx): no no-result statement in @return (Infinity, for a time or distance)",
+                "Fixture#firstIndex(): no no-result statement in @return (-1, for an index)",
+                "Fixture#tiles(int k): no @throws IllegalArgumentException (it checks its arguments)"),
+                problems);
+    }
+
+    @Test
+    void aRecordWithAnImplicitConstructor_isHeldToItsClassDoc() {
+        String source = """
+                package hitbox;
+                /**
+                 * A fixture.
+                 * @param x a value
+                 */
+                public record Pair(float x) { }
+                """;
+        assertEquals(List.of("Pair#Pair(float x): no NaN statement (it takes a float/double/float[])",
+                        "Pair#Pair(float x): no @throws IllegalArgumentException (it checks its arguments)"),
+                problems(parse(List.of(new Source("Pair.java", source))), Set.of()));
+    }
+
+    @Test
+    void aLongClassWithoutItsReason_isReported() {
+        String body = "    // filler\n".repeat(MAX_LINES);
+        String quiet = "package hitbox;\n/** Long. */\nfinal class Quiet {\n" + body + "}\n";
+        String said = "package hitbox;\n/** Long. This class is longer than most: a reason. */\nfinal class Said {\n"
+                + body + "}\n";
+        List<String> problems = longClasses(parse(List.of(new Source("Quiet.java", quiet), new Source("Said.java", said))));
+        assertEquals(1, problems.size(), problems.toString());
+        assertTrue(problems.get(0).startsWith("Quiet.java: " + (MAX_LINES + 4) + " lines"), problems.get(0));
+    }
+
+    // ------------------------------------------------------------------ the checks
+
+    /** One rule per line: "Class#method(params): what is missing". */
+    private static List<String> problems(Parsed parsed, Set<String> checkedTable) {
+        List<String> out = new ArrayList<>();
+        for (CompilationUnitTree unit : parsed.units) {
+            boolean core = unit.getPackageName() != null && unit.getPackageName().toString().equals("hitbox");
+            new TreePathScanner<Void, String>() {
+                @Override
+                public Void visitClass(ClassTree c, String outer) {
+                    String name = outer == null ? c.getSimpleName().toString() : outer + "." + c.getSimpleName();
+                    boolean visible = c.getModifiers().getFlags().contains(Modifier.PUBLIC)
+                            || outer != null && isInterface(getCurrentPath().getParentPath().getLeaf());
+                    if (!visible || isFunctional(c)) {
+                        return null;  // not API, or a callback the user writes
+                    }
+                    boolean explicitCanonical = false;
+                    for (Tree member : c.getMembers()) {
+                        if (member instanceof MethodTree m) {
+                            boolean ctor = m.getName().contentEquals("<init>");
+                            if (ctor && c.getKind() == Tree.Kind.RECORD && sameTypes(m.getParameters(), recordComponents(c))) {
+                                explicitCanonical = true;
+                            }
+                            boolean isPublic = m.getModifiers().getFlags().contains(Modifier.PUBLIC)
+                                    || isInterface(c) && !m.getModifiers().getFlags().contains(Modifier.PRIVATE)
+                                    || ctor && c.getKind() == Tree.Kind.RECORD && sameTypes(m.getParameters(), recordComponents(c));
+                            if (!isPublic || overrides(m)) {
+                                continue;
+                            }
+                            Doc doc = Doc.of(parsed.docs, new TreePath(getCurrentPath(), m));
+                            check(out, name, c, m.getName().toString(), m.getParameters(), m.getReturnType(),
+                                    doc, core, checkedTable);
+                        }
+                    }
+                    if (c.getKind() == Tree.Kind.RECORD && !explicitCanonical && !recordComponents(c).isEmpty()) {
+                        // The implicit canonical constructor: its contract is the record's own doc.
+                        check(out, name, c, "<init>", recordComponents(c), null, Doc.of(parsed.docs, getCurrentPath()),
+                                core, checkedTable);
+                    }
+                    return super.visitClass(c, name);
+                }
+            }.scan(unit, null);
+        }
+        return out;
+    }
+
+    private static void check(List<String> out, String owner, ClassTree c, String method,
+            List<? extends VariableTree> params, Tree returns, Doc doc, boolean core, Set<String> checkedTable) {
+        boolean ctor = method.equals("<init>");
+        String simple = owner.substring(owner.lastIndexOf('.') + 1);
+        String where = owner + "#" + (ctor ? simple : method) + "(" + params.stream()
+                .map(p -> p.getType() + " " + p.getName()).collect(Collectors.joining(", ")) + ")";
+        if (doc == null) {
+            out.add(where + ": no javadoc");
+            return;
+        }
+        boolean floats = params.stream().anyMatch(p -> isFloaty(p.getType().toString()));
+        boolean objects = params.stream().anyMatch(p -> !isPrimitive(p.getType().toString()));
+        if (floats && !NAN.matcher(doc.all).find()) {
+            out.add(where + ": no NaN statement (it takes a float/double/float[])");
+        }
+        boolean throwsIae = doc.throwsIae != null;
+        String key = owner + "." + (ctor ? "new" : method);
+        // The catalog calls a constructor checked when it is not a carrier's; with only int
+        // parameters (a pixel's column and row) there is nothing for it to refuse.
+        boolean checked = ctor && (floats || objects) && !CARRIERS.contains(owner) && c.getKind() != Tree.Kind.ENUM
+                || !params.isEmpty() && checkedTable.contains(key)
+                || objects && CHECKS_OBJECT_CALLS.contains(owner);
+        if (checked && !throwsIae) {
+            out.add(where + ": no @throws IllegalArgumentException (it checks its arguments)");
+        } else if (core && objects && !(throwsIae && NULL.matcher(doc.throwsIae).find())) {
+            out.add(where + ": no @throws IllegalArgumentException naming null (it takes an object)");
+        }
+        if (returns == null || ctor) {
+            return;
+        }
+        String type = returns.toString();
+        if (!isPrimitive(type) && !type.equals("void")) {
+            boolean said = NULL.matcher(doc.returns).find() || type.equals("Side") && NONE.matcher(doc.returns).find();
+            if (!said) {
+                out.add(where + ": no no-result statement in @return (null / never null / NONE)");
+            }
+        } else if ((type.equals("float") || type.equals("double")) && TIME_OR_DISTANCE.matcher(method).matches()
+                && !INFINITY.matcher(doc.returns).find()) {
+            out.add(where + ": no no-result statement in @return (Infinity, for a time or distance)");
+        } else if (type.equals("int") && INDEX.matcher(method).matches() && !MINUS_ONE.matcher(doc.returns).find()) {
+            out.add(where + ": no no-result statement in @return (-1, for an index)");
+        }
+    }
+
+    /** Classes over the limit whose class doc does not say why. */
+    private static List<String> longClasses(Parsed parsed) {
+        List<String> out = new ArrayList<>();
+        for (CompilationUnitTree unit : parsed.units) {
+            long lines = parsed.lines(unit);
+            if (lines <= MAX_LINES) {
+                continue;
+            }
+            for (Tree t : unit.getTypeDecls()) {
+                String doc = parsed.docs.getDocComment(new TreePath(new TreePath(unit), t));
+                if (doc == null || !LONG_REASON.matcher(doc).find()) {
+                    out.add(Path.of(unit.getSourceFile().getName()).getFileName() + ": " + lines
+                            + " lines, and its class doc does not say why it is \"longer than most\"");
+                }
+            }
+        }
+        return out;
+    }
+
+    // ------------------------------------------------------------------ helpers
+
+    private static boolean isFloaty(String type) {
+        return type.equals("float") || type.equals("double") || type.startsWith("float[") || type.startsWith("double[")
+                || type.equals("float...") || type.equals("double...");
+    }
+
+    private static boolean isPrimitive(String type) {
+        return Set.of("float", "double", "int", "long", "boolean", "byte", "short", "char").contains(type);
+    }
+
+    private static boolean isInterface(Tree t) {
+        return t.getKind() == Tree.Kind.INTERFACE;
+    }
+
+    private static boolean isFunctional(ClassTree c) {
+        return c.getModifiers().getAnnotations().stream()
+                .anyMatch(a -> a.getAnnotationType().toString().endsWith("FunctionalInterface"));
+    }
+
+    private static boolean overrides(MethodTree m) {
+        return m.getModifiers().getAnnotations().stream()
+                .anyMatch(a -> a.getAnnotationType().toString().endsWith("Override"));
+    }
+
+    private static List<? extends VariableTree> recordComponents(ClassTree c) {
+        List<VariableTree> out = new ArrayList<>();
+        for (Tree member : c.getMembers()) {
+            // A record's components are its non-static fields.
+            if (member instanceof VariableTree v && !v.getModifiers().getFlags().contains(Modifier.STATIC)) {
+                out.add(v);
+            }
+        }
+        return out;
+    }
+
+    private static boolean sameTypes(List<? extends VariableTree> a, List<? extends VariableTree> b) {
+        // A compact canonical constructor has its parameters filled in from the components.
+        if (a.size() != b.size()) {
+            return false;
+        }
+        for (int i = 0; i < a.size(); i++) {
+            if (!a.get(i).getType().toString().equals(b.get(i).getType().toString())) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The catalog's table of checked methods, read rather than copied, so the two cannot drift apart. */
+    @SuppressWarnings("unchecked")
+    private static Set<String> checkedTable() {
+        try {
+            Field f = BadInputCatalogTest.class.getDeclaredField("CHECKED");
+            f.setAccessible(true);
+            return (Set<String>) f.get(null);
+        } catch (ReflectiveOperationException ex) {
+            throw new AssertionError("BadInputCatalogTest.CHECKED is gone", ex);
+        }
+    }
+
+    // ------------------------------------------------------------------ parsing
+
+    private record Source(String name, String text) {
+    }
+
+    /**
+     * What a rule reads of one doc comment: all of it, its {@code @return} text, and its
+     * {@code @throws IllegalArgumentException} text (null when it has none).
+     */
+    private record Doc(String all, String returns, String throwsIae) {
+        static Doc of(DocTrees docs, TreePath path) {
+            DocCommentTree tree = docs.getDocCommentTree(path);
+            if (tree == null) {
+                return null;
+            }
+            StringBuilder returns = new StringBuilder();
+            String throwsIae = null;
+            for (DocTree tag : tree.getBlockTags()) {
+                if (tag instanceof ReturnTree r) {
+                    returns.append(r.getDescription()).append(' ');
+                } else if (tag instanceof ThrowsTree t
+                        && t.getExceptionName().toString().endsWith("IllegalArgumentException")) {
+                    throwsIae = (throwsIae == null ? "" : throwsIae + " ") + t.getDescription();
+                }
+            }
+            return new Doc(docs.getDocComment(path), returns.toString(), throwsIae);
+        }
+    }
+
+    private record Parsed(List<CompilationUnitTree> units, DocTrees docs) {
+        long lines(CompilationUnitTree unit) {
+            try {
+                return unit.getSourceFile().getCharContent(true).toString().lines().count();
+            } catch (IOException ex) {
+                throw new UncheckedIOException(ex);
+            }
+        }
+    }
+
+    private static List<Source> sources() {
+        List<Source> out = new ArrayList<>();
+        for (Path root : ROOTS) {
+            assertTrue(Files.isDirectory(root), "no " + root.toAbsolutePath() + " (the tests run in the project folder)");
+            try (Stream<Path> files = Files.list(root)) {
+                for (Path p : files.filter(p -> p.toString().endsWith(".java")).sorted().toList()) {
+                    out.add(new Source(p.toString(), Files.readString(p)));
+                }
+            } catch (IOException ex) {
+                throw new UncheckedIOException(ex);
+            }
+        }
+        return out;
+    }
+
+    private static Parsed parse(List<Source> sources) {
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        assertTrue(javac != null, "the tests need a JDK (javax.tools finds no compiler)");
+        StandardJavaFileManager files = javac.getStandardFileManager(null, null, null);
+        List<JavaFileObject> objects = new ArrayList<>();
+        for (Source s : sources) {
+            objects.add(new SimpleJavaFileObject(URI.create("string:///" + s.name().replace('\\', '/')),
+                    JavaFileObject.Kind.SOURCE) {
+                @Override
+                public CharSequence getCharContent(boolean ignoreEncodingErrors) {
+                    return s.text();
+                }
+            });
+        }
+        JavacTask task = (JavacTask) javac.getTask(null, files, null, List.of("-proc:none"), null, objects);
+        List<CompilationUnitTree> units = new ArrayList<>();
+        try {
+            task.parse().forEach(units::add);
+        } catch (IOException ex) {
+            throw new UncheckedIOException(ex);
+        }
+        return new Parsed(units, DocTrees.instance(task));
+    }
+
+}
