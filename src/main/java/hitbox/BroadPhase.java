@@ -303,6 +303,9 @@ public interface BroadPhase {
      * into its inside within {@code maxDistance} (a ray along an edge, or a box of width or
      * height 0, is not hit).
      *
+     * <p>A NaN or infinite origin or direction, or a NaN or negative {@code maxDistance}, throws
+     * and changes nothing (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param ox          the ray's origin x
      * @param oy          the ray's origin y
      * @param dx          the direction's x part

@@ -49,6 +49,8 @@ public final class Edges {
     /**
      * Has the point gone past a window edge? A point exactly on an edge has not.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param px     the point's x
      * @param py     the point's y
      * @param width  the window's width
@@ -66,6 +68,8 @@ public final class Edges {
      * {@code x < r || x > width - r}, for each edge, so the ball turns before it is half out; a circle touching an edge has not crossed
      * it.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param cx     the circle's centre x
      * @param cy     the circle's centre y
      * @param r      the circle's radius (not its diameter)
@@ -81,6 +85,8 @@ public final class Edges {
     /**
      * Which window edges has the rectangle crossed? A rectangle touching an edge has not
      * crossed it.
+     *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x      the rectangle's left edge
      * @param y      the rectangle's top edge
@@ -98,6 +104,8 @@ public final class Edges {
     /**
      * Which window edges has the shape crossed? A circle is tested as a circle; any other
      * shape by its {@link Shape#bounds() bounds}, which reach exactly as far as the shape.
+     *
+     * <p>A NaN window size answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>); a shape never holds NaN.
      *
      * @param shape  the shape, not null
      * @param width  the window's width
@@ -173,6 +181,8 @@ public final class Edges {
      * wider than the window crosses both sides at once and has no inside direction; its speed
      * is left as it is.
      *
+     * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param crossed the edges from one of the crossing tests
      * @param vx      the horizontal speed
      * @return {@code |vx|} if only {@link #LEFT} was crossed, {@code -|vx|} if only
@@ -187,6 +197,8 @@ public final class Edges {
      * inside) after crossing the top edge, pointing up after crossing the bottom edge, and
      * unchanged otherwise. See {@link #bounceX} for why this sets the direction instead of
      * flipping it.
+     *
+     * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param crossed the edges from one of the crossing tests
      * @param vy      the vertical speed (down is positive)
@@ -219,6 +231,9 @@ public final class Edges {
      * always lies in {@code [-r, width + r]}, however far out the circle was. A centre already
      * in that range is returned unchanged.
      *
+     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param cx    the circle's centre x
      * @param r     the circle's radius
      * @param width the window's width
@@ -231,6 +246,9 @@ public final class Edges {
     /**
      * The circle's centre y after wrapping around the top and bottom edges; see
      * {@link #circleWrapX}. The result always lies in {@code [-r, height + r]}.
+     *
+     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cy     the circle's centre y
      * @param r      the circle's radius
@@ -246,6 +264,9 @@ public final class Edges {
      * {@link #circleWrapX}. The result always lies in {@code [-w, width]}: once the rectangle
      * has completely left on one side it comes back in on the other.
      *
+     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x     the rectangle's left edge
      * @param w     the rectangle's width
      * @param width the window's width
@@ -258,6 +279,9 @@ public final class Edges {
     /**
      * The rectangle's top edge after wrapping around the top and bottom edges; see
      * {@link #circleWrapX}. The result always lies in {@code [-h, height]}.
+     *
+     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param y      the rectangle's top edge
      * @param h      the rectangle's height
@@ -301,6 +325,9 @@ public final class Edges {
      * left and right edges (it may touch them). A circle wider than the window cannot fit; it is
      * centred instead, sticking out equally on both sides.
      *
+     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param cx    the circle's centre x
      * @param r     the circle's radius
      * @param width the window's width
@@ -313,6 +340,9 @@ public final class Edges {
     /**
      * The circle's centre y moved the least so the circle lies inside the window, between the
      * top and bottom edges; see {@link #circleClampX}.
+     *
+     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cy     the circle's centre y
      * @param r      the circle's radius
@@ -328,6 +358,9 @@ public final class Edges {
      * between the left and right edges (it may touch them). A rectangle wider than the window
      * is centred instead.
      *
+     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x     the rectangle's left edge
      * @param w     the rectangle's width
      * @param width the window's width
@@ -340,6 +373,9 @@ public final class Edges {
     /**
      * The rectangle's top edge moved the least so the rectangle lies inside the window, between
      * the top and bottom edges; see {@link #rectClampX}.
+     *
+     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param y      the rectangle's top edge
      * @param h      the rectangle's height

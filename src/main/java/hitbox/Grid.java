@@ -69,6 +69,8 @@ public final class Grid {
     /**
      * Makes an empty grid: every cell {@link #EMPTY}.
      *
+     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param cols       the number of columns, 1 or more
      * @param rows       the number of rows, 1 or more
      * @param cellWidth  a cell's width in pixels, more than 0
@@ -97,6 +99,8 @@ public final class Grid {
 
     /**
      * Makes an empty grid of square cells: every cell {@link #EMPTY}.
+     *
+     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cols     the number of columns, 1 or more
      * @param rows     the number of rows, 1 or more
@@ -132,6 +136,8 @@ public final class Grid {
      * Reads a map from text, with square cells; see {@link #parse(String, float, float)} for
      * the format.
      *
+     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param map      the map, one line per row
      * @param cellSize a cell's width and height in pixels, more than 0
      * @return a new grid holding the map, never null
@@ -156,6 +162,8 @@ public final class Grid {
      * and after the last are ignored, so a Java text block works as it is; every other line is
      * a row, and all rows must have the same width. Prefer {@code '.'} to spaces at the end of
      * a row: editors and text blocks often strip trailing spaces.
+     *
+     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param map        the map, one line per row
      * @param cellWidth  a cell's width in pixels, more than 0
@@ -366,6 +374,8 @@ public final class Grid {
      * {@link #EMPTY}; see {@link #fillRandom(float, long, int, int)}, which also keeps a start
      * cell free.
      *
+     * <p>A NaN {@code fraction} throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
      * @param seed     the random seed: the same seed gives the same grid
      * @return this grid, for chaining, never null
@@ -387,6 +397,8 @@ public final class Grid {
      * run to run and one may land on the player; this makes exactly the asked share solid,
      * e.g. {@code new Grid(20, 20, cellSize).fillRandom(0.2f, seed, 0, 0)}: 80 solid cells,
      * the top-left one kept free.
+     *
+     * <p>A NaN {@code fraction} throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
      * @param seed     the random seed: the same seed gives the same grid
@@ -770,7 +782,8 @@ public final class Grid {
      * @param vx    its motion this frame, x part
      * @param vy    its motion this frame, y part
      * @return the cells' rectangles, a new list, never null
-     * @throws IllegalArgumentException as {@link #move} does
+     * @throws IllegalArgumentException as {@link #move} does: if {@code mover} is null, or the
+     *                                  velocity is NaN or infinite
      */
     public java.util.List<Rect> moveObstacles(Rect mover, float vx, float vy) {
         return GridMove.obstacles(this, mover, vx, vy);
@@ -781,6 +794,8 @@ public final class Grid {
      * {@code pixelsPerCell x pixelsPerCell} block of pixels, from the top-left corner, is one
      * cell, and its colour says the cell's terrain through the key. With a PImage, use
      * {@code hitbox.processing.Maps.fromImage}.
+     *
+     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param pixels        the picture's colours, ARGB, row by row from the top-left (a
      *                      {@code PImage}'s {@code pixels} after {@code loadPixels()})

@@ -225,6 +225,8 @@ public final class Hits {
     /**
      * How many of the rects the rectangle overlaps.
      *
+     * <p>A NaN in any argument answers 0 (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
      * @param w     the rectangle's width
@@ -244,6 +246,8 @@ public final class Hits {
     /**
      * The indices of all the rects that the rectangle overlaps, in order.
      *
+     * <p>A NaN in any argument answers an empty array (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
      * @param w     the rectangle's width
@@ -261,6 +265,8 @@ public final class Hits {
     /**
      * Calls {@code action} with the index of each of the rects that the rectangle overlaps,
      * in order, allocating nothing.
+     *
+     * <p>A NaN in any argument finds nothing: {@code action} is not called (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x      the rectangle's left edge
      * @param y      the rectangle's top edge
@@ -325,6 +331,8 @@ public final class Hits {
      * How many of the rects the rectangle overlaps; see
      * {@link #count(float, float, float, float, List)}.
      *
+     * <p>A NaN in any argument answers 0 (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
      * @param w     the rectangle's width
@@ -341,6 +349,8 @@ public final class Hits {
      * The indices of all the rects that the rectangle overlaps, in order; see
      * {@link #all(float, float, float, float, List)}.
      *
+     * <p>A NaN in any argument answers an empty array (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
      * @param w     the rectangle's width
@@ -356,6 +366,8 @@ public final class Hits {
     /**
      * Calls {@code action} with the index of each of the rects that the rectangle overlaps,
      * in order; see {@link #each(float, float, float, float, List, IntConsumer)}.
+     *
+     * <p>A NaN in any argument finds nothing: {@code action} is not called (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x      the rectangle's left edge
      * @param y      the rectangle's top edge
@@ -424,6 +436,8 @@ public final class Hits {
     /**
      * How many boxes of the broad phase the rectangle overlaps.
      *
+     * <p>A NaN in any argument answers 0 (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x         the rectangle's left edge
      * @param y         the rectangle's top edge
      * @param w         the rectangle's width
@@ -438,6 +452,8 @@ public final class Hits {
 
     /**
      * The ids of all the boxes of the broad phase that the rectangle overlaps.
+     *
+     * <p>A NaN in any argument answers an empty array (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the rectangle's left edge
      * @param y         the rectangle's top edge
@@ -454,6 +470,8 @@ public final class Hits {
     /**
      * Calls {@code action} with the id of each box of the broad phase that the rectangle
      * overlaps, ascending.
+     *
+     * <p>A NaN in any argument finds nothing: {@code action} is not called (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the rectangle's left edge
      * @param y         the rectangle's top edge

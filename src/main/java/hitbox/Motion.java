@@ -73,6 +73,8 @@ public final class Motion {
      * {@code (x, y + vy)} would, and {@link #BOTH} for a diagonal hit on a corner (see the
      * class description).
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x  the mover's left edge
      * @param y  the mover's top edge
      * @param w  the mover's width
@@ -104,6 +106,8 @@ public final class Motion {
      * Which axes of a moving rectangle's next move would run into the obstacle? See
      * {@link #rectBlocked(float, float, float, float, float, float, float, float, float, float)}.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x        the mover's left edge
      * @param y        the mover's top edge
      * @param w        the mover's width
@@ -123,6 +127,8 @@ public final class Motion {
      * Which axes of a moving rectangle's next move would run into any of the obstacles: the
      * OR of the answers for each one.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x         the mover's left edge
      * @param y         the mover's top edge
      * @param w         the mover's width
@@ -140,6 +146,8 @@ public final class Motion {
     /**
      * Which axes of a moving rectangle's next move would run into any of the obstacles: the
      * OR of the answers for each one.
+     *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the mover's left edge
      * @param y         the mover's top edge
@@ -167,6 +175,8 @@ public final class Motion {
      * {@link #X} if the circle centred at {@code (cx + vx, cy)} would overlap it, {@link #Y} if
      * the circle centred at {@code (cx, cy + vy)} would, and {@link #BOTH} for a diagonal hit
      * (see the class description).
+     *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx the mover's centre x
      * @param cy the mover's centre y
@@ -198,6 +208,8 @@ public final class Motion {
      * Which axes of a moving circle's next move would run into the obstacle? See
      * {@link #circleBlocked(float, float, float, float, float, float, float, float, float)}.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param cx       the mover's centre x
      * @param cy       the mover's centre y
      * @param r        the mover's radius
@@ -216,6 +228,8 @@ public final class Motion {
      * Which axes of a moving circle's next move would run into any of the obstacles: the OR
      * of the answers for each one.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param cx        the mover's centre x
      * @param cy        the mover's centre y
      * @param r         the mover's radius
@@ -232,6 +246,8 @@ public final class Motion {
     /**
      * Which axes of a moving circle's next move would run into any of the obstacles: the OR
      * of the answers for each one.
+     *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx        the mover's centre x
      * @param cy        the mover's centre y
@@ -257,6 +273,8 @@ public final class Motion {
      * Which axes of the rectangle's next move would run into the obstacle? Same as
      * {@link #rectBlocked(float, float, float, float, float, float, Rect)}.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param mover    the moving rectangle, not null
      * @param vx       its horizontal speed
      * @param vy       its vertical speed
@@ -272,6 +290,8 @@ public final class Motion {
     /**
      * Which axes of the rectangle's next move would run into any of the obstacles? Same as
      * {@link #rectBlocked(float, float, float, float, float, float, Rect[])}.
+     *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover     the moving rectangle, not null
      * @param vx        its horizontal speed
@@ -290,6 +310,8 @@ public final class Motion {
      * Which axes of the rectangle's next move would run into any of the obstacles? Same as
      * {@link #rectBlocked(float, float, float, float, float, float, List)}.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param mover     the moving rectangle, not null
      * @param vx        its horizontal speed
      * @param vy        its vertical speed
@@ -307,6 +329,8 @@ public final class Motion {
      * Which axes of the circle's next move would run into the obstacle? Same as
      * {@link #circleBlocked(float, float, float, float, float, Rect)}.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param mover    the moving circle, not null
      * @param vx       its horizontal speed
      * @param vy       its vertical speed
@@ -322,6 +346,8 @@ public final class Motion {
     /**
      * Which axes of the circle's next move would run into any of the obstacles? Same as
      * {@link #circleBlocked(float, float, float, float, float, Rect[])}.
+     *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover     the moving circle, not null
      * @param vx        its horizontal speed
@@ -339,6 +365,8 @@ public final class Motion {
     /**
      * Which axes of the circle's next move would run into any of the obstacles? Same as
      * {@link #circleBlocked(float, float, float, float, float, List)}.
+     *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover     the moving circle, not null
      * @param vx        its horizontal speed
@@ -370,6 +398,8 @@ public final class Motion {
      * The horizontal speed to use this frame: reversed if the {@link #X} axis is blocked,
      * unchanged otherwise.
      *
+     * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param blocked the axes from one of the checks
      * @param vx      the horizontal speed
      * @return {@code -vx} if {@code blocked} includes {@link #X}, else {@code vx}
@@ -381,6 +411,8 @@ public final class Motion {
     /**
      * The vertical speed to use this frame: reversed if the {@link #Y} axis is blocked,
      * unchanged otherwise.
+     *
+     * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param blocked the axes from one of the checks
      * @param vy      the vertical speed
@@ -415,6 +447,10 @@ public final class Motion {
      * ends a frame inside an obstacle it started outside of, nor outside the window it started
      * inside of.
      *
+     * <p>A NaN in the box or its speed blocks nothing ({@code blocked} is {@link #NONE}) and a
+     * NaN position or speed stays NaN; a NaN window size crosses no edge ({@code crossed} is
+     * {@link #NONE}) (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x         the box's left edge
      * @param y         the box's top edge
      * @param w         the box's width
@@ -438,6 +474,8 @@ public final class Motion {
      * the same answer as {@link #rectBlocked(float, float, float, float, float, float, List)}
      * over the same boxes, asking only the ones near the move.
      *
+     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x         the mover's left edge
      * @param y         the mover's top edge
      * @param w         the mover's width
@@ -456,6 +494,10 @@ public final class Motion {
      * {@link #bounce(float, float, float, float, float, float, List, float, float)} among the
      * boxes of a broad phase: the same step, so a sketch with thousands of obstacles changes
      * one argument.
+     *
+     * <p>A NaN in the box or its speed blocks nothing ({@code blocked} is {@link #NONE}) and a
+     * NaN position or speed stays NaN; a NaN window size crosses no edge ({@code crossed} is
+     * {@link #NONE}) (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the box's left edge
      * @param y         the box's top edge

@@ -47,8 +47,8 @@ public final class Polygon implements Shape {
      *
      * @param xy the vertices' coordinates, in pairs
      * @return the polygon, never null
-     * @throws IllegalArgumentException if there are fewer than 3 vertices, an odd number of
-     *                                  coordinates, a NaN or infinite value, a vertex equal to
+     * @throws IllegalArgumentException if {@code xy} is null, there are fewer than 3 vertices, an
+     *                                  odd number of coordinates, a NaN or infinite value, a vertex equal to
      *                                  the next one (or the last equal to the first), no area
      *                                  (all vertices on one line), or two edges that cross or
      *                                  touch; the message names the vertices or edges

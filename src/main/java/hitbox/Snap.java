@@ -55,6 +55,8 @@ public final class Snap {
      * float, the float just above it (a smaller y), so the rectangle never sinks into the
      * ground.
      *
+     * <p>A NaN in any argument answers NaN (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param h       the rectangle's height
      * @param groundY the ground line's y
      * @return {@code groundY - h}, or the float just above it: {@code y + h} never passes
@@ -69,6 +71,8 @@ public final class Snap {
      * Standing exactly on the ground counts, so a player that has landed stays on the ground
      * (and may jump) on the next frame.
      *
+     * <p>A NaN in any argument answers false (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param y       the rectangle's top edge
      * @param h       the rectangle's height
      * @param groundY the ground line's y
@@ -81,6 +85,9 @@ public final class Snap {
     /**
      * The rectangle's top edge after landing on the ground line: moved up to stand on it if it
      * has reached or sunk below it, and unchanged while it is above.
+     *
+     * <p>A NaN {@code y} answers NaN; a NaN size or ground hands {@code y} back unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param y       the rectangle's top edge
      * @param h       the rectangle's height
@@ -111,6 +118,8 @@ public final class Snap {
         /**
          * Makes a push result.
          *
+         * <p>Any position is taken, NaN included: a push is a plain carrier of an answer.
+         *
          * @param x    the mover's new left edge
          * @param y    the mover's new top edge
          * @param side the side of the obstacle the mover touches, or {@link Side#NONE}
@@ -134,6 +143,8 @@ public final class Snap {
          * The horizontal speed after the push: 0 if it was heading into the wall it was
          * pushed out of, unchanged otherwise (sliding along a floor keeps its speed).
          *
+         * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+         *
          * @param vx the mover's horizontal speed
          * @return 0 for a speed into the hit wall, else {@code vx}
          */
@@ -145,6 +156,8 @@ public final class Snap {
          * The vertical speed after the push: 0 if it was heading into the top or bottom it was
          * pushed out of (falling onto a platform, or jumping into a ceiling), unchanged
          * otherwise.
+         *
+         * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
          *
          * @param vy the mover's vertical speed (down is positive)
          * @return 0 for a speed into the hit side, else {@code vy}
@@ -173,6 +186,9 @@ public final class Snap {
      * shortest wins. Ties go in the order {@link Side#TOP}, {@link Side#BOTTOM},
      * {@link Side#LEFT}, {@link Side#RIGHT}: vertical before horizontal, so a player that
      * lands exactly on a corner lands instead of being pushed off sideways.
+     *
+     * <p>A NaN in any argument gives no push: the side is {@link Side#NONE} and the position
+     * comes back unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x  the mover's left edge
      * @param y  the mover's top edge
@@ -224,6 +240,9 @@ public final class Snap {
      * <p>The speed is trusted: if the mover was already overlapping before this frame's move,
      * the answer is still the side it would have come through moving this way.
      *
+     * <p>A NaN in any argument gives no push: the side is {@link Side#NONE} and the position
+     * comes back unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param x  the mover's left edge, after this frame's move
      * @param y  the mover's top edge, after this frame's move
      * @param w  the mover's width
@@ -265,6 +284,9 @@ public final class Snap {
     /**
      * Pushes the mover back out through the side it came in by; see
      * {@link #pushBack(float, float, float, float, float, float, float, float, float, float)}.
+     *
+     * <p>A NaN speed gives no push: the side is {@link Side#NONE} and the position comes back
+     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover    the rectangle to push, after this frame's move, not null
      * @param vx       the horizontal speed of this frame's move

@@ -37,6 +37,9 @@ public record Vec(float x, float y) {
     }
 
     /**
+     *
+     * <p>A NaN {@code k} gives NaN parts: a vector is a plain value and takes any float.
+     *
      * @param k the factor
      * @return this vector scaled by k, never null
      */

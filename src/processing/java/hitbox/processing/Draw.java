@@ -74,6 +74,8 @@ public final class Draw {
     /**
      * Draws an arrow from (x, y) along (dx, dy), for normals and velocities.
      *
+     * <p>Nothing is checked: a NaN coordinate is handed to Processing as it is.
+     *
      * @param g  where to draw
      * @param x  the tail's x
      * @param y  the tail's y

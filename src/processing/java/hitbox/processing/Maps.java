@@ -22,11 +22,13 @@ public final class Maps {
      * {@link Grid#fromPixels}, which this calls with the image's pixels. An image without
      * alpha (format {@code RGB}) counts as opaque, as Processing draws it.
      *
+     * <p>A NaN or infinite {@code cellSize} throws, naming it, as {@link Grid#Grid(int, int, float)} does.
+     *
      * @param image         the picture, as {@code loadImage} returns it
      * @param pixelsPerCell how many pixels across (and down) one cell is drawn, 1 or more
      * @param colors        which colour is which terrain
      * @param cellSize      a cell's width and height in the grid, in pixels, more than 0
-     * @return a new grid, one cell per block of pixels
+     * @return a new grid, one cell per block of pixels, never null
      * @throws IllegalArgumentException if the image is null (loadImage did not find or could
      *                                  not read the file) or not loaded, or the picture is not
      *                                  a map the key can read; the message says what and where
@@ -61,7 +63,7 @@ public final class Maps {
      * @param grid          the map
      * @param pixelsPerCell how many pixels across (and down) to draw each cell, 1 or more
      * @param colors        which colour is which terrain; every terrain of the map needs one
-     * @return a new image
+     * @return a new image, never null
      * @throws IllegalArgumentException if an argument is null, {@code pixelsPerCell} is less
      *                                  than 1 or the picture would be too big, or the key has
      *                                  no colour for a terrain of the map

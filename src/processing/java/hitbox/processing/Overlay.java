@@ -30,8 +30,10 @@ public final class Overlay {
     /**
      * Writes a number as the overlay does: one decimal, a dot whatever the locale.
      *
+     * <p>A NaN is written {@code "NaN"}, an infinity {@code "Infinity"}.
+     *
      * @param v the number
-     * @return e.g. "150.0"
+     * @return e.g. "150.0", never null
      */
     public static String number(float v) {
         return String.format(Locale.ROOT, "%.1f", v);
@@ -43,11 +45,13 @@ public final class Overlay {
      * <p>Two different numbers that one decimal would show as equal ("100.0 &lt; 100.0") get
      * more decimals, so the text never looks like it contradicts the answer.
      *
+     * <p>A NaN value is written {@code "NaN"}.
+     *
      * @param left   the left side's value
      * @param op     the operator, e.g. "&lt;"
      * @param right  the right side's value
      * @param result whether the comparison is true
-     * @return the sentence
+     * @return the sentence, never null
      */
     public static String comparison(float left, String op, float right, boolean result) {
         return sides(left, op, right) + ": " + (result ? "true" : "false");
@@ -58,11 +62,13 @@ public final class Overlay {
      * holds, {@code "264.0 < 100.0 is false: not colliding"} when it does not, so the line
      * always reads as a true statement.
      *
+     * <p>A NaN value is written {@code "NaN"}.
+     *
      * @param left      the left side's value
      * @param op        the operator
      * @param right     the right side's value
      * @param colliding the test's answer
-     * @return the sentence
+     * @return the sentence, never null
      */
     public static String verdict(float left, String op, float right, boolean colliding) {
         return sides(left, op, right) + (colliding ? ": colliding" : " is false: not colliding");
@@ -82,6 +88,8 @@ public final class Overlay {
 
     /**
      * Draws text on a dark box with its top-left at (x, y), kept inside the window.
+     *
+     * <p>Nothing is checked: a NaN coordinate is handed to Processing as it is.
      *
      * @param g      where to draw
      * @param x      the box's left
@@ -117,6 +125,8 @@ public final class Overlay {
      * Draws text on a dark box centred on (x, y), kept inside the window: for a label that
      * belongs beside an edge or over a line, whatever its length.
      *
+     * <p>Nothing is checked: a NaN coordinate is handed to Processing as it is.
+     *
      * @param g      where to draw
      * @param x      the box's centre x
      * @param y      the box's centre y
@@ -132,6 +142,8 @@ public final class Overlay {
      * (dx, dy) points to, whatever the text's length: for a label beside a line (give the
      * line's sideways direction) or outside an edge (give the edge's outward direction).
      * A zero direction centres the box on the point. The box is kept inside the window.
+     *
+     * <p>Nothing is checked: a NaN coordinate is handed to Processing as it is.
      *
      * @param g      where to draw
      * @param x      the point's x
@@ -171,6 +183,8 @@ public final class Overlay {
     /**
      * Draws a label in the overlay's plain text colour.
      *
+     * <p>Nothing is checked: a NaN coordinate is handed to Processing as it is.
+     *
      * @param g    where to draw
      * @param x    the box's left
      * @param y    the box's top
@@ -183,6 +197,8 @@ public final class Overlay {
     /**
      * Draws a guide line (dashed) between two points with its length written at its middle:
      * the distance a circle test compares.
+     *
+     * <p>Nothing is checked: a NaN coordinate is handed to Processing as it is.
      *
      * @param g  where to draw
      * @param x1 one end's x
@@ -203,6 +219,8 @@ public final class Overlay {
      * centre. The bar is set 12 pixels to the side {@code (-dy, dx)} of the direction, so it
      * does not hide a distance line drawn from the same centre; two circles that draw their
      * radii towards each other get them on opposite sides.
+     *
+     * <p>Nothing is checked: a NaN coordinate is handed to Processing as it is.
      *
      * @param g    where to draw
      * @param cx   the circle's centre x
@@ -237,6 +255,8 @@ public final class Overlay {
 
     /**
      * Draws a dashed guide line.
+     *
+     * <p>Nothing is checked: a NaN coordinate is handed to Processing as it is.
      *
      * @param g  where to draw
      * @param x1 one end's x
