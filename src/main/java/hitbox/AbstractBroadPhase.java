@@ -13,6 +13,11 @@ import java.util.function.IntConsumer;
  * bottom edges stored as {@code (double) x + w}, the very sums rectRect makes, so the answers
  * are the same to the last bit. A box is kept as four doubles side by side, {@code x, right,
  * y, bottom} (see {@link #box}): one array read in order is what makes the tight loops fast.
+ *
+ * <p>This class is longer than most (about 500 lines) because everything here works on the
+ * same slot arrays and checks: storing and reading the boxes, the argument checks, the one
+ * exact test, the shape queries and the ray casts. Splitting the ray or shape machinery out
+ * would hand those arrays to another class for the sake of a line count.
  */
 abstract class AbstractBroadPhase implements BroadPhase {
 

@@ -991,7 +991,8 @@ public final class Collide {
      * within rounding of the outline.
      *
      * <p>A NaN in any argument answers false, and so does a negative radius; a mode other
-     * than 1 or 2 is read as {@code PIE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * than 1 or 2 is read as {@code PIE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y

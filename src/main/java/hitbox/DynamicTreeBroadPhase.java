@@ -34,6 +34,11 @@ import java.util.function.IntConsumer;
  * there are boxes, the next pairs() renumbers every node in depth-first order (into a second
  * set of arrays, swapped in), so that a subtree, and the leaves next to each other in space,
  * are next to each other in memory.
+ *
+ * <p>This class is longer than most (about 580 lines) because it is one data structure: the
+ * tree's insertion, removal and rotations, the candidate list and the renumbering all read
+ * and write the same flat node arrays, and are best read side by side with Box2D's
+ * {@code b2DynamicTree}, which keeps them in one file too.
  */
 final class DynamicTreeBroadPhase extends AbstractBroadPhase {
     /** Pixels added on each side of a leaf's box (Box2D: 0.1 m, about 2 to 3 pixels at its usual scale). */

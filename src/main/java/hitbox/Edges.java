@@ -49,7 +49,8 @@ public final class Edges {
     /**
      * Has the point gone past a window edge? A point exactly on an edge has not.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param px     the point's x
      * @param py     the point's y
@@ -68,7 +69,8 @@ public final class Edges {
      * {@code x < r || x > width - r}, for each edge, so the ball turns before it is half out; a circle touching an edge has not crossed
      * it.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx     the circle's centre x
      * @param cy     the circle's centre y
@@ -86,7 +88,8 @@ public final class Edges {
      * Which window edges has the rectangle crossed? A rectangle touching an edge has not
      * crossed it.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x      the rectangle's left edge
      * @param y      the rectangle's top edge
@@ -105,7 +108,8 @@ public final class Edges {
      * Which window edges has the shape crossed? A circle is tested as a circle; any other
      * shape by its {@link Shape#bounds() bounds}, which reach exactly as far as the shape.
      *
-     * <p>A NaN window size answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>); a shape never holds NaN.
+     * <p>A NaN window size answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>); a shape never holds NaN.
      *
      * @param shape  the shape, not null
      * @param width  the window's width
@@ -181,7 +185,8 @@ public final class Edges {
      * wider than the window crosses both sides at once and has no inside direction; its speed
      * is left as it is.
      *
-     * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN speed comes back NaN, unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param crossed the edges from one of the crossing tests
      * @param vx      the horizontal speed
@@ -198,7 +203,8 @@ public final class Edges {
      * unchanged otherwise. See {@link #bounceX} for why this sets the direction instead of
      * flipping it.
      *
-     * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN speed comes back NaN, unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param crossed the edges from one of the crossing tests
      * @param vy      the vertical speed (down is positive)

@@ -69,7 +69,8 @@ public final class Grid {
     /**
      * Makes an empty grid: every cell {@link #EMPTY}.
      *
-     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN or infinite {@code float} argument throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cols       the number of columns, 1 or more
      * @param rows       the number of rows, 1 or more
@@ -100,7 +101,8 @@ public final class Grid {
     /**
      * Makes an empty grid of square cells: every cell {@link #EMPTY}.
      *
-     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN or infinite {@code float} argument throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cols     the number of columns, 1 or more
      * @param rows     the number of rows, 1 or more
@@ -136,7 +138,8 @@ public final class Grid {
      * Reads a map from text, with square cells; see {@link #parse(String, float, float)} for
      * the format.
      *
-     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN or infinite {@code float} argument throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param map      the map, one line per row
      * @param cellSize a cell's width and height in pixels, more than 0
@@ -163,7 +166,8 @@ public final class Grid {
      * a row, and all rows must have the same width. Prefer {@code '.'} to spaces at the end of
      * a row: editors and text blocks often strip trailing spaces.
      *
-     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN or infinite {@code float} argument throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param map        the map, one line per row
      * @param cellWidth  a cell's width in pixels, more than 0
@@ -374,7 +378,8 @@ public final class Grid {
      * {@link #EMPTY}; see {@link #fillRandom(float, long, int, int)}, which also keeps a start
      * cell free.
      *
-     * <p>A NaN {@code fraction} throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN {@code fraction} throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
      * @param seed     the random seed: the same seed gives the same grid
@@ -398,7 +403,8 @@ public final class Grid {
      * e.g. {@code new Grid(20, 20, cellSize).fillRandom(0.2f, seed, 0, 0)}: 80 solid cells,
      * the top-left one kept free.
      *
-     * <p>A NaN {@code fraction} throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN {@code fraction} throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
      * @param seed     the random seed: the same seed gives the same grid
@@ -795,7 +801,8 @@ public final class Grid {
      * cell, and its colour says the cell's terrain through the key. With a PImage, use
      * {@code hitbox.processing.Maps.fromImage}.
      *
-     * <p>A NaN or infinite {@code float} argument throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN or infinite {@code float} argument throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param pixels        the picture's colours, ARGB, row by row from the top-left (a
      *                      {@code PImage}'s {@code pixels} after {@code loadPixels()})

@@ -30,6 +30,11 @@ import java.util.function.IntConsumer;
  * the two or three cells per axis of level M it can reach, or each level-M box looks up the
  * cells of level L it covers, whichever looks up fewer; a level is scanned whole when that is
  * cheaper still.
+ *
+ * <p>This class is longer than most (about 590 lines) because it is one data structure: the
+ * rebuild, the choice of cell size, the dense and hashed levels and the lookups all share the
+ * same bucket and entry arrays; the cell arithmetic they rest on is already apart, in
+ * {@link Lattice}.
  */
 final class HashGridBroadPhase extends AbstractBroadPhase {
     private static final int LEVELS = 63;

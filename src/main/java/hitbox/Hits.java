@@ -34,6 +34,12 @@ import java.util.function.IntConsumer;
  * during {@code each}: collect the indices with {@code all} first, then remove from the last.
  * Every question has one implementation, on a list; the array overloads hand a view of the
  * array to it.
+ *
+ * <p>This class is longer than most (about 510 lines) because it is the public face of five
+ * questions for three kinds of obstacle list (shapes, raw rectangles, a broad phase), in list
+ * and array forms, each overload with its full javadoc; each answer is a few lines, every
+ * array overload hands a view to the list one, and the broad-phase work is in
+ * {@code BroadPhaseHits}.
  */
 public final class Hits {
     private Hits() {
@@ -225,7 +231,8 @@ public final class Hits {
     /**
      * How many of the rects the rectangle overlaps.
      *
-     * <p>A NaN in any argument answers 0 (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers 0
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
@@ -246,7 +253,8 @@ public final class Hits {
     /**
      * The indices of all the rects that the rectangle overlaps, in order.
      *
-     * <p>A NaN in any argument answers an empty array (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers an empty array
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
@@ -266,7 +274,8 @@ public final class Hits {
      * Calls {@code action} with the index of each of the rects that the rectangle overlaps,
      * in order, allocating nothing.
      *
-     * <p>A NaN in any argument finds nothing: {@code action} is not called (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument finds nothing: {@code action} is not called
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x      the rectangle's left edge
      * @param y      the rectangle's top edge
@@ -331,7 +340,8 @@ public final class Hits {
      * How many of the rects the rectangle overlaps; see
      * {@link #count(float, float, float, float, List)}.
      *
-     * <p>A NaN in any argument answers 0 (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers 0
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
@@ -349,7 +359,8 @@ public final class Hits {
      * The indices of all the rects that the rectangle overlaps, in order; see
      * {@link #all(float, float, float, float, List)}.
      *
-     * <p>A NaN in any argument answers an empty array (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers an empty array
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x     the rectangle's left edge
      * @param y     the rectangle's top edge
@@ -367,7 +378,8 @@ public final class Hits {
      * Calls {@code action} with the index of each of the rects that the rectangle overlaps,
      * in order; see {@link #each(float, float, float, float, List, IntConsumer)}.
      *
-     * <p>A NaN in any argument finds nothing: {@code action} is not called (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument finds nothing: {@code action} is not called
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x      the rectangle's left edge
      * @param y      the rectangle's top edge
@@ -436,7 +448,8 @@ public final class Hits {
     /**
      * How many boxes of the broad phase the rectangle overlaps.
      *
-     * <p>A NaN in any argument answers 0 (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers 0
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the rectangle's left edge
      * @param y         the rectangle's top edge
@@ -453,7 +466,8 @@ public final class Hits {
     /**
      * The ids of all the boxes of the broad phase that the rectangle overlaps.
      *
-     * <p>A NaN in any argument answers an empty array (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers an empty array
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the rectangle's left edge
      * @param y         the rectangle's top edge
@@ -471,7 +485,8 @@ public final class Hits {
      * Calls {@code action} with the id of each box of the broad phase that the rectangle
      * overlaps, ascending.
      *
-     * <p>A NaN in any argument finds nothing: {@code action} is not called (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument finds nothing: {@code action} is not called
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the rectangle's left edge
      * @param y         the rectangle's top edge

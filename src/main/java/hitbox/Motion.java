@@ -45,6 +45,12 @@ import java.util.List;
  * a blocked axis sets the bits of both its sides ({@link #X} is {@code LEFT | RIGHT}, {@link #Y}
  * is {@code TOP | BOTTOM}), since the next-position check knows the axis, not which face;
  * {@code Motion.has(blocked, Motion.X)} and {@code Side.has(blocked, Side.LEFT)} both read it.
+ *
+ * <p>This class is longer than most (about 570 lines) because it is the public face of
+ * "which axes are blocked" for a box and a ball, against one obstacle, an array, a list and a
+ * broad phase, on raw floats and on shapes, each overload with its full javadoc; the code
+ * behind them is two small tests and one bounce step (the broad-phase work is in
+ * {@code BroadPhaseHits}).
  */
 public final class Motion {
     private Motion() {
@@ -73,7 +79,8 @@ public final class Motion {
      * {@code (x, y + vy)} would, and {@link #BOTH} for a diagonal hit on a corner (see the
      * class description).
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x  the mover's left edge
      * @param y  the mover's top edge
@@ -106,7 +113,8 @@ public final class Motion {
      * Which axes of a moving rectangle's next move would run into the obstacle? See
      * {@link #rectBlocked(float, float, float, float, float, float, float, float, float, float)}.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x        the mover's left edge
      * @param y        the mover's top edge
@@ -127,7 +135,8 @@ public final class Motion {
      * Which axes of a moving rectangle's next move would run into any of the obstacles: the
      * OR of the answers for each one.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the mover's left edge
      * @param y         the mover's top edge
@@ -147,7 +156,8 @@ public final class Motion {
      * Which axes of a moving rectangle's next move would run into any of the obstacles: the
      * OR of the answers for each one.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the mover's left edge
      * @param y         the mover's top edge
@@ -176,7 +186,8 @@ public final class Motion {
      * the circle centred at {@code (cx, cy + vy)} would, and {@link #BOTH} for a diagonal hit
      * (see the class description).
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx the mover's centre x
      * @param cy the mover's centre y
@@ -208,7 +219,8 @@ public final class Motion {
      * Which axes of a moving circle's next move would run into the obstacle? See
      * {@link #circleBlocked(float, float, float, float, float, float, float, float, float)}.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx       the mover's centre x
      * @param cy       the mover's centre y
@@ -228,7 +240,8 @@ public final class Motion {
      * Which axes of a moving circle's next move would run into any of the obstacles: the OR
      * of the answers for each one.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx        the mover's centre x
      * @param cy        the mover's centre y
@@ -247,7 +260,8 @@ public final class Motion {
      * Which axes of a moving circle's next move would run into any of the obstacles: the OR
      * of the answers for each one.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx        the mover's centre x
      * @param cy        the mover's centre y
@@ -273,7 +287,8 @@ public final class Motion {
      * Which axes of the rectangle's next move would run into the obstacle? Same as
      * {@link #rectBlocked(float, float, float, float, float, float, Rect)}.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover    the moving rectangle, not null
      * @param vx       its horizontal speed
@@ -291,7 +306,8 @@ public final class Motion {
      * Which axes of the rectangle's next move would run into any of the obstacles? Same as
      * {@link #rectBlocked(float, float, float, float, float, float, Rect[])}.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover     the moving rectangle, not null
      * @param vx        its horizontal speed
@@ -310,7 +326,8 @@ public final class Motion {
      * Which axes of the rectangle's next move would run into any of the obstacles? Same as
      * {@link #rectBlocked(float, float, float, float, float, float, List)}.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover     the moving rectangle, not null
      * @param vx        its horizontal speed
@@ -329,7 +346,8 @@ public final class Motion {
      * Which axes of the circle's next move would run into the obstacle? Same as
      * {@link #circleBlocked(float, float, float, float, float, Rect)}.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover    the moving circle, not null
      * @param vx       its horizontal speed
@@ -347,7 +365,8 @@ public final class Motion {
      * Which axes of the circle's next move would run into any of the obstacles? Same as
      * {@link #circleBlocked(float, float, float, float, float, Rect[])}.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover     the moving circle, not null
      * @param vx        its horizontal speed
@@ -366,7 +385,8 @@ public final class Motion {
      * Which axes of the circle's next move would run into any of the obstacles? Same as
      * {@link #circleBlocked(float, float, float, float, float, List)}.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param mover     the moving circle, not null
      * @param vx        its horizontal speed
@@ -398,7 +418,8 @@ public final class Motion {
      * The horizontal speed to use this frame: reversed if the {@link #X} axis is blocked,
      * unchanged otherwise.
      *
-     * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN speed comes back NaN, unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param blocked the axes from one of the checks
      * @param vx      the horizontal speed
@@ -412,7 +433,8 @@ public final class Motion {
      * The vertical speed to use this frame: reversed if the {@link #Y} axis is blocked,
      * unchanged otherwise.
      *
-     * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN speed comes back NaN, unchanged
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param blocked the axes from one of the checks
      * @param vy      the vertical speed
@@ -474,7 +496,8 @@ public final class Motion {
      * the same answer as {@link #rectBlocked(float, float, float, float, float, float, List)}
      * over the same boxes, asking only the ones near the move.
      *
-     * <p>A NaN in any argument answers {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers {@link #NONE}
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the mover's left edge
      * @param y         the mover's top edge

@@ -21,6 +21,11 @@ import java.util.function.IntConsumer;
  * tree below, and each pair of neighbouring subtrees of the same level against each other. A
  * box and a node can only hold overlapping boxes if the node's cell is within one of the box's
  * cells at that level, by the Lattice argument, so subtrees are skipped by integer tests.
+ *
+ * <p>This class is longer than most (about 600 lines) because it is one data structure: the
+ * placing, splitting and merging of nodes and the walks for pairs, boxes and rays all share
+ * the same node arrays and slot links; the cell arithmetic they rest on is already apart, in
+ * {@link Lattice}.
  */
 final class QuadtreeBroadPhase extends AbstractBroadPhase {
     /** A node holding more boxes than this divides. */

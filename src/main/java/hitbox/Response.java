@@ -107,7 +107,8 @@ public final class Response {
      * Shape a pushed out of b by its share of the depth (see
      * {@link #pushOutA(float, float, Contact, float)}).
      *
-     * <p>A NaN {@code share} throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN {@code share} throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param <S>     the kind of shape
      * @param a       the first shape of the contact, not null
@@ -140,7 +141,8 @@ public final class Response {
      * Shape b pushed out of a by its share of the depth (see
      * {@link #pushOutA(float, float, Contact, float)}).
      *
-     * <p>A NaN {@code share} throws, naming it (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN {@code share} throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param <S>     the kind of shape
      * @param b       the second shape of the contact, not null

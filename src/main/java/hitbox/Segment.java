@@ -59,7 +59,8 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
      * Which side of this segment's line is the point on, walking from the first end to the
      * second? Same as {@link Collide#lineSide}.
      *
-     * <p>A NaN in any argument answers 0 (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers 0
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param px the point's x
      * @param py the point's y

@@ -42,7 +42,8 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * Is the point in this shape? For shapes with area the outline does not count; for a
      * segment, a point on it counts.
      *
-     * <p>A NaN in any argument answers false (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x the point's x
      * @param y the point's y

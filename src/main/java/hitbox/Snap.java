@@ -55,7 +55,8 @@ public final class Snap {
      * float, the float just above it (a smaller y), so the rectangle never sinks into the
      * ground.
      *
-     * <p>A NaN in any argument answers NaN (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers NaN
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param h       the rectangle's height
      * @param groundY the ground line's y
@@ -71,7 +72,8 @@ public final class Snap {
      * Standing exactly on the ground counts, so a player that has landed stays on the ground
      * (and may jump) on the next frame.
      *
-     * <p>A NaN in any argument answers false (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param y       the rectangle's top edge
      * @param h       the rectangle's height
@@ -143,7 +145,8 @@ public final class Snap {
          * The horizontal speed after the push: 0 if it was heading into the wall it was
          * pushed out of, unchanged otherwise (sliding along a floor keeps its speed).
          *
-         * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+         * <p>A NaN speed comes back NaN, unchanged
+         * (the <a href="package-summary.html#bad-input">NaN rule</a>).
          *
          * @param vx the mover's horizontal speed
          * @return 0 for a speed into the hit wall, else {@code vx}
@@ -157,7 +160,8 @@ public final class Snap {
          * pushed out of (falling onto a platform, or jumping into a ceiling), unchanged
          * otherwise.
          *
-         * <p>A NaN speed comes back NaN, unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
+         * <p>A NaN speed comes back NaN, unchanged
+         * (the <a href="package-summary.html#bad-input">NaN rule</a>).
          *
          * @param vy the mover's vertical speed (down is positive)
          * @return 0 for a speed into the hit side, else {@code vy}
