@@ -304,7 +304,7 @@ public interface BroadPhase {
      * height 0, is not hit).
      *
      * <p>A NaN or infinite origin or direction, or a NaN or negative {@code maxDistance}, throws
-     * and changes nothing (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param ox          the ray's origin x
      * @param oy          the ray's origin y

@@ -154,6 +154,8 @@ public final class Edges {
     /**
      * Is this edge among the crossed ones? Reads better than {@code (crossed & edge) != 0}.
      *
+     * <p>Any int is taken: bits outside the scheme are ignored.
+     *
      * @param crossed the edges from one of the crossing tests
      * @param edge    the edge to ask about: {@link #LEFT}, {@link #RIGHT}, {@link #TOP} or
      *                {@link #BOTTOM}
@@ -165,6 +167,8 @@ public final class Edges {
 
     /**
      * The crossed edges as words, for printing: {@code "LEFT|TOP"}, or {@code "NONE"}.
+     *
+     * <p>Any int is taken: bits outside the scheme are ignored.
      *
      * @param crossed the edges from one of the crossing tests
      * @return the names of the edges in {@code crossed}, joined by {@code |}, never null

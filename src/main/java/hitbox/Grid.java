@@ -365,6 +365,8 @@ public final class Grid {
     /**
      * Sets every cell to the same terrain.
      *
+     * <p>Any int is taken as a terrain number.
+     *
      * @param terrain the terrain number for every cell
      * @return this grid, for chaining, never null
      */
@@ -474,6 +476,8 @@ public final class Grid {
      * The x of the centre of a column's cells, in pixels: where to draw a player that stands in
      * that column.
      *
+     * <p>Any int is taken, inside the grid or not: the formula does not check it.
+     *
      * @param col the column
      * @return {@code (col + 0.5) * cellWidth()}
      */
@@ -483,6 +487,8 @@ public final class Grid {
 
     /**
      * The y of the centre of a row's cells, in pixels.
+     *
+     * <p>Any int is taken, inside the grid or not: the formula does not check it.
      *
      * @param row the row
      * @return {@code (row + 0.5) * cellHeight()}

@@ -406,6 +406,8 @@ public final class Motion {
     /**
      * Is this axis among the blocked ones? Reads better than {@code (blocked & axis) != 0}.
      *
+     * <p>Any int is taken: bits outside the scheme are ignored.
+     *
      * @param blocked the axes from one of the checks
      * @param axis    {@link #X} or {@link #Y}
      * @return true if {@code blocked} includes {@code axis}
@@ -447,6 +449,8 @@ public final class Motion {
     /**
      * The blocked axes as words, for printing: {@code "NONE"}, {@code "X"}, {@code "Y"} or
      * {@code "BOTH"}.
+     *
+     * <p>Any int is taken: bits outside the scheme are ignored.
      *
      * @param blocked the axes from one of the checks
      * @return the name of the answer, never null

@@ -156,6 +156,8 @@ public enum Side {
      * The sides of a bit set, as a set: LEFT, RIGHT, TOP and BOTTOM for their bits. Bits that
      * name no side are ignored.
      *
+     * <p>Any int is taken: bits outside the scheme are ignored.
+     *
      * @param sides the sides, in the <a href="#bits">bit scheme</a>
      * @return a new modifiable set; empty (never holding {@link #NONE}) when no bit is set, never null
      */
@@ -171,6 +173,8 @@ public enum Side {
 
     /**
      * The sides of a bit set as words, for printing: {@code "LEFT|TOP"}, or {@code "NONE"}.
+     *
+     * <p>Any int is taken: bits outside the scheme are ignored.
      *
      * @param sides the sides, in the <a href="#bits">bit scheme</a>
      * @return the names, in the order LEFT, RIGHT, TOP, BOTTOM, joined by {@code |}, never null

@@ -22,7 +22,7 @@ public final class Maps {
      * {@link Grid#fromPixels}, which this calls with the image's pixels. An image without
      * alpha (format {@code RGB}) counts as opaque, as Processing draws it.
      *
-     * <p>A NaN or infinite {@code cellSize} throws, naming it, as {@link Grid#Grid(int, int, float)} does.
+     * <p>A NaN or infinite {@code cellSize} throws, naming it, as {@link Grid#fromPixels} does.
      *
      * @param image         the picture, as {@code loadImage} returns it
      * @param pixelsPerCell how many pixels across (and down) one cell is drawn, 1 or more
