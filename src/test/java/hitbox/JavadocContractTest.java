@@ -24,6 +24,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
@@ -48,7 +49,10 @@ import org.junit.jupiter.api.Test;
  * signature:
  * <ul>
  *   <li>a {@code float}, {@code double} or {@code float[]} parameter: the doc says
- *       "NaN" (what a NaN argument does, or that it throws);</li>
+ *       "NaN" (what a NaN argument does, or that it throws); for a method on plain floats,
+ *       a sentence about NaN gives the answer the catalog pins for it (its
+ *       {@code NAN_ANSWER}, or false, 0 / NONE, -1, empty, null, +Infinity by return
+ *       type);</li>
  *   <li>a parameter of a class type ({@code hitbox} only, where the bad-input catalog pins
  *       that every such method refuses null): an {@code @throws IllegalArgumentException}
  *       that mentions null;</li>
@@ -97,7 +101,7 @@ class JavadocContractTest {
 
     @Test
     void everyPublicMethodAndConstructor_statesItsNanRangeAndNoResultBehaviour() {
-        List<String> problems = problems(parse(sources()), checkedTable());
+        List<String> problems = problems(parse(sources()), Catalog.read());
         assertTrue(problems.isEmpty(), problems.size() + " public members do not state their contract:\n"
                 + String.join("\n", problems));
     }
@@ -113,8 +117,9 @@ class JavadocContractTest {
         // Guards against a rule that passes by reading nothing.
         List<CompilationUnitTree> units = parse(sources()).units;
         assertTrue(units.size() > 60, "found " + units.size() + " source files");
-        Set<String> checked = checkedTable();
-        assertTrue(checked.contains("Polygon.of") && checked.size() > 20, "CHECKED: " + checked);
+        Catalog catalog = Catalog.read();
+        assertTrue(catalog.checked.contains("Polygon.of") && catalog.checked.size() > 20, "CHECKED: " + catalog.checked);
+        assertEquals("false", catalog.nanAnswers.get("Rect.contains"), "NAN_ANSWER: " + catalog.nanAnswers);
     }
 
     // ------------------------------------------------------------------ the rules catch what they should
@@ -162,6 +167,18 @@ class JavadocContractTest {
                      * @throws IllegalArgumentException if s is null
                      */
                     public Hit good(float x, Shape s) { return null; }
+                    /**
+                     * A NaN throws.
+                     * @param x a position
+                     * @return whether it touches
+                     */
+                    public static boolean touches(float x) { return false; }
+                    /**
+                     * A NaN answers 0 (the catalog's NAN_ANSWER).
+                     * @param x a position
+                     * @return the side
+                     */
+                    public static int side(float x) { return 0; }
                     /** Not public: not checked. @return x */
                     Hit hidden(float x) { return null; }
                     /** {@inheritDoc} */
@@ -169,7 +186,8 @@ class JavadocContractTest {
                     public String toString() { return ""; }
                 }
                 """;
-        List<String> problems = problems(parse(List.of(new Source("Fixture.java", source))), Set.of("Fixture.tiles"));
+        List<String> problems = problems(parse(List.of(new Source("Fixture.java", source))),
+                new Catalog(Set.of("Fixture.tiles"), Map.of("Fixture.side", "0")));
         assertEquals(List.of(
                 "Fixture#Fixture(float r): no NaN statement (it takes a float/double/float[])",
                 "Fixture#Fixture(float r): no @throws IllegalArgumentException (it checks its arguments)",
@@ -179,7 +197,8 @@ class JavadocContractTest {
                 "Fixture#timeOfImpact(float vx): no NaN statement (it takes a float/double/float[])",
                 "Fixture#timeOfImpact(float vx): no no-result statement in @return (Infinity, for a time or distance)",
                 "Fixture#firstIndex(): no no-result statement in @return (-1, for an index)",
-                "Fixture#tiles(int k): no @throws IllegalArgumentException (it checks its arguments)"),
+                "Fixture#tiles(int k): no @throws IllegalArgumentException (it checks its arguments)",
+                "Fixture#touches(float x): its NaN statement does not give the catalog's answer (false)"),
                 problems);
     }
 
@@ -195,7 +214,7 @@ class JavadocContractTest {
                 """;
         assertEquals(List.of("Pair#Pair(float x): no NaN statement (it takes a float/double/float[])",
                         "Pair#Pair(float x): no @throws IllegalArgumentException (it checks its arguments)"),
-                problems(parse(List.of(new Source("Pair.java", source))), Set.of()));
+                problems(parse(List.of(new Source("Pair.java", source))), new Catalog(Set.of(), Map.of())));
     }
 
     @Test
@@ -212,7 +231,7 @@ class JavadocContractTest {
     // ------------------------------------------------------------------ the checks
 
     /** One rule per line: "Class#method(params): what is missing". */
-    private static List<String> problems(Parsed parsed, Set<String> checkedTable) {
+    private static List<String> problems(Parsed parsed, Catalog catalog) {
         List<String> out = new ArrayList<>();
         for (CompilationUnitTree unit : parsed.units) {
             boolean core = unit.getPackageName() != null && unit.getPackageName().toString().equals("hitbox");
@@ -240,13 +259,13 @@ class JavadocContractTest {
                             }
                             Doc doc = Doc.of(parsed.docs, new TreePath(getCurrentPath(), m));
                             check(out, name, c, m.getName().toString(), m.getParameters(), m.getReturnType(),
-                                    doc, core, checkedTable);
+                                    doc, core, catalog);
                         }
                     }
                     if (c.getKind() == Tree.Kind.RECORD && !explicitCanonical && !recordComponents(c).isEmpty()) {
                         // The implicit canonical constructor: its contract is the record's own doc.
                         check(out, name, c, "<init>", recordComponents(c), null, Doc.of(parsed.docs, getCurrentPath()),
-                                core, checkedTable);
+                                core, catalog);
                     }
                     return super.visitClass(c, name);
                 }
@@ -256,7 +275,7 @@ class JavadocContractTest {
     }
 
     private static void check(List<String> out, String owner, ClassTree c, String method,
-            List<? extends VariableTree> params, Tree returns, Doc doc, boolean core, Set<String> checkedTable) {
+            List<? extends VariableTree> params, Tree returns, Doc doc, boolean core, Catalog catalog) {
         boolean ctor = method.equals("<init>");
         String simple = owner.substring(owner.lastIndexOf('.') + 1);
         String where = owner + "#" + (ctor ? simple : method) + "(" + params.stream()
@@ -275,7 +294,7 @@ class JavadocContractTest {
         // The catalog calls a constructor checked when it is not a carrier's; with only int
         // parameters (a pixel's column and row) there is nothing for it to refuse.
         boolean checked = ctor && (floats || objects) && !CARRIERS.contains(owner) && c.getKind() != Tree.Kind.ENUM
-                || !params.isEmpty() && checkedTable.contains(key)
+                || !params.isEmpty() && catalog.checked.contains(key)
                 || objects && CHECKS_OBJECT_CALLS.contains(owner);
         if (checked && !throwsIae) {
             out.add(where + ": no @throws IllegalArgumentException (it checks its arguments)");
@@ -286,6 +305,14 @@ class JavadocContractTest {
             return;
         }
         String type = returns.toString();
+        if (core && floats && !checked && NAN.matcher(doc.all).find()) {
+            // The NaN statement gives the answer the bad-input catalog pins for a NaN.
+            Pattern want = nanAnswer(catalog.nanAnswers.get(key), owner, method, type);
+            if (want != null && nanSentences(doc.all).stream().noneMatch(t -> want.matcher(t).find())) {
+                out.add(where + ": its NaN statement does not give the catalog's answer ("
+                        + want.pattern().replace("\\b", "") + ")");
+            }
+        }
         if (!isPrimitive(type) && !type.equals("void")) {
             boolean said = NULL.matcher(doc.returns).find() || type.equals("Side") && NONE.matcher(doc.returns).find();
             if (!said) {
@@ -367,15 +394,61 @@ class JavadocContractTest {
         return true;
     }
 
-    /** The catalog's table of checked methods, read rather than copied, so the two cannot drift apart. */
-    @SuppressWarnings("unchecked")
-    private static Set<String> checkedTable() {
-        try {
-            Field f = BadInputCatalogTest.class.getDeclaredField("CHECKED");
-            f.setAccessible(true);
-            return (Set<String>) f.get(null);
-        } catch (ReflectiveOperationException ex) {
-            throw new AssertionError("BadInputCatalogTest.CHECKED is gone", ex);
+    /**
+     * What a NaN statement must say, as a pattern: the catalog's answer for the method
+     * ({@code NAN_ANSWER}), or the default it checks for the return type; null where the
+     * catalog pins nothing but "does not throw".
+     */
+    private static Pattern nanAnswer(String listed, String owner, String method, String type) {
+        if (listed != null) {
+            return switch (listed) {
+                case "0" -> Pattern.compile("\\b0\\b|NONE");
+                case "-1" -> MINUS_ONE;
+                case "false" -> Pattern.compile("\\bfalse\\b");
+                case "NONE" -> NONE;
+                case "velocity" -> Pattern.compile("unchanged|back");
+                default -> null;  // "any"
+            };
+        }
+        return switch (type) {
+            case "boolean" -> Pattern.compile("\\bfalse\\b");
+            case "int" -> method.equals("first") ? MINUS_ONE : Pattern.compile("\\b0\\b|NONE");
+            case "int[]" -> Pattern.compile("\\bempty\\b");
+            case "float" -> method.startsWith("distanceTo") || owner.equals("Sweep") ? INFINITY : null;
+            case "Push", "Snap.Push" -> NONE;
+            case "Hit", "Contact", "RayHit" -> NULL;
+            default -> null;
+        };
+    }
+
+    /** The sentences (and block tags) of a doc comment that mention NaN. */
+    private static List<String> nanSentences(String doc) {
+        List<String> out = new ArrayList<>();
+        for (String part : doc.split("(?<=\\.)\\s+(?=[A-Z<{])|\\s(?=@\\w)")) {
+            if (NAN.matcher(part).find()) {
+                out.add(part);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * The bad-input catalog's tables, read rather than copied, so the two cannot drift apart:
+     * which methods check their arguments ({@code CHECKED}) and what a NaN answers where it is
+     * not the default for the return type ({@code NAN_ANSWER}).
+     */
+    private record Catalog(Set<String> checked, Map<String, String> nanAnswers) {
+        @SuppressWarnings("unchecked")
+        static Catalog read() {
+            try {
+                Field checked = BadInputCatalogTest.class.getDeclaredField("CHECKED");
+                Field answers = BadInputCatalogTest.class.getDeclaredField("NAN_ANSWER");
+                checked.setAccessible(true);
+                answers.setAccessible(true);
+                return new Catalog((Set<String>) checked.get(null), (Map<String, String>) answers.get(null));
+            } catch (ReflectiveOperationException ex) {
+                throw new AssertionError("BadInputCatalogTest's CHECKED or NAN_ANSWER table is gone", ex);
+            }
         }
     }
 
