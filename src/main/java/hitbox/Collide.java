@@ -16,7 +16,7 @@ package hitbox;
  * radius; rectangles are top-left corner, width and height (Processing's {@code CORNER}
  * mode).
  *
- * <p>This class is longer than most (about 970 lines): it is the whole table of tests, one
+ * <p>This class is longer than most (about 1,030 lines): it is the whole table of tests, one
  * public method per pair with its full javadoc (the ellipses and capsules included); the
  * polygon, ellipse and capsule maths is in package-private helpers ({@code Polygons},
  * {@code Ellipses}, {@code Capsules}).
@@ -31,8 +31,9 @@ public final class Collide {
      * <p>The tutorial's {@code dist(px, py, cx, cy) < r}, compared squared so no square root
      * is taken. A circle of radius 0 contains no point.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx the circle's centre x
      * @param cy the circle's centre y
@@ -54,8 +55,9 @@ public final class Collide {
      * a circle behaves as a point, so {@code circleCircle(x, y, 0, ...)} is
      * {@link #circlePoint}; two circles of radius 0 never collide.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the first circle's centre x
      * @param y1 the first circle's centre y
@@ -81,8 +83,9 @@ public final class Collide {
      * <p>The tutorial's {@code px > rx && px < rx + rw && py > ry && py < ry + rh}. A rectangle
      * of width or height 0 contains no point.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param rx the rectangle's left edge
      * @param ry the rectangle's top edge
@@ -104,8 +107,9 @@ public final class Collide {
      * without its ends) and collides with a real rectangle only when it reaches into its
      * inside; two flat rectangles collide only when they cross like a plus sign.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the first rectangle's left edge
      * @param y1 the first rectangle's top edge
@@ -132,8 +136,9 @@ public final class Collide {
      * centre into the rectangle), then test its distance against the radius. A circle of
      * radius 0 behaves as a point, so it collides only when strictly inside the rectangle.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx the circle's centre x
      * @param cy the circle's centre y
@@ -204,8 +209,8 @@ public final class Collide {
      * through is counted once; a corner it only touches, twice or not at all. A point on the
      * edge gives false ({@code polygonPoint} then says "outside").
      *
-     * <p>A NaN in any argument answers false
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false; infinite values are compared as the formula
+     * compares them (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param ax the edge's first end, x
      * @param ay the edge's first end, y
@@ -266,8 +271,8 @@ public final class Collide {
      * <p>Reference: T. Cormen, C. Leiserson, R. Rivest, C. Stein, Introduction to Algorithms,
      * section 33.1 (SEGMENTS-INTERSECT).
      *
-     * <p>A NaN in any argument answers false
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false; infinite values are compared as the formula
+     * compares them (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the first segment's first end x
      * @param y1 the first segment's first end y
@@ -300,8 +305,9 @@ public final class Collide {
      *
      * <p>Reference: J. Thompson, Collision Detection, "Line/Circle".
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the segment's first end x
      * @param y1 the segment's first end y
@@ -349,8 +355,9 @@ public final class Collide {
      * <p>Reference: C. Ericson, Real-Time Collision Detection (2005), section 5.2.1
      * (separating-axis test).
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the segment's first end x
      * @param y1 the segment's first end y
@@ -549,8 +556,8 @@ public final class Collide {
      * orientation signs, all positive or all negative (either winding). Exact, unlike the
      * common sum-of-areas recipe, which rounds. A flat triangle contains no point.
      *
-     * <p>A NaN in any argument answers false
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false; infinite values are compared as the formula
+     * compares them (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the first corner's x
      * @param y1 the first corner's y
@@ -582,8 +589,9 @@ public final class Collide {
      * divided, and decided exactly for every float. An ellipse with a radius of 0 contains
      * no point.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
@@ -609,8 +617,9 @@ public final class Collide {
      * compared with r: touching on the ellipse's axes is exact, and elsewhere the answer can
      * be wrong only when the gap or overlap is below about 1e-12 of the sizes involved.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
@@ -643,8 +652,9 @@ public final class Collide {
      * ellipse into a circle and keeps that point the nearest. An ellipse with a radius of 0
      * is its flat box ({@link #rectRect}).
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
@@ -676,8 +686,9 @@ public final class Collide {
      * double (exact for whole numbers up to about 4,000). An ellipse with a radius of 0 has no
      * inside: a segment never collides with it.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
@@ -705,8 +716,9 @@ public final class Collide {
      * about 1e-12 of the sizes involved. The two are taken in a fixed order, so swapping them
      * never changes the answer. An ellipse with a radius of 0 is its flat box.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1       the first ellipse's centre x
      * @param y1       the first ellipse's centre y
@@ -778,8 +790,9 @@ public final class Collide {
      * 1e-9 of the sizes involved. A capsule of radius 0 is its segment ({@link #ellipseLine});
      * an ellipse with a radius of 0 is its flat box ({@link #capsuleRect}).
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x       the ellipse's centre x
      * @param y       the ellipse's centre y
@@ -814,8 +827,9 @@ public final class Collide {
      * Is the point inside the capsule (closer than r to its segment)? On the outline is not
      * inside; a capsule of radius 0 contains no point.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the capsule's segment, first end x
      * @param y1 the capsule's segment, first end y
@@ -839,8 +853,9 @@ public final class Collide {
      * squared as exact signs of double products, so touching between whole numbers of modest
      * size (up to about 2^20) is exact.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the capsule's segment, first end x
      * @param y1 the capsule's segment, first end y
@@ -863,8 +878,9 @@ public final class Collide {
      * Do a capsule and a rectangle overlap? Touching is not overlapping. A capsule of radius 0
      * is its segment ({@link #lineRect}); a flat rectangle is a segment without its ends.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the capsule's segment, first end x
      * @param y1 the capsule's segment, first end y
@@ -892,8 +908,9 @@ public final class Collide {
      * Does a segment reach into a capsule? The segments closer than r; a segment touching the
      * outline does not, and a capsule of radius 0 never collides with a segment.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the capsule's segment, first end x
      * @param y1 the capsule's segment, first end y
@@ -918,8 +935,9 @@ public final class Collide {
      * Do two capsules overlap? Their segments closer than {@code r1 + r2}; touching is not
      * overlapping.
      *
-     * <p>A NaN in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x1 the first capsule's segment, first end x
      * @param y1 the first capsule's segment, first end y
