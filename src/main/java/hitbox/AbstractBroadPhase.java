@@ -14,10 +14,8 @@ import java.util.function.IntConsumer;
  * are the same to the last bit. A box is kept as four doubles side by side, {@code x, right,
  * y, bottom} (see {@link #box}): one array read in order is what makes the tight loops fast.
  *
- * <p>This class is longer than most (about 500 lines) because everything here works on the
- * same slot arrays and checks: storing and reading the boxes, the argument checks, the one
- * exact test, the shape queries and the ray casts. Splitting the ray or shape machinery out
- * would hand those arrays to another class for the sake of a line count.
+ * <p>A ray cast's own geometry (the pruning of regions, the sorting of hits) is in
+ * {@link RayCast}.
  */
 abstract class AbstractBroadPhase implements BroadPhase {
 
@@ -307,7 +305,7 @@ abstract class AbstractBroadPhase implements BroadPhase {
     public final void raycast(Ray ray, RayVisitor out) {
         Check.notNull("ray", ray);
         Check.notNull("out", out);
-        RayCast cast = idleRay != null ? idleRay : new RayCast();
+        RayCast cast = idleRay != null ? idleRay : new RayCast(this);
         idleRay = null;  // a ray cast from inside the visitor gets its own
         long start = begin();
         try {
@@ -404,94 +402,5 @@ abstract class AbstractBroadPhase implements BroadPhase {
      */
     static boolean overlapsBox(Shape shape, float x, float y, float w, float h) {
         return Overlaps.test(shape, new Rect(x, y, w, h));
-    }
-
-    // ---------------------------------------------------------------- rays
-
-    /**
-     * One ray cast: the structure hands it candidate slots, it measures each one with
-     * {@link Ray#distanceToRect}, then visits the hits sorted by distance and id.
-     */
-    final class RayCast {
-        float ox;
-        float oy;
-        float dx;
-        float dy;
-        private float maxDistance;
-        /** How far the ray reaches in units of (dx, dy); infinite for an endless ray. */
-        double limit;
-        private long[] hits = new long[16];
-        private int hitCount;
-
-        void run(Ray ray, RayVisitor out) {
-            ox = ray.ox();
-            oy = ray.oy();
-            dx = ray.dx();
-            dy = ray.dy();
-            maxDistance = ray.maxDistance();
-            limit = Ray.limit(dx, dy, maxDistance);
-            hitCount = 0;
-            findRayCandidates(this);
-            // A distance is 0 or more, so its bits sort as the distance does; the id breaks ties.
-            Arrays.sort(hits, 0, hitCount);
-            for (int i = 0; i < hitCount; i++) {
-                long key = hits[i];
-                if (!out.hit((int) key, Float.intBitsToFloat((int) (key >>> 32)))) {
-                    break;
-                }
-            }
-        }
-
-        /** Measures the box in a slot and keeps it if the ray goes into it. */
-        void consider(int slot) {
-            tally++;
-            float d = Ray.distanceToRect(ox, oy, dx, dy, maxDistance,
-                    (float) box[4 * slot], (float) box[4 * slot + 2], ws[slot], hs[slot]);
-            if (d != Float.POSITIVE_INFINITY) {
-                if (hitCount == hits.length) {
-                    hits = Arrays.copyOf(hits, hitCount * 2);
-                }
-                hits[hitCount++] = (long) Float.floatToRawIntBits(d) << 32 | ids[slot];
-            }
-        }
-
-        /**
-         * Could the ray go into anything inside this region (edges included)? Conservative: the
-         * region is widened by a hair so rounding never turns a hit away; the exact answer is
-         * {@link #consider}'s.
-         */
-        boolean mayEnter(double minX, double minY, double maxX, double maxY) {
-            return enter(minX, minY, maxX, maxY) <= exit(minX, minY, maxX, maxY);
-        }
-
-        /** Where (in units of the direction) the ray enters the widened region, at least 0. */
-        double enter(double minX, double minY, double maxX, double maxY) {
-            double padX = pad(minX, maxX), padY = pad(minY, maxY);
-            return Math.max(0, Math.max(slabIn(minX - padX, maxX + padX, ox, dx), slabIn(minY - padY, maxY + padY, oy, dy)));
-        }
-
-        /** Where (in units of the direction) the ray leaves the widened region, at most its reach. */
-        double exit(double minX, double minY, double maxX, double maxY) {
-            double padX = pad(minX, maxX), padY = pad(minY, maxY);
-            return Math.min(limit, Math.min(slabOut(minX - padX, maxX + padX, ox, dx), slabOut(minY - padY, maxY + padY, oy, dy)));
-        }
-
-        private static double pad(double lo, double hi) {
-            return 1e-9 * (Math.abs(lo) + Math.abs(hi)) + 1e-30;
-        }
-
-        private static double slabIn(double lo, double hi, float o, float d) {
-            if (d == 0) {
-                return lo <= o && o <= hi ? Double.NEGATIVE_INFINITY : Double.POSITIVE_INFINITY;
-            }
-            return d > 0 ? (lo - o) / d : (hi - o) / d;
-        }
-
-        private static double slabOut(double lo, double hi, float o, float d) {
-            if (d == 0) {
-                return lo <= o && o <= hi ? Double.POSITIVE_INFINITY : Double.NEGATIVE_INFINITY;
-            }
-            return d > 0 ? (hi - o) / d : (lo - o) / d;
-        }
     }
 }
