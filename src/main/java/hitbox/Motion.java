@@ -473,9 +473,9 @@ public final class Motion {
      * ends a frame inside an obstacle it started outside of, nor outside the window it started
      * inside of.
      *
-     * <p>A NaN in the box or its speed blocks nothing ({@code blocked} is {@link #NONE}) and a
-     * NaN position or speed stays NaN; a NaN window size crosses no edge ({@code crossed} is
-     * {@link #NONE}) (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in the box or its speed blocks nothing, so {@code blocked} is {@link #NONE}, and a
+     * NaN position or speed stays NaN; a NaN window size crosses no edge, so {@code crossed} is
+     * {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the box's left edge
      * @param y         the box's top edge
@@ -522,9 +522,9 @@ public final class Motion {
      * boxes of a broad phase: the same step, so a sketch with thousands of obstacles changes
      * one argument.
      *
-     * <p>A NaN in the box or its speed blocks nothing ({@code blocked} is {@link #NONE}) and a
-     * NaN position or speed stays NaN; a NaN window size crosses no edge ({@code crossed} is
-     * {@link #NONE}) (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN in the box or its speed blocks nothing, so {@code blocked} is {@link #NONE}, and a
+     * NaN position or speed stays NaN; a NaN window size crosses no edge, so {@code crossed} is
+     * {@link #NONE} (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x         the box's left edge
      * @param y         the box's top edge
