@@ -29,7 +29,8 @@ package hitbox;
  * Nothing is checked and nothing throws (the <a href="package-summary.html#bad-input">NaN
  * rule</a>): with a NaN argument the crossing tests answer {@link #NONE}, the bounce methods
  * hand the speed back unchanged, and the wrap and clamp methods answer NaN (a NaN position)
- * or hand the position back unchanged (a NaN size or window).
+ * or hand the position back unchanged (a NaN size or window). A negative size or window
+ * counts as NaN does: no crossing, the position unchanged.
  */
 public final class Edges {
     private Edges() {
@@ -49,7 +50,7 @@ public final class Edges {
     /**
      * Has the point gone past a window edge? A point exactly on an edge has not.
      *
-     * <p>A NaN in any argument answers {@link #NONE}
+     * <p>A NaN in any argument answers {@link #NONE}, and so does a negative size or window
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param px     the point's x
@@ -69,7 +70,7 @@ public final class Edges {
      * {@code x < r || x > width - r}, for each edge, so the ball turns before it is half out; a circle touching an edge has not crossed
      * it.
      *
-     * <p>A NaN in any argument answers {@link #NONE}
+     * <p>A NaN in any argument answers {@link #NONE}, and so does a negative size or window
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx     the circle's centre x
@@ -88,7 +89,7 @@ public final class Edges {
      * Which window edges has the rectangle crossed? A rectangle touching an edge has not
      * crossed it.
      *
-     * <p>A NaN in any argument answers {@link #NONE}
+     * <p>A NaN in any argument answers {@link #NONE}, and so does a negative size or window
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x      the rectangle's left edge
@@ -108,7 +109,7 @@ public final class Edges {
      * Which window edges has the shape crossed? A circle is tested as a circle; any other
      * shape by its {@link Shape#bounds() bounds}, which reach exactly as far as the shape.
      *
-     * <p>A NaN window size answers {@link #NONE}
+     * <p>A NaN or negative window size answers {@link #NONE}
      * (the <a href="package-summary.html#bad-input">NaN rule</a>); a shape never holds NaN.
      *
      * @param shape  the shape, not null
@@ -133,6 +134,12 @@ public final class Edges {
     private static int crossed(double left, double right, double top, double bottom, float width, float height) {
         if (Double.isNaN(left) || Double.isNaN(right) || Double.isNaN(top) || Double.isNaN(bottom)
                 || Float.isNaN(width) || Float.isNaN(height)) {
+            return NONE;
+        }
+        // A negative size or window is no shape and no window: no answer, as for NaN (the
+        // package's bad-input rule). The sums are exact in double, so left > right only for
+        // a negative size.
+        if (left > right || top > bottom || width < 0 || height < 0) {
             return NONE;
         }
         int edges = NONE;
@@ -241,8 +248,8 @@ public final class Edges {
      * always lies in {@code [-r, width + r]}, however far out the circle was. A centre already
      * in that range is returned unchanged.
      *
-     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN position answers NaN; a NaN or negative size or window hands the position back
+     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx    the circle's centre x
      * @param r     the circle's radius
@@ -257,8 +264,8 @@ public final class Edges {
      * The circle's centre y after wrapping around the top and bottom edges; see
      * {@link #circleWrapX}. The result always lies in {@code [-r, height + r]}.
      *
-     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN position answers NaN; a NaN or negative size or window hands the position back
+     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cy     the circle's centre y
      * @param r      the circle's radius
@@ -274,8 +281,8 @@ public final class Edges {
      * {@link #circleWrapX}. The result always lies in {@code [-w, width]}: once the rectangle
      * has completely left on one side it comes back in on the other.
      *
-     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN position answers NaN; a NaN or negative size or window hands the position back
+     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x     the rectangle's left edge
      * @param w     the rectangle's width
@@ -290,8 +297,8 @@ public final class Edges {
      * The rectangle's top edge after wrapping around the top and bottom edges; see
      * {@link #circleWrapX}. The result always lies in {@code [-h, height]}.
      *
-     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN position answers NaN; a NaN or negative size or window hands the position back
+     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param y      the rectangle's top edge
      * @param h      the rectangle's height
@@ -309,6 +316,9 @@ public final class Edges {
      * 0 and the loop's length are the same place, so both are kept as they are.
      */
     private static float wrap(float pos, float before, float after, float window) {
+        if (before < 0 || after < 0 || window < 0) {
+            return pos;  // a negative size or window: the position back unchanged, as for NaN
+        }
         double end = (double) pos + after;
         double loop = (double) window + before + after;
         if (end >= 0 && end <= loop || !(loop > 0)) {
@@ -335,8 +345,8 @@ public final class Edges {
      * left and right edges (it may touch them). A circle wider than the window cannot fit; it is
      * centred instead, sticking out equally on both sides.
      *
-     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN position answers NaN; a NaN or negative size or window hands the position back
+     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cx    the circle's centre x
      * @param r     the circle's radius
@@ -351,8 +361,8 @@ public final class Edges {
      * The circle's centre y moved the least so the circle lies inside the window, between the
      * top and bottom edges; see {@link #circleClampX}.
      *
-     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN position answers NaN; a NaN or negative size or window hands the position back
+     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param cy     the circle's centre y
      * @param r      the circle's radius
@@ -368,8 +378,8 @@ public final class Edges {
      * between the left and right edges (it may touch them). A rectangle wider than the window
      * is centred instead.
      *
-     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN position answers NaN; a NaN or negative size or window hands the position back
+     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param x     the rectangle's left edge
      * @param w     the rectangle's width
@@ -384,8 +394,8 @@ public final class Edges {
      * The rectangle's top edge moved the least so the rectangle lies inside the window, between
      * the top and bottom edges; see {@link #rectClampX}.
      *
-     * <p>A NaN position answers NaN; a NaN size or window hands the position back unchanged
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN position answers NaN; a NaN or negative size or window hands the position back
+     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param y      the rectangle's top edge
      * @param h      the rectangle's height
@@ -402,6 +412,9 @@ public final class Edges {
      * (the crossing tests say {@link #NONE} for it).
      */
     private static float clamp(float pos, float before, float after, float window) {
+        if (before < 0 || after < 0 || window < 0) {
+            return pos;  // a negative size or window: the position back unchanged, as for NaN
+        }
         double lo = before;
         double hi = (double) window - after;
         if (lo > hi) {

@@ -450,4 +450,42 @@ class EdgesTest {
         assertTrue(Float.isNaN(Edges.circleClampX(Float.NaN, 10, W)));
         assertTrue(Float.isNaN(Edges.rectWrapX(Float.NaN, 10, W)));
     }
+
+    // ---- a negative size or window: no answer, as for NaN (the package's bad-input rule) ----
+
+    @ParameterizedTest(name = "{0}: crossing NONE, wrap and clamp hand {1} back")
+    @CsvSource({
+            // what,            x,    size, window
+            "negative radius,   -10,  -5,   400",
+            "negative radius,   420,  -5,   400",
+            "negative window,   50,   5,    -100",
+            "negative window,   -50,  5,    -100",
+            "both negative,     -10,  -5,   -100",
+            "-0 radius,         -10,  -0.0, 400",
+    })
+    void negativeSizeOrWindow_noCrossingAndPositionUnchanged(String what, float x, float size, float window) {
+        boolean noShape = size < 0 || window < 0;  // -0 is a size of 0: a point, answered as one
+        if (noShape) {
+            assertEquals(Edges.NONE, Edges.circleCrossed(x, 50, size, window, 300), what);
+            assertEquals(Edges.NONE, Edges.circleCrossed(50, x, size, 400, window), what);
+            assertEquals(Edges.NONE, Edges.rectCrossed(x, 50, size, 10, window, 300), what);
+            assertEquals(Edges.NONE, Edges.rectCrossed(50, x, 10, size, 400, window), what);
+            assertEquals(x, Edges.circleWrapX(x, size, window), what);
+            assertEquals(x, Edges.circleWrapY(x, size, window), what);
+            assertEquals(x, Edges.rectWrapX(x, size, window), what);
+            assertEquals(x, Edges.rectWrapY(x, size, window), what);
+            assertEquals(x, Edges.circleClampX(x, size, window), what);
+            assertEquals(x, Edges.circleClampY(x, size, window), what);
+            assertEquals(x, Edges.rectClampX(x, size, window), what);
+            assertEquals(x, Edges.rectClampY(x, size, window), what);
+        } else {
+            assertEquals(Edges.pointCrossed(x, 50, window, 300), Edges.circleCrossed(x, 50, size, window, 300), what);
+            // == rather than assertEquals: clamping against a -0 edge may give -0, which is 0.
+            assertTrue(Edges.circleClampX(x, 0, window) == Edges.circleClampX(x, size, window), what);
+        }
+        if (window < 0) {
+            assertEquals(Edges.NONE, Edges.pointCrossed(x, 50, window, 300), what);
+            assertEquals(Edges.NONE, Edges.crossed(new Circle(x, 50, 5), window, 300), what);
+        }
+    }
 }
