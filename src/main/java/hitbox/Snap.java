@@ -55,7 +55,7 @@ public final class Snap {
      * float, the float just above it (a smaller y), so the rectangle never sinks into the
      * ground.
      *
-     * <p>A NaN in any argument answers NaN
+     * <p>A NaN in any argument answers NaN, and so does a negative height
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param h       the rectangle's height
@@ -64,6 +64,11 @@ public final class Snap {
      *         {@code groundY}
      */
     public static float standY(float h, float groundY) {
+        if (h < 0) {
+            // A negative height is no rectangle: no answer, as for NaN (the bad-input rule);
+            // onGround and landY, which ask this, then say false and hand y back.
+            return Float.NaN;
+        }
         return RectPush.touchBefore(groundY, h);
     }
 
@@ -72,7 +77,7 @@ public final class Snap {
      * Standing exactly on the ground counts, so a player that has landed stays on the ground
      * (and may jump) on the next frame.
      *
-     * <p>A NaN in any argument answers false
+     * <p>A NaN in any argument answers false, and so does a negative height
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param y       the rectangle's top edge
@@ -88,8 +93,8 @@ public final class Snap {
      * The rectangle's top edge after landing on the ground line: moved up to stand on it if it
      * has reached or sunk below it, and unchanged while it is above.
      *
-     * <p>A NaN {@code y} answers NaN; a NaN size or ground hands {@code y} back unchanged
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     * <p>A NaN {@code y} answers NaN; a NaN or negative height, or a NaN ground, hands {@code y}
+     * back unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param y       the rectangle's top edge
      * @param h       the rectangle's height

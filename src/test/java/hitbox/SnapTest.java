@@ -364,4 +364,22 @@ class SnapTest {
         assertEquals(Side.NONE, Snap.pushBack(0, Float.NaN, 10, 10, 1, 1, 0, 0, 10, 10).side());
         assertFalse(Snap.onGround(Float.NaN, 10, 100));
     }
+
+    // ---- a negative height: no answer, as for NaN (the package's bad-input rule) ----------
+
+    @ParameterizedTest(name = "y {0}, h {1}, ground {2}")
+    @CsvSource({
+            "120, -10, 100",   // below the ground with a negative height
+            "95, -10, 100",
+            "80, -0.5, 100",
+            "0, -1e30, 0",
+    })
+    void negativeHeight_noStandNoGroundYUnchanged(float y, float h, float groundY) {
+        assertTrue(Float.isNaN(Snap.standY(h, groundY)));
+        assertFalse(Snap.onGround(y, h, groundY));
+        assertEquals(y, Snap.landY(y, h, groundY));
+        // A height of 0 (and -0) is a flat rectangle, answered as one.
+        assertEquals(groundY, Snap.standY(-0f, groundY));
+        assertEquals(groundY, Snap.landY(y + 1000, 0, groundY));
+    }
 }
