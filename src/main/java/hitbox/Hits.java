@@ -35,7 +35,7 @@ import java.util.function.IntConsumer;
  * Every question has one implementation, on a list; the array overloads hand a view of the
  * array to it.
  *
- * <p>This class is longer than most (about 510 lines) because it is the public face of five
+ * <p>This class is longer than most (about 520 lines) because it is the public face of five
  * questions for three kinds of obstacle list (shapes, raw rectangles, a broad phase), in list
  * and array forms, each overload with its full javadoc; each answer is a few lines, every
  * array overload hands a view to the list one, and the broad-phase work is in

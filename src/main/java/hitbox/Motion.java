@@ -46,7 +46,7 @@ import java.util.List;
  * is {@code TOP | BOTTOM}), since the next-position check knows the axis, not which face;
  * {@code Motion.has(blocked, Motion.X)} and {@code Side.has(blocked, Side.LEFT)} both read it.
  *
- * <p>This class is longer than most (about 570 lines) because it is the public face of
+ * <p>This class is longer than most (about 590 lines) because it is the public face of
  * "which axes are blocked" for a box and a ball, against one obstacle, an array, a list and a
  * broad phase, on raw floats and on shapes, each overload with its full javadoc; the code
  * behind them is two small tests and one bounce step (the broad-phase work is in
