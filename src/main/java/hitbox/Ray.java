@@ -304,6 +304,9 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      */
     private RayHit castEllipse(Ellipse e, double limit) {
         double a = e.rx(), b = e.ry();
+        if (!Ellipses.aligned(e)) {
+            return castTurnedEllipse(e, a, b, limit);
+        }
         double s = Discs.entry(((double) ox - e.x()) * b, ((double) oy - e.y()) * a, dx * b, dy * a, a * b, limit);
         if (s == Slabs.INF) {
             return null;
@@ -313,6 +316,25 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         }
         double hx = ox + s * dx - e.x(), hy = oy + s * dy - e.y();
         return hitAt(s, hx / (a * a), hy / (b * b));
+    }
+
+    /**
+     * A turned ellipse: the ray taken into its frame (the turn undone about the centre), cast
+     * as for an aligned one, and the normal turned back.
+     */
+    private RayHit castTurnedEllipse(Ellipse e, double a, double b, double limit) {
+        Ellipses.Frame f = new Ellipses.Frame(e);
+        double u = f.u(ox, oy), v = f.v(ox, oy);
+        double du = dx * f.c() + dy * f.s(), dv = -dx * f.s() + dy * f.c();
+        double s = Discs.entry(u * b, v * a, du * b, dv * a, a * b, limit);
+        if (s == Slabs.INF) {
+            return null;
+        }
+        if (s < 0) {
+            return inside();
+        }
+        double gu = (u + s * du) / (a * a), gv = (v + s * dv) / (b * b);
+        return hitAt(s, gu * f.c() - gv * f.s(), gu * f.s() + gv * f.c());
     }
 
     /**
