@@ -99,8 +99,7 @@ public record Contact(float nx, float ny, float depth) {
      * @param b the second shape, not null
      * @return the contact, with its normal pointing from a to b, or null when apart
      * @throws IllegalArgumentException if a shape is null or is a {@link Segment}, which has
-     *                                  no area to push out of, or is a concave polygon against
-     *                                  an {@link Ellipse} or a {@link Capsule}
+     *                                  no area to push out of
      */
     public static Contact between(Shape a, Shape b) {
         return Contacts.between(Check.notNull("a", a), Check.notNull("b", b));

@@ -73,7 +73,7 @@ final class ConvexSweep {
     }
 
     /** The shape's convex pieces: vertex lists (double[]), or the curved shape itself. */
-    private static List<Object> pieces(Shape s) {
+    static List<Object> pieces(Shape s) {
         List<Object> out = new ArrayList<>();
         if (s instanceof Polygon p && !p.isConvex()) {
             out.addAll(Clearance.Parts.of(s).pieces());
@@ -93,10 +93,15 @@ final class ConvexSweep {
      * {@code normal}; +infinity if never within the motion.
      */
     static double entry(Object a, Object b, double vx, double vy, double[] normal) {
+        return entry(a, b, 0, 0, vx, vy, normal);
+    }
+
+    /** As {@link #entry(Object, Object, double, double, double[])}, piece a starting moved by (sx, sy). */
+    static double entry(Object a, Object b, double sx, double sy, double vx, double vy, double[] normal) {
         double t = 0;
         double[] n = new double[2];
         for (int step = 0; step < MAX_STEPS; step++) {
-            double gap = separation(a, b, t * vx, t * vy, n);
+            double gap = separation(a, b, sx + t * vx, sy + t * vy, n);
             normal[0] = n[0];
             normal[1] = n[1];
             if (gap <= TOUCH) {
