@@ -82,9 +82,60 @@ final class ConvexSweep {
         } else if (s instanceof Rect || s instanceof Polygon) {
             out.add(Polygons.corners(s));
         } else {
-            out.add(s);
+            out.add(new Round(s));
         }
         return out;
+    }
+
+    /**
+     * A curved piece with what its support function needs worked out once: a turned
+     * ellipse's cos and sin (the hot loop asks for thousands of directions), a circle as an
+     * ellipse with equal radii, a capsule as its segment and radius.
+     */
+    static final class Round {
+        final Shape shape;
+        final double x, y, a, b, c, s, x2, y2;
+        final boolean capsule;
+
+        Round(Shape shape) {
+            this.shape = shape;
+            if (shape instanceof Capsule k) {
+                capsule = true;
+                x = k.x1();
+                y = k.y1();
+                x2 = k.x2();
+                y2 = k.y2();
+                a = b = k.r();
+                c = 1;
+                s = 0;
+            } else if (shape instanceof Ellipse e) {
+                capsule = false;
+                x = e.x();
+                y = e.y();
+                a = e.rx();
+                b = e.ry();
+                c = e.angle() == 0 ? 1 : Math.cos(e.angle());
+                s = e.angle() == 0 ? 0 : Math.sin(e.angle());
+                x2 = y2 = 0;
+            } else {
+                Circle o = (Circle) shape;
+                capsule = false;
+                x = o.x();
+                y = o.y();
+                a = b = o.r();
+                c = 1;
+                s = 0;
+                x2 = y2 = 0;
+            }
+        }
+
+        /** How far it reaches along (nx, ny), as {@link Supports#support}. */
+        double reach(double nx, double ny) {
+            if (capsule) {
+                return Math.max(x * nx + y * ny, x2 * nx + y2 * ny) + a;
+            }
+            return x * nx + y * ny + Math.hypot(a * (nx * c + ny * s), b * (-nx * s + ny * c));
+        }
     }
 
     /**
@@ -157,14 +208,14 @@ final class ConvexSweep {
                 }
             }
         }
-        if (ring || a instanceof Shape || b instanceof Shape) {
+        if (ring || a instanceof Round || b instanceof Round) {
             // Golden-section search about the best direction (a curved piece's best gap is
             // seldom an edge normal): still a lower bound, since every direction's gap is one.
             double lo = Math.atan2(by, bx) - 2 * Math.PI / DIRECTIONS, hi = lo + 4 * Math.PI / DIRECTIONS;
             double gr = (Math.sqrt(5) - 1) / 2;
             double m1 = hi - gr * (hi - lo), m2 = lo + gr * (hi - lo);
             double f1 = gap(a, b, dx, dy, Math.cos(m1), Math.sin(m1)), f2 = gap(a, b, dx, dy, Math.cos(m2), Math.sin(m2));
-            for (int i = 0; i < 70 && hi - lo > 1e-15; i++) {
+            for (int i = 0; i < 50 && hi - lo > 1e-13; i++) {
                 if (f1 > f2) {
                     hi = m2;
                     m2 = m1;
@@ -196,8 +247,8 @@ final class ConvexSweep {
         if (piece instanceof double[] xy) {
             return xy;
         }
-        if (piece instanceof Capsule k) {
-            return new double[] {k.x1(), k.y1(), k.x2(), k.y2()};
+        if (piece instanceof Round r && r.capsule) {
+            return new double[] {r.x, r.y, r.x2, r.y2};
         }
         return new double[0];
     }
@@ -216,6 +267,6 @@ final class ConvexSweep {
             }
             return best;
         }
-        return Supports.support((Shape) piece, nx, ny);
+        return ((Round) piece).reach(nx, ny);
     }
 }

@@ -14,7 +14,7 @@ import java.util.List;
  * the least f(n) over n: the union's boundary point nearest the origin is reached along a
  * straight push that stays inside the union. Each interval end is the entry time of the
  * shape moving along the line towards the piece ({@link ConvexSweep#entry}, never late, so a
- * push is never short); f is sampled at 72 directions and at every edge normal of the
+ * push is never short); f is sampled at 48 directions and at every edge normal of the
  * pieces, and its local least values refined by golden-section search. The depth is found to
  * about 1e-6 pixels (the entries' tolerance) where the least is smooth; a least value in a
  * gap narrower than the sampling between directions can be missed, giving a longer push that
@@ -24,7 +24,7 @@ final class CurvedClearance {
     private CurvedClearance() {
     }
 
-    private static final int STEPS = 72;
+    private static final int STEPS = 48;
 
     /**
      * The contact of curved k and concave polygon p (they overlap); normal from the first
@@ -32,6 +32,7 @@ final class CurvedClearance {
      */
     static Contact contact(Shape k, Polygon p, boolean polygonFirst) {
         List<Object> pieces = ConvexSweep.pieces(p);
+        Object round = ConvexSweep.pieces(k).get(0);
         Rect a = k.bounds(), b = p.bounds();
         // Farther than any push can need: both boxes' sizes and the gap between them.
         double far = 2 * (Math.max(a.w(), a.h()) + Math.max(b.w(), b.h()))
@@ -39,12 +40,12 @@ final class CurvedClearance {
         double bestD = Double.POSITIVE_INFINITY, bestAngle = 0;
         double[] f = new double[STEPS];
         for (int i = 0; i < STEPS; i++) {
-            f[i] = push(k, pieces, 2 * Math.PI * i / STEPS, far);
+            f[i] = push(round, pieces, 2 * Math.PI * i / STEPS, far);
         }
         for (int i = 0; i < STEPS; i++) {
             double prev = f[(i + STEPS - 1) % STEPS], next = f[(i + 1) % STEPS];
             if (f[i] <= prev && f[i] <= next) {
-                double[] r = refine(k, pieces, 2 * Math.PI * (i - 1) / STEPS, 2 * Math.PI * (i + 1) / STEPS, far);
+                double[] r = refine(round, pieces, 2 * Math.PI * (i - 1) / STEPS, 2 * Math.PI * (i + 1) / STEPS, far);
                 if (r[1] < bestD) {
                     bestD = r[1];
                     bestAngle = r[0];
@@ -62,7 +63,7 @@ final class CurvedClearance {
                 int j = (i + 1) % n;
                 double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1];
                 for (double angle : new double[] {Math.atan2(ex, -ey), Math.atan2(-ex, ey)}) {
-                    double d = push(k, pieces, angle, far);
+                    double d = push(round, pieces, angle, far);
                     if (d < bestD) {
                         bestD = d;
                         bestAngle = angle;
@@ -77,7 +78,7 @@ final class CurvedClearance {
     }
 
     /** f at the angle: the shortest push of k along it that clears every piece. */
-    private static double push(Shape k, List<Object> pieces, double angle, double far) {
+    private static double push(Object k, List<Object> pieces, double angle, double far) {
         double nx = Math.cos(angle), ny = Math.sin(angle);
         double[] lo = new double[pieces.size()], hi = new double[pieces.size()];
         double[] normal = new double[2];
@@ -90,6 +91,10 @@ final class CurvedClearance {
                 continue;
             }
             hi[i] = far * (1 - te);
+            if (hi[i] <= 0) {
+                lo[i] = hi[i]; // wholly behind the start: no push along n meets it
+                continue;
+            }
             double ts = ConvexSweep.entry(k, c, -far * nx, -far * ny, far * nx, far * ny, normal);
             lo[i] = -far + (ts > 1 ? far : far * ts);
         }
@@ -107,11 +112,11 @@ final class CurvedClearance {
     }
 
     /** Golden-section search for the least f in [lo, hi]: {angle, f}. */
-    private static double[] refine(Shape k, List<Object> pieces, double lo, double hi, double far) {
+    private static double[] refine(Object k, List<Object> pieces, double lo, double hi, double far) {
         double g = (Math.sqrt(5) - 1) / 2;
         double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
         double f1 = push(k, pieces, m1, far), f2 = push(k, pieces, m2, far);
-        for (int i = 0; i < 40 && hi - lo > 1e-12; i++) {
+        for (int i = 0; i < 32 && hi - lo > 1e-10; i++) {
             if (f1 < f2) {
                 hi = m2;
                 m2 = m1;
