@@ -99,10 +99,34 @@ final class Ellipses {
 
     /** A real ellipse and a circle of radius r > 0. */
     static boolean circle(float x, float y, float a, float b, float cx, float cy, float r) {
+        int sure = discs((double) cx - x, (double) cy - y, a, b, r, r);
+        if (sure != 0) {
+            return sure > 0;
+        }
         if (side(cx, cy, x, y, a, b) <= 0) {
             return true;
         }
         return distance(a, b, (double) cx - x, (double) cy - y, null) < r;
+    }
+
+    /**
+     * The cheap answer first, for real ellipses (radii a1, b1 and a2, b2; a circle has equal
+     * radii) whose centres are (dx, dy) apart: 1 if they surely overlap (the centres closer
+     * than the sum of the smaller radii: the discs inside both meet), -1 if they surely do
+     * not (farther than the sum of the larger radii: the discs around both miss), 0 to decide
+     * it the long way. A margin of 1e-9 keeps the double rounding of the squares out of it,
+     * so it never answers a case the exact tests would answer otherwise.
+     */
+    static int discs(double dx, double dy, double a1, double b1, double a2, double b2) {
+        double d2 = dx * dx + dy * dy;
+        double inner = Math.min(a1, b1) + Math.min(a2, b2), outer = Math.max(a1, b1) + Math.max(a2, b2);
+        if (d2 < inner * inner * (1 - 1e-9)) {
+            return 1;
+        }
+        if (d2 > outer * outer * (1 + 1e-9)) {
+            return -1;
+        }
+        return 0;
     }
 
     /** Does ellipse (x1, y1, a1, b1) come before ellipse (x2, y2, a2, b2) in a fixed order? Makes the pair's answer symmetric. */
@@ -115,6 +139,10 @@ final class Ellipses {
 
     /** Two real ellipses: the first scaled into a circle of radius a1 b1, the second stays an ellipse. */
     static boolean ellipse(float x1, float y1, float a1, float b1, float x2, float y2, float a2, float b2) {
+        int sure = discs((double) x2 - x1, (double) y2 - y1, a1, b1, a2, b2);
+        if (sure != 0) {
+            return sure > 0;
+        }
         double cx = ((double) x2 - x1) * b1, cy = ((double) y2 - y1) * a1;
         double a = (double) a2 * b1, b = (double) b2 * a1;
         double reach = (double) a1 * b1;
@@ -449,6 +477,10 @@ final class Ellipses {
      * compared with that radius, as for two aligned ellipses.
      */
     static boolean ellipses(Ellipse p, Ellipse q) {
+        int sure = discs((double) q.x() - p.x(), (double) q.y() - p.y(), p.rx(), p.ry(), q.rx(), q.ry());
+        if (sure != 0) {
+            return sure > 0;
+        }
         Frame f = new Frame(p);
         double a1 = p.rx(), b1 = p.ry();
         double cu = f.u(q.x(), q.y()) * b1, cv = f.v(q.x(), q.y()) * a1;
