@@ -212,25 +212,9 @@ final class ConvexSweep {
             // Golden-section search about the best direction (a curved piece's best gap is
             // seldom an edge normal): still a lower bound, since every direction's gap is one.
             double lo = Math.atan2(by, bx) - 2 * Math.PI / DIRECTIONS, hi = lo + 4 * Math.PI / DIRECTIONS;
-            double gr = (Math.sqrt(5) - 1) / 2;
-            double m1 = hi - gr * (hi - lo), m2 = lo + gr * (hi - lo);
-            double f1 = gap(a, b, dx, dy, Math.cos(m1), Math.sin(m1)), f2 = gap(a, b, dx, dy, Math.cos(m2), Math.sin(m2));
-            for (int i = 0; i < 50 && hi - lo > 1e-13; i++) {
-                if (f1 > f2) {
-                    hi = m2;
-                    m2 = m1;
-                    f2 = f1;
-                    m1 = hi - gr * (hi - lo);
-                    f1 = gap(a, b, dx, dy, Math.cos(m1), Math.sin(m1));
-                } else {
-                    lo = m1;
-                    m1 = m2;
-                    f1 = f2;
-                    m2 = lo + gr * (hi - lo);
-                    f2 = gap(a, b, dx, dy, Math.cos(m2), Math.sin(m2));
-                }
-            }
-            double m = f1 > f2 ? m1 : m2, g = Math.max(f1, f2);
+            // The largest gap is the least of its negative.
+            double[] r = Golden.least(t -> -gap(a, b, dx, dy, Math.cos(t), Math.sin(t)), lo, hi, 50, 1e-13);
+            double m = r[0], g = -r[1];
             if (g > best) {
                 best = g;
                 bx = Math.cos(m);

@@ -113,24 +113,6 @@ final class CurvedClearance {
 
     /** Golden-section search for the least f in [lo, hi]: {angle, f}. */
     private static double[] refine(Object k, List<Object> pieces, double lo, double hi, double far) {
-        double g = (Math.sqrt(5) - 1) / 2;
-        double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-        double f1 = push(k, pieces, m1, far), f2 = push(k, pieces, m2, far);
-        for (int i = 0; i < 32 && hi - lo > 1e-10; i++) {
-            if (f1 < f2) {
-                hi = m2;
-                m2 = m1;
-                f2 = f1;
-                m1 = hi - g * (hi - lo);
-                f1 = push(k, pieces, m1, far);
-            } else {
-                lo = m1;
-                m1 = m2;
-                f1 = f2;
-                m2 = lo + g * (hi - lo);
-                f2 = push(k, pieces, m2, far);
-            }
-        }
-        return f1 < f2 ? new double[] {m1, f1} : new double[] {m2, f2};
+        return Golden.least(t -> push(k, pieces, t, far), lo, hi, 32, 1e-10);
     }
 }
