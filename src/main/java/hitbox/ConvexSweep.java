@@ -37,6 +37,9 @@ final class ConvexSweep {
 
     /** The hit of a mover moving by (vx, vy) into the obstacle (both valid), or null. */
     static Hit timeOfImpact(Shape mover, float vx, float vy, Shape obstacle) {
+        if (apart(mover.bounds(), vx, vy, obstacle.bounds())) {
+            return null;
+        }
         if (Overlaps.test(mover, obstacle)) {
             return Sweep.OVERLAPPING;
         }
@@ -70,6 +73,21 @@ final class ConvexSweep {
             }
         }
         return best <= 1 ? SweptPairs.hit(best, bx, by) : null;
+    }
+
+    /**
+     * The cheap answer first: is the box the mover's box sweeps through clear of the
+     * obstacle's box by more than the rounding of the float positions (a moved coordinate
+     * {@code x + t * vx} in float lies between x and the float nearest {@code x + vx})?
+     */
+    static boolean apart(Rect m, float vx, float vy, Rect o) {
+        double mr = (double) m.x() + m.w(), mb = (double) m.y() + m.h();
+        double or = (double) o.x() + o.w(), ob = (double) o.y() + o.h();
+        double left = Math.min(m.x(), m.x() + (double) vx), top = Math.min(m.y(), m.y() + (double) vy);
+        double right = Math.max(mr, mr + vx), bottom = Math.max(mb, mb + vy);
+        double slack = 1e-6 * (Math.abs(left) + Math.abs(right) + Math.abs(top) + Math.abs(bottom)
+                + Math.abs(o.x()) + Math.abs(o.y()) + Math.abs(or) + Math.abs(ob)) + Float.MIN_NORMAL;
+        return left > or + slack || right < o.x() - slack || top > ob + slack || bottom < o.y() - slack;
     }
 
     /** The shape's convex pieces: vertex lists (double[]), or the curved shape itself. */
