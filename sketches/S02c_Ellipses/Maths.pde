@@ -1,5 +1,6 @@
 // The 'd' overlay: the nearest ellipse's radii, and its test written out with the mouse's
-// numbers: (dx / rx)^2 + (dy / ry)^2 < 1 for a point.
+// numbers: (dx / rx)^2 + (dy / ry)^2 < 1 for a point (for the turned ellipse, dx and dy
+// measured along its own turned axes: u = dx cos + dy sin, v = -dx sin + dy cos).
 
 void drawMaths() {
   // The ellipse whose centre is nearest the mouse.
@@ -10,22 +11,27 @@ void drawMaths() {
     }
   }
   Ellipse e = ellipses[n];
-  Overlay.radius(g, e.x(), e.y(), 1, 0, e.rx(), "rx");
-  Overlay.radius(g, e.x(), e.y(), 0, -1, e.ry(), "ry");
+  float c = cos(e.angle());
+  float s = sin(e.angle());
+  Overlay.radius(g, e.x(), e.y(), c, s, e.rx(), "rx");
+  Overlay.radius(g, e.x(), e.y(), s, -c, e.ry(), "ry");
   Overlay.guide(g, e.x(), e.y(), mouseX, mouseY);
   noStroke();
   fill(Overlay.GUIDE);
   circle(e.x(), e.y(), 6);
 
-  float u = (mouseX - e.x()) / e.rx();
-  float v = (mouseY - e.y()) / e.ry();
+  float dx = mouseX - e.x();
+  float dy = mouseY - e.y();
+  float u = (dx * c + dy * s) / e.rx();
+  float v = (-dx * s + dy * c) / e.ry();
   color colour = hit[n] ? Overlay.HIT : Overlay.MISS;
   String test;
   if (circleMode) {
     test = "Collide.ellipseCircle: the circle's centre inside, or its distance\nto the outline < r = "
         + Overlay.number(mouseR) + "  ->  " + (hit[n] ? "overlap" : "apart");
   } else {
-    test = "(dx / rx)^2 + (dy / ry)^2 < 1\n" + Overlay.verdict(u * u + v * v, "<", 1, hit[n]);
+    String formula = e.angle() != 0 ? "(u / rx)^2 + (v / ry)^2 < 1, u and v along the turned axes" : "(dx / rx)^2 + (dy / ry)^2 < 1";
+    test = formula + "\n" + Overlay.verdict(u * u + v * v, "<", 1, hit[n]);
   }
   Overlay.labelCentered(g, width / 2, 28, test, colour);
 }

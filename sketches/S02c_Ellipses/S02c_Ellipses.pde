@@ -7,9 +7,14 @@
  * against an ellipse is Collide.ellipseCircle, and two ellipses Collide.ellipseEllipse. Each
  * ellipse turns red while the mouse (a point, or a circle) is inside it, green otherwise.
  *
+ * The fourth ellipse is turned: new Ellipse(x, y, rx, ry, angle) takes the angle as rotate()
+ * does (radians, clockwise on screen). It has no raw-float test; the shape answers, by turning
+ * the mouse into the ellipse's own frame, where the same formula holds.
+ *
  * Try this: make an ellipse flat (a radius of 0: it has no inside any more); give the mouse
  * circle radius 0 and see it act as a point; squash an ellipse by changing its radii.
- * Keys: space switches the mouse between a point and a circle, d shows the maths.
+ * Keys: space switches the mouse between a point and a circle, t turns the fourth ellipse,
+ * d shows the maths.
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -19,8 +24,10 @@ Ellipse[] ellipses = {
     new Ellipse(150, 200, 110, 45),
     new Ellipse(380, 140, 40, 90),
     new Ellipse(460, 310, 90, 60),
+    new Ellipse(255, 325, 65, 22, 0.5),   // turned by 0.5 radians
 };
-boolean[] hit = new boolean[3];   // this frame's answers, for the drawing and the tests
+boolean[] hit = new boolean[4];   // this frame's answers, for the drawing and the tests
+boolean turning;                  // t: the fourth ellipse keeps turning
 float mouseR = 30;                // the mouse circle's radius
 boolean circleMode;               // space: the mouse is a circle, not a point
 boolean showMaths;                // the 'd' overlay
@@ -32,17 +39,28 @@ void setup() {
 
 void draw() {
   background(Palette.BACKGROUND);
+  if (turning) {
+    Ellipse e = ellipses[3];
+    ellipses[3] = new Ellipse(e.x(), e.y(), e.rx(), e.ry(), e.angle() + 0.02);
+  }
   for (int i = 0; i < ellipses.length; i++) {
     Ellipse e = ellipses[i];
     // The whole idea: is the mouse (a point, or a circle) inside this ellipse?
-    if (circleMode) {
+    if (e.angle() != 0) {
+      // Turned: ask the shape, which takes the mouse into the ellipse's frame first.
+      hit[i] = circleMode ? e.overlaps(new Circle(mouseX, mouseY, mouseR)) : e.contains(mouseX, mouseY);
+    } else if (circleMode) {
       hit[i] = Collide.ellipseCircle(e.x(), e.y(), e.rx(), e.ry(), mouseX, mouseY, mouseR);
     } else {
       hit[i] = Collide.ellipsePoint(e.x(), e.y(), e.rx(), e.ry(), mouseX, mouseY);
     }
     noStroke();
     fill(hit[i] ? Palette.HIT : Palette.MISS);
-    ellipse(e.x(), e.y(), 2 * e.rx(), 2 * e.ry());
+    pushMatrix();
+    translate(e.x(), e.y());
+    rotate(e.angle());
+    ellipse(0, 0, 2 * e.rx(), 2 * e.ry());
+    popMatrix();
   }
 
   // The mouse: a point, or a circle drawn as its outline.
@@ -60,7 +78,7 @@ void draw() {
   if (showMaths) {
     drawMaths();
   }
-  Overlay.hint(g, "move the mouse over the ellipses     space: point / circle     d: show the maths");
+  Overlay.hint(g, "move the mouse over the ellipses     space: point / circle     t: turn     d: show the maths");
 }
 
 void keyPressed() {
@@ -68,5 +86,7 @@ void keyPressed() {
     showMaths = !showMaths;
   } else if (key == ' ') {
     circleMode = !circleMode;
+  } else if (key == 't') {
+    turning = !turning;
   }
 }

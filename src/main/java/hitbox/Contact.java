@@ -99,8 +99,7 @@ public record Contact(float nx, float ny, float depth) {
      * @param b the second shape, not null
      * @return the contact, with its normal pointing from a to b, or null when apart
      * @throws IllegalArgumentException if a shape is null or is a {@link Segment}, which has
-     *                                  no area to push out of, or is a concave polygon against
-     *                                  an {@link Ellipse} or a {@link Capsule}
+     *                                  no area to push out of
      */
     public static Contact between(Shape a, Shape b) {
         return Contacts.between(Check.notNull("a", a), Check.notNull("b", b));
@@ -217,6 +216,177 @@ public record Contact(float nx, float ny, float depth) {
         // the tie rule's order): the same push Snap.pushOut makes.
         Side side = RectPush.leastOverlap(x1, y1, w1, h1, x2, y2, w2, h2);
         return of(RectPush.normalX(side), RectPush.normalY(side), RectPush.depth(side, x1, y1, w1, h1, x2, y2, w2, h2));
+    }
+
+    // ---------------------------------------------------------------- ellipses and capsules, raw floats
+
+    /**
+     * The contact between an axis-aligned ellipse (first) and a circle (second), or null when
+     * they do not overlap: {@link #between} on the two shapes, for a sketch that keeps plain
+     * floats. Overlap is decided as by {@link Collide#ellipseCircle}; the depth is found to
+     * about 1e-12 of the shapes' size and the normal to about 1e-6 radians (see
+     * {@link Shape#contact}).
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX the ellipse's horizontal radius
+     * @param radiusY the ellipse's vertical radius
+     * @param cx      the circle's centre x
+     * @param cy      the circle's centre y
+     * @param r       the circle's radius
+     * @return the contact, normal from the ellipse to the circle, or null when apart or
+     *         touching, and for NaN or infinite input or a negative size (never throws)
+     */
+    public static Contact ellipseCircle(float x, float y, float radiusX, float radiusY, float cx, float cy, float r) {
+        if (Check.notFinite(x, y, radiusX, radiusY, cx) || Check.notFinite(cy, r, 0, 0, 0)
+                || radiusX < 0 || radiusY < 0 || r < 0) {
+            return null;
+        }
+        return between(new Ellipse(x, y, radiusX, radiusY), new Circle(cx, cy, r));
+    }
+
+    /**
+     * The contact between an axis-aligned ellipse (first) and a rectangle (second), or null
+     * when they do not overlap, as {@link #ellipseCircle} (overlap as by
+     * {@link Collide#ellipseRect}).
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX the ellipse's horizontal radius
+     * @param radiusY the ellipse's vertical radius
+     * @param rx      the rectangle's left edge
+     * @param ry      the rectangle's top edge
+     * @param rw      the rectangle's width
+     * @param rh      the rectangle's height
+     * @return the contact, normal from the ellipse to the rectangle, or null when apart or
+     *         touching, and for NaN or infinite input or a negative size (never throws)
+     */
+    public static Contact ellipseRect(float x, float y, float radiusX, float radiusY, float rx, float ry, float rw, float rh) {
+        if (Check.notFinite(x, y, radiusX, radiusY, rx) || Check.notFinite(ry, rw, rh, 0, 0)
+                || radiusX < 0 || radiusY < 0 || rw < 0 || rh < 0) {
+            return null;
+        }
+        return between(new Ellipse(x, y, radiusX, radiusY), new Rect(rx, ry, rw, rh));
+    }
+
+    /**
+     * The contact between two axis-aligned ellipses, or null when they do not overlap, as
+     * {@link #ellipseCircle} (overlap as by {@link Collide#ellipseEllipse}).
+     *
+     * @param x1       the first ellipse's centre x
+     * @param y1       the first ellipse's centre y
+     * @param radiusX1 the first ellipse's horizontal radius
+     * @param radiusY1 the first ellipse's vertical radius
+     * @param x2       the second ellipse's centre x
+     * @param y2       the second ellipse's centre y
+     * @param radiusX2 the second ellipse's horizontal radius
+     * @param radiusY2 the second ellipse's vertical radius
+     * @return the contact, normal from the first ellipse to the second, or null when apart or
+     *         touching, and for NaN or infinite input or a negative size (never throws)
+     */
+    public static Contact ellipseEllipse(float x1, float y1, float radiusX1, float radiusY1,
+                                         float x2, float y2, float radiusX2, float radiusY2) {
+        if (Check.notFinite(x1, y1, radiusX1, radiusY1, x2) || Check.notFinite(y2, radiusX2, radiusY2, 0, 0)
+                || radiusX1 < 0 || radiusY1 < 0 || radiusX2 < 0 || radiusY2 < 0) {
+            return null;
+        }
+        return between(new Ellipse(x1, y1, radiusX1, radiusY1), new Ellipse(x2, y2, radiusX2, radiusY2));
+    }
+
+    /**
+     * The contact between a capsule (first) and a circle (second), or null when they do not
+     * overlap, as {@link #ellipseCircle} (overlap as by {@link Collide#capsuleCircle}).
+     *
+     * @param x1 the capsule's segment, first end x
+     * @param y1 the capsule's segment, first end y
+     * @param x2 the capsule's segment, second end x
+     * @param y2 the capsule's segment, second end y
+     * @param r  the capsule's radius
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param cr the circle's radius
+     * @return the contact, normal from the capsule to the circle, or null when apart or
+     *         touching, and for NaN or infinite input or a negative radius (never throws)
+     */
+    public static Contact capsuleCircle(float x1, float y1, float x2, float y2, float r, float cx, float cy, float cr) {
+        if (Check.notFinite(x1, y1, x2, y2, r) || Check.notFinite(cx, cy, cr, 0, 0) || r < 0 || cr < 0) {
+            return null;
+        }
+        return between(new Capsule(x1, y1, x2, y2, r), new Circle(cx, cy, cr));
+    }
+
+    /**
+     * The contact between a capsule (first) and a rectangle (second), or null when they do not
+     * overlap, as {@link #ellipseCircle} (overlap as by {@link Collide#capsuleRect}).
+     *
+     * @param x1 the capsule's segment, first end x
+     * @param y1 the capsule's segment, first end y
+     * @param x2 the capsule's segment, second end x
+     * @param y2 the capsule's segment, second end y
+     * @param r  the capsule's radius
+     * @param rx the rectangle's left edge
+     * @param ry the rectangle's top edge
+     * @param rw the rectangle's width
+     * @param rh the rectangle's height
+     * @return the contact, normal from the capsule to the rectangle, or null when apart or
+     *         touching, and for NaN or infinite input or a negative size (never throws)
+     */
+    public static Contact capsuleRect(float x1, float y1, float x2, float y2, float r, float rx, float ry, float rw, float rh) {
+        if (Check.notFinite(x1, y1, x2, y2, r) || Check.notFinite(rx, ry, rw, rh, 0) || r < 0 || rw < 0 || rh < 0) {
+            return null;
+        }
+        return between(new Capsule(x1, y1, x2, y2, r), new Rect(rx, ry, rw, rh));
+    }
+
+    /**
+     * The contact between two capsules, or null when they do not overlap, as
+     * {@link #ellipseCircle} (overlap as by {@link Collide#capsuleCapsule}).
+     *
+     * @param ax1 the first capsule's segment, first end x
+     * @param ay1 the first capsule's segment, first end y
+     * @param ax2 the first capsule's segment, second end x
+     * @param ay2 the first capsule's segment, second end y
+     * @param r1  the first capsule's radius
+     * @param bx1 the second capsule's segment, first end x
+     * @param by1 the second capsule's segment, first end y
+     * @param bx2 the second capsule's segment, second end x
+     * @param by2 the second capsule's segment, second end y
+     * @param r2  the second capsule's radius
+     * @return the contact, normal from the first capsule to the second, or null when apart or
+     *         touching, and for NaN or infinite input or a negative radius (never throws)
+     */
+    public static Contact capsuleCapsule(float ax1, float ay1, float ax2, float ay2, float r1,
+                                         float bx1, float by1, float bx2, float by2, float r2) {
+        if (Check.notFinite(ax1, ay1, ax2, ay2, r1) || Check.notFinite(bx1, by1, bx2, by2, r2) || r1 < 0 || r2 < 0) {
+            return null;
+        }
+        return between(new Capsule(ax1, ay1, ax2, ay2, r1), new Capsule(bx1, by1, bx2, by2, r2));
+    }
+
+    /**
+     * The contact between an axis-aligned ellipse (first) and a capsule (second), or null when
+     * they do not overlap, as {@link #ellipseCircle} (overlap as by
+     * {@link Collide#ellipseCapsule}).
+     *
+     * @param x       the ellipse's centre x
+     * @param y       the ellipse's centre y
+     * @param radiusX the ellipse's horizontal radius
+     * @param radiusY the ellipse's vertical radius
+     * @param x1      the capsule's segment, first end x
+     * @param y1      the capsule's segment, first end y
+     * @param x2      the capsule's segment, second end x
+     * @param y2      the capsule's segment, second end y
+     * @param r       the capsule's radius
+     * @return the contact, normal from the ellipse to the capsule, or null when apart or
+     *         touching, and for NaN or infinite input or a negative size (never throws)
+     */
+    public static Contact ellipseCapsule(float x, float y, float radiusX, float radiusY,
+                                         float x1, float y1, float x2, float y2, float r) {
+        if (Check.notFinite(x, y, radiusX, radiusY, x1) || Check.notFinite(y1, x2, y2, r, 0)
+                || radiusX < 0 || radiusY < 0 || r < 0) {
+            return null;
+        }
+        return between(new Ellipse(x, y, radiusX, radiusY), new Capsule(x1, y1, x2, y2, r));
     }
 
     /**

@@ -114,11 +114,16 @@ final class Contacts {
                     + " where a moving shape first touches it");
         }
         if (a instanceof Ellipse || b instanceof Ellipse || a instanceof Capsule || b instanceof Capsule) {
-            if (!Supports.convex(a) || !Supports.convex(b)) {
-                throw new IllegalArgumentException("contact with an ellipse or a capsule needs a convex other shape, but "
-                        + (Supports.convex(a) ? "b" : "a") + " is a concave polygon: split it into convex ones");
+            if (!Overlaps.test(a, b)) {
+                return null;
             }
-            return Overlaps.test(a, b) ? Supports.contact(a, b) : null;
+            if (a instanceof Polygon p && !p.isConvex()) {
+                return CurvedClearance.contact(b, p, true); // the whole polygon, not its nearest piece
+            }
+            if (b instanceof Polygon p && !p.isConvex()) {
+                return CurvedClearance.contact(a, p, false);
+            }
+            return Supports.contact(a, b);
         }
         if (a instanceof Circle c) {
             if (b instanceof Circle d) {

@@ -11,20 +11,36 @@ package hitbox;
  * answers as {@link Circle} does. How exactly each pair is decided is stated on the
  * {@code Collide.ellipse...} methods ({@link Collide#ellipseCircle}, say).
  *
- * @param x  the centre's x
- * @param y  the centre's y
- * @param rx the horizontal radius (half the width), 0 or more
- * @param ry the vertical radius (half the height), 0 or more
+ * <p><b>Turned.</b> An ellipse may be turned about its centre by {@code angle} radians,
+ * clockwise on screen for a positive angle, as Processing's {@code rotate()} turns what is
+ * drawn after it (and as {@link Polygon#rotatedRect} takes its angle): draw it with
+ * {@code pushMatrix(); translate(x, y); rotate(angle); ellipse(0, 0, 2 * rx, 2 * ry); popMatrix();}.
+ * Then {@code rx} is the radius along the turned x axis. An angle of 0 (the default) is the
+ * axis-aligned ellipse above, decided exactly; a turned ellipse is decided in double in its
+ * own frame (the other shape turned by {@code -angle} about its centre), so a pair within
+ * about 1e-12 of its size of touching may go either way. A turned ellipse with equal radii is
+ * a circle and one with both radii 0 a point, whatever the angle, and both are decided as
+ * without the angle; a turned ellipse with one radius 0 is flat: a segment without its ends
+ * between {@code (x, y) +- r (cos angle, sin angle)} (r the radius that is not 0, turned with
+ * its axis), each end rounded to float.
+ *
+ * @param x     the centre's x
+ * @param y     the centre's y
+ * @param rx    the horizontal radius (half the width, along the turned x axis), 0 or more
+ * @param ry    the vertical radius (half the height, along the turned y axis), 0 or more
+ * @param angle how far the ellipse is turned about its centre, in radians, clockwise on screen;
+ *              0 for an axis-aligned ellipse
  */
-public record Ellipse(float x, float y, float rx, float ry) implements Shape {
+public record Ellipse(float x, float y, float rx, float ry, float angle) implements Shape {
 
     /**
-     * Makes an ellipse, checking its values.
+     * Makes a turned ellipse, checking its values.
      *
-     * @param x  the centre's x
-     * @param y  the centre's y
-     * @param rx the horizontal radius, 0 or more
-     * @param ry the vertical radius, 0 or more
+     * @param x     the centre's x
+     * @param y     the centre's y
+     * @param rx    the radius along the turned x axis, 0 or more
+     * @param ry    the radius along the turned y axis, 0 or more
+     * @param angle how far it is turned about its centre, radians, clockwise on screen
      *
      * @throws IllegalArgumentException if a value is NaN or infinite, or a radius is negative
      */
@@ -33,25 +49,48 @@ public record Ellipse(float x, float y, float rx, float ry) implements Shape {
         Check.finite("y", y);
         Check.size("radius rx", rx);
         Check.size("radius ry", ry);
+        Check.finite("angle", angle);
     }
 
-    /** {@inheritDoc} Same as {@link Collide#ellipsePoint}. */
+    /**
+     * Makes an axis-aligned ellipse (angle 0), checking its values: Processing's
+     * {@code ellipse(x, y, 2 * rx, 2 * ry)}.
+     *
+     * @param x  the centre's x
+     * @param y  the centre's y
+     * @param rx the horizontal radius, 0 or more
+     * @param ry the vertical radius, 0 or more
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a radius is negative
+     */
+    public Ellipse(float x, float y, float rx, float ry) {
+        this(x, y, rx, ry, 0);
+    }
+
+    /**
+     * {@inheritDoc} Same as {@link Collide#ellipsePoint} for an axis-aligned ellipse; a turned
+     * one takes the point into its own frame first.
+     */
     @Override
     public boolean contains(float px, float py) {
-        return Collide.ellipsePoint(x, y, rx, ry, px, py);
+        return Ellipses.aligned(this) ? Collide.ellipsePoint(x, y, rx, ry, px, py) : Ellipses.turnedPoint(this, px, py);
     }
 
-    /** {@inheritDoc} Rounded outwards, so the box holds the ellipse even when x - rx is not a float. */
+    /**
+     * {@inheritDoc} Rounded outwards, so the box holds the ellipse even when x - rx is not a
+     * float; a turned ellipse's box is its exact extent, {@code hypot(rx cos, ry sin)} either
+     * side of the centre, widened by a few double roundings before it is rounded outwards.
+     */
     @Override
     public Rect bounds() {
         return Bounds.enclosing(Bounds.left(this), Bounds.top(this), Bounds.right(this), Bounds.bottom(this));
     }
 
-    /** {@inheritDoc} */
+    /** {@inheritDoc} The angle is kept. */
     @Override
     public Ellipse translated(float dx, float dy) {
         Check.finite("dx", dx);
         Check.finite("dy", dy);
-        return new Ellipse(Check.finite("x + dx", x + dx), Check.finite("y + dy", y + dy), rx, ry);
+        return new Ellipse(Check.finite("x + dx", x + dx), Check.finite("y + dy", y + dy), rx, ry, angle);
     }
 }

@@ -60,6 +60,9 @@ final class Overlaps {
 
     /** An ellipse with anything. */
     private static boolean ellipseWith(Ellipse e, Shape other) {
+        if (!Ellipses.aligned(e) || other instanceof Ellipse f && !Ellipses.aligned(f)) {
+            return Ellipses.turned(e, other); // a turned ellipse: the other shape in its frame
+        }
         float x = e.x(), y = e.y(), a = e.rx(), b = e.ry();
         if (other instanceof Ellipse f) {
             return Collide.ellipseEllipse(x, y, a, b, f.x(), f.y(), f.rx(), f.ry());

@@ -220,6 +220,62 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * A ray the raw-float methods answer "no hit" for: a NaN or infinite origin or direction,
      * a direction of (0, 0), or a NaN or negative reach.
      */
+    /**
+     * How far along a ray is the first point inside the axis-aligned ellipse? Allocates
+     * nothing and never throws. Exact up to the rounding of a quadratic's root in double, as
+     * {@link #distanceToCircle} (the ellipse is a circle in a plane scaled along the axes).
+     *
+     * @param ox          the ray's origin x
+     * @param oy          the ray's origin y
+     * @param dx          the ray's direction, x part
+     * @param dy          the ray's direction, y part
+     * @param maxDistance how far the ray reaches
+     * @param x           the ellipse's centre x
+     * @param y           the ellipse's centre y
+     * @param radiusX     the ellipse's horizontal radius
+     * @param radiusY     the ellipse's vertical radius
+     * @return the distance in pixels, 0 if the origin is inside, or
+     *         {@link Float#POSITIVE_INFINITY} if the ray does not go into the ellipse (a flat
+     *         ellipse has no inside to go into; also for NaN or infinite input, a direction of
+     *         (0, 0), a negative maxDistance or a negative radius)
+     */
+    public static float distanceToEllipse(float ox, float oy, float dx, float dy, float maxDistance,
+                                          float x, float y, float radiusX, float radiusY) {
+        if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(x, y, radiusX, radiusY, 0)
+                || radiusX < 0 || radiusY < 0) {
+            return Float.POSITIVE_INFINITY;
+        }
+        double s = ellipseParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), x, y, radiusX, radiusY);
+        return distance(s < 0 ? 0 : s, dx, dy);
+    }
+
+    /**
+     * How far along a ray is the first point inside the capsule? Allocates nothing and never
+     * throws. A capsule of radius 0 has no inside: the ray never goes into it.
+     *
+     * @param ox          the ray's origin x
+     * @param oy          the ray's origin y
+     * @param dx          the ray's direction, x part
+     * @param dy          the ray's direction, y part
+     * @param maxDistance how far the ray reaches
+     * @param x1          the capsule's segment, first end x
+     * @param y1          the capsule's segment, first end y
+     * @param x2          the capsule's segment, second end x
+     * @param y2          the capsule's segment, second end y
+     * @param r           the capsule's radius
+     * @return the distance in pixels, 0 if the origin is inside, or
+     *         {@link Float#POSITIVE_INFINITY} if the ray does not go into the capsule (also for
+     *         NaN or infinite input, a direction of (0, 0), a negative maxDistance or a
+     *         negative radius)
+     */
+    public static float distanceToCapsule(float ox, float oy, float dx, float dy, float maxDistance,
+                                          float x1, float y1, float x2, float y2, float r) {
+        if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(x1, y1, x2, y2, r) || r < 0) {
+            return Float.POSITIVE_INFINITY;
+        }
+        return distance(capsuleParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), x1, y1, x2, y2, r), dx, dy);
+    }
+
     private static boolean badRay(float ox, float oy, float dx, float dy, float maxDistance) {
         return Check.notFinite(ox, oy, dx, dy, 0) || (dx == 0 && dy == 0) || !(maxDistance >= 0);
     }
@@ -235,6 +291,38 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
 
     private static float distance(double s, float dx, float dy) {
         return s == Slabs.INF ? Float.POSITIVE_INFINITY : (float) (s * Math.hypot(dx, dy));
+    }
+
+    /**
+     * The ray's parameter where it enters the aligned ellipse: scaled by ry along x and rx
+     * along y the ellipse is a circle of radius rx ry, and the parameter is the same in both
+     * planes. Negative if the origin is inside; {@link Slabs#INF} if it never enters.
+     */
+    private static double ellipseParam(float ox, float oy, double dx, double dy, double limit, float x, float y, float a, float b) {
+        return Discs.entry(((double) ox - x) * b, ((double) oy - y) * a, dx * b, dy * a, (double) a * b, limit);
+    }
+
+    /**
+     * The ray's parameter where it enters the capsule: the first entry into either end's disc
+     * or the rectangle between them (in the segment's own frame); 0 if the origin is inside,
+     * {@link Slabs#INF} if it never enters.
+     */
+    private static double capsuleParam(float ox, float oy, double dx, double dy, double limit,
+                                       float x1, float y1, float x2, float y2, float r) {
+        if (Collide.capsulePoint(x1, y1, x2, y2, r, ox, oy)) {
+            return 0;
+        }
+        double s = Math.min(Discs.entry((double) ox - x1, (double) oy - y1, dx, dy, r, limit),
+                Discs.entry((double) ox - x2, (double) oy - y2, dx, dy, r, limit));
+        double ex = (double) x2 - x1, ey = (double) y2 - y1, len = Math.hypot(ex, ey);
+        if (len > 0) {
+            double ux = ex / len, uy = ey / len;
+            double px = (double) ox - x1, py = (double) oy - y1;
+            double along = px * ux + py * uy, across = -px * uy + py * ux;
+            double va = dx * ux + dy * uy, vc = -dx * uy + dy * ux;
+            s = Math.min(s, Slabs.boxTime(-along, len - along, -r - across, r - across, va, vc, limit));
+        }
+        return s == Slabs.INF ? s : Math.max(s, 0);
     }
 
     private static double circleParam(float ox, float oy, float dx, float dy, double limit, float cx, float cy, float r) {
@@ -304,7 +392,10 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      */
     private RayHit castEllipse(Ellipse e, double limit) {
         double a = e.rx(), b = e.ry();
-        double s = Discs.entry(((double) ox - e.x()) * b, ((double) oy - e.y()) * a, dx * b, dy * a, a * b, limit);
+        if (!Ellipses.aligned(e)) {
+            return castTurnedEllipse(e, a, b, limit);
+        }
+        double s = ellipseParam(ox, oy, dx, dy, limit, e.x(), e.y(), e.rx(), e.ry());
         if (s == Slabs.INF) {
             return null;
         }
@@ -316,6 +407,25 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
     }
 
     /**
+     * A turned ellipse: the ray taken into its frame (the turn undone about the centre), cast
+     * as for an aligned one, and the normal turned back.
+     */
+    private RayHit castTurnedEllipse(Ellipse e, double a, double b, double limit) {
+        Ellipses.Frame f = new Ellipses.Frame(e);
+        double u = f.u(ox, oy), v = f.v(ox, oy);
+        double du = dx * f.c() + dy * f.s(), dv = -dx * f.s() + dy * f.c();
+        double s = Discs.entry(u * b, v * a, du * b, dv * a, a * b, limit);
+        if (s == Slabs.INF) {
+            return null;
+        }
+        if (s < 0) {
+            return inside();
+        }
+        double gu = (u + s * du) / (a * a), gv = (v + s * dv) / (b * b);
+        return hitAt(s, gu * f.c() - gv * f.s(), gu * f.s() + gv * f.c());
+    }
+
+    /**
      * A capsule: the first entry into either end's disc or the rectangle between them (in the
      * segment's own frame); the normal points from the segment's nearest point to the hit.
      */
@@ -323,20 +433,11 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         if (Collide.capsulePoint(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), ox, oy)) {
             return inside();
         }
-        double s = Math.min(Discs.entry((double) ox - k.x1(), (double) oy - k.y1(), dx, dy, k.r(), limit),
-                Discs.entry((double) ox - k.x2(), (double) oy - k.y2(), dx, dy, k.r(), limit));
-        double ex = (double) k.x2() - k.x1(), ey = (double) k.y2() - k.y1(), len = Math.hypot(ex, ey);
-        if (len > 0) {
-            double ux = ex / len, uy = ey / len;
-            double px = (double) ox - k.x1(), py = (double) oy - k.y1();
-            double along = px * ux + py * uy, across = -px * uy + py * ux;
-            double va = dx * ux + dy * uy, vc = -dx * uy + dy * ux;
-            s = Math.min(s, Slabs.boxTime(-along, len - along, -k.r() - across, k.r() - across, va, vc, limit));
-        }
+        double s = capsuleParam(ox, oy, dx, dy, limit, k.x1(), k.y1(), k.x2(), k.y2(), k.r());
         if (s == Slabs.INF) {
             return null;
         }
-        s = Math.max(s, 0);
+        double ex = (double) k.x2() - k.x1(), ey = (double) k.y2() - k.y1(), len = Math.hypot(ex, ey);
         double hx = ox + s * dx, hy = oy + s * dy;
         double t = len == 0 ? 0 : Collide.clamp(((hx - k.x1()) * ex + (hy - k.y1()) * ey) / (len * len), 0, 1);
         double nx = hx - (k.x1() + t * ex), ny = hy - (k.y1() + t * ey);

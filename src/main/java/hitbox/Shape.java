@@ -30,9 +30,7 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * @param other the other shape, not null
      * @return the contact, or null when the shapes are apart or touching
      * @throws IllegalArgumentException if {@code other} is null, or either shape is a
-     *                                  {@link Segment} (a segment has no area to push out of),
-     *                                  or a concave polygon meets an {@link Ellipse} or a
-     *                                  {@link Capsule}
+     *                                  {@link Segment} (a segment has no area to push out of)
      */
     default Contact contact(Shape other) {
         return Contact.between(this, Check.notNull("other", other));

@@ -31,7 +31,7 @@ final class Supports {
             return c.x() * nx + c.y() * ny + c.r();
         }
         if (s instanceof Ellipse e) {
-            return e.x() * nx + e.y() * ny + Math.hypot(e.rx() * nx, e.ry() * ny);
+            return Ellipses.support(e, nx, ny);
         }
         if (s instanceof Capsule k) {
             return Math.max(k.x1() * nx + k.y1() * ny, k.x2() * nx + k.y2() * ny) + k.r();
@@ -95,25 +95,7 @@ final class Supports {
 
     /** Golden-section search for the least push in [lo, hi]. */
     private static double refine(Shape a, Shape b, double lo, double hi) {
-        double g = (Math.sqrt(5) - 1) / 2;
-        double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-        double f1 = push(a, b, m1), f2 = push(a, b, m2);
-        for (int i = 0; i < 80 && hi - lo > 1e-15; i++) {
-            if (f1 < f2) {
-                hi = m2;
-                m2 = m1;
-                f2 = f1;
-                m1 = hi - g * (hi - lo);
-                f1 = push(a, b, m1);
-            } else {
-                lo = m1;
-                m1 = m2;
-                f1 = f2;
-                m2 = lo + g * (hi - lo);
-                f2 = push(a, b, m2);
-            }
-        }
-        return f1 < f2 ? m1 : m2;
+        return Golden.least(t -> push(a, b, t), lo, hi, 80, 1e-15)[0];
     }
 
     /** The shapes' size, for the tie tolerance. */

@@ -34,7 +34,9 @@ final class Sampled {
             if (e.rx() == 0 || e.ry() == 0) {
                 return false;
             }
-            double u = (x - e.x()) / e.rx(), v = (y - e.y()) / e.ry();
+            double c = Math.cos(e.angle()), sn = Math.sin(e.angle());
+            double dx = x - e.x(), dy = y - e.y();
+            double u = (dx * c + dy * sn) / e.rx(), v = (-dx * sn + dy * c) / e.ry();
             return u * u + v * v < 1;
         }
         if (s instanceof Rect r) {
@@ -72,9 +74,9 @@ final class Sampled {
     static List<double[]> outline(Shape s) {
         List<double[]> out = new ArrayList<>();
         if (s instanceof Circle c) {
-            ellipse(out, c.x(), c.y(), c.r(), c.r());
+            ellipse(out, c.x(), c.y(), c.r(), c.r(), 0);
         } else if (s instanceof Ellipse e) {
-            ellipse(out, e.x(), e.y(), e.rx(), e.ry());
+            ellipse(out, e.x(), e.y(), e.rx(), e.ry(), e.angle());
         } else if (s instanceof Rect r) {
             double x = r.x(), y = r.y(), w = r.w(), h = r.h();
             polyline(out, new double[] {x, y, x + w, y, x + w, y + h, x, y + h}, true);
@@ -106,10 +108,12 @@ final class Sampled {
         return out;
     }
 
-    private static void ellipse(List<double[]> out, double x, double y, double a, double b) {
+    private static void ellipse(List<double[]> out, double x, double y, double a, double b, double angle) {
+        double c = Math.cos(angle), s = Math.sin(angle);
         for (int i = 0; i < N; i++) {
             double t = 2 * Math.PI * i / N;
-            out.add(new double[] {x + a * Math.cos(t), y + b * Math.sin(t)});
+            double u = a * Math.cos(t), v = b * Math.sin(t);
+            out.add(new double[] {x + u * c - v * s, y + u * s + v * c});
         }
         out.add(new double[] {x, y});
     }
@@ -143,7 +147,7 @@ final class Sampled {
     /** The ellipse or capsule grown (f greater than 1) or shrunk (f less than 1) by factor f in its radii. */
     static Shape scaled(Shape s, double f) {
         if (s instanceof Ellipse e) {
-            return new Ellipse(e.x(), e.y(), (float) (e.rx() * f), (float) (e.ry() * f));
+            return new Ellipse(e.x(), e.y(), (float) (e.rx() * f), (float) (e.ry() * f), e.angle());
         }
         if (s instanceof Capsule k) {
             return new Capsule(k.x1(), k.y1(), k.x2(), k.y2(), (float) (k.r() * f));
@@ -157,11 +161,17 @@ final class Sampled {
      * apart when it is shrunk 2%. Both answers must come up often.
      */
     static void assertAgreesWithOracle(long seed, int count, Function<Random, Shape> make) {
+        assertAgreesWithOracle(seed, count, make, Sampled::any);
+    }
+
+    /** As above, the other shape from {@code others}. */
+    static void assertAgreesWithOracle(long seed, int count, Function<Random, Shape> make,
+                                       Function<Random, Shape> others) {
         Random rnd = new Random(seed);
         int overlapping = 0, apart = 0;
         for (int i = 0; i < count; i++) {
             Shape s = make.apply(rnd);
-            Shape other = any(rnd);
+            Shape other = others.apply(rnd);
             boolean answer = s.overlaps(other);
             assertEquals(answer, other.overlaps(s), "both orders for " + s + " and " + other);
             if (answer) {
@@ -179,6 +189,13 @@ final class Sampled {
 
     static Ellipse ellipse(Random rnd) {
         return new Ellipse(coord(rnd), coord(rnd), 2 + rnd.nextInt(40) + rnd.nextFloat(), 2 + rnd.nextInt(40) + rnd.nextFloat());
+    }
+
+    /** An ellipse turned by any angle (now and then a right angle or a half turn, written in float). */
+    static Ellipse turnedEllipse(Random rnd) {
+        Ellipse e = ellipse(rnd);
+        float angle = rnd.nextInt(6) == 0 ? (float) (Math.PI / 2 * rnd.nextInt(4)) : (float) (rnd.nextDouble() * 7 - 3.5);
+        return new Ellipse(e.x(), e.y(), e.rx(), e.ry(), angle);
     }
 
     static Capsule capsule(Random rnd) {

@@ -43,7 +43,10 @@ public class ShapesBench {
     Ellipse[] ellipses = new Ellipse[N + 1];
     Capsule[] capsules = new Capsule[N + 1];
     Convex[] dynEllipses = new Convex[N + 1], dynCapsules = new Convex[N + 1], dynCircles = new Convex[N + 1];
-    Transform[] eT = new Transform[N + 1], cT = new Transform[N + 1];
+    Transform[] eT = new Transform[N + 1], cT = new Transform[N + 1], tT = new Transform[N + 1], bT = new Transform[N + 1];
+    Ellipse[] turned = new Ellipse[N + 1];
+    Rect[] boxes = new Rect[N + 1];
+    Convex[] dynBoxes = new Convex[N + 1];
     final Gjk gjk = new Gjk();
     final ConservativeAdvancement ca = new ConservativeAdvancement();
     Polygon blade = Polygon.rotatedRect(200, 200, 160, 4, 0);
@@ -71,6 +74,16 @@ public class ShapesBench {
             dynCapsules[i] = new org.dyn4j.geometry.Capsule(2 * a[i] + b[i], b[i]);
             cT[i] = new Transform();
             cT[i].setTranslation(x[i] + a[i], y[i]);
+            float angle = (float) (rnd.nextDouble() * Math.PI);
+            turned[i] = new Ellipse(x[i], y[i], a[i], b[i], angle);
+            tT[i] = new Transform();
+            tT[i].setRotation(angle);
+            tT[i].setTranslation(x[i], y[i]);
+            // A box a by b with its corner at the centre.
+            boxes[i] = new Rect(x[i], y[i], a[i], b[i]);
+            dynBoxes[i] = new Rectangle(a[i], b[i]);
+            bT[i] = new Transform();
+            bT[i].setTranslation(x[i] + a[i] / 2, y[i] + b[i] / 2);
         }
         bladeT.setTranslation(200, 200);
         postT.setTranslation(242, 242);
@@ -204,6 +217,51 @@ public class ShapesBench {
             if (gjk.detect(dynCapsules[i], cT[i], dynCapsules[i + 1], cT[i + 1], p)) {
                 s += p.getDepth();
             }
+        }
+        return s;
+    }
+
+    /** Turned ellipses (each by its own angle) against the next: the other shape taken into the ellipse's frame. */
+    @Benchmark
+    public int turnedEllipseEllipse_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (turned[i].overlaps(turned[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int turnedEllipseEllipse_dyn4j() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (gjk.detect(dynEllipses[i], tT[i], dynEllipses[i + 1], tT[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    /** A straight time of impact: each ellipse moving (60, 40) into the next one's box. */
+    @Benchmark
+    public float ellipseSweep_hitbox() {
+        float s = 0;
+        for (int i = 0; i < N; i++) {
+            Hit h = Sweep.timeOfImpact(ellipses[i], 60, 40, boxes[i + 1]);
+            s += h == null ? 2 : h.t();
+        }
+        return s;
+    }
+
+    @Benchmark
+    public double ellipseSweep_dyn4j() {
+        double s = 0;
+        Vector2 v = new Vector2(60, 40), still = new Vector2(0, 0);
+        for (int i = 0; i < N; i++) {
+            TimeOfImpact toi = new TimeOfImpact();
+            s += ca.getTimeOfImpact(dynEllipses[i], eT[i], v, 0, dynBoxes[i + 1], bT[i + 1], still, 0, toi) ? toi.getTime() : 2;
         }
         return s;
     }
