@@ -22,7 +22,7 @@ final class Bounds {
             return Math.min(g.x1(), g.x2());
         }
         if (s instanceof Ellipse e) {
-            return (double) e.x() - Ellipses.halfWidth(e);
+            return (double) e.x() - TurnedEllipses.halfWidth(e);
         }
         if (s instanceof Capsule k) {
             return Math.min(k.x1(), k.x2()) - (double) k.r();
@@ -42,7 +42,7 @@ final class Bounds {
             return Math.min(g.y1(), g.y2());
         }
         if (s instanceof Ellipse e) {
-            return (double) e.y() - Ellipses.halfHeight(e);
+            return (double) e.y() - TurnedEllipses.halfHeight(e);
         }
         if (s instanceof Capsule k) {
             return Math.min(k.y1(), k.y2()) - (double) k.r();
@@ -62,7 +62,7 @@ final class Bounds {
             return Math.max(g.x1(), g.x2());
         }
         if (s instanceof Ellipse e) {
-            return (double) e.x() + Ellipses.halfWidth(e);
+            return (double) e.x() + TurnedEllipses.halfWidth(e);
         }
         if (s instanceof Capsule k) {
             return Math.max(k.x1(), k.x2()) + (double) k.r();
@@ -83,7 +83,7 @@ final class Bounds {
             return Math.max(g.y1(), g.y2());
         }
         if (s instanceof Ellipse e) {
-            return (double) e.y() + Ellipses.halfHeight(e);
+            return (double) e.y() + TurnedEllipses.halfHeight(e);
         }
         if (s instanceof Capsule k) {
             return Math.max(k.y1(), k.y2()) + (double) k.r();

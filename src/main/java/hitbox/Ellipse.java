@@ -73,7 +73,7 @@ public record Ellipse(float x, float y, float rx, float ry, float angle) impleme
      */
     @Override
     public boolean contains(float px, float py) {
-        return Ellipses.aligned(this) ? Collide.ellipsePoint(x, y, rx, ry, px, py) : Ellipses.turnedPoint(this, px, py);
+        return TurnedEllipses.aligned(this) ? Collide.ellipsePoint(x, y, rx, ry, px, py) : TurnedEllipses.turnedPoint(this, px, py);
     }
 
     /**

@@ -60,8 +60,8 @@ final class Overlaps {
 
     /** An ellipse with anything. */
     private static boolean ellipseWith(Ellipse e, Shape other) {
-        if (!Ellipses.aligned(e) || other instanceof Ellipse f && !Ellipses.aligned(f)) {
-            return Ellipses.turned(e, other); // a turned ellipse: the other shape in its frame
+        if (!TurnedEllipses.aligned(e) || other instanceof Ellipse f && !TurnedEllipses.aligned(f)) {
+            return TurnedEllipses.turned(e, other); // a turned ellipse: the other shape in its frame
         }
         float x = e.x(), y = e.y(), a = e.rx(), b = e.ry();
         if (other instanceof Ellipse f) {

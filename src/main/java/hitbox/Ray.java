@@ -392,7 +392,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      */
     private RayHit castEllipse(Ellipse e, double limit) {
         double a = e.rx(), b = e.ry();
-        if (!Ellipses.aligned(e)) {
+        if (!TurnedEllipses.aligned(e)) {
             return castTurnedEllipse(e, a, b, limit);
         }
         double s = ellipseParam(ox, oy, dx, dy, limit, e.x(), e.y(), e.rx(), e.ry());
@@ -411,7 +411,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * as for an aligned one, and the normal turned back.
      */
     private RayHit castTurnedEllipse(Ellipse e, double a, double b, double limit) {
-        Ellipses.Frame f = new Ellipses.Frame(e);
+        TurnedEllipses.Frame f = new TurnedEllipses.Frame(e);
         double u = f.u(ox, oy), v = f.v(ox, oy);
         double du = dx * f.c() + dy * f.s(), dv = -dx * f.s() + dy * f.c();
         double s = Discs.entry(u * b, v * a, du * b, dv * a, a * b, limit);

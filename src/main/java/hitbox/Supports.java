@@ -31,7 +31,7 @@ final class Supports {
             return c.x() * nx + c.y() * ny + c.r();
         }
         if (s instanceof Ellipse e) {
-            return Ellipses.support(e, nx, ny);
+            return TurnedEllipses.support(e, nx, ny);
         }
         if (s instanceof Capsule k) {
             return Math.max(k.x1() * nx + k.y1() * ny, k.x2() * nx + k.y2() * ny) + k.r();

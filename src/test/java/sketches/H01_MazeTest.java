@@ -129,7 +129,7 @@ class H01_MazeTest {
             for (H01_Maze.Guard guard : s.guards) {
                 Grid g = s.grid;
                 assertFalse(g.isSolid(g.colAt(guard.x), g.rowAt(guard.y)), "a guard in a building at " + guard.x + ", " + guard.y);
-                float d = s.dist(guard.x, guard.y, px, py);
+                float d = processing.core.PApplet.dist(guard.x, guard.y, px, py);
                 boolean clear = g.lineOfSight(guard.x, guard.y, px, py);
                 assertEquals(d < s.guardView && clear, guard.seeing, "guard at " + guard.x + ", " + guard.y);
                 any |= guard.seeing;
