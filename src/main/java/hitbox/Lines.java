@@ -36,7 +36,43 @@ final class Lines {
         if (det > bound || -det > bound || Double.isNaN(det) || Double.isInfinite(bound)) {
             return det;
         }
+        if (exactTerms(ax, ay, bx, by, cx, cy, left, right)) {
+            return det;
+        }
         return exactOrient(ax, ay, bx, by, cx, cy).doubleValue();
+    }
+
+    /**
+     * Were the two products of {@link #orient} computed without rounding? Then their
+     * difference, rounded once, is the exact value rounded, with the exact sign (a difference
+     * of two doubles is 0 only when they are equal). This is the usual case near 0: points
+     * exactly on a line with coordinates of modest size (whole numbers, say), where the
+     * differences and products of floats are all exact in double; it answers them without
+     * {@link BigDecimal}, so without allocating. Each difference is checked with Knuth's
+     * Two-Sum and each product with a fused multiply-add.
+     */
+    private static boolean exactTerms(double ax, double ay, double bx, double by, double cx, double cy,
+                                      double left, double right) {
+        double ex = bx - ax, ey = by - ay, fx = cx - ax, fy = cy - ay;
+        return exactDifference(bx, ax, ex) && exactDifference(cy, ay, fy)
+                && exactDifference(by, ay, ey) && exactDifference(cx, ax, fx)
+                && exactProduct(ex, fy, left) && exactProduct(ey, fx, right);
+    }
+
+    /**
+     * Is p the exact product of x and y? The fused multiply-add's error term is 0, and the
+     * product is far enough from underflow (or an exact 0) that an error term could not
+     * itself have underflowed to 0: floats' differences never come near that.
+     */
+    private static boolean exactProduct(double x, double y, double p) {
+        return p == 0 ? x == 0 || y == 0 : Math.abs(p) >= 0x1p-900 && Math.fma(x, y, -p) == 0;
+    }
+
+    /** Is {@code d}, the rounded {@code b - a}, exact? (Knuth's Two-Sum error term is 0.) */
+    private static boolean exactDifference(double b, double a, double d) {
+        double bv = d - b;
+        double av = d - bv;
+        return (b - av) + (-a - bv) == 0;
     }
 
     /** Shewchuk's ccwerrboundA, (3 + 16 eps) eps with eps = 2^-53. */
