@@ -55,7 +55,7 @@ final class Overlaps {
         if (b instanceof Segment s) {
             return segmentWith(s, a);
         }
-        return Collide.polygonPolygon(((Polygon) a).raw(), ((Polygon) b).raw());
+        return Polygons.overlap((Polygon) a, (Polygon) b);
     }
 
     /** An ellipse with anything. */
