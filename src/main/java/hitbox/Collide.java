@@ -186,7 +186,10 @@ public final class Collide {
      * @return true if the point is strictly inside
      */
     public static boolean polygonPoint(float[] xy, float px, float py) {
-        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(px, py, 0, 0, 0)) {
+        Check.notNull("xy", xy);
+        // NaN in a vertex is caught inside the crossing loop (no pass of its own); only an
+        // odd last coordinate, which the loop never reads, is looked at here.
+        if (px != px || py != py || (xy.length % 2 != 0 && xy[xy.length - 1] != xy[xy.length - 1])) {
             return false;
         }
         return Polygons.contains(xy, px, py);

@@ -97,6 +97,11 @@ final class Lines {
         return orient(x1, y1, x2, y2, px, py) == 0 && inBox(x1, y1, x2, y2, px, py);
     }
 
+    /** Are a and b non-zero with the same sign? (False if either is 0 or NaN.) */
+    static boolean sameSide(double a, double b) {
+        return (a > 0 && b > 0) || (a < 0 && b < 0);
+    }
+
     /** Are a and b non-zero with opposite signs? (False if either is 0 or NaN.) */
     static boolean opposite(double a, double b) {
         return (a > 0 && b < 0) || (a < 0 && b > 0);
@@ -149,8 +154,17 @@ final class Lines {
     static boolean segmentsMeet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
         double o1 = Lines.orient(ax, ay, bx, by, cx, cy);
         double o2 = Lines.orient(ax, ay, bx, by, dx, dy);
+        // Both ends strictly on one side of the other's line: apart, and no end can lie on
+        // the other segment (a segment through a point of a line, not along it, has its ends
+        // on both sides), so the two orientations left are not needed. The usual miss.
+        if (sameSide(o1, o2)) {
+            return false;
+        }
         double o3 = Lines.orient(cx, cy, dx, dy, ax, ay);
         double o4 = Lines.orient(cx, cy, dx, dy, bx, by);
+        if (sameSide(o3, o4)) {
+            return false;
+        }
         if (Lines.opposite(o1, o2) && Lines.opposite(o3, o4)) {
             return true;
         }
