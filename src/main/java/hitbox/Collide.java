@@ -521,6 +521,11 @@ public final class Collide {
             }
         }
         // No point of a's outline is inside b: b is wholly inside a, or wholly outside it.
+        // Inside needs every vertex of b in a's closed box; a vertex beyond it settles
+        // "outside" at once, with no exact arithmetic (the usual case: boxes that cross).
+        if (!Polygons.boxWithin(b, a)) {
+            return false;
+        }
         int m = Polygons.leftmost(b);
         int prev = Polygons.distinctNeighbour(b, m, b.length / 2 - 1);
         int next = Polygons.distinctNeighbour(b, m, 1);

@@ -353,6 +353,12 @@ final class Polygons {
                 || max(a, 1) <= min(b, 1) || max(b, 1) <= min(a, 1);
     }
 
+    /** Is every vertex of {@code inner} in the closed bounding box of {@code outer}'s vertices? */
+    static boolean boxWithin(float[] inner, float[] outer) {
+        return min(inner, 0) >= min(outer, 0) && max(inner, 0) <= max(outer, 0)
+                && min(inner, 1) >= min(outer, 1) && max(inner, 1) <= max(outer, 1);
+    }
+
     /** The largest x ({@code axis} 0) or y (1) of the vertices. */
     private static float max(float[] xy, int axis) {
         float m = xy[axis];

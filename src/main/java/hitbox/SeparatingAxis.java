@@ -200,8 +200,20 @@ public final class SeparatingAxis {
                 if (mx == 0 && my == 0) {
                     continue;
                 }
-                double minA = min(a, mx, my), maxA = max(a, mx, my);
-                double minB = min(b, mx, my), maxB = max(b, mx, my);
+                // Both shadows, each in one pass (the same products as min and max below; the
+                // finite projections have no NaN, and the sign of a zero changes no overlap).
+                double minA = Double.POSITIVE_INFINITY, maxA = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < a.length - 1; k += 2) {
+                    double v = a[k] * mx + a[k + 1] * my;
+                    minA = v < minA ? v : minA;
+                    maxA = v > maxA ? v : maxA;
+                }
+                double minB = Double.POSITIVE_INFINITY, maxB = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < b.length - 1; k += 2) {
+                    double v = b[k] * mx + b[k + 1] * my;
+                    minB = v < minB ? v : minB;
+                    maxB = v > maxB ? v : maxB;
+                }
                 double forward = maxA - minB, back = maxB - minA;
                 double bound = 1e-14 * Math.max(Math.max(Math.abs(minA), Math.abs(maxA)), Math.max(Math.abs(minB), Math.abs(maxB)));
                 if (Math.abs(forward) <= bound || Math.abs(back) <= bound) {
