@@ -152,12 +152,6 @@ final class Lines {
 
     /** Do the closed segments AB and CD meet? Exact orientation signs. */
     static boolean segmentsMeet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
-        // Closed boxes strictly apart: the segments are apart (each lies in its box). Plain
-        // comparisons, exact, and cheaper than the orientations for the usual far miss.
-        if ((ax < bx ? bx : ax) < (cx < dx ? cx : dx) || (cx < dx ? dx : cx) < (ax < bx ? ax : bx)
-                || (ay < by ? by : ay) < (cy < dy ? cy : dy) || (cy < dy ? dy : cy) < (ay < by ? ay : by)) {
-            return false;
-        }
         double o1 = Lines.orient(ax, ay, bx, by, cx, cy);
         double o2 = Lines.orient(ax, ay, bx, by, dx, dy);
         // Both ends strictly on one side of the other's line: apart, and no end can lie on
