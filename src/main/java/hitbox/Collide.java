@@ -108,25 +108,8 @@ public final class Collide {
     public static boolean rectRect(float x1, float y1, float w1, float h1,
                                    float x2, float y2, float w2, float h2) {
         return w1 >= 0 && h1 >= 0 && w2 >= 0 && h2 >= 0
-                && sumAbove(x1, w1, x2) && sumAbove(x2, w2, x1)
-                && sumAbove(y1, h1, y2) && sumAbove(y2, h2, y1);
-    }
-
-    /**
-     * Is the exact sum {@code a + b} greater than c? The float sum first, the double sum (exact
-     * for floats) only when the float sum lands on c.
-     *
-     * <p>Why that is exact: rounding to float is monotone (s &le; t implies fl(s) &le; fl(t),
-     * overflow to infinity included) and leaves a float unchanged, so with S the exact sum,
-     * S &le; c implies fl(S) &le; fl(c) = c, that is, fl(S) &gt; c implies S &gt; c; and
-     * S &ge; c implies fl(S) &ge; c, so fl(S) &lt; c implies S &lt; c. Only fl(S) = c leaves
-     * S on either side of c (within half a step), and there the double sum decides: the sum
-     * of two floats is exact in double. NaN fails every comparison, as in the double form.
-     * The float form costs no conversions, so this runs at the tutorial's speed.
-     */
-    private static boolean sumAbove(float a, float b, float c) {
-        float s = a + b;
-        return s > c || (s == c && (double) a + b > c);
+                && (double) x1 + w1 > x2 && x1 < (double) x2 + w2
+                && (double) y1 + h1 > y2 && y1 < (double) y2 + h2;
     }
 
     /**
@@ -186,10 +169,7 @@ public final class Collide {
      * @return true if the point is strictly inside
      */
     public static boolean polygonPoint(float[] xy, float px, float py) {
-        Check.notNull("xy", xy);
-        // NaN in a vertex is caught inside the crossing loop (no pass of its own); only an
-        // odd last coordinate, which the loop never reads, is looked at here.
-        if (px != px || py != py || (xy.length % 2 != 0 && xy[xy.length - 1] != xy[xy.length - 1])) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(px, py, 0, 0, 0)) {
             return false;
         }
         return Polygons.contains(xy, px, py);

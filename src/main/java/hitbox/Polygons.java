@@ -129,16 +129,11 @@ final class Polygons {
             return false;
         }
         boolean inside = false;
-        // A NaN vertex makes the answer false (the NaN rule); noted on the way round rather
-        // than in a pass of its own, since every vertex is read here anyway. The early
-        // returns below all answer false, which is right with or without a NaN.
-        boolean nan = false;
         double ax = xy[2 * n - 2];
         double ay = xy[2 * n - 1];
         for (int i = 0; i < n; i++) {
             double bx = xy[2 * i];
             double by = xy[2 * i + 1];
-            nan |= bx != bx | by != by;
             if ((ay > py) != (by > py)) {
                 int crossing = rayCrossing(ax, ay, bx, by, px, py);
                 if (crossing < 0) {
@@ -153,7 +148,7 @@ final class Polygons {
             ax = bx;
             ay = by;
         }
-        return inside && !nan;
+        return inside;
     }
 
     /**

@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Test;
 /**
  * The fast paths of issue 12: the convex polygon test by orientation signs
  * ({@link Polygons#convexOverlap}), the convexity check on raw arrays
- * ({@link Polygons#convexWinding}), the float-first {@link Collide#rectRect}, the exact
+ * ({@link Polygons#convexWinding}), {@link Collide#rectRect} where float sums round, the exact
  * near-zero shortcut of {@link Lines#orient}, and that the boolean, distance and convex
  * contact answers allocate nothing but their result.
  */
