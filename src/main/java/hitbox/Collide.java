@@ -508,7 +508,10 @@ public final class Collide {
      * none does and {@code b} is then wholly inside {@code a} or wholly outside it: a step from
      * {@code b}'s leftmost corner into {@code b} settles which, exactly. This works for concave
      * polygons too, where the separating-axis test does not. Time grows with the product of
-     * the two vertex counts; far-apart polygons are rejected by their bounds first.
+     * the two vertex counts; far-apart polygons are rejected by their bounds first. When both
+     * outlines are convex (checked on the way in, one orientation per vertex), the separating
+     * axes are asked instead, with exact orientation signs: the same answers, in about the
+     * time of a sum of the vertex counts when they overlap.
      *
      * <p>A NaN anywhere in either array answers false
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
@@ -521,6 +524,13 @@ public final class Collide {
     public static boolean polygonPolygon(float[] a, float[] b) {
         if (Check.nan(Check.notNull("a", a)) || Check.nan(Check.notNull("b", b))) {
             return false;
+        }
+        int ca = Polygons.convexWinding(a);
+        if (ca != 0) {
+            int cb = Polygons.convexWinding(b);
+            if (cb != 0) {
+                return Polygons.convexOverlap(a, ca, b, cb);
+            }
         }
         int wa = Polygons.winding(a);
         int wb = Polygons.winding(b);
@@ -539,6 +549,11 @@ public final class Collide {
             }
         }
         // No point of a's outline is inside b: b is wholly inside a, or wholly outside it.
+        // Inside needs every vertex of b in a's closed box; a vertex beyond it settles
+        // "outside" at once, with no exact arithmetic (the usual case: boxes that cross).
+        if (!Polygons.boxWithin(b, a)) {
+            return false;
+        }
         int m = Polygons.leftmost(b);
         int prev = Polygons.distinctNeighbour(b, m, b.length / 2 - 1);
         int next = Polygons.distinctNeighbour(b, m, 1);

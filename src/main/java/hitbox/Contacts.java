@@ -54,14 +54,23 @@ final class Contacts {
          * root here, a division there) must not let rounding pick the direction.
          */
         void offer(double nx, double ny, double depth) {
-            double slack = slack(Math.min(depth, this.depth));
-            double f = flip ? -1 : 1;
-            if (depth < this.depth - slack
-                    || (depth <= this.depth + slack && preferred(f * nx, f * ny, f * this.nx, f * this.ny))) {
+            if (beats(nx, ny, depth, this.nx, this.ny, this.depth, tolerance, flip)) {
                 this.nx = nx;
                 this.ny = ny;
                 this.depth = depth;
             }
+        }
+
+        /**
+         * The rule of {@link #offer}, on plain values, for searches that keep their best in
+         * locals so as to allocate nothing: does (nx, ny, depth) beat the best so far
+         * (bx, by, best)?
+         */
+        static boolean beats(double nx, double ny, double depth, double bx, double by, double best,
+                             double tolerance, boolean flip) {
+            double slack = Math.max(Contact.TIE * Math.min(depth, best), tolerance);
+            double f = flip ? -1 : 1;
+            return depth < best - slack || (depth <= best + slack && preferred(f * nx, f * ny, f * bx, f * by));
         }
 
         /**
@@ -181,6 +190,10 @@ final class Contacts {
         boolean convexA = !(a instanceof Polygon p) || p.isConvex();
         boolean convexB = !(b instanceof Polygon p) || p.isConvex();
         if (convexA && convexB) {
+            if (a instanceof Polygon p && b instanceof Polygon q) {
+                // Apart is answered exactly and cheaply first; the search then only measures.
+                return Polygons.overlap(p, q) ? SeparatingAxis.contact(p.corners(), q.corners()) : null;
+            }
             return SeparatingAxis.contact(Polygons.corners(a), Polygons.corners(b));
         }
         return Clearance.polygons(Clearance.Parts.of(a), Clearance.Parts.of(b));

@@ -24,6 +24,13 @@ package hitbox;
  * <p>Every {@link Result} is one of four constants, so {@link #check} allocates nothing,
  * like {@link #overlaps}; a {@link Counter} tallies which stage decided, to show how much
  * work the early stages save.
+ *
+ * <p>It shows the idea; it does not save time in Hitbox, whose precise tests already start
+ * with the cheapest rejection ({@link PixelMask#overlaps} with the solid pixels' boxes,
+ * two {@link Polygon}s with their cached bounds; circles and rectangles cost no more than a box
+ * test). Measured with JMH (HybridBench), the hybrid check took 1.5 times as long as the
+ * precise test alone on pixel masks, and 1.4 times on circles and rectangles. For speed, call
+ * the precise test.
  */
 public final class Hybrid {
 

@@ -36,7 +36,43 @@ final class Lines {
         if (det > bound || -det > bound || Double.isNaN(det) || Double.isInfinite(bound)) {
             return det;
         }
+        if (exactTerms(ax, ay, bx, by, cx, cy, left, right)) {
+            return det;
+        }
         return exactOrient(ax, ay, bx, by, cx, cy).doubleValue();
+    }
+
+    /**
+     * Were the two products of {@link #orient} computed without rounding? Then their
+     * difference, rounded once, is the exact value rounded, with the exact sign (a difference
+     * of two doubles is 0 only when they are equal). This is the usual case near 0: points
+     * exactly on a line with coordinates of modest size (whole numbers, say), where the
+     * differences and products of floats are all exact in double; it answers them without
+     * {@link BigDecimal}, so without allocating. Each difference is checked with Knuth's
+     * Two-Sum and each product with a fused multiply-add.
+     */
+    private static boolean exactTerms(double ax, double ay, double bx, double by, double cx, double cy,
+                                      double left, double right) {
+        double ex = bx - ax, ey = by - ay, fx = cx - ax, fy = cy - ay;
+        return exactDifference(bx, ax, ex) && exactDifference(cy, ay, fy)
+                && exactDifference(by, ay, ey) && exactDifference(cx, ax, fx)
+                && exactProduct(ex, fy, left) && exactProduct(ey, fx, right);
+    }
+
+    /**
+     * Is p the exact product of x and y? The fused multiply-add's error term is 0, and the
+     * product is far enough from underflow (or an exact 0) that an error term could not
+     * itself have underflowed to 0: floats' differences never come near that.
+     */
+    private static boolean exactProduct(double x, double y, double p) {
+        return p == 0 ? x == 0 || y == 0 : Math.abs(p) >= 0x1p-900 && Math.fma(x, y, -p) == 0;
+    }
+
+    /** Is {@code d}, the rounded {@code b - a}, exact? (Knuth's Two-Sum error term is 0.) */
+    private static boolean exactDifference(double b, double a, double d) {
+        double bv = d - b;
+        double av = d - bv;
+        return (b - av) + (-a - bv) == 0;
     }
 
     /** Shewchuk's ccwerrboundA, (3 + 16 eps) eps with eps = 2^-53. */
@@ -59,6 +95,11 @@ final class Lines {
     /** Does the point lie on the closed segment? */
     static boolean segmentPoint(float x1, float y1, float x2, float y2, float px, float py) {
         return orient(x1, y1, x2, y2, px, py) == 0 && inBox(x1, y1, x2, y2, px, py);
+    }
+
+    /** Are a and b non-zero with the same sign? (False if either is 0 or NaN.) */
+    static boolean sameSide(double a, double b) {
+        return (a > 0 && b > 0) || (a < 0 && b < 0);
     }
 
     /** Are a and b non-zero with opposite signs? (False if either is 0 or NaN.) */
@@ -113,8 +154,17 @@ final class Lines {
     static boolean segmentsMeet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
         double o1 = Lines.orient(ax, ay, bx, by, cx, cy);
         double o2 = Lines.orient(ax, ay, bx, by, dx, dy);
+        // Both ends strictly on one side of the other's line: apart, and no end can lie on
+        // the other segment (a segment through a point of a line, not along it, has its ends
+        // on both sides), so the two orientations left are not needed. The usual miss.
+        if (sameSide(o1, o2)) {
+            return false;
+        }
         double o3 = Lines.orient(cx, cy, dx, dy, ax, ay);
         double o4 = Lines.orient(cx, cy, dx, dy, bx, by);
+        if (sameSide(o3, o4)) {
+            return false;
+        }
         if (Lines.opposite(o1, o2) && Lines.opposite(o3, o4)) {
             return true;
         }

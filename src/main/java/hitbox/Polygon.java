@@ -31,11 +31,20 @@ public final class Polygon implements Shape {
      * polygon cannot change and every contact asks.
      */
     private final int concaveVertex;
+    /**
+     * The {@link Polygons#winding} if the polygon is convex, else 0: kept, so that the convex
+     * fast paths ({@link Polygons#convexOverlap}) need no check per call.
+     */
+    private final int convexWinding;
+    /** The vertices widened to double (exactly), made once for the contact search. */
+    private final double[] corners;
 
     private Polygon(float[] xy, int concaveVertex) {
         this.xy = xy;
         this.bounds = Polygons.bounds(xy);
         this.concaveVertex = concaveVertex;
+        this.convexWinding = concaveVertex < 0 ? Polygons.winding(xy) : 0;
+        this.corners = Polygons.toDouble(xy);
     }
 
     /**
@@ -324,6 +333,16 @@ public final class Polygon implements Shape {
      */
     int concaveVertex() {
         return concaveVertex;
+    }
+
+    /** The winding (+1 or -1) if the polygon is convex, 0 if it is concave. */
+    int convexWinding() {
+        return convexWinding;
+    }
+
+    /** The vertices in double, without a copy, for the library's own loops; never handed out. */
+    double[] corners() {
+        return corners;
     }
 
     /** {@inheritDoc} Same as {@link Collide#polygonPoint}. */

@@ -160,7 +160,10 @@ public final class SeparatingAxis {
      * @throws IllegalArgumentException if a polygon is null or concave
      */
     public static boolean overlaps(Polygon a, Polygon b) {
-        return search(convexCorners("a", a), convexCorners("b", b), null);
+        convexCorners("a", a);
+        convexCorners("b", b);
+        // The same axes, asked with exact orientation signs (Polygons.convexOverlap).
+        return Polygons.convexOverlap(a.raw(), a.convexWinding(), b.raw(), b.convexWinding());
     }
 
     /**
@@ -184,28 +187,33 @@ public final class SeparatingAxis {
      * no axis and are skipped, which is still a complete test for convex sets.
      */
     static Contact contact(double[] a, double[] b) {
-        Contacts.Shortest best = new Contacts.Shortest();
-        return search(a, b, best) ? best.contact() : null;
-    }
-
-    /**
-     * The one SAT loop: every edge normal of a, then of b, un-normalized so the projections
-     * are exact. False at the first axis that separates them (touching separates). With a
-     * {@code best}, each axis offers it the two pushes along it: b can go forward until its
-     * shadow starts where a's ends, or back.
-     */
-    private static boolean search(double[] a, double[] b, Contacts.Shortest best) {
-        for (double[] owner : new double[][] {a, b}) {
+        // The best push so far, in locals (the tie rule of Contacts.Shortest), so that the
+        // search allocates nothing but its answer.
+        double bestX = 0, bestY = 0, best = Double.POSITIVE_INFINITY;
+        for (int pass = 0; pass < 2; pass++) {
+            double[] owner = pass == 0 ? a : b;
             int n = owner.length / 2;
             for (int i = 0; i < n; i++) {
-                int j = (i + 1) % n;
+                int j = i + 1 == n ? 0 : i + 1;
                 double mx = -(owner[2 * j + 1] - owner[2 * i + 1]);
                 double my = owner[2 * j] - owner[2 * i];
                 if (mx == 0 && my == 0) {
                     continue;
                 }
-                double minA = min(a, mx, my), maxA = max(a, mx, my);
-                double minB = min(b, mx, my), maxB = max(b, mx, my);
+                // Both shadows, each in one pass (the same products as min and max below; the
+                // finite projections have no NaN, and the sign of a zero changes no overlap).
+                double minA = Double.POSITIVE_INFINITY, maxA = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < a.length - 1; k += 2) {
+                    double v = a[k] * mx + a[k + 1] * my;
+                    minA = v < minA ? v : minA;
+                    maxA = v > maxA ? v : maxA;
+                }
+                double minB = Double.POSITIVE_INFINITY, maxB = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < b.length - 1; k += 2) {
+                    double v = b[k] * mx + b[k + 1] * my;
+                    minB = v < minB ? v : minB;
+                    maxB = v > maxB ? v : maxB;
+                }
                 double forward = maxA - minB, back = maxB - minA;
                 double bound = 1e-14 * Math.max(Math.max(Math.abs(minA), Math.abs(maxA)), Math.max(Math.abs(minB), Math.abs(maxB)));
                 if (Math.abs(forward) <= bound || Math.abs(back) <= bound) {
@@ -216,19 +224,28 @@ public final class SeparatingAxis {
                     forward = exact[0].doubleValue();
                     back = exact[1].doubleValue();
                     if (exact[0].signum() <= 0 || exact[1].signum() <= 0) {
-                        return false;
+                        return null;
                     }
                 } else if (forward <= 0 || back <= 0) {
-                    return false;
+                    return null;
                 }
-                if (best != null) {
-                    double len = Math.hypot(mx, my);
-                    best.offer(mx / len, my / len, forward / len);
-                    best.offer(-mx / len, -my / len, back / len);
+                // b can go forward along the axis until its shadow starts where a's ends, or back.
+                double len = Math.sqrt(mx * mx + my * my);
+                double ux = mx / len, uy = my / len, d = forward / len;
+                if (Contacts.Shortest.beats(ux, uy, d, bestX, bestY, best, 0, false)) {
+                    bestX = ux;
+                    bestY = uy;
+                    best = d;
+                }
+                d = back / len;
+                if (Contacts.Shortest.beats(-ux, -uy, d, bestX, bestY, best, 0, false)) {
+                    bestX = -ux;
+                    bestY = -uy;
+                    best = d;
                 }
             }
         }
-        return true;
+        return best == Double.POSITIVE_INFINITY ? null : Contact.of(bestX, bestY, best);
     }
 
     /**
@@ -269,7 +286,7 @@ public final class SeparatingAxis {
         return m;
     }
 
-    /** The polygon's vertices in double, after checking it is there and convex. */
+    /** The polygon's vertices in double (its own, not a copy), after checking it is there and convex. */
     private static double[] convexCorners(String name, Polygon p) {
         Check.notNull(name, p);
         int v = p.concaveVertex();
@@ -277,6 +294,6 @@ public final class SeparatingAxis {
             throw new IllegalArgumentException("SAT needs convex polygons; polygon " + name
                     + " is concave at vertex " + v + " (" + p.x(v) + ", " + p.y(v) + ")");
         }
-        return Polygons.corners(p);
+        return p.corners();
     }
 }

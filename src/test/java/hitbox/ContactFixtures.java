@@ -337,7 +337,11 @@ final class ContactFixtures {
      * contact(b, a) against contact(a, b): the same depth, and the opposite normal unless the
      * two directions tie exactly (a symmetric placement, where the documented tie rule gives
      * the same normal in both orders). Such a tie is checked, not assumed: pushing b the
-     * other way by the depth must separate the shapes too.
+     * other way by the depth must separate the shapes too, by the push-out property that
+     * holds for the pair: {@link #assertPushOutTouches} when both are convex, and
+     * {@link #assertPushOutFree} when one is concave, since a concave shape can wedge: a
+     * rectangle as wide as a comb's slot, pushed by the depth into the slot, is free there
+     * but overlaps again a step further on (PolygonContactTest keeps that case).
      */
     static void assertReversedOrSymmetricTie(Shape a, Shape b, Contact ab, Contact ba) {
         if (ab == null || ba == null || Math.abs(ab.nx() + ba.nx()) < 1e-6 && Math.abs(ab.ny() + ba.ny()) < 1e-6) {
@@ -347,7 +351,17 @@ final class ContactFixtures {
         assertEquals(ab.depth(), ba.depth(), 1e-5 * Math.max(1, ab.depth()), "depth");
         assertEquals(ab.nx(), ba.nx(), 1e-6, "not opposite, so the same (a tie)");
         assertEquals(ab.ny(), ba.ny(), 1e-6, "not opposite, so the same (a tie)");
-        assertPushOutTouches(a, b, new Contact(-ab.nx(), -ab.ny(), ab.depth()));
+        Contact reversed = new Contact(-ab.nx(), -ab.ny(), ab.depth());
+        if (convex(a) && convex(b)) {
+            assertPushOutTouches(a, b, reversed);
+        } else {
+            assertPushOutFree(a, b, reversed);
+        }
+    }
+
+    /** Is the shape convex (every shape with area but a concave polygon)? */
+    static boolean convex(Shape s) {
+        return !(s instanceof Polygon p) || p.isConvex();
     }
 
     static void assertUnit(Contact c) {

@@ -280,6 +280,34 @@ class PolygonContactTest {
         assertEquals(overlapsRef(a, b), a.contact(b) != null, () -> a + " against " + b);
     }
 
+    /**
+     * Found by reversedOrder_flipsNormal_unlessSymmetricTie (it failed on about one random
+     * run in ten): a rectangle (or circle) exactly as wide as a comb's slots, in a tooth
+     * between two slots. Both orders give the same normal, a true symmetric tie: the comb can
+     * go either way by the depth and the shape sits in a slot, free. But a step further on,
+     * it meets the next tooth, so the convex "depth + step separates" check cannot hold for
+     * the reversed push; the tie is checked with the concave push-out property instead.
+     */
+    @Test
+    void symmetricTie_inAConcaveSlot_isFreeAtTheDepthButWedged() {
+        Polygon comb = Polygon.of(-4, -2, 1, -2, 1, -22, 6, -22, 6, -2, 11, -2, 11, -22, 16, -22, 16, -2, 21, -2,
+                21, -32, -4, -32);
+        Shape rect = new Rect(6, -13, 5, 34);
+        Contact ab = rect.contact(comb), ba = comb.contact(rect);
+        assertContact(1, 0, 5, ab);
+        assertContact(1, 0, 5, ba);
+        assertReversedOrSymmetricTie(rect, comb, ab, ba);
+        Contact reversed = new Contact(-1, 0, 5);
+        ContactFixtures.assertPushOutFree(rect, comb, reversed);
+        float step = 1e-3f * 16;
+        assertTrue(overlapsRef(rect, comb.translated(-5 - step, 0)), "wedged: a step beyond the slot is the next tooth");
+
+        Polygon wide = Polygon.of(8, 11, 16, 11, 16, -21, 24, -21, 24, 11, 32, 11, 32, -21, 40, -21, 40, 11, 48, 11,
+                48, -37, 8, -37);
+        Shape circle = new Circle(12, -4, 4);
+        assertReversedOrSymmetricTie(circle, wide, circle.contact(wide), wide.contact(circle));
+    }
+
     @Property(tries = 300, maxDiscardRatio = 20)
     void reversedOrder_flipsNormal_unlessSymmetricTie(@ForAll("anyWithArea") Shape a, @ForAll("concave") Polygon b) {
         Contact ab = a.contact(b);
