@@ -56,16 +56,15 @@ public final class NarrowPhaseTable {
         }
 
         String describe(String peer) {
-            if (touchingHit + touchingMiss + normalTies + skin + wrong == 0) {
-                return peer + ": agrees on all " + NarrowCase.N;
-            }
+            int same = NarrowCase.N - touchingHit - touchingMiss - wrong;
             List<String> parts = new ArrayList<>();
+            parts.add(same == NarrowCase.N ? "same hits and misses on all " + NarrowCase.N : "same on " + same);
             if (touchingHit > 0) parts.add(touchingHit + " touching or grazing cases it counts as hits");
             if (touchingMiss > 0) parts.add(touchingMiss + " touching or grazing hits it misses");
-            if (skin > 0) parts.add(skin + " values off by its skin or tolerance (under " + tolerance + " px)");
+            if (skin > 0) parts.add(skin + " values within " + tolerance + " px but not equal (its skin or tolerance)");
             if (normalTies > 0) parts.add(normalTies + " equally deep normals it picks otherwise");
             if (wrong > 0) parts.add(wrong + " WRONG (first: " + firstWrong + ")");
-            return peer + ": agrees on " + agree + "; " + String.join("; ", parts);
+            return peer + ": " + String.join("; ", parts);
         }
     }
 
@@ -184,7 +183,8 @@ public final class NarrowPhaseTable {
             String id = r.getParams().getParam("contender");
             @SuppressWarnings("rawtypes")
             Result alloc = r.getSecondaryResults().get("gc.alloc.rate.norm");
-            out.put(id, new double[] {r.getPrimaryResult().getScore(), alloc == null ? Double.NaN : alloc.getScore()});
+            // the score is per case (OperationsPerInvocation), but JMH's allocation is per call of the loop
+            out.put(id, new double[] {r.getPrimaryResult().getScore(), alloc == null ? Double.NaN : alloc.getScore() / NarrowCase.N});
         }
         return out;
     }
@@ -214,7 +214,7 @@ public final class NarrowPhaseTable {
         s.append("on ").append(ZonedDateTime.now(ZoneOffset.UTC).format(DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm 'UTC'")))
                 .append(", on ").append(Runtime.getRuntime().availableProcessors())
                 .append(" cores shared with other builds (").append(load).append("): a short run on a busy machine, so read\n");
-        s.append("the ratios, measured in the same run, rather than the nanoseconds. B/call is JMH's `gc.alloc.rate.norm` per case.\n\n");
+        s.append("the ratios, measured in the same run, rather than the nanoseconds. B/call is JMH's `gc.alloc.rate.norm` divided by the 1,024 cases of a call.\n\n");
 
         List<String> slower = new ArrayList<>(), shapeSlow = new ArrayList<>(), allocating = new ArrayList<>();
         int peerRows = 0, shapeRows = 0, allocRows = 0;
