@@ -49,12 +49,13 @@ abstract class NarrowContender {
      */
     abstract double[] answer(int i, float[] scratch);
 
-    /** A yes-or-no contender. */
-    static final class Bool extends NarrowContender {
-        private final Function<NarrowCase, IntPredicate> factory;
-        private IntPredicate f;
+    /** A contender whose answer, of type F, a factory builds from the cases. */
+    abstract static class Built<F> extends NarrowContender {
+        private final Function<NarrowCase, F> factory;
+        /** The per-case answer, once {@link #prepare} has built it. */
+        F f;
 
-        Bool(String question, String key, Role role, String call, Function<NarrowCase, IntPredicate> factory) {
+        Built(String question, String key, Role role, String call, Function<NarrowCase, F> factory) {
             super(question, key, role, call);
             this.factory = factory;
         }
@@ -62,6 +63,13 @@ abstract class NarrowContender {
         @Override
         void prepare(NarrowCase cases) {
             f = factory.apply(cases);
+        }
+    }
+
+    /** A yes-or-no contender. */
+    static final class Bool extends Built<IntPredicate> {
+        Bool(String question, String key, Role role, String call, Function<NarrowCase, IntPredicate> factory) {
+            super(question, key, role, call, factory);
         }
 
         @Override
@@ -83,18 +91,9 @@ abstract class NarrowContender {
     }
 
     /** A distance or time contender: +Infinity is no hit. */
-    static final class Num extends NarrowContender {
-        private final Function<NarrowCase, IntToDoubleFunction> factory;
-        private IntToDoubleFunction f;
-
+    static final class Num extends Built<IntToDoubleFunction> {
         Num(String question, String key, Role role, String call, Function<NarrowCase, IntToDoubleFunction> factory) {
-            super(question, key, role, call);
-            this.factory = factory;
-        }
-
-        @Override
-        void prepare(NarrowCase cases) {
-            f = factory.apply(cases);
+            super(question, key, role, call, factory);
         }
 
         @Override
@@ -123,18 +122,9 @@ abstract class NarrowContender {
     }
 
     /** A contact contender. */
-    static final class Depth extends NarrowContender {
-        private final Function<NarrowCase, ContactFn> factory;
-        private ContactFn f;
-
+    static final class Depth extends Built<ContactFn> {
         Depth(String question, String key, Role role, String call, Function<NarrowCase, ContactFn> factory) {
-            super(question, key, role, call);
-            this.factory = factory;
-        }
-
-        @Override
-        void prepare(NarrowCase cases) {
-            f = factory.apply(cases);
+            super(question, key, role, call, factory);
         }
 
         @Override

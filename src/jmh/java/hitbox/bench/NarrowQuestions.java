@@ -130,6 +130,26 @@ final class NarrowQuestions {
         current.contenders().add(new NarrowContender.Depth(current.id(), key, role, call, f));
     }
 
+    /** Collide's test on raw floats: the shapes' floats as {@link NarrowCase#raw} gives them. */
+    private interface Raw {
+        IntPredicate over(float[][] a, float[][] b);
+    }
+
+    /** An overlap question between two generators: the raw Collide call and the Shape route. */
+    private static void overlap(String id, String title, long seed, NarrowCase.Gen first, NarrowCase.Gen second,
+                                String call, String shapeCall, Raw raw) {
+        question(id, title, () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, seed, first, second));
+        bool("collide", HITBOX, call, q -> raw.over(q.ra, q.rb));
+        shapeOverlaps(shapeCall);
+    }
+
+    /** A point-in-shape question: the raw Collide call and {@code Shape.contains}. */
+    private static void pointIn(String id, String title, long seed, NarrowCase.Gen shape, String call, String shapeCall, Raw raw) {
+        question(id, title, () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, seed, shape, POINT));
+        bool("collide", HITBOX, call, q -> raw.over(q.ra, q.rb));
+        shapeContains(shapeCall);
+    }
+
     /** Hitbox through {@code Shape.overlaps}, the same for every pair. */
     private static void shapeOverlaps(String call) {
         bool("shape", SHAPE, call, q -> {
@@ -153,6 +173,15 @@ final class NarrowQuestions {
             Dyn4j d = new Dyn4j(q);
             Gjk gjk = new Gjk();
             return i -> gjk.detect(d.a[i], d.ta[i], d.b[i], d.tb[i]);
+        });
+    }
+
+    /** libGDX's separating axis test on the two outlines. */
+    private static void gdxConvex() {
+        bool("gdx", PEER, "libGDX Intersector.overlapConvexPolygons", q -> {
+            var a = each(q, true, NarrowPeers::gdxPolygon, com.badlogic.gdx.math.Polygon[]::new);
+            var b = each(q, false, NarrowPeers::gdxPolygon, com.badlogic.gdx.math.Polygon[]::new);
+            return i -> Intersector.overlapConvexPolygons(a[i], b[i]);
         });
     }
 
@@ -203,19 +232,11 @@ final class NarrowQuestions {
 
     static {
         // ---- the questions of the table first
-        question("poly8", "convex 8-gon vs 8-gon, overlap", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 1, OCTAGON, OCTAGON));
-        bool("collide", HITBOX, "Collide.polygonPolygon", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.polygonPolygon(a[i], b[i]);
-        });
-        shapeOverlaps("Polygon.overlaps");
+        overlap("poly8", "convex 8-gon vs 8-gon, overlap", 1, OCTAGON, OCTAGON, "Collide.polygonPolygon", "Polygon.overlaps",
+                (a, b) -> i -> Collide.polygonPolygon(a[i], b[i]));
         dyn4jGjk();
         dyn4jSat();
-        bool("gdx", PEER, "libGDX Intersector.overlapConvexPolygons", q -> {
-            var a = each(q, true, NarrowPeers::gdxPolygon, com.badlogic.gdx.math.Polygon[]::new);
-            var b = each(q, false, NarrowPeers::gdxPolygon, com.badlogic.gdx.math.Polygon[]::new);
-            return i -> Intersector.overlapConvexPolygons(a[i], b[i]);
-        });
+        gdxConvex();
         bool("jbox2d", PEER, "JBox2D Collision.testOverlap", q -> {
             var a = each(q, true, NarrowPeers::jbox2d, org.jbox2d.collision.shapes.Shape[]::new);
             var b = each(q, false, NarrowPeers::jbox2d, org.jbox2d.collision.shapes.Shape[]::new);
@@ -243,21 +264,13 @@ final class NarrowQuestions {
             };
         });
 
-        question("circlePoly8", "circle vs convex 8-gon", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 3, OCTAGON, CIRCLE));
-        bool("collide", HITBOX, "Collide.polygonCircle", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.polygonCircle(a[i], b[i][0], b[i][1], b[i][2]);
-        });
-        shapeOverlaps("Polygon.overlaps(Circle)");
+        overlap("circlePoly8", "circle vs convex 8-gon", 3, OCTAGON, CIRCLE, "Collide.polygonCircle", "Polygon.overlaps(Circle)",
+                (a, b) -> i -> Collide.polygonCircle(a[i], b[i][0], b[i][1], b[i][2]));
         dyn4jGjk();
         dyn4jSat();
 
-        question("star16Point", "point in concave 16-gon", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 4, STAR16, POINT));
-        bool("collide", HITBOX, "Collide.polygonPoint", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.polygonPoint(a[i], b[i][0], b[i][1]);
-        });
-        shapeContains("Polygon.contains");
+        pointIn("star16Point", "point in concave 16-gon", 4, STAR16, "Collide.polygonPoint", "Polygon.contains",
+                (a, b) -> i -> Collide.polygonPoint(a[i], b[i][0], b[i][1]));
         bool("gdx", PEER, "libGDX Intersector.isPointInPolygon", q -> {
             float[][] a = q.ra, b = q.rb;
             return i -> Intersector.isPointInPolygon(a[i], 0, a[i].length, b[i][0], b[i][1]);
@@ -278,12 +291,8 @@ final class NarrowQuestions {
             return i -> RayCrossingCounter.locatePointInRing(points[i], rings[i]) == Location.INTERIOR;
         });
 
-        question("lineLine", "segment vs segment", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 5, SEGMENT, SEGMENT));
-        bool("collide", HITBOX, "Collide.lineLine", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.lineLine(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Segment.overlaps");
+        overlap("lineLine", "segment vs segment", 5, SEGMENT, SEGMENT, "Collide.lineLine", "Segment.overlaps",
+                (a, b) -> i -> Collide.lineLine(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]));
         bool("gdx", PEER, "libGDX Intersector.intersectSegments", q -> {
             float[][] a = q.ra, b = q.rb;
             return i -> Intersector.intersectSegments(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3], null);
@@ -338,12 +347,8 @@ final class NarrowQuestions {
         jbox2dToi();
         dyn4jToi();
 
-        question("rectRect", "two rects", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 9, RECT, RECT));
-        bool("collide", HITBOX, "Collide.rectRect", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.rectRect(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Rect.overlaps");
+        overlap("rectRect", "two rects", 9, RECT, RECT, "Collide.rectRect", "Rect.overlaps",
+                (a, b) -> i -> Collide.rectRect(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]));
         bool("gdx", PEER, "libGDX Rectangle.overlaps", q -> {
             var a = each(q, true, NarrowQuestions::gdxRect, com.badlogic.gdx.math.Rectangle[]::new);
             var b = each(q, false, NarrowQuestions::gdxRect, com.badlogic.gdx.math.Rectangle[]::new);
@@ -351,60 +356,40 @@ final class NarrowQuestions {
         });
 
         // ---- the rest of Collide
-        question("circleCircle", "circle vs circle", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 10, CIRCLE, CIRCLE));
-        bool("collide", HITBOX, "Collide.circleCircle", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.circleCircle(a[i][0], a[i][1], a[i][2], b[i][0], b[i][1], b[i][2]);
-        });
-        shapeOverlaps("Circle.overlaps");
+        overlap("circleCircle", "circle vs circle", 10, CIRCLE, CIRCLE, "Collide.circleCircle", "Circle.overlaps",
+                (a, b) -> i -> Collide.circleCircle(a[i][0], a[i][1], a[i][2], b[i][0], b[i][1], b[i][2]));
         bool("gdx", PEER, "libGDX Circle.overlaps", q -> {
             var a = each(q, true, NarrowQuestions::gdxCircle, com.badlogic.gdx.math.Circle[]::new);
             var b = each(q, false, NarrowQuestions::gdxCircle, com.badlogic.gdx.math.Circle[]::new);
             return i -> a[i].overlaps(b[i]);
         });
 
-        question("circlePoint", "point in circle", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 11, CIRCLE, POINT));
-        bool("collide", HITBOX, "Collide.circlePoint", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.circlePoint(a[i][0], a[i][1], a[i][2], b[i][0], b[i][1]);
-        });
-        shapeContains("Circle.contains");
+        pointIn("circlePoint", "point in circle", 11, CIRCLE, "Collide.circlePoint", "Circle.contains",
+                (a, b) -> i -> Collide.circlePoint(a[i][0], a[i][1], a[i][2], b[i][0], b[i][1]));
         bool("gdx", PEER, "libGDX Circle.contains", q -> {
             var a = each(q, true, NarrowQuestions::gdxCircle, com.badlogic.gdx.math.Circle[]::new);
             float[][] b = q.rb;
             return i -> a[i].contains(b[i][0], b[i][1]);
         });
 
-        question("rectPoint", "point in rect", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 12, RECT, POINT));
-        bool("collide", HITBOX, "Collide.rectPoint", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.rectPoint(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1]);
-        });
-        shapeContains("Rect.contains");
+        pointIn("rectPoint", "point in rect", 12, RECT, "Collide.rectPoint", "Rect.contains",
+                (a, b) -> i -> Collide.rectPoint(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1]));
         bool("gdx", PEER, "libGDX Rectangle.contains", q -> {
             var a = each(q, true, NarrowQuestions::gdxRect, com.badlogic.gdx.math.Rectangle[]::new);
             float[][] b = q.rb;
             return i -> a[i].contains(b[i][0], b[i][1]);
         });
 
-        question("circleRect", "circle vs rect", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 13, CIRCLE, RECT));
-        bool("collide", HITBOX, "Collide.circleRect", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.circleRect(a[i][0], a[i][1], a[i][2], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Circle.overlaps(Rect)");
+        overlap("circleRect", "circle vs rect", 13, CIRCLE, RECT, "Collide.circleRect", "Circle.overlaps(Rect)",
+                (a, b) -> i -> Collide.circleRect(a[i][0], a[i][1], a[i][2], b[i][0], b[i][1], b[i][2], b[i][3]));
         bool("gdx", PEER, "libGDX Intersector.overlaps(Circle, Rectangle)", q -> {
             var a = each(q, true, NarrowQuestions::gdxCircle, com.badlogic.gdx.math.Circle[]::new);
             var b = each(q, false, NarrowQuestions::gdxRect, com.badlogic.gdx.math.Rectangle[]::new);
             return i -> Intersector.overlaps(a[i], b[i]);
         });
 
-        question("lineCircle", "segment vs circle", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 14, SEGMENT, CIRCLE));
-        bool("collide", HITBOX, "Collide.lineCircle", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.lineCircle(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2]);
-        });
-        shapeOverlaps("Segment.overlaps(Circle)");
+        overlap("lineCircle", "segment vs circle", 14, SEGMENT, CIRCLE, "Collide.lineCircle", "Segment.overlaps(Circle)",
+                (a, b) -> i -> Collide.lineCircle(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2]));
         bool("gdx", PEER, "libGDX Intersector.intersectSegmentCircle", q -> {
             Vector2[] s = new Vector2[NarrowCase.N], e = new Vector2[NarrowCase.N], c = new Vector2[NarrowCase.N];
             float[] r2 = new float[NarrowCase.N];
@@ -419,12 +404,8 @@ final class NarrowQuestions {
         });
         dyn4jGjk();
 
-        question("lineRect", "segment vs rect", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 15, SEGMENT, RECT));
-        bool("collide", HITBOX, "Collide.lineRect", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.lineRect(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Segment.overlaps(Rect)");
+        overlap("lineRect", "segment vs rect", 15, SEGMENT, RECT, "Collide.lineRect", "Segment.overlaps(Rect)",
+                (a, b) -> i -> Collide.lineRect(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]));
         bool("gdx", PEER, "libGDX Intersector.intersectSegmentRectangle", q -> {
             float[][] a = q.ra;
             var b = each(q, false, NarrowQuestions::gdxRect, com.badlogic.gdx.math.Rectangle[]::new);
@@ -432,45 +413,25 @@ final class NarrowQuestions {
         });
         dyn4jGjk();
 
-        question("polygonRect", "convex 8-gon vs rect", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 16, OCTAGON, RECT));
-        bool("collide", HITBOX, "Collide.polygonRect", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.polygonRect(a[i], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Polygon.overlaps(Rect)");
+        overlap("polygonRect", "convex 8-gon vs rect", 16, OCTAGON, RECT, "Collide.polygonRect", "Polygon.overlaps(Rect)",
+                (a, b) -> i -> Collide.polygonRect(a[i], b[i][0], b[i][1], b[i][2], b[i][3]));
         dyn4jGjk();
         dyn4jSat();
-        bool("gdx", PEER, "libGDX Intersector.overlapConvexPolygons", q -> {
-            var a = each(q, true, NarrowPeers::gdxPolygon, com.badlogic.gdx.math.Polygon[]::new);
-            var b = each(q, false, NarrowPeers::gdxPolygon, com.badlogic.gdx.math.Polygon[]::new);
-            return i -> Intersector.overlapConvexPolygons(a[i], b[i]);
-        });
+        gdxConvex();
 
-        question("polygonLine", "convex 8-gon vs segment", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 17, OCTAGON, SEGMENT));
-        bool("collide", HITBOX, "Collide.polygonLine", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.polygonLine(a[i], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Polygon.overlaps(Segment)");
+        overlap("polygonLine", "convex 8-gon vs segment", 17, OCTAGON, SEGMENT, "Collide.polygonLine", "Polygon.overlaps(Segment)",
+                (a, b) -> i -> Collide.polygonLine(a[i], b[i][0], b[i][1], b[i][2], b[i][3]));
         dyn4jGjk();
 
-        question("trianglePoint", "point in triangle", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 18, TRIANGLE, POINT));
-        bool("collide", HITBOX, "Collide.trianglePoint", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.trianglePoint(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], a[i][5], b[i][0], b[i][1]);
-        });
-        shapeContains("Polygon.contains");
+        pointIn("trianglePoint", "point in triangle", 18, TRIANGLE, "Collide.trianglePoint", "Polygon.contains",
+                (a, b) -> i -> Collide.trianglePoint(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], a[i][5], b[i][0], b[i][1]));
         bool("gdx", PEER, "libGDX Intersector.isPointInTriangle", q -> {
             float[][] a = q.ra, b = q.rb;
             return i -> Intersector.isPointInTriangle(b[i][0], b[i][1], a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], a[i][5]);
         });
 
-        question("ellipsePoint", "point in ellipse", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 19, ELLIPSE, POINT));
-        bool("collide", HITBOX, "Collide.ellipsePoint", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.ellipsePoint(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1]);
-        });
-        shapeContains("Ellipse.contains");
+        pointIn("ellipsePoint", "point in ellipse", 19, ELLIPSE, "Collide.ellipsePoint", "Ellipse.contains",
+                (a, b) -> i -> Collide.ellipsePoint(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1]));
         bool("gdx", PEER, "libGDX Ellipse.contains", q -> {
             com.badlogic.gdx.math.Ellipse[] a = new com.badlogic.gdx.math.Ellipse[NarrowCase.N];
             for (int i = 0; i < NarrowCase.N; i++) {
@@ -481,60 +442,32 @@ final class NarrowQuestions {
             return i -> a[i].contains(b[i][0], b[i][1]);
         });
 
-        question("ellipseCircle", "ellipse vs circle", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 20, ELLIPSE, CIRCLE));
-        bool("collide", HITBOX, "Collide.ellipseCircle", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.ellipseCircle(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2]);
-        });
-        shapeOverlaps("Ellipse.overlaps(Circle)");
+        overlap("ellipseCircle", "ellipse vs circle", 20, ELLIPSE, CIRCLE, "Collide.ellipseCircle", "Ellipse.overlaps(Circle)",
+                (a, b) -> i -> Collide.ellipseCircle(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2]));
         dyn4jGjk();
 
-        question("ellipseRect", "ellipse vs rect", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 21, ELLIPSE, RECT));
-        bool("collide", HITBOX, "Collide.ellipseRect", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.ellipseRect(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Ellipse.overlaps(Rect)");
+        overlap("ellipseRect", "ellipse vs rect", 21, ELLIPSE, RECT, "Collide.ellipseRect", "Ellipse.overlaps(Rect)",
+                (a, b) -> i -> Collide.ellipseRect(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]));
         dyn4jGjk();
 
-        question("ellipseLine", "ellipse vs segment", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 22, ELLIPSE, SEGMENT));
-        bool("collide", HITBOX, "Collide.ellipseLine", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.ellipseLine(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Ellipse.overlaps(Segment)");
+        overlap("ellipseLine", "ellipse vs segment", 22, ELLIPSE, SEGMENT, "Collide.ellipseLine", "Ellipse.overlaps(Segment)",
+                (a, b) -> i -> Collide.ellipseLine(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]));
         dyn4jGjk();
 
-        question("ellipseEllipse", "ellipse vs ellipse", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 23, ELLIPSE, ELLIPSE));
-        bool("collide", HITBOX, "Collide.ellipseEllipse", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.ellipseEllipse(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Ellipse.overlaps");
+        overlap("ellipseEllipse", "ellipse vs ellipse", 23, ELLIPSE, ELLIPSE, "Collide.ellipseEllipse", "Ellipse.overlaps",
+                (a, b) -> i -> Collide.ellipseEllipse(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]));
         dyn4jGjk();
 
-        question("polygonEllipse", "convex 8-gon vs ellipse", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 24, OCTAGON, ELLIPSE));
-        bool("collide", HITBOX, "Collide.polygonEllipse", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.polygonEllipse(a[i], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Polygon.overlaps(Ellipse)");
+        overlap("polygonEllipse", "convex 8-gon vs ellipse", 24, OCTAGON, ELLIPSE, "Collide.polygonEllipse", "Polygon.overlaps(Ellipse)",
+                (a, b) -> i -> Collide.polygonEllipse(a[i], b[i][0], b[i][1], b[i][2], b[i][3]));
         dyn4jGjk();
 
-        question("ellipseCapsule", "ellipse vs capsule", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 25, ELLIPSE, CAPSULE));
-        bool("collide", HITBOX, "Collide.ellipseCapsule", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.ellipseCapsule(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3], b[i][4]);
-        });
-        shapeOverlaps("Ellipse.overlaps(Capsule)");
+        overlap("ellipseCapsule", "ellipse vs capsule", 25, ELLIPSE, CAPSULE, "Collide.ellipseCapsule", "Ellipse.overlaps(Capsule)",
+                (a, b) -> i -> Collide.ellipseCapsule(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3], b[i][4]));
         dyn4jGjk();
 
-        question("capsulePoint", "point in capsule", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 26, CAPSULE, POINT));
-        bool("collide", HITBOX, "Collide.capsulePoint", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.capsulePoint(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1]);
-        });
-        shapeContains("Capsule.contains");
+        pointIn("capsulePoint", "point in capsule", 26, CAPSULE, "Collide.capsulePoint", "Capsule.contains",
+                (a, b) -> i -> Collide.capsulePoint(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1]));
         bool("dyn4j", PEER, "dyn4j Capsule.contains", q -> {
             Convex[] a = each(q, true, NarrowPeers::dyn4j, Convex[]::new);
             Transform[] t = each(q, true, NarrowPeers::dyn4jAt, Transform[]::new);
@@ -545,44 +478,24 @@ final class NarrowQuestions {
             return i -> a[i].contains(p[i], t[i], false);
         });
 
-        question("capsuleCircle", "capsule vs circle", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 27, CAPSULE, CIRCLE));
-        bool("collide", HITBOX, "Collide.capsuleCircle", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.capsuleCircle(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1], b[i][2]);
-        });
-        shapeOverlaps("Capsule.overlaps(Circle)");
+        overlap("capsuleCircle", "capsule vs circle", 27, CAPSULE, CIRCLE, "Collide.capsuleCircle", "Capsule.overlaps(Circle)",
+                (a, b) -> i -> Collide.capsuleCircle(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1], b[i][2]));
         dyn4jGjk();
 
-        question("capsuleRect", "capsule vs rect", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 28, CAPSULE, RECT));
-        bool("collide", HITBOX, "Collide.capsuleRect", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.capsuleRect(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Capsule.overlaps(Rect)");
+        overlap("capsuleRect", "capsule vs rect", 28, CAPSULE, RECT, "Collide.capsuleRect", "Capsule.overlaps(Rect)",
+                (a, b) -> i -> Collide.capsuleRect(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1], b[i][2], b[i][3]));
         dyn4jGjk();
 
-        question("capsuleLine", "capsule vs segment", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 29, CAPSULE, SEGMENT));
-        bool("collide", HITBOX, "Collide.capsuleLine", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.capsuleLine(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1], b[i][2], b[i][3]);
-        });
-        shapeOverlaps("Capsule.overlaps(Segment)");
+        overlap("capsuleLine", "capsule vs segment", 29, CAPSULE, SEGMENT, "Collide.capsuleLine", "Capsule.overlaps(Segment)",
+                (a, b) -> i -> Collide.capsuleLine(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1], b[i][2], b[i][3]));
         dyn4jGjk();
 
-        question("capsuleCapsule", "capsule vs capsule", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 30, CAPSULE, CAPSULE));
-        bool("collide", HITBOX, "Collide.capsuleCapsule", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.capsuleCapsule(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1], b[i][2], b[i][3], b[i][4]);
-        });
-        shapeOverlaps("Capsule.overlaps");
+        overlap("capsuleCapsule", "capsule vs capsule", 30, CAPSULE, CAPSULE, "Collide.capsuleCapsule", "Capsule.overlaps",
+                (a, b) -> i -> Collide.capsuleCapsule(a[i][0], a[i][1], a[i][2], a[i][3], a[i][4], b[i][0], b[i][1], b[i][2], b[i][3], b[i][4]));
         dyn4jGjk();
 
-        question("polygonCapsule", "convex 8-gon vs capsule", () -> NarrowCase.pairs(NarrowCase.Kind.OVERLAP, 31, OCTAGON, CAPSULE));
-        bool("collide", HITBOX, "Collide.polygonCapsule", q -> {
-            float[][] a = q.ra, b = q.rb;
-            return i -> Collide.polygonCapsule(a[i], b[i][0], b[i][1], b[i][2], b[i][3], b[i][4]);
-        });
-        shapeOverlaps("Polygon.overlaps(Capsule)");
+        overlap("polygonCapsule", "convex 8-gon vs capsule", 31, OCTAGON, CAPSULE, "Collide.polygonCapsule", "Polygon.overlaps(Capsule)",
+                (a, b) -> i -> Collide.polygonCapsule(a[i], b[i][0], b[i][1], b[i][2], b[i][3], b[i][4]));
         dyn4jGjk();
 
         // ---- Contact
