@@ -1,7 +1,6 @@
 package hitbox.bench;
 
 import java.util.Random;
-import java.util.function.Function;
 
 import hitbox.Capsule;
 import hitbox.Circle;
@@ -14,7 +13,7 @@ import hitbox.Shape;
 /**
  * One question of the narrow-phase table: {@value #N} cases, each a pair of Hitbox shapes
  * (a point is a {@link Segment} of length 0), and for rays and sweeps a direction or motion.
- * Every contender gets the same cases, converted once to its own types by {@link NarrowPeers};
+ * Every contender gets the same cases, converted once to its own types (see {@link NarrowPeers});
  * only the conversion is shared, never an answer.
  *
  * <p>The cases come from a seeded generator: coordinates are whole or half numbers, so some
@@ -40,17 +39,9 @@ final class NarrowCase {
     /** The shapes' raw floats, in the order the {@code Collide} methods take them. */
     final float[][] ra = new float[N][];
     final float[][] rb = new float[N][];
-    /** Whatever a peer built from the cases (its own shapes and scratch objects), by peer. */
-    final java.util.Map<String, Object> peers = new java.util.HashMap<>();
 
     NarrowCase(Kind kind) {
         this.kind = kind;
-    }
-
-    /** The peer's converted data, built on first use from these cases. */
-    @SuppressWarnings("unchecked")
-    <T> T peer(String key, Function<NarrowCase, T> build) {
-        return (T) peers.computeIfAbsent(key, k -> build.apply(this));
     }
 
     /** A generator of one random shape. */
