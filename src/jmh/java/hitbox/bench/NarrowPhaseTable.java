@@ -232,8 +232,9 @@ public final class NarrowPhaseTable {
         StringBuilder s = new StringBuilder();
         s.append("### One shape against another: the narrow phase against the peers\n\n");
         s.append("Each question is 1,024 random cases (whole and half-pixel coordinates, so some pairs touch exactly; the two\n");
-        s.append("boxes of a pair overlap, as after a broad phase, except where a miss cannot have overlapping boxes; half the\n");
-        s.append("cases hit). Every contender gets the same cases in its own types, made before timing, and answers all of them\n");
+        s.append("boxes of a pair overlap or touch, as after a broad phase, except that where a miss needs apart boxes (two\n");
+        s.append("rectangles, a point in a rectangle) at most 64 pairs touch and the other misses lie anywhere; half the cases\n");
+        s.append("hit). Every contender gets the same cases in its own types, made before timing, and answers all of them\n");
         s.append("in one loop; its answers are checked against Hitbox's, case by case, before anything is timed. The peers are\n");
         s.append("dyn4j 6.0.0, libGDX 1.14.2, JTS 1.20 and JBox2D 2.2.1.1 (benchmark-only dependencies); for each question the\n");
         s.append("table shows the fastest of those measured. Made by `gradle narrowPhaseTable` (JMH `").append(jmhArgs.trim())
