@@ -33,8 +33,9 @@ import org.openjdk.jmh.runner.options.OptionsBuilder;
  * explains it), runs {@link NarrowPhaseBench} for every contender with JMH's GC profiler, and
  * writes {@code docs/narrow-phase.md} and the README's section between the narrow-phase
  * markers. Arguments are JMH's own ({@code -f 1 -wi 2 ...}); {@code -Dnarrow.only=regex}
- * picks questions by id, {@code -Dnarrow.checkOnly=true} stops after the check, and
- * {@code -Dnarrow.fromCsv=true} writes the text again from the last run's results without timing.
+ * picks questions by id (and then writes {@code build/narrow-phase-some.md} only),
+ * {@code -Dnarrow.checkOnly=true} stops after the check, and {@code -Dnarrow.fromCsv=true} writes
+ * the text again from the last run's results ({@code build/narrow-phase.csv}) without timing.
  *
  * <p>Run through {@code gradle narrowPhaseTable [-Pjmh.args="..."] [-Pnarrow.only=regex]}.
  */
@@ -77,24 +78,31 @@ public final class NarrowPhaseTable {
         if (Boolean.getBoolean("narrow.checkOnly")) {
             return;
         }
-        Path run = Path.of("build/narrow-phase-run.txt");
+        // a run of some questions only is written beside the full run's files, never over them
+        boolean some = System.getProperty("narrow.only") != null;
+        String name = some ? "build/narrow-phase-some" : "build/narrow-phase";
+        Path run = Path.of(name + "-run.txt"), csv = Path.of(name + ".csv");
         Map<String, double[]> measured;
         if (Boolean.getBoolean("narrow.fromCsv")) {
-            measured = readCsv(Path.of(CSV));
+            measured = readCsv(csv);
         } else {
             String load = loadAverage();
-            measured = measure(questions, args);
+            measured = measure(questions, args, csv);
             Files.writeString(run, String.join(" ", args) + "\n" + ZonedDateTime.now(ZoneOffset.UTC).format(DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm 'UTC'"))
                     + "\n" + load + ", after the run " + loadAverage() + "\n", StandardCharsets.UTF_8);
         }
         List<String> how = Files.readAllLines(run, StandardCharsets.UTF_8);
         String text = table(questions, agreements, measured, how.get(0), how.get(1), how.get(2));
-        Path root = Path.of(System.getProperty("narrow.root", "."));
-        Files.writeString(root.resolve("docs/narrow-phase.md"), "# Hitbox's narrow phase against the peers\n\n"
+        if (some) {
+            Files.writeString(Path.of(name + ".md"), text, StandardCharsets.UTF_8);
+            System.out.println("wrote " + name + ".md (some questions only: docs and README left as they are)");
+            return;
+        }
+        Files.writeString(Path.of("docs/narrow-phase.md"), "# Hitbox's narrow phase against the peers\n\n"
                 + "Made by `gradle narrowPhaseTable` (src/jmh/java/hitbox/bench/NarrowPhaseTable.java), which also writes this\n"
                 + "section into the README; edit the generator, not the output.\n\n" + text.substring(text.indexOf('\n') + 2),
                 StandardCharsets.UTF_8);
-        replaceReadmeSection(root.resolve("README.md"), text);
+        replaceReadmeSection(Path.of("README.md"), text);
         System.out.println("wrote docs/narrow-phase.md and the README section");
     }
 
@@ -175,7 +183,7 @@ public final class NarrowPhaseTable {
     // ---------------------------------------------------------------- timing
 
     /** ns per case and bytes per case for every contender, by id. */
-    static Map<String, double[]> measure(List<Question> questions, String[] args) throws Exception {
+    static Map<String, double[]> measure(List<Question> questions, String[] args, Path csv) throws Exception {
         List<String> ids = new ArrayList<>();
         for (Question q : questions) {
             for (NarrowContender c : q.contenders()) ids.add(c.id());
@@ -186,7 +194,7 @@ public final class NarrowPhaseTable {
                 .param("contender", ids.toArray(new String[0]))
                 .addProfiler(GCProfiler.class)
                 .resultFormat(ResultFormatType.CSV)
-                .result(CSV)
+                .result(csv.toString())
                 .build();
         Collection<RunResult> results = new Runner(options).run();
         Map<String, double[]> out = new HashMap<>();
@@ -199,9 +207,6 @@ public final class NarrowPhaseTable {
         }
         return out;
     }
-
-    /** Where JMH leaves its results, and where {@code -Dnarrow.fromCsv=true} reads them back. */
-    static final String CSV = "build/narrow-phase.csv";
 
     /** The table from a run's CSV, to rewrite the text without timing again. */
     static Map<String, double[]> readCsv(Path csv) throws IOException {
