@@ -1,0 +1,364 @@
+package hitbox.bench;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.ZoneOffset;
+import java.time.ZonedDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.regex.Pattern;
+
+import hitbox.bench.NarrowContender.Role;
+import hitbox.bench.NarrowQuestions.Question;
+import org.openjdk.jmh.profile.GCProfiler;
+import org.openjdk.jmh.results.Result;
+import org.openjdk.jmh.results.RunResult;
+import org.openjdk.jmh.results.format.ResultFormatType;
+import org.openjdk.jmh.runner.Runner;
+import org.openjdk.jmh.runner.options.CommandLineOptions;
+import org.openjdk.jmh.runner.options.Options;
+import org.openjdk.jmh.runner.options.OptionsBuilder;
+
+/**
+ * Makes the narrow-phase table: checks that every contender agrees with Hitbox on every case
+ * (failing before anything is timed if one does not, except where a touching rule or a skin
+ * explains it), runs {@link NarrowPhaseBench} for every contender with JMH's GC profiler, and
+ * writes {@code docs/narrow-phase.md} and the README's section between the narrow-phase
+ * markers. Arguments are JMH's own ({@code -f 1 -wi 2 ...}); {@code -Dnarrow.only=regex}
+ * picks questions by id (and then writes {@code build/narrow-phase-some.md} only),
+ * {@code -Dnarrow.checkOnly=true} stops after the check, and {@code -Dnarrow.fromCsv=true} writes
+ * the text again from the last run's results ({@code build/narrow-phase.csv}) without timing.
+ *
+ * <p>Run through {@code gradle narrowPhaseTable [-Pjmh.args="..."] [-Pnarrow.only=regex]}.
+ */
+public final class NarrowPhaseTable {
+    /** How far two unit normals may differ, per component. */
+    static final double NORMAL_TOLERANCE = 0.01;
+
+    private NarrowPhaseTable() {
+    }
+
+    /** How one contender's answers compare with Hitbox's on one question. */
+    static final class Agreement {
+        int agree, touchingHit, touchingMiss, normalTies, skin, wrong;
+        String firstWrong;
+
+        final double tolerance;
+
+        Agreement(double tolerance) {
+            this.tolerance = tolerance;
+        }
+
+        String describe(String peer) {
+            List<String> parts = new ArrayList<>();
+            if (touchingHit > 0) parts.add(touchingHit + " touching or grazing cases it counts as hits");
+            if (touchingMiss > 0) parts.add(touchingMiss + " touching or grazing hits it misses");
+            if (skin > 0) parts.add(skin + " answers off by under " + tolerance + " px (its skin or tolerance)");
+            if (normalTies > 0) parts.add(normalTies + " equally deep normals it picks otherwise");
+            if (wrong > 0) parts.add(wrong + " WRONG (first: " + firstWrong + ")");
+            return peer + ": " + (parts.isEmpty() ? "agrees on all " + NarrowCase.N : String.join(", ", parts));
+        }
+    }
+
+    public static void main(String[] args) throws Exception {
+        Pattern only = Pattern.compile(System.getProperty("narrow.only", ".*"));
+        List<Question> questions = new ArrayList<>();
+        for (Question q : NarrowQuestions.all()) {
+            if (only.matcher(q.id()).matches()) questions.add(q);
+        }
+        Map<String, Agreement> agreements = check(questions);
+        if (Boolean.getBoolean("narrow.checkOnly")) {
+            return;
+        }
+        // a run of some questions only is written beside the full run's files, never over them
+        boolean some = System.getProperty("narrow.only") != null;
+        String name = some ? "build/narrow-phase-some" : "build/narrow-phase";
+        Path run = Path.of(name + "-run.txt"), csv = Path.of(name + ".csv");
+        Map<String, double[]> measured;
+        if (Boolean.getBoolean("narrow.fromCsv")) {
+            measured = readCsv(csv);
+        } else {
+            String load = loadAverage();
+            measured = measure(questions, args, csv);
+            Files.writeString(run, String.join(" ", args) + "\n" + ZonedDateTime.now(ZoneOffset.UTC).format(DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm 'UTC'"))
+                    + "\n" + load + ", after the run " + loadAverage() + "\n", StandardCharsets.UTF_8);
+        }
+        List<String> how = Files.readAllLines(run, StandardCharsets.UTF_8);
+        String text = table(questions, agreements, measured, how.get(0), how.get(1), how.get(2));
+        if (some) {
+            Files.writeString(Path.of(name + ".md"), text, StandardCharsets.UTF_8);
+            System.out.println("wrote " + name + ".md (some questions only: docs and README left as they are)");
+            return;
+        }
+        Files.writeString(Path.of("docs/narrow-phase.md"), "# Hitbox's narrow phase against the peers\n\n"
+                + "Made by `gradle narrowPhaseTable` (src/jmh/java/hitbox/bench/NarrowPhaseTable.java), which also writes this\n"
+                + "section into the README; edit the generator, not the output.\n\n" + text.substring(text.indexOf('\n') + 2),
+                StandardCharsets.UTF_8);
+        replaceReadmeSection(Path.of("README.md"), text);
+        System.out.println("wrote docs/narrow-phase.md and the README section");
+    }
+
+    // ---------------------------------------------------------------- agreement
+
+    /** Every contender against Hitbox's own call, case by case; exits with an error if any is wrong. */
+    static Map<String, Agreement> check(List<Question> questions) {
+        Map<String, Agreement> out = new LinkedHashMap<>();
+        List<String> failures = new ArrayList<>();
+        float[] scratch = new float[3];
+        for (Question q : questions) {
+            NarrowCase cases = q.cases().get();
+            NarrowContender hitbox = q.contenders().get(0);
+            hitbox.prepare(cases);
+            double[][] truth = new double[NarrowCase.N][];
+            int hits = 0;
+            for (int i = 0; i < NarrowCase.N; i++) {
+                truth[i] = hitbox.answer(i, scratch);
+                if (truth[i] != null) hits++;
+            }
+            System.out.printf(Locale.ROOT, "%-22s %4d hits of %d%n", q.id(), hits, NarrowCase.N);
+            for (NarrowContender c : q.contenders().subList(1, q.contenders().size())) {
+                c.prepare(cases);
+                Agreement a = new Agreement(q.tolerance());
+                for (int i = 0; i < NarrowCase.N; i++) {
+                    compare(cases, q, i, truth[i], c.answer(i, scratch), c.role == Role.SHAPE, a);
+                }
+                out.put(c.id(), a);
+                String line = a.describe(c.call);
+                System.out.println("    " + line);
+                if (a.wrong > 0) failures.add(q.id() + ": " + line);
+            }
+        }
+        if (!failures.isEmpty()) {
+            throw new IllegalStateException("contenders disagree with Hitbox:\n" + String.join("\n", failures));
+        }
+        return out;
+    }
+
+    private static void compare(NarrowCase cases, Question q, int i, double[] want, double[] got, boolean exact, Agreement a) {
+        if (want == null && got == null) {
+            a.agree++;
+            return;
+        }
+        boolean edge = !exact && cases.borderline(i, q.step());
+        if (want == null || got == null) {
+            if (!edge) {
+                wrong(a, cases, i, want, got);
+            } else if (got != null) {
+                a.touchingHit++;
+            } else {
+                a.touchingMiss++;
+            }
+            return;
+        }
+        // both hit: a distance, a time or a depth, in pixels
+        double scale = cases.kind == NarrowCase.Kind.SWEEP ? Math.hypot(cases.v[i][0], cases.v[i][1]) : 1;
+        double off = Math.abs(want[0] - got[0]) * scale;
+        if (off > (exact ? 1e-4 : q.tolerance()) && !edge) {
+            wrong(a, cases, i, want, got);
+        } else if (off > 1e-4) {
+            a.skin++;
+        } else if (want.length == 3 && (Math.abs(want[1] - got[1]) > NORMAL_TOLERANCE || Math.abs(want[2] - got[2]) > NORMAL_TOLERANCE)) {
+            if (exact) wrong(a, cases, i, want, got); else a.normalTies++;
+        } else {
+            a.agree++;
+        }
+    }
+
+    private static void wrong(Agreement a, NarrowCase cases, int i, double[] want, double[] got) {
+        if (a.wrong++ == 0) {
+            a.firstWrong = "case " + i + " " + cases.a[i] + " " + cases.b[i]
+                    + (cases.v[i] == null ? "" : " v=" + java.util.Arrays.toString(cases.v[i]))
+                    + " Hitbox " + java.util.Arrays.toString(want) + ", it " + java.util.Arrays.toString(got);
+        }
+    }
+
+    // ---------------------------------------------------------------- timing
+
+    /** ns per case and bytes per case for every contender, by id. */
+    static Map<String, double[]> measure(List<Question> questions, String[] args, Path csv) throws Exception {
+        List<String> ids = new ArrayList<>();
+        for (Question q : questions) {
+            for (NarrowContender c : q.contenders()) ids.add(c.id());
+        }
+        Options options = new OptionsBuilder()
+                .parent(new CommandLineOptions(args))
+                .include(NarrowPhaseBench.class.getName() + ".answerEveryCase")
+                .param("contender", ids.toArray(new String[0]))
+                .addProfiler(GCProfiler.class)
+                .resultFormat(ResultFormatType.CSV)
+                .result(csv.toString())
+                .build();
+        Collection<RunResult> results = new Runner(options).run();
+        Map<String, double[]> out = new HashMap<>();
+        for (RunResult r : results) {
+            String id = r.getParams().getParam("contender");
+            @SuppressWarnings("rawtypes")
+            Result alloc = r.getSecondaryResults().get("gc.alloc.rate.norm");
+            // both per case: JMH counts OperationsPerInvocation operations for the time and the allocation alike
+            out.put(id, new double[] {r.getPrimaryResult().getScore(), alloc == null ? Double.NaN : alloc.getScore()});
+        }
+        return out;
+    }
+
+    /** The table from a run's CSV, to rewrite the text without timing again. */
+    static Map<String, double[]> readCsv(Path csv) throws IOException {
+        Map<String, double[]> out = new HashMap<>();
+        for (String line : Files.readAllLines(csv, StandardCharsets.UTF_8)) {
+            String[] f = line.split(",");
+            if (f.length < 8 || f[0].startsWith("\"Benchmark")) continue;
+            double[] m = out.computeIfAbsent(f[7].trim(), k -> new double[] {Double.NaN, Double.NaN});
+            if (f[0].endsWith("answerEveryCase\"")) m[0] = Double.parseDouble(f[4]);
+            if (f[0].endsWith(":gc.alloc.rate.norm\"")) m[1] = Double.parseDouble(f[4]);
+        }
+        return out;
+    }
+
+    private static String loadAverage() {
+        try {
+            String[] f = Files.readString(Path.of("/proc/loadavg")).trim().split("\\s+");
+            return "load average " + f[0] + ", " + f[1] + ", " + f[2];
+        } catch (IOException | RuntimeException e) {
+            return "load average unknown";
+        }
+    }
+
+    // ---------------------------------------------------------------- the table
+
+    static String table(List<Question> questions, Map<String, Agreement> agreements, Map<String, double[]> measured,
+                        String jmhArgs, String when, String load) {
+        StringBuilder s = new StringBuilder();
+        s.append("### One shape against another: the narrow phase against the peers\n\n");
+        s.append("Each question is 1,024 random cases (whole and half-pixel coordinates, so some pairs touch exactly; the two\n");
+        s.append("boxes of a pair overlap or touch, as after a broad phase, except that where a miss needs apart boxes (two\n");
+        s.append("rectangles, a point in a rectangle) at most 64 pairs touch and the other misses lie anywhere; half the cases\n");
+        s.append("hit). Every contender gets the same cases in its own types, made before timing, and answers all of them\n");
+        s.append("in one loop; its answers are checked against Hitbox's, case by case, before anything is timed. The peers are\n");
+        s.append("dyn4j 6.0.0, libGDX 1.14.2, JTS 1.20 and JBox2D 2.2.1.1 (benchmark-only dependencies); for each question the\n");
+        s.append("table shows the fastest of those measured. Made by `gradle narrowPhaseTable` (JMH `").append(jmhArgs.trim())
+                .append("`, with `-prof gc`)\n");
+        s.append("on ").append(when)
+                .append(", on ").append(Runtime.getRuntime().availableProcessors())
+                .append(" cores shared with other builds (").append(load).append("): a short run on a busy machine, so read\n");
+        s.append("the ratios, measured in the same run, rather than the nanoseconds. B/call is JMH's `gc.alloc.rate.norm`, bytes per case.\n\n");
+
+        List<String> slower = new ArrayList<>(), shapeSlow = new ArrayList<>(), allocating = new ArrayList<>();
+        int peerRows = 0, shapeRows = 0, allocRows = 0;
+        s.append("| question | Hitbox call | Hitbox ns/case | B/call | fastest peer (call) | peer ns/case | Hitbox/peer | notes (agreement) |\n");
+        s.append("| --- | --- | ---: | ---: | --- | ---: | ---: | --- |\n");
+        for (Question q : questions) {
+            NarrowContender hitbox = q.contenders().get(0);
+            double[] h = measured.getOrDefault(hitbox.id(), new double[] {Double.NaN, Double.NaN});
+            NarrowContender best = null;
+            List<String> notes = new ArrayList<>();
+            for (NarrowContender c : q.contenders()) {
+                if (c.role != Role.PEER) continue;
+                Agreement a = agreements.get(c.id());
+                if (a != null) notes.add(a.describe(c.call));
+                double[] m = measured.get(c.id());
+                if (m != null && (best == null || m[0] < measured.get(best.id())[0])) best = c;
+            }
+            String peerNs = "", ratio = "", peerCall = "no peer";
+            if (best != null) {
+                double p = measured.get(best.id())[0];
+                peerCall = best.call;
+                peerNs = ns(p);
+                ratio = String.format(Locale.ROOT, "%.2fx", h[0] / p);
+                peerRows++;
+                if (!(h[0] <= p)) slower.add(q.title() + " (" + ratio + ")");
+            }
+            for (NarrowContender c : q.contenders()) {
+                if (c.role == Role.PEER) continue;
+                double[] m = measured.get(c.id());
+                allocRows++;
+                if (m == null || !(m[1] < 0.5)) allocating.add("`" + c.call + "` (" + (m == null ? "?" : bytes(m[1])) + " B)");
+            }
+            s.append("| ").append(q.title()).append(" | `").append(hitbox.call).append("` | ").append(ns(h[0])).append(" | ")
+                    .append(bytes(h[1])).append(" | ").append(best == null ? peerCall : "`" + peerCall + "`").append(" | ")
+                    .append(peerNs).append(" | ").append(ratio).append(" | ").append(String.join("; ", notes)).append(" |\n");
+        }
+
+        s.append("\n**Through `Shape` against the raw call**, same cases, same run (the goal below is for the yes-or-no rows;\n");
+        s.append("`Ray.cast`, `Sweep.timeOfImpact` and `Shape.contact` are shown beside their raw calls):\n\n");
+        s.append("| question | raw call | raw ns/case | shape call | shape ns/case | B/call | shape/raw |\n");
+        s.append("| --- | --- | ---: | --- | ---: | ---: | ---: |\n");
+        for (Question q : questions) {
+            NarrowContender raw = q.contenders().get(0);
+            for (NarrowContender c : q.contenders()) {
+                if (c.role != Role.SHAPE) continue;
+                double[] r = measured.getOrDefault(raw.id(), new double[] {Double.NaN, Double.NaN});
+                double[] m = measured.getOrDefault(c.id(), new double[] {Double.NaN, Double.NaN});
+                String ratio = String.format(Locale.ROOT, "%.2fx", m[0] / r[0]);
+                // the goal is Shape.overlaps and contains against Collide; rays, sweeps and contacts are shown beside it
+                if (c instanceof NarrowContender.Bool) {
+                    shapeRows++;
+                    if (!(m[0] <= 1.25 * r[0])) shapeSlow.add(q.title() + " `" + c.call + "` (" + ratio + ")");
+                }
+                s.append("| ").append(q.title()).append(" | `").append(raw.call).append("` | ").append(ns(r[0])).append(" | `")
+                        .append(c.call).append("` | ").append(ns(m[0])).append(" | ").append(bytes(m[1])).append(" | ")
+                        .append(ratio).append(" |\n");
+            }
+        }
+
+        s.append("\n**Goals, in this run:**\n\n");
+        s.append(goal("every Hitbox call at or below the fastest peer", peerRows, slower));
+        s.append(goal("`Shape.overlaps` (and `contains`) within 1.25x of the raw `Collide` call", shapeRows, shapeSlow));
+        s.append(goal("0 bytes per call for every Hitbox answer (yes/no, distance, time of impact, Contact)", allocRows, allocating));
+
+        s.append("\nReading the rows: `Sweep.timeOfImpact` takes no polygons, so the swept 8-gon row times\n");
+        s.append("`Sweep.turningTimeOfImpact` with no turn. libGDX's rays are 3D (z = 0). JBox2D stops a time of impact within\n");
+        s.append("its skin (polygons carry a 0.01 radius) and a float root finder's tolerance, dyn4j within its distance epsilon,\n");
+        s.append("so their times are compared to 0.25 px of motion and their hit or miss exactly. \"Touching or grazing\" means\n");
+        s.append("Hitbox's answer changes when the second shape moves 0.02 px (0.05 px for sweeps): the peer's touching rule\n");
+        s.append("(closed shapes, a contact of depth 0) or its skin, not a wrong answer; any other difference fails the run.\n");
+        s.append("The pixel masks and `Hybrid` have no peer. Every contender answers case i through a lambda over its own\n");
+        s.append("arrays, in a JVM of its own (one JMH fork each), so the call is inlined as a direct call would be.\n");
+        s.append("\n<details><summary>Every contender measured</summary>\n\n");
+        s.append("| question | contender | ns/case | B/call |\n| --- | --- | ---: | ---: |\n");
+        for (Question q : questions) {
+            for (NarrowContender c : q.contenders()) {
+                double[] m = measured.getOrDefault(c.id(), new double[] {Double.NaN, Double.NaN});
+                s.append("| ").append(q.title()).append(" | `").append(c.call).append("` | ").append(ns(m[0])).append(" | ")
+                        .append(bytes(m[1])).append(" |\n");
+            }
+        }
+        s.append("\n</details>\n");
+        return s.toString();
+    }
+
+    private static String goal(String what, int rows, List<String> missed) {
+        if (missed.isEmpty()) {
+            return "- " + what + ": **met** (" + rows + " of " + rows + ").\n";
+        }
+        return "- " + what + ": **missed** in " + missed.size() + " of " + rows + ": " + String.join(", ", missed) + ".\n";
+    }
+
+    private static String ns(double v) {
+        return Double.isNaN(v) ? "-" : v >= 100 ? String.format(Locale.ROOT, "%.0f", v) : String.format(Locale.ROOT, "%.1f", v);
+    }
+
+    private static String bytes(double v) {
+        return Double.isNaN(v) ? "-" : String.format(Locale.ROOT, "%.0f", Math.max(0, v));
+    }
+
+    // ---------------------------------------------------------------- the README
+
+    static final String BEGIN = "<!-- narrow-phase:begin -->", END = "<!-- narrow-phase:end -->";
+
+    /** Replaces what is between the markers; fails if the README has lost them. */
+    static void replaceReadmeSection(Path readme, String text) throws IOException {
+        String s = Files.readString(readme, StandardCharsets.UTF_8);
+        int begin = s.indexOf(BEGIN), end = s.indexOf(END);
+        if (begin < 0 || end < begin) {
+            throw new IllegalStateException(readme + " has no " + BEGIN + " ... " + END + " section");
+        }
+        Files.writeString(readme, s.substring(0, begin + BEGIN.length()) + "\n" + text + s.substring(end), StandardCharsets.UTF_8);
+    }
+}
