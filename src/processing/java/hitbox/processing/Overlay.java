@@ -15,9 +15,13 @@ import processing.core.PGraphics;
 public final class Overlay {
     /** Text colour of the overlay. */
     public static final int TEXT = 0xFFFFFFFF;
-    /** Colour for a test that says "colliding". */
+    /**
+     * Colour for a test that says "colliding": {@link Palette#HIT}'s red made lighter, since
+     * it is drawn as thin text and lines on the dark label box, where the fill red is hard to
+     * read; same hue, so red still means colliding.
+     */
     public static final int HIT = 0xFFFF6B6B;
-    /** Colour for a test that says "not colliding". */
+    /** Colour for a test that says "not colliding": {@link Palette#MISS}'s green, lighter for text. */
     public static final int MISS = 0xFF7CE38B;
     /** Colour of the guide lines the overlay draws. */
     public static final int GUIDE = 0xFFFFD23F;
