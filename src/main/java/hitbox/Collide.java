@@ -193,10 +193,14 @@ public final class Collide {
      * @throws IllegalArgumentException if {@code xy} is null
      */
     public static boolean polygonPoint(float[] xy, float px, float py) {
-        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(px, py, 0, 0, 0)) {
+        Check.notNull("xy", xy);
+        if (px != px || py != py) {
             return false;
         }
-        return Polygons.contains(xy, px, py);
+        // The vertices are checked for NaN only when the answer would be "inside": the loop
+        // takes a NaN without throwing (every comparison with it is false), and "outside" is
+        // already the NaN rule's answer, so most calls skip the scan.
+        return Polygons.contains(xy, px, py) && !Check.nan(xy);
     }
 
     /**
@@ -509,7 +513,8 @@ public final class Collide {
      * {@code b}'s leftmost corner into {@code b} settles which, exactly. This works for concave
      * polygons too, where the separating-axis test does not. Time grows with the product of
      * the two vertex counts; far-apart polygons are rejected by their bounds first. When both
-     * outlines are convex (checked on the way in, one orientation per vertex), the separating
+     * outlines are convex (checked on the way, one orientation per vertex; {@code b}'s only
+     * when no edge of a convex {@code a} already separates them), the separating
      * axes are asked instead, with exact orientation signs: the same answers, in about the
      * time of a sum of the vertex counts when they overlap.
      *
@@ -522,15 +527,30 @@ public final class Collide {
      * @throws IllegalArgumentException if {@code a} or {@code b} is null
      */
     public static boolean polygonPolygon(float[] a, float[] b) {
-        if (Check.nan(Check.notNull("a", a)) || Check.nan(Check.notNull("b", b))) {
-            return false;
-        }
+        Check.notNull("a", a);
+        Check.notNull("b", b);
+        // The convex path takes a NaN without throwing (its orientations pass NaN on, and
+        // every comparison with NaN is false), so the arrays are scanned for NaN only when it
+        // answers "overlap"; "apart" is already the NaN rule's answer.
         int ca = Polygons.convexWinding(a);
         if (ca != 0) {
+            // An edge of convex a with every vertex of b on or outside its line proves "apart"
+            // whatever b is, so b's convexity is checked only after a's edges found no gap.
+            // Proof: a's open inside lies strictly on the inner side of each of its edge lines
+            // (a convex polygon is the intersection of those half-planes). The inside of any
+            // polygon b, convex or not, simple or not (read even-odd), lies in the convex hull
+            // of b's vertices; that hull is in the closed outer half-plane of the edge line,
+            // so b's inside, an open set, is in the open outer half-plane, disjoint from a's.
+            if (Polygons.edgeSeparates(a, ca, b)) {
+                return false;
+            }
             int cb = Polygons.convexWinding(b);
             if (cb != 0) {
-                return Polygons.convexOverlap(a, ca, b, cb);
+                return !Polygons.edgeSeparates(b, cb, a) && !Check.nan(a) && !Check.nan(b);
             }
+        }
+        if (Check.nan(a) || Check.nan(b)) {
+            return false; // the general path below would reach exact arithmetic, which takes no NaN
         }
         int wa = Polygons.winding(a);
         int wb = Polygons.winding(b);

@@ -185,6 +185,21 @@ final class Contacts {
         return best.contact();
     }
 
+    /** A scratch array per thread for a rectangle's four corners ({@link #polygonal}). */
+    private static final ThreadLocal<double[]> RECT_CORNERS = ThreadLocal.withInitial(() -> new double[8]);
+
+    /**
+     * A polygon's cached corners, or a rectangle's written into {@code scratch}, the same
+     * values as {@link Polygons#corners}.
+     */
+    private static double[] cornersOf(Shape s, double[] scratch) {
+        if (s instanceof Polygon p) {
+            return p.corners();
+        }
+        Polygons.corners((Rect) s, scratch);
+        return scratch;
+    }
+
     /** Rectangles and polygons, at least one of them a polygon. */
     private static Contact polygonal(Shape a, Shape b) {
         boolean convexA = !(a instanceof Polygon p) || p.isConvex();
@@ -194,7 +209,11 @@ final class Contacts {
                 // Apart is answered exactly and cheaply first; the search then only measures.
                 return Polygons.overlap(p, q) ? SeparatingAxis.contact(p.corners(), q.corners()) : null;
             }
-            return SeparatingAxis.contact(Polygons.corners(a), Polygons.corners(b));
+            // A rectangle and a polygon (two rectangles went to Contact.rectRect): the
+            // polygon's cached corners and the rectangle's written into this thread's scratch
+            // array, so that nothing is allocated but the answer. The search only reads them.
+            double[] scratch = RECT_CORNERS.get();
+            return SeparatingAxis.contact(cornersOf(a, scratch), cornersOf(b, scratch));
         }
         return Clearance.polygons(Clearance.Parts.of(a), Clearance.Parts.of(b));
     }

@@ -140,6 +140,21 @@ final class Polygons {
             double bx = xy[2 * i];
             double by = xy[2 * i + 1];
             if ((ay > py) != (by > py)) {
+                // The edge crosses the point's level somewhere in its own x range, so a point
+                // left of that whole range is left of the crossing (counts, and is not on the
+                // edge) and a point right of it is right of it (does not count, not on the
+                // edge): plain comparisons, exact. Only a point within the range needs the sign.
+                if (px < ax && px < bx) {
+                    inside = !inside;
+                    ax = bx;
+                    ay = by;
+                    continue;
+                }
+                if (px > ax && px > bx) {
+                    ax = bx;
+                    ay = by;
+                    continue;
+                }
                 int crossing = rayCrossing(ax, ay, bx, by, px, py);
                 if (crossing < 0) {
                     return false; // on the edge: its y range holds py, and it is on the line
@@ -300,7 +315,7 @@ final class Polygons {
     }
 
     /** Does the line of some edge of convex p (winding w) have every vertex of q on or outside it? */
-    private static boolean edgeSeparates(float[] p, int w, float[] q) {
+    static boolean edgeSeparates(float[] p, int w, float[] q) {
         int n = p.length / 2, m = q.length / 2;
         int start = 0;
         double ax = p[2 * n - 2], ay = p[2 * n - 1];
@@ -611,10 +626,23 @@ final class Polygons {
      */
     static double[] corners(Shape s) {
         if (s instanceof Rect r) {
-            double x = r.x(), y = r.y(), right = x + r.w(), bottom = y + r.h();
-            return new double[] {x, y, right, y, right, bottom, x, bottom};
+            return corners(r, new double[8]);
         }
         return toDouble(((Polygon) s).raw());
+    }
+
+    /** A rectangle's corners as {@link #corners(Shape)} gives them, written into {@code into} (length 8). */
+    static double[] corners(Rect r, double[] into) {
+        double x = r.x(), y = r.y(), right = x + r.w(), bottom = y + r.h();
+        into[0] = x;
+        into[1] = y;
+        into[2] = right;
+        into[3] = y;
+        into[4] = right;
+        into[5] = bottom;
+        into[6] = x;
+        into[7] = bottom;
+        return into;
     }
 
     /** The coordinates widened to double (exactly). */

@@ -197,4 +197,19 @@ class ConvexFastPathTest {
         assertTrue(contact <= 32, "Contact.between allocates " + contact + " bytes per call");
         assertEquals(Arrays.toString(a), Arrays.toString(p.coordinates()));
     }
+
+    @Test
+    void rectPolygonContact_allocatesOnlyItsResult() {
+        Polygon p = Polygon.regular(100, 100, 40, 8, 0.1f);
+        Rect box = new Rect(120, 90, 50, 30);
+        Rect far = new Rect(300, 90, 50, 30);
+        Contact expected = Contact.between(Polygon.of(box), p);
+        assertEquals(expected, Contact.between(box, p));
+        assertEquals(Contact.between(p, Polygon.of(box)), Contact.between(p, box));
+        double there = bytesPerCall(() -> sink = Contact.between(box, p));
+        assertTrue(there <= 32, "Contact.between(rect, polygon) allocates " + there + " bytes per call");
+        double back = bytesPerCall(() -> sink = Contact.between(p, box));
+        assertTrue(back <= 32, "Contact.between(polygon, rect) allocates " + back + " bytes per call");
+        assertTrue(bytesPerCall(() -> sink = Contact.between(far, p)) < 1, "Contact.between(rect, polygon), apart");
+    }
 }
