@@ -31,8 +31,12 @@ final class TurningSweep {
 
     /** The mover's vertices at time t: turned by t * turn about the pivot, then moved by t * v. */
     static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t) {
-        double c = Math.cos(t * turn), s = Math.sin(t * turn);
-        double[] out = new double[xy.length];
+        return at(xy, px, py, vx, vy, turn, t, new double[xy.length]);
+    }
+
+    /** {@link #at(float[], double, double, double, double, double, double)} into {@code out}, returned. */
+    private static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t, double[] out) {
+        double c = turn == 0 ? 1 : Math.cos(t * turn), s = turn == 0 ? 0 : Math.sin(t * turn);
         for (int i = 0; i + 1 < xy.length; i += 2) {
             double x = xy[i] - px, y = xy[i + 1] - py;
             out[i] = px + t * vx + c * x - s * y;
@@ -50,28 +54,38 @@ final class TurningSweep {
         for (int i = 0; i < xy.length; i += 2) {
             reach = Math.max(reach, Math.hypot(xy[i] - px, xy[i + 1] - py));
         }
-        double speed = Math.hypot(vx, vy) + Math.abs(turn) * reach;
+        double spin = Math.abs(turn) * reach;
+        double speed = Math.hypot(vx, vy) + spin;
+        if (speed == 0) {
+            return null;
+        }
         List<double[]> pieces = pieces(obstacle);
         double t = 0;
-        double[] normal = new double[2];
+        double[] normal = new double[2], scratch = new double[2];
+        double[] a = new double[xy.length];
         for (int step = 0; step < MAX_STEPS; step++) {
-            double gap = gap(xy, px, py, vx, vy, turn, t, pieces, obstacle, normal);
-            if (speed == 0) {
-                return null;
-            }
+            double gap = gap(at(xy, px, py, vx, vy, turn, t, a), pieces, obstacle, normal);
             if (gap <= TOUCH) {
                 // Touching: a hit if the mover is closing in, not if it is leaving (a blade
                 // turning back from the post it just touched). One TOUCH of motion on, the
                 // gap tells which.
                 double later = t + TOUCH / speed;
-                if (later > 1 || gap(xy, px, py, vx, vy, turn, later, pieces, obstacle, new double[2]) <= gap) {
+                if (later > 1 || gap(at(xy, px, py, vx, vy, turn, later, a), pieces, obstacle, scratch) <= gap) {
                     return SweptPairs.hit((float) t, normal[0], normal[1]);
                 }
                 t = later;
                 continue;
             }
             // Advance by most of the safe step, so the gap shrinks towards TOUCH and never past 0.
-            t += (gap - TOUCH / 2) / speed;
+            // With one piece the gap is the separation along the normal n, and no point of the
+            // mover gains on the obstacle along n faster than v.n + |turn| R: the bound that
+            // lets the step grow where the motion is not head-on (and no step at all is
+            // needed when it never gains).
+            double rate = pieces.size() == 1 ? Math.min(speed, vx * normal[0] + vy * normal[1] + spin) : speed;
+            if (!(rate > 0)) {
+                return null;
+            }
+            t += (gap - TOUCH / 2) / rate;
             if (t > 1) {
                 return null;
             }
@@ -79,15 +93,86 @@ final class TurningSweep {
         return SweptPairs.hit((float) t, normal[0], normal[1]);
     }
 
-    /** The least gap at time t over the obstacle's pieces; its direction into {@code normal}. */
-    private static double gap(float[] xy, float px, float py, float vx, float vy, float turn, double t,
-                              List<double[]> pieces, Shape obstacle, double[] normal) {
-        double[] a = at(xy, px, py, vx, vy, turn, t);
+    /** The least gap between the mover's vertices {@code a} and the obstacle's pieces; its direction into {@code normal}. */
+    private static double gap(double[] a, List<double[]> pieces, Shape obstacle, double[] normal) {
         double gap = Double.POSITIVE_INFINITY;
         for (double[] piece : pieces) {
-            gap = Math.min(gap, gap(a, piece, obstacle, normal, gap));
+            gap = Math.min(gap, piece.length >= 4 ? polygonGap(a, piece, normal, gap) : gap(a, piece, obstacle, normal, gap));
         }
         return gap;
+    }
+
+    /**
+     * The gap between two convex vertex lists (a segment is two vertices): the distance when
+     * they are apart (the least over each vertex of one and each edge of the other, its
+     * direction from the mover's closest point to the obstacle's), else the best separating
+     * axis among both edge normals (0 or less). Writes the direction into {@code normal} when
+     * the gap is below {@code best}. Allocates nothing.
+     */
+    private static double polygonGap(double[] a, double[] b, double[] normal, double best) {
+        double sat = Double.NEGATIVE_INFINITY, sx = 0, sy = 0;
+        for (int side = 0; side < 2; side++) {
+            double[] e = side == 0 ? a : b;
+            int n = e.length / 2;
+            for (int i = 0; i < n; i++) {
+                int j = i + 1 == n ? 0 : i + 1;
+                double ex = e[2 * j] - e[2 * i], ey = e[2 * j + 1] - e[2 * i + 1], len = Math.hypot(ex, ey);
+                if (!(len > 0)) {
+                    continue;
+                }
+                double nx = ey / len, ny = -ex / len;
+                double g = separation(a, b, nx, ny), h = separation(a, b, -nx, -ny);
+                if (h > g) {
+                    g = h;
+                    nx = -nx;
+                    ny = -ny;
+                }
+                if (g > sat) {
+                    sat = g;
+                    sx = nx;
+                    sy = ny;
+                }
+            }
+        }
+        if (sat > 0) {
+            // Apart: the exact distance, from a vertex of one to an edge of the other.
+            double d2 = Double.POSITIVE_INFINITY, dx = 0, dy = 0;
+            for (int side = 0; side < 2; side++) {
+                double[] v = side == 0 ? a : b, e = side == 0 ? b : a;
+                int n = e.length / 2;
+                for (int k = 0; k < v.length; k += 2) {
+                    double qx = v[k], qy = v[k + 1];
+                    for (int i = 0; i < n; i++) {
+                        int j = i + 1 == n ? 0 : i + 1;
+                        double x0 = e[2 * i], y0 = e[2 * i + 1], ex = e[2 * j] - x0, ey = e[2 * j + 1] - y0;
+                        double l2 = ex * ex + ey * ey;
+                        double u = l2 > 0 ? ((qx - x0) * ex + (qy - y0) * ey) / l2 : 0;
+                        u = u < 0 ? 0 : u > 1 ? 1 : u;
+                        double cx = x0 + u * ex - qx, cy = y0 + u * ey - qy;
+                        double c2 = cx * cx + cy * cy;
+                        if (c2 < d2) {
+                            d2 = c2;
+                            // From the mover (a) to the obstacle (b).
+                            dx = side == 0 ? cx : -cx;
+                            dy = side == 0 ? cy : -cy;
+                        }
+                    }
+                }
+            }
+            double d = Math.sqrt(d2);
+            if (d > sat) {
+                if (d < best) {
+                    normal[0] = dx / d;
+                    normal[1] = dy / d;
+                }
+                return d;
+            }
+        }
+        if (sat < best) {
+            normal[0] = sx;
+            normal[1] = sy;
+        }
+        return sat;
     }
 
     /** The obstacle as convex vertex lists; circles, ellipses and capsules are one piece, kept as the shape. */
@@ -172,6 +257,18 @@ final class TurningSweep {
             }
         }
         return java.util.Arrays.copyOf(d, k);
+    }
+
+    /** How far apart along unit n two vertex lists are: b's least reach minus a's greatest. */
+    private static double separation(double[] a, double[] b, double nx, double ny) {
+        double reachA = Double.NEGATIVE_INFINITY, leastB = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < a.length; i += 2) {
+            reachA = Math.max(reachA, a[i] * nx + a[i + 1] * ny);
+        }
+        for (int i = 0; i < b.length; i += 2) {
+            leastB = Math.min(leastB, b[i] * nx + b[i + 1] * ny);
+        }
+        return leastB - reachA;
     }
 
     /** How far apart along unit n: the obstacle's least reach minus the mover's greatest. */
