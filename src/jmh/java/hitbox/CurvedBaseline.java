@@ -54,6 +54,33 @@ public final class CurvedBaseline {
         return out;
     }
 
+    /** Ellipses.circle before the closest-point rounds (commit 7d4f079), real sizes only. */
+    public static boolean ellipseCircleOld(float x, float y, float a, float b, float cx, float cy, float r) {
+        int sure = Ellipses.discs((double) cx - x, (double) cy - y, a, b, r, r);
+        if (sure != 0) {
+            return sure > 0;
+        }
+        if (Ellipses.side(cx, cy, x, y, a, b) <= 0) {
+            return true;
+        }
+        return Ellipses.distance(a, b, (double) cx - x, (double) cy - y, null) < r;
+    }
+
+    /** Ellipses.ellipse before the closest-point rounds (commit 7d4f079), real sizes only. */
+    public static boolean ellipseEllipseOld(float x1, float y1, float a1, float b1, float x2, float y2, float a2, float b2) {
+        int sure = Ellipses.discs((double) x2 - x1, (double) y2 - y1, a1, b1, a2, b2);
+        if (sure != 0) {
+            return sure > 0;
+        }
+        double cx = ((double) x2 - x1) * b1, cy = ((double) y2 - y1) * a1;
+        double a = (double) a2 * b1, b = (double) b2 * a1;
+        double reach = (double) a1 * b1;
+        if (Ellipses.side(0, 0, cx, cy, a, b) <= 0) {
+            return true;
+        }
+        return Ellipses.distance(a, b, -cx, -cy, null) < reach;
+    }
+
     /** Sweep.turningTimeOfImpact before the rework (commit 7d4f079); the mover convex. */
     public static Hit turningOld(Polygon mover, float px, float py, float vx, float vy, float turn, Shape obstacle) {
         float[] xy = mover.raw();

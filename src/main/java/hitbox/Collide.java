@@ -629,7 +629,8 @@ public final class Collide {
      * <p>A circle of radius 0 is a point ({@link #ellipsePoint}); an ellipse with a radius of
      * 0 is its flat box ({@link #circleRect}). Otherwise the circle's centre is tested
      * against the ellipse and its distance to the outline (D. Eberly's robust bisection) is
-     * compared with r: touching on the ellipse's axes is exact, and elsewhere the answer can
+     * compared with r, unless the discs inside and around the ellipse or a few rounds of
+     * closest points settle it first by a margin of 1e-10 of the sizes: touching on the ellipse's axes is exact, and elsewhere the answer can
      * be wrong only when the gap or overlap is below about 1e-12 of the sizes involved.
      *
      * <p>A NaN in any argument answers false, and so does a negative size; infinite values
@@ -724,7 +725,8 @@ public final class Collide {
      * Do two ellipses overlap? Touching is not overlapping.
      *
      * <p>The first is scaled into a circle (products of floats, exact in double), and the
-     * second's outline is measured from its centre with D. Eberly's robust bisection: exact
+     * second's outline is measured from its centre with D. Eberly's robust bisection (unless
+     * discs or a few rounds of closest points settle it first by a margin of 1e-10): exact
      * when they touch on the axes, and elsewhere wrong only when the gap or overlap is below
      * about 1e-12 of the sizes involved. The two are taken in a fixed order, so swapping them
      * never changes the answer. An ellipse with a radius of 0 is its flat box.

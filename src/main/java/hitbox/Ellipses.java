@@ -52,10 +52,43 @@ final class Ellipses {
         if (-s > bound) {
             return -1;
         }
+        if (exact(qx, qy, cx, cy, a, b, s)) {
+            return s < 0 ? -1 : s > 0 ? 1 : 0;
+        }
         BigDecimal bu = new BigDecimal(qx).subtract(new BigDecimal(cx)).multiply(new BigDecimal(b));
         BigDecimal bv = new BigDecimal(qy).subtract(new BigDecimal(cy)).multiply(new BigDecimal(a));
         BigDecimal bw = new BigDecimal(a).multiply(new BigDecimal(b));
         return bu.multiply(bu).add(bv.multiply(bv)).subtract(bw.multiply(bw)).signum();
+    }
+
+    /**
+     * Was {@code s} of {@link #side} computed without rounding? Each difference, product and
+     * sum is checked with its error-free transformation (Knuth's two-sum, and a fused
+     * multiply-add for products): the usual case for whole and half-pixel ties, which then
+     * need no BigDecimal (nothing allocated).
+     */
+    private static boolean exact(double qx, double qy, double cx, double cy, double a, double b, double s) {
+        double dx = qx - cx, dy = qy - cy;
+        if (!exactSum(qx, -cx, dx) || !exactSum(qy, -cy, dy)) {
+            return false;
+        }
+        double u = dx * b, v = dy * a, w = a * b;
+        if (Math.fma(dx, b, -u) != 0 || Math.fma(dy, a, -v) != 0 || Math.fma(a, b, -w) != 0) {
+            return false;
+        }
+        double uu = u * u, vv = v * v, ww = w * w;
+        if (Math.fma(u, u, -uu) != 0 || Math.fma(v, v, -vv) != 0 || Math.fma(w, w, -ww) != 0) {
+            return false;
+        }
+        double sum = uu + vv;
+        return exactSum(uu, vv, sum) && exactSum(sum, -ww, s) && sum - ww == s;
+    }
+
+    /** Is {@code sum} the exact value of x + y (Knuth's two-sum error is 0)? */
+    private static boolean exactSum(double x, double y, double sum) {
+        double yv = sum - x;
+        double err = (x - (sum - yv)) + (y - yv);
+        return err == 0 && sum - x - y == 0 && !Double.isInfinite(sum);
     }
 
     /** Is the point strictly inside the ellipse? A flat ellipse has no inside. */
@@ -96,6 +129,11 @@ final class Ellipses {
     /** A real ellipse and a circle of radius r > 0. */
     static boolean circle(float x, float y, float a, float b, float cx, float cy, float r) {
         int sure = discs((double) cx - x, (double) cy - y, a, b, r, r);
+        if (sure == 0) {
+            // The closest-point rounds, the circle a capsule with a segment of one point.
+            double qx = (double) cx - x, qy = (double) cy - y;
+            sure = capsuleQuick(a, b, qx, qy, qx, qy, r);
+        }
         if (sure != 0) {
             return sure > 0;
         }
@@ -142,6 +180,11 @@ final class Ellipses {
         double cx = ((double) x2 - x1) * b1, cy = ((double) y2 - y1) * a1;
         double a = (double) a2 * b1, b = (double) b2 * a1;
         double reach = (double) a1 * b1;
+        // The closest-point rounds, the circle a capsule with a segment of one point.
+        sure = capsuleQuick(a, b, -cx, -cy, -cx, -cy, reach);
+        if (sure != 0) {
+            return sure > 0;
+        }
         // The first's centre (the origin) in the closed second: they overlap.
         if (side(0, 0, cx, cy, a, b) <= 0) {
             return true;

@@ -281,6 +281,51 @@ public class ShapesBench {
         return s;
     }
 
+    /** Ellipse i against circle / ellipse i + 1 in the package's inner maths: the new code and the old. */
+    @Benchmark
+    public int ellipseCircleInner_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (Collide.ellipseCircle(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseCircleInner_old() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (hitbox.CurvedBaseline.ellipseCircleOld(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseEllipseInner_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (Collide.ellipseEllipse(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], a[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseEllipseInner_old() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (hitbox.CurvedBaseline.ellipseEllipseOld(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], a[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
     /** Ellipse i against capsule i + 1, raw floats: the quick first answers and the long way before them. */
     @Benchmark
     public int ellipseCapsule_hitbox() {
