@@ -116,12 +116,25 @@ final class TurningSweep {
             int n = e.length / 2;
             for (int i = 0; i < n; i++) {
                 int j = i + 1 == n ? 0 : i + 1;
-                double ex = e[2 * j] - e[2 * i], ey = e[2 * j + 1] - e[2 * i + 1], len = Math.hypot(ex, ey);
-                if (!(len > 0)) {
+                double ex = e[2 * j] - e[2 * i], ey = e[2 * j + 1] - e[2 * i + 1], len = Math.sqrt(ex * ex + ey * ey);
+                if (!(len > 0 && len < Double.POSITIVE_INFINITY)) {
                     continue;
                 }
                 double nx = ey / len, ny = -ex / len;
-                double g = separation(a, b, nx, ny), h = separation(a, b, -nx, -ny);
+                // Both ways at once: along n, b's least minus a's greatest; along -n, a's least minus b's greatest.
+                double minA = Double.POSITIVE_INFINITY, maxA = Double.NEGATIVE_INFINITY;
+                double minB = Double.POSITIVE_INFINITY, maxB = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < a.length; k += 2) {
+                    double p = a[k] * nx + a[k + 1] * ny;
+                    minA = p < minA ? p : minA;
+                    maxA = p > maxA ? p : maxA;
+                }
+                for (int k = 0; k < b.length; k += 2) {
+                    double p = b[k] * nx + b[k + 1] * ny;
+                    minB = p < minB ? p : minB;
+                    maxB = p > maxB ? p : maxB;
+                }
+                double g = minB - maxA, h = minA - maxB;
                 if (h > g) {
                     g = h;
                     nx = -nx;
@@ -257,18 +270,6 @@ final class TurningSweep {
             }
         }
         return java.util.Arrays.copyOf(d, k);
-    }
-
-    /** How far apart along unit n two vertex lists are: b's least reach minus a's greatest. */
-    private static double separation(double[] a, double[] b, double nx, double ny) {
-        double reachA = Double.NEGATIVE_INFINITY, leastB = Double.POSITIVE_INFINITY;
-        for (int i = 0; i < a.length; i += 2) {
-            reachA = Math.max(reachA, a[i] * nx + a[i + 1] * ny);
-        }
-        for (int i = 0; i < b.length; i += 2) {
-            leastB = Math.min(leastB, b[i] * nx + b[i + 1] * ny);
-        }
-        return leastB - reachA;
     }
 
     /** How far apart along unit n: the obstacle's least reach minus the mover's greatest. */
