@@ -111,7 +111,39 @@ final class TurningSweep {
      */
     private static double polygonGap(double[] a, double[] b, double[] normal, double best) {
         double sat = Double.NEGATIVE_INFINITY, sx = 0, sy = 0;
-        for (int side = 0; side < 2; side++) {
+        // The last direction found (or the one between the centres) first: most steps it still
+        // separates them, and then the edge normals need not be tried.
+        double hx = normal[0], hy = normal[1];
+        if (hx == 0 && hy == 0) {
+            for (int k = 0; k < b.length; k += 2) {
+                hx += b[k] / (b.length / 2);
+                hy += b[k + 1] / (b.length / 2);
+            }
+            for (int k = 0; k < a.length; k += 2) {
+                hx -= a[k] / (a.length / 2);
+                hy -= a[k + 1] / (a.length / 2);
+            }
+            double len = Math.sqrt(hx * hx + hy * hy);
+            hx /= len;
+            hy /= len;
+        }
+        if (hx * hx + hy * hy > 0.5) {
+            double maxA = Double.NEGATIVE_INFINITY, minB = Double.POSITIVE_INFINITY;
+            for (int k = 0; k < a.length; k += 2) {
+                double p = a[k] * hx + a[k + 1] * hy;
+                maxA = p > maxA ? p : maxA;
+            }
+            for (int k = 0; k < b.length; k += 2) {
+                double p = b[k] * hx + b[k + 1] * hy;
+                minB = p < minB ? p : minB;
+            }
+            if (minB - maxA > 0) {
+                sat = minB - maxA;
+                sx = hx;
+                sy = hy;
+            }
+        }
+        for (int side = sat > 0 ? 2 : 0; side < 2; side++) {
             double[] e = side == 0 ? a : b;
             int n = e.length / 2;
             for (int i = 0; i < n; i++) {
@@ -148,35 +180,46 @@ final class TurningSweep {
             }
         }
         if (sat > 0) {
-            // Apart: the exact distance, from a vertex of one to an edge of the other.
-            double d2 = Double.POSITIVE_INFINITY, dx = 0, dy = 0;
-            for (int side = 0; side < 2; side++) {
-                double[] v = side == 0 ? a : b, e = side == 0 ? b : a;
-                int n = e.length / 2;
-                for (int k = 0; k < v.length; k += 2) {
-                    double qx = v[k], qy = v[k + 1];
-                    for (int i = 0; i < n; i++) {
-                        int j = i + 1 == n ? 0 : i + 1;
-                        double x0 = e[2 * i], y0 = e[2 * i + 1], ex = e[2 * j] - x0, ey = e[2 * j + 1] - y0;
-                        double l2 = ex * ex + ey * ey;
-                        double u = l2 > 0 ? ((qx - x0) * ex + (qy - y0) * ey) / l2 : 0;
-                        u = u < 0 ? 0 : u > 1 ? 1 : u;
-                        double cx = x0 + u * ex - qx, cy = y0 + u * ey - qy;
-                        double c2 = cx * cx + cy * cy;
-                        if (c2 < d2) {
-                            d2 = c2;
-                            // From the mover (a) to the obstacle (b).
-                            dx = side == 0 ? cx : -cx;
-                            dy = side == 0 ? cy : -cy;
-                        }
-                    }
+            // Apart: the exact distance, from a vertex of one to an edge of the other. A vertex
+            // of a is at least (b's least along s) - (its own reach along s) from b, and a
+            // vertex of b (its reach) - (a's greatest) from a: those whose bound is already
+            // beyond the best distance are skipped, and the two extreme vertices go first.
+            double minB = Double.POSITIVE_INFINITY, maxA = Double.NEGATIVE_INFINITY;
+            int ia = 0, ib = 0;
+            for (int k = 0; k < a.length; k += 2) {
+                double p = a[k] * sx + a[k + 1] * sy;
+                if (p > maxA) {
+                    maxA = p;
+                    ia = k;
                 }
             }
-            double d = Math.sqrt(d2);
+            for (int k = 0; k < b.length; k += 2) {
+                double p = b[k] * sx + b[k + 1] * sy;
+                if (p < minB) {
+                    minB = p;
+                    ib = k;
+                }
+            }
+            double[] best2 = {Double.POSITIVE_INFINITY, 0, 0};
+            vertexToEdges(a[ia], a[ia + 1], b, 1, best2);
+            vertexToEdges(b[ib], b[ib + 1], a, -1, best2);
+            for (int k = 0; k < a.length; k += 2) {
+                double lb = minB - (a[k] * sx + a[k + 1] * sy);
+                if (k != ia && lb * lb < best2[0]) {
+                    vertexToEdges(a[k], a[k + 1], b, 1, best2);
+                }
+            }
+            for (int k = 0; k < b.length; k += 2) {
+                double lb = b[k] * sx + b[k + 1] * sy - maxA;
+                if (k != ib && lb * lb < best2[0]) {
+                    vertexToEdges(b[k], b[k + 1], a, -1, best2);
+                }
+            }
+            double d = Math.sqrt(best2[0]);
             if (d > sat) {
                 if (d < best) {
-                    normal[0] = dx / d;
-                    normal[1] = dy / d;
+                    normal[0] = best2[1] / d;
+                    normal[1] = best2[2] / d;
                 }
                 return d;
             }
@@ -186,6 +229,28 @@ final class TurningSweep {
             normal[1] = sy;
         }
         return sat;
+    }
+
+    /**
+     * The squared distance from (qx, qy) to the edges of {@code e}, kept in {@code best} (squared
+     * distance, then the direction times {@code sign}) when below it.
+     */
+    private static void vertexToEdges(double qx, double qy, double[] e, double sign, double[] best) {
+        int n = e.length / 2;
+        for (int i = 0; i < n; i++) {
+            int j = i + 1 == n ? 0 : i + 1;
+            double x0 = e[2 * i], y0 = e[2 * i + 1], ex = e[2 * j] - x0, ey = e[2 * j + 1] - y0;
+            double l2 = ex * ex + ey * ey;
+            double u = l2 > 0 ? ((qx - x0) * ex + (qy - y0) * ey) / l2 : 0;
+            u = u < 0 ? 0 : u > 1 ? 1 : u;
+            double cx = x0 + u * ex - qx, cy = y0 + u * ey - qy;
+            double c2 = cx * cx + cy * cy;
+            if (c2 < best[0]) {
+                best[0] = c2;
+                best[1] = sign * cx;
+                best[2] = sign * cy;
+            }
+        }
     }
 
     /** The obstacle as convex vertex lists; circles, ellipses and capsules are one piece, kept as the shape. */
