@@ -52,20 +52,48 @@ final class Ellipses {
         if (-s > bound) {
             return -1;
         }
+        if (exact(qx, qy, cx, cy, a, b, s)) {
+            return s < 0 ? -1 : s > 0 ? 1 : 0;
+        }
         BigDecimal bu = new BigDecimal(qx).subtract(new BigDecimal(cx)).multiply(new BigDecimal(b));
         BigDecimal bv = new BigDecimal(qy).subtract(new BigDecimal(cy)).multiply(new BigDecimal(a));
         BigDecimal bw = new BigDecimal(a).multiply(new BigDecimal(b));
         return bu.multiply(bu).add(bv.multiply(bv)).subtract(bw.multiply(bw)).signum();
     }
 
+    /**
+     * Was {@code s} of {@link #side} computed without rounding? Each difference, product and
+     * sum is checked with its error-free transformation (Knuth's two-sum, and a fused
+     * multiply-add for products): the usual case for whole and half-pixel ties, which then
+     * need no BigDecimal (nothing allocated).
+     */
+    private static boolean exact(double qx, double qy, double cx, double cy, double a, double b, double s) {
+        double dx = qx - cx, dy = qy - cy;
+        if (!exactSum(qx, -cx, dx) || !exactSum(qy, -cy, dy)) {
+            return false;
+        }
+        double u = dx * b, v = dy * a, w = a * b;
+        if (Math.fma(dx, b, -u) != 0 || Math.fma(dy, a, -v) != 0 || Math.fma(a, b, -w) != 0) {
+            return false;
+        }
+        double uu = u * u, vv = v * v, ww = w * w;
+        if (Math.fma(u, u, -uu) != 0 || Math.fma(v, v, -vv) != 0 || Math.fma(w, w, -ww) != 0) {
+            return false;
+        }
+        double sum = uu + vv;
+        return exactSum(uu, vv, sum) && exactSum(sum, -ww, s) && sum - ww == s;
+    }
+
+    /** Is {@code sum} the exact value of x + y (Knuth's two-sum error is 0)? */
+    private static boolean exactSum(double x, double y, double sum) {
+        double yv = sum - x;
+        double err = (x - (sum - yv)) + (y - yv);
+        return err == 0 && sum - x - y == 0 && !Double.isInfinite(sum);
+    }
+
     /** Is the point strictly inside the ellipse? A flat ellipse has no inside. */
     static boolean point(float x, float y, float a, float b, float px, float py) {
         return a > 0 && b > 0 && side(px, py, x, y, a, b) < 0;
-    }
-
-    /** The ellipse's box, as a flat rectangle when a radius is 0 (left, top, width, height in float). */
-    static float[] box(float x, float y, float a, float b) {
-        return new float[] {x - a, y - b, 2 * a, 2 * b};
     }
 
     /** Ellipse and rectangle, both real (radii and sizes > 0 for the ellipse; any size for the rectangle). */
@@ -101,6 +129,11 @@ final class Ellipses {
     /** A real ellipse and a circle of radius r > 0. */
     static boolean circle(float x, float y, float a, float b, float cx, float cy, float r) {
         int sure = discs((double) cx - x, (double) cy - y, a, b, r, r);
+        if (sure == 0) {
+            // The closest-point rounds, the circle a capsule with a segment of one point.
+            double qx = (double) cx - x, qy = (double) cy - y;
+            sure = capsuleQuick(a, b, qx, qy, qx, qy, r);
+        }
         if (sure != 0) {
             return sure > 0;
         }
@@ -147,6 +180,11 @@ final class Ellipses {
         double cx = ((double) x2 - x1) * b1, cy = ((double) y2 - y1) * a1;
         double a = (double) a2 * b1, b = (double) b2 * a1;
         double reach = (double) a1 * b1;
+        // The closest-point rounds, the circle a capsule with a segment of one point.
+        sure = capsuleQuick(a, b, -cx, -cy, -cx, -cy, reach);
+        if (sure != 0) {
+            return sure > 0;
+        }
         // The first's centre (the origin) in the closed second: they overlap.
         if (side(0, 0, cx, cy, a, b) <= 0) {
             return true;
@@ -164,6 +202,60 @@ final class Ellipses {
             return r > 0; // the segment meets the closed ellipse
         }
         return segmentDistance(a, b, (double) x1 - x, (double) y1 - y, (double) x2 - x, (double) y2 - y) < r;
+    }
+
+    /**
+     * The cheap answer first for a real ellipse (centre at the origin, radii a, b) and a
+     * capsule (segment PQ, radius r > 0): 1 if they surely overlap, -1 if they surely do not,
+     * 0 to decide it the long way. First the discs inside and around the ellipse against the
+     * segment's distance from the centre; then a few rounds of the closest-points iteration
+     * (the ellipse's support point along n, the segment's point nearest it, n from one to
+     * the other): a direction along which the capsule lies beyond the ellipse proves a miss,
+     * and a point of the ellipse's outline closer than r to the segment proves an overlap.
+     * Each proof must hold by a margin of 1e-10 of the sizes, far above the double rounding
+     * of these sums, so this never answers a case the long way would answer otherwise.
+     * Allocates nothing.
+     */
+    static int capsuleQuick(double a, double b, double px, double py, double qx, double qy, double r) {
+        double scale = a + b + r + Math.abs(px) + Math.abs(py) + Math.abs(qx) + Math.abs(qy);
+        if (!(scale < Double.POSITIVE_INFINITY)) {
+            return 0;
+        }
+        double margin = 1e-10 * scale;
+        double ex = qx - px, ey = qy - py, len2 = ex * ex + ey * ey;
+        double sx = 0, sy = 0; // the point of the ellipse the segment is measured from: first its centre
+        for (int round = 0; round < 6; round++) {
+            // The segment's point nearest (sx, sy).
+            double t = len2 > 0 ? ((sx - px) * ex + (sy - py) * ey) / len2 : 0;
+            t = t < 0 ? 0 : t > 1 ? 1 : t;
+            double dx = px + t * ex - sx, dy = py + t * ey - sy;
+            double d = Math.hypot(dx, dy);
+            if (round == 0) {
+                if (d < Math.min(a, b) + r - margin) {
+                    return 1; // the disc inside the ellipse meets the capsule
+                }
+                if (d > Math.max(a, b) + r + margin) {
+                    return -1; // the disc around the ellipse misses it
+                }
+            } else if (d < r - margin) {
+                return 1; // a point of the outline inside the capsule
+            }
+            if (!(d > 0)) {
+                return 0;
+            }
+            double nx = dx / d, ny = dy / d;
+            double w = Math.sqrt(a * a * nx * nx + b * b * ny * ny);
+            double sep = Math.min(px * nx + py * ny, qx * nx + qy * ny) - r - w;
+            if (sep > margin) {
+                return -1; // along n the capsule starts beyond the ellipse's reach
+            }
+            if (!(w > 0)) {
+                return 0;
+            }
+            sx = a * a * nx / w;
+            sy = b * b * ny / w;
+        }
+        return 0;
     }
 
     /** The distance from a segment outside the ellipse (centre at the origin) to it. */

@@ -31,8 +31,12 @@ final class TurningSweep {
 
     /** The mover's vertices at time t: turned by t * turn about the pivot, then moved by t * v. */
     static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t) {
-        double c = Math.cos(t * turn), s = Math.sin(t * turn);
-        double[] out = new double[xy.length];
+        return at(xy, px, py, vx, vy, turn, t, new double[xy.length]);
+    }
+
+    /** {@link #at(float[], double, double, double, double, double, double)} into {@code out}, returned. */
+    private static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t, double[] out) {
+        double c = turn == 0 ? 1 : Math.cos(t * turn), s = turn == 0 ? 0 : Math.sin(t * turn);
         for (int i = 0; i + 1 < xy.length; i += 2) {
             double x = xy[i] - px, y = xy[i + 1] - py;
             out[i] = px + t * vx + c * x - s * y;
@@ -50,28 +54,38 @@ final class TurningSweep {
         for (int i = 0; i < xy.length; i += 2) {
             reach = Math.max(reach, Math.hypot(xy[i] - px, xy[i + 1] - py));
         }
-        double speed = Math.hypot(vx, vy) + Math.abs(turn) * reach;
+        double spin = Math.abs(turn) * reach;
+        double speed = Math.hypot(vx, vy) + spin;
+        if (speed == 0) {
+            return null;
+        }
         List<double[]> pieces = pieces(obstacle);
         double t = 0;
-        double[] normal = new double[2];
+        double[] normal = new double[2], scratch = new double[2];
+        double[] a = new double[xy.length];
         for (int step = 0; step < MAX_STEPS; step++) {
-            double gap = gap(xy, px, py, vx, vy, turn, t, pieces, obstacle, normal);
-            if (speed == 0) {
-                return null;
-            }
+            double gap = gap(at(xy, px, py, vx, vy, turn, t, a), pieces, obstacle, normal);
             if (gap <= TOUCH) {
                 // Touching: a hit if the mover is closing in, not if it is leaving (a blade
                 // turning back from the post it just touched). One TOUCH of motion on, the
                 // gap tells which.
                 double later = t + TOUCH / speed;
-                if (later > 1 || gap(xy, px, py, vx, vy, turn, later, pieces, obstacle, new double[2]) <= gap) {
+                if (later > 1 || gap(at(xy, px, py, vx, vy, turn, later, a), pieces, obstacle, scratch) <= gap) {
                     return SweptPairs.hit((float) t, normal[0], normal[1]);
                 }
                 t = later;
                 continue;
             }
             // Advance by most of the safe step, so the gap shrinks towards TOUCH and never past 0.
-            t += (gap - TOUCH / 2) / speed;
+            // With one piece the gap is the separation along the normal n, and no point of the
+            // mover gains on the obstacle along n faster than v.n + |turn| R: the bound that
+            // lets the step grow where the motion is not head-on (and no step at all is
+            // needed when it never gains).
+            double rate = pieces.size() == 1 ? Math.min(speed, vx * normal[0] + vy * normal[1] + spin) : speed;
+            if (!(rate > 0)) {
+                return null;
+            }
+            t += (gap - TOUCH / 2) / rate;
             if (t > 1) {
                 return null;
             }
@@ -79,15 +93,164 @@ final class TurningSweep {
         return SweptPairs.hit((float) t, normal[0], normal[1]);
     }
 
-    /** The least gap at time t over the obstacle's pieces; its direction into {@code normal}. */
-    private static double gap(float[] xy, float px, float py, float vx, float vy, float turn, double t,
-                              List<double[]> pieces, Shape obstacle, double[] normal) {
-        double[] a = at(xy, px, py, vx, vy, turn, t);
+    /** The least gap between the mover's vertices {@code a} and the obstacle's pieces; its direction into {@code normal}. */
+    private static double gap(double[] a, List<double[]> pieces, Shape obstacle, double[] normal) {
         double gap = Double.POSITIVE_INFINITY;
         for (double[] piece : pieces) {
-            gap = Math.min(gap, gap(a, piece, obstacle, normal, gap));
+            gap = Math.min(gap, piece.length >= 4 ? polygonGap(a, piece, normal, gap) : gap(a, piece, obstacle, normal, gap));
         }
         return gap;
+    }
+
+    /**
+     * The gap between two convex vertex lists (a segment is two vertices): the distance when
+     * they are apart (the least over each vertex of one and each edge of the other, its
+     * direction from the mover's closest point to the obstacle's), else the best separating
+     * axis among both edge normals (0 or less). Writes the direction into {@code normal} when
+     * the gap is below {@code best}. Allocates nothing.
+     */
+    private static double polygonGap(double[] a, double[] b, double[] normal, double best) {
+        double sat = Double.NEGATIVE_INFINITY, sx = 0, sy = 0;
+        // The last direction found (or the one between the centres) first: most steps it still
+        // separates them, and then the edge normals need not be tried.
+        double hx = normal[0], hy = normal[1];
+        if (hx == 0 && hy == 0) {
+            for (int k = 0; k < b.length; k += 2) {
+                hx += b[k] / (b.length / 2);
+                hy += b[k + 1] / (b.length / 2);
+            }
+            for (int k = 0; k < a.length; k += 2) {
+                hx -= a[k] / (a.length / 2);
+                hy -= a[k + 1] / (a.length / 2);
+            }
+            double len = Math.sqrt(hx * hx + hy * hy);
+            hx /= len;
+            hy /= len;
+        }
+        if (hx * hx + hy * hy > 0.5) {
+            double maxA = Double.NEGATIVE_INFINITY, minB = Double.POSITIVE_INFINITY;
+            for (int k = 0; k < a.length; k += 2) {
+                double p = a[k] * hx + a[k + 1] * hy;
+                maxA = p > maxA ? p : maxA;
+            }
+            for (int k = 0; k < b.length; k += 2) {
+                double p = b[k] * hx + b[k + 1] * hy;
+                minB = p < minB ? p : minB;
+            }
+            if (minB - maxA > 0) {
+                sat = minB - maxA;
+                sx = hx;
+                sy = hy;
+            }
+        }
+        for (int side = sat > 0 ? 2 : 0; side < 2; side++) {
+            double[] e = side == 0 ? a : b;
+            int n = e.length / 2;
+            for (int i = 0; i < n; i++) {
+                int j = i + 1 == n ? 0 : i + 1;
+                double ex = e[2 * j] - e[2 * i], ey = e[2 * j + 1] - e[2 * i + 1], len = Math.sqrt(ex * ex + ey * ey);
+                if (!(len > 0 && len < Double.POSITIVE_INFINITY)) {
+                    continue;
+                }
+                double nx = ey / len, ny = -ex / len;
+                // Both ways at once: along n, b's least minus a's greatest; along -n, a's least minus b's greatest.
+                double minA = Double.POSITIVE_INFINITY, maxA = Double.NEGATIVE_INFINITY;
+                double minB = Double.POSITIVE_INFINITY, maxB = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < a.length; k += 2) {
+                    double p = a[k] * nx + a[k + 1] * ny;
+                    minA = p < minA ? p : minA;
+                    maxA = p > maxA ? p : maxA;
+                }
+                for (int k = 0; k < b.length; k += 2) {
+                    double p = b[k] * nx + b[k + 1] * ny;
+                    minB = p < minB ? p : minB;
+                    maxB = p > maxB ? p : maxB;
+                }
+                double g = minB - maxA, h = minA - maxB;
+                if (h > g) {
+                    g = h;
+                    nx = -nx;
+                    ny = -ny;
+                }
+                if (g > sat) {
+                    sat = g;
+                    sx = nx;
+                    sy = ny;
+                }
+            }
+        }
+        if (sat > 0) {
+            // Apart: the exact distance, from a vertex of one to an edge of the other. A vertex
+            // of a is at least (b's least along s) - (its own reach along s) from b, and a
+            // vertex of b (its reach) - (a's greatest) from a: those whose bound is already
+            // beyond the best distance are skipped, and the two extreme vertices go first.
+            double minB = Double.POSITIVE_INFINITY, maxA = Double.NEGATIVE_INFINITY;
+            int ia = 0, ib = 0;
+            for (int k = 0; k < a.length; k += 2) {
+                double p = a[k] * sx + a[k + 1] * sy;
+                if (p > maxA) {
+                    maxA = p;
+                    ia = k;
+                }
+            }
+            for (int k = 0; k < b.length; k += 2) {
+                double p = b[k] * sx + b[k + 1] * sy;
+                if (p < minB) {
+                    minB = p;
+                    ib = k;
+                }
+            }
+            double[] best2 = {Double.POSITIVE_INFINITY, 0, 0};
+            vertexToEdges(a[ia], a[ia + 1], b, 1, best2);
+            vertexToEdges(b[ib], b[ib + 1], a, -1, best2);
+            for (int k = 0; k < a.length; k += 2) {
+                double lb = minB - (a[k] * sx + a[k + 1] * sy);
+                if (k != ia && lb * lb < best2[0]) {
+                    vertexToEdges(a[k], a[k + 1], b, 1, best2);
+                }
+            }
+            for (int k = 0; k < b.length; k += 2) {
+                double lb = b[k] * sx + b[k + 1] * sy - maxA;
+                if (k != ib && lb * lb < best2[0]) {
+                    vertexToEdges(b[k], b[k + 1], a, -1, best2);
+                }
+            }
+            double d = Math.sqrt(best2[0]);
+            if (d > sat) {
+                if (d < best) {
+                    normal[0] = best2[1] / d;
+                    normal[1] = best2[2] / d;
+                }
+                return d;
+            }
+        }
+        if (sat < best) {
+            normal[0] = sx;
+            normal[1] = sy;
+        }
+        return sat;
+    }
+
+    /**
+     * The squared distance from (qx, qy) to the edges of {@code e}, kept in {@code best} (squared
+     * distance, then the direction times {@code sign}) when below it.
+     */
+    private static void vertexToEdges(double qx, double qy, double[] e, double sign, double[] best) {
+        int n = e.length / 2;
+        for (int i = 0; i < n; i++) {
+            int j = i + 1 == n ? 0 : i + 1;
+            double x0 = e[2 * i], y0 = e[2 * i + 1], ex = e[2 * j] - x0, ey = e[2 * j + 1] - y0;
+            double l2 = ex * ex + ey * ey;
+            double u = l2 > 0 ? ((qx - x0) * ex + (qy - y0) * ey) / l2 : 0;
+            u = u < 0 ? 0 : u > 1 ? 1 : u;
+            double cx = x0 + u * ex - qx, cy = y0 + u * ey - qy;
+            double c2 = cx * cx + cy * cy;
+            if (c2 < best[0]) {
+                best[0] = c2;
+                best[1] = sign * cx;
+                best[2] = sign * cy;
+            }
+        }
     }
 
     /** The obstacle as convex vertex lists; circles, ellipses and capsules are one piece, kept as the shape. */

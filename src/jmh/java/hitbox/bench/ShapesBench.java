@@ -53,6 +53,8 @@ public class ShapesBench {
     Rect post = new Rect(241, 241, 2, 2);
     Convex dynBlade = new Rectangle(160, 4), dynPost = new Rectangle(2, 2);
     Transform bladeT = new Transform(), postT = new Transform();
+    Polygon[] octagons = new Polygon[N + 1];
+    float[] vx = new float[N + 1], vy = new float[N + 1];
 
     @Setup
     public void setup() {
@@ -84,6 +86,19 @@ public class ShapesBench {
             dynBoxes[i] = new Rectangle(a[i], b[i]);
             bT[i] = new Transform();
             bT[i].setTranslation(x[i] + a[i] / 2, y[i] + b[i] / 2);
+        }
+        for (int i = 0; i <= N; i++) {
+            float[] xy = new float[16];
+            for (int k = 0; k < 8; k++) {
+                xy[2 * k] = x[i] + (float) (b[i] * Math.cos(Math.PI * k / 4));
+                xy[2 * k + 1] = y[i] + (float) (b[i] * Math.sin(Math.PI * k / 4));
+            }
+            octagons[i] = Polygon.of(xy);
+        }
+        for (int i = 0; i < N; i++) {
+            // Towards the next octagon, past its centre: most of them hit.
+            vx[i] = 1.5f * (x[i + 1] - x[i]);
+            vy[i] = 1.5f * (y[i + 1] - y[i]);
         }
         bladeT.setTranslation(200, 200);
         postT.setTranslation(242, 242);
@@ -264,6 +279,121 @@ public class ShapesBench {
             s += ca.getTimeOfImpact(dynEllipses[i], eT[i], v, 0, dynBoxes[i + 1], bT[i + 1], still, 0, toi) ? toi.getTime() : 2;
         }
         return s;
+    }
+
+    /** Ellipse i against circle / ellipse i + 1 in the package's inner maths: the new code and the old. */
+    @Benchmark
+    public int ellipseCircleInner_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (Collide.ellipseCircle(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseCircleInner_old() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (hitbox.CurvedBaseline.ellipseCircleOld(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseEllipseInner_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (Collide.ellipseEllipse(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], a[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseEllipseInner_old() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (hitbox.CurvedBaseline.ellipseEllipseOld(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], a[i + 1], b[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    /** Ellipse i against capsule i + 1, raw floats: the quick first answers and the long way before them. */
+    @Benchmark
+    public int ellipseCapsule_hitbox() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (Collide.ellipseCapsule(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], x2[i + 1], y2[i + 1], b[i + 1] / 2)) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    @Benchmark
+    public int ellipseCapsule_old() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (hitbox.CurvedBaseline.ellipseCapsuleOld(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], x2[i + 1], y2[i + 1], b[i + 1] / 2)) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    /** Octagon i moving (no turn, then a turn of 1 radian about its centre) towards octagon i + 1: new code and the old copy. */
+    @Benchmark
+    public float turningPoly8_hitbox() {
+        float s = 0;
+        for (int i = 0; i < N; i++) {
+            Hit h = Sweep.turningTimeOfImpact(octagons[i], x[i], y[i], vx[i], vy[i], 0, octagons[i + 1]);
+            s += h == null ? 2 : h.t();
+        }
+        return s;
+    }
+
+    @Benchmark
+    public float turningPoly8_old() {
+        float s = 0;
+        for (int i = 0; i < N; i++) {
+            Hit h = hitbox.CurvedBaseline.turningOld(octagons[i], x[i], y[i], vx[i], vy[i], 0, octagons[i + 1]);
+            s += h == null ? 2 : h.t();
+        }
+        return s;
+    }
+
+    @Benchmark
+    public float turningPoly8Turn_hitbox() {
+        float s = 0;
+        for (int i = 0; i < N; i++) {
+            Hit h = Sweep.turningTimeOfImpact(octagons[i], x[i], y[i], vx[i], vy[i], 1, octagons[i + 1]);
+            s += h == null ? 2 : h.t();
+        }
+        return s;
+    }
+
+    @Benchmark
+    public float turningPoly8Turn_old() {
+        float s = 0;
+        for (int i = 0; i < N; i++) {
+            Hit h = hitbox.CurvedBaseline.turningOld(octagons[i], x[i], y[i], vx[i], vy[i], 1, octagons[i + 1]);
+            s += h == null ? 2 : h.t();
+        }
+        return s;
+    }
+
+    @Benchmark
+    public float turningBlade_old() {
+        Hit h = hitbox.CurvedBaseline.turningOld(blade, 200, 200, 0, 0, (float) (Math.PI / 2), post);
+        return h == null ? 2 : h.t();
     }
 
     /** One turning time of impact: a blade turning a quarter turn into a small post. */
