@@ -281,23 +281,12 @@ public class ShapesBench {
         return s;
     }
 
-    /** Ellipse i against circle / ellipse i + 1 in the package's inner maths: the new code and the old. */
+    /** Ellipse i against circle / ellipse i + 1 in the package's inner maths. */
     @Benchmark
     public int ellipseCircleInner_hitbox() {
         int n = 0;
         for (int i = 0; i < N; i++) {
             if (Collide.ellipseCircle(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], b[i + 1])) {
-                n++;
-            }
-        }
-        return n;
-    }
-
-    @Benchmark
-    public int ellipseCircleInner_old() {
-        int n = 0;
-        for (int i = 0; i < N; i++) {
-            if (hitbox.CurvedBaseline.ellipseCircleOld(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], b[i + 1])) {
                 n++;
             }
         }
@@ -315,18 +304,7 @@ public class ShapesBench {
         return n;
     }
 
-    @Benchmark
-    public int ellipseEllipseInner_old() {
-        int n = 0;
-        for (int i = 0; i < N; i++) {
-            if (hitbox.CurvedBaseline.ellipseEllipseOld(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], a[i + 1], b[i + 1])) {
-                n++;
-            }
-        }
-        return n;
-    }
-
-    /** Ellipse i against capsule i + 1, raw floats: the quick first answers and the long way before them. */
+    /** Ellipse i against capsule i + 1, raw floats. */
     @Benchmark
     public int ellipseCapsule_hitbox() {
         int n = 0;
@@ -338,33 +316,12 @@ public class ShapesBench {
         return n;
     }
 
-    @Benchmark
-    public int ellipseCapsule_old() {
-        int n = 0;
-        for (int i = 0; i < N; i++) {
-            if (hitbox.CurvedBaseline.ellipseCapsuleOld(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], x2[i + 1], y2[i + 1], b[i + 1] / 2)) {
-                n++;
-            }
-        }
-        return n;
-    }
-
-    /** Octagon i moving (no turn, then a turn of 1 radian about its centre) towards octagon i + 1: new code and the old copy. */
+    /** Octagon i moving (no turn, then a turn of 1 radian about its centre) towards octagon i + 1. */
     @Benchmark
     public float turningPoly8_hitbox() {
         float s = 0;
         for (int i = 0; i < N; i++) {
             Hit h = Sweep.turningTimeOfImpact(octagons[i], x[i], y[i], vx[i], vy[i], 0, octagons[i + 1]);
-            s += h == null ? 2 : h.t();
-        }
-        return s;
-    }
-
-    @Benchmark
-    public float turningPoly8_old() {
-        float s = 0;
-        for (int i = 0; i < N; i++) {
-            Hit h = hitbox.CurvedBaseline.turningOld(octagons[i], x[i], y[i], vx[i], vy[i], 0, octagons[i + 1]);
             s += h == null ? 2 : h.t();
         }
         return s;
@@ -378,22 +335,6 @@ public class ShapesBench {
             s += h == null ? 2 : h.t();
         }
         return s;
-    }
-
-    @Benchmark
-    public float turningPoly8Turn_old() {
-        float s = 0;
-        for (int i = 0; i < N; i++) {
-            Hit h = hitbox.CurvedBaseline.turningOld(octagons[i], x[i], y[i], vx[i], vy[i], 1, octagons[i + 1]);
-            s += h == null ? 2 : h.t();
-        }
-        return s;
-    }
-
-    @Benchmark
-    public float turningBlade_old() {
-        Hit h = hitbox.CurvedBaseline.turningOld(blade, 200, 200, 0, 0, (float) (Math.PI / 2), post);
-        return h == null ? 2 : h.t();
     }
 
     /** One turning time of impact: a blade turning a quarter turn into a small post. */
