@@ -143,11 +143,3 @@ void moveBox() {
   playerCol = grid.colAt(playerX());
   playerRow = grid.rowAt(playerY());
 }
-
-void step(int dc, int dr) {
-  if (grid.canMove(playerCol, playerRow, dc, dr)) {
-    playerCol += dc;
-    playerRow += dr;
-    placeBox();
-  }
-}

@@ -50,3 +50,12 @@ void setArrow(int code, boolean down) {
     downDown = down;
   }
 }
+
+// Cell mode: one step along the map, if the cell next door can be walked into.
+void step(int dc, int dr) {
+  if (grid.canMove(playerCol, playerRow, dc, dr)) {
+    playerCol += dc;
+    playerRow += dr;
+    placeBox();
+  }
+}
