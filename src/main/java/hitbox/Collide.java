@@ -16,7 +16,7 @@ package hitbox;
  * radius; rectangles are top-left corner, width and height (Processing's {@code CORNER}
  * mode).
  *
- * <p>This class is longer than most (about 1,030 lines): it is the whole table of tests, one
+ * <p>This class is longer than most (about 1,070 lines): it is the whole table of tests, one
  * public method per pair with its full javadoc (the ellipses and capsules included); the
  * polygon, ellipse and capsule maths is in package-private helpers ({@code Polygons},
  * {@code Ellipses}, {@code Capsules}).

@@ -40,10 +40,14 @@ public final class Polygon implements Shape {
     private final double[] corners;
 
     private Polygon(float[] xy, int concaveVertex) {
+        this(xy, concaveVertex, concaveVertex < 0 ? Polygons.winding(xy) : 0);
+    }
+
+    private Polygon(float[] xy, int concaveVertex, int convexWinding) {
         this.xy = xy;
         this.bounds = Polygons.bounds(xy);
         this.concaveVertex = concaveVertex;
-        this.convexWinding = concaveVertex < 0 ? Polygons.winding(xy) : 0;
+        this.convexWinding = convexWinding;
         this.corners = Polygons.toDouble(xy);
     }
 
@@ -389,8 +393,9 @@ public final class Polygon implements Shape {
                         + e.getMessage(), e);
             }
         }
-        // Every coordinate moved exactly, so every orientation and the concave vertex are kept.
-        return new Polygon(moved, concaveVertex);
+        // Every coordinate moved exactly, so every orientation, the concave vertex and the
+        // winding are kept: a sweep moves a polygon many times a call.
+        return new Polygon(moved, concaveVertex, convexWinding);
     }
 
     /** Two polygons are equal when they have the same vertices in the same order. */

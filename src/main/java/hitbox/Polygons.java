@@ -16,9 +16,9 @@ import java.math.BigDecimal;
  * inside the polygon"; the edge tests and the one-point test below are exact, so the whole
  * answer is.
  *
- * <p>This class is longer than most (about 500 lines) because every piece of it is one idea
- * used by many pairs (the even-odd test, an edge reaching into a polygon, the exact areas and
- * corners), kept in one home so that {@link Collide}, {@link Polygon}, {@link Contact} and
+ * <p>This class is longer than most (about 670 lines) because every piece of it is one idea
+ * used by many pairs (the even-odd test, an edge reaching into a polygon, the convex fast
+ * path, the exact areas and corners), kept in one home so that {@link Collide}, {@link Polygon}, {@link Contact} and
  * the sweeps never copy it.
  */
 final class Polygons {

@@ -24,7 +24,7 @@ import java.util.Arrays;
  * <p>The direction need not be of unit length; distances are always in pixels. For
  * whole-number coordinates and directions, whether a ray hits is decided exactly.
  *
- * <p>A little over the usual size (about 470 lines): the public raw-float distances and
+ * <p>This class is longer than most (about 580 lines): the public raw-float distances and
  * the cast at each of the six shape kinds, each with its normal, belong together.
  *
  * <p>Reference: Christer Ericson, <i>Real-Time Collision Detection</i> (2005), 5.3
