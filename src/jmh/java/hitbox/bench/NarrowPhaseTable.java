@@ -92,7 +92,14 @@ public final class NarrowPhaseTable {
                     + "\n" + load + ", after the run " + loadAverage() + "\n", StandardCharsets.UTF_8);
         }
         List<String> how = Files.readAllLines(run, StandardCharsets.UTF_8);
-        String text = table(questions, agreements, measured, how.get(0), how.get(1), how.get(2));
+        // First the table alone, to learn which calls miss a goal; then those calls profiled, and the table again.
+        Misses misses = new Misses();
+        table(questions, agreements, measured, how.get(0), how.get(1), how.get(2), Map.of(), misses);
+        Path saved = Path.of(name + "-profiles.tsv");
+        Map<String, List<NarrowProfiles.Profile>> profiles = Boolean.getBoolean("narrow.fromCsv")
+                || !Boolean.parseBoolean(System.getProperty("narrow.profile", "true"))
+                ? NarrowProfiles.read(saved) : NarrowProfiles.run(misses.cpu, misses.alloc, saved);
+        String text = table(questions, agreements, measured, how.get(0), how.get(1), how.get(2), profiles, new Misses());
         if (some) {
             Files.writeString(Path.of(name + ".md"), text, StandardCharsets.UTF_8);
             System.out.println("wrote " + name + ".md (some questions only: docs and README left as they are)");
@@ -263,8 +270,16 @@ public final class NarrowPhaseTable {
 
     // ---------------------------------------------------------------- the table
 
+    /** The Hitbox calls that miss a goal: to profile for time, and for bytes. */
+    static final class Misses {
+        final java.util.Set<String> cpu = new java.util.LinkedHashSet<>(), alloc = new java.util.LinkedHashSet<>();
+        /** Each missed call's line in the "where the time goes" list, in table order. */
+        final Map<String, String> rows = new LinkedHashMap<>();
+    }
+
     static String table(List<Question> questions, Map<String, Agreement> agreements, Map<String, double[]> measured,
-                        String jmhArgs, String when, String load) {
+                        String jmhArgs, String when, String load, Map<String, List<NarrowProfiles.Profile>> profiles,
+                        Misses misses) {
         StringBuilder s = new StringBuilder();
         s.append("### One shape against another: the narrow phase against the peers\n\n");
         s.append("Each question is 1,024 random cases (whole and half-pixel coordinates, so some pairs touch exactly; the two\n");
@@ -303,7 +318,12 @@ public final class NarrowPhaseTable {
                 peerNs = ns(p);
                 ratio = String.format(Locale.ROOT, "%.2fx", h[0] / p);
                 peerRows++;
-                if (!(h[0] <= p)) slower.add(q.title() + " (" + ratio + ")");
+                if (!(h[0] <= p)) {
+                    slower.add(q.title() + " (" + ratio + ")");
+                    misses.cpu.add(hitbox.id());
+                    misses.rows.merge(hitbox.id(), q.title() + ", `" + hitbox.call + "`: " + ratio + " the fastest peer's time",
+                            (x, y) -> x + "; " + y);
+                }
             }
             for (NarrowContender c : q.contenders()) {
                 if (c.role == Role.PEER) continue;
@@ -313,6 +333,9 @@ public final class NarrowPhaseTable {
                 double beyond = m == null ? Double.NaN : m[1] - resultBytes(c, q);
                 if (!(beyond < 0.5)) {
                     allocating.add("`" + c.call + "` (" + (m == null ? "?" : bytes(m[1]) + " B, " + bytes(beyond) + " beyond its results") + ")");
+                    misses.alloc.add(c.id());
+                    misses.rows.merge(c.id(), q.title() + ", `" + c.call + "`: " + bytes(beyond) + " B a call beyond its results",
+                            (x, y) -> x + "; " + y);
                 }
             }
             s.append("| ").append(q.title()).append(" | `").append(hitbox.call).append("` | ").append(ns(h[0])).append(" | ")
@@ -334,7 +357,13 @@ public final class NarrowPhaseTable {
                 // the goal is Shape.overlaps and contains against Collide; rays, sweeps and contacts are shown beside it
                 if (c instanceof NarrowContender.Bool) {
                     shapeRows++;
-                    if (!(m[0] <= 1.25 * r[0])) shapeSlow.add(q.title() + " `" + c.call + "` (" + ratio + ")");
+                    if (!(m[0] <= 1.25 * r[0])) {
+                        shapeSlow.add(q.title() + " `" + c.call + "` (" + ratio + ")");
+                        misses.cpu.add(c.id());
+                        misses.cpu.add(raw.id()); // the raw call's profile beside it shows what the Shape route adds
+                        misses.rows.merge(c.id(), q.title() + ", `" + c.call + "`: " + ratio + " the raw call's time",
+                                (x, y) -> x + "; " + y);
+                    }
                 }
                 s.append("| ").append(q.title()).append(" | `").append(raw.call).append("` | ").append(ns(r[0])).append(" | `")
                         .append(c.call).append("` | ").append(ns(m[0])).append(" | ").append(bytes(m[1])).append(" | ")
@@ -356,6 +385,7 @@ public final class NarrowPhaseTable {
         s.append("(closed shapes, a contact of depth 0) or its skin, not a wrong answer; any other difference fails the run.\n");
         s.append("The pixel masks and `Hybrid` have no peer. Every contender answers case i through a lambda over its own\n");
         s.append("arrays, in a JVM of its own (one JMH fork each), so the call is inlined as a direct call would be.\n");
+        s.append(whereTheTimeGoes(misses, profiles));
         s.append("\n<details><summary>Every contender measured</summary>\n\n");
         s.append("| question | contender | ns/case | B/call |\n| --- | --- | ---: | ---: |\n");
         for (Question q : questions) {
@@ -366,6 +396,26 @@ public final class NarrowPhaseTable {
             }
         }
         s.append("\n</details>\n");
+        return s.toString();
+    }
+
+    /** Every missed call with its reason and the profile that shows where its time or bytes go. */
+    private static String whereTheTimeGoes(Misses misses, Map<String, List<NarrowProfiles.Profile>> profiles) {
+        if (misses.rows.isEmpty()) return "";
+        StringBuilder s = new StringBuilder();
+        s.append("\n**Where the missed rows' time goes.** Each call that misses a goal was run again alone under async-profiler\n");
+        s.append("(").append(NarrowProfiles.HOW).append("). For each: why it misses, then the hottest source lines of its own samples\n");
+        s.append("(the `NarrowContender` lines are the benchmark's loop, reading the case, common to every contender).\n\n");
+        for (Map.Entry<String, String> row : misses.rows.entrySet()) {
+            String id = row.getKey();
+            s.append("- ").append(row.getValue()).append(". ").append(NarrowProfiles.why(id)).append('\n');
+            String profile = NarrowProfiles.describe(profiles.get(id));
+            if (!profile.isEmpty()) s.append("  - ").append(profile).append('\n');
+            String raw = id.replaceAll("\\.[^.]*$", ".collide");
+            if (!raw.equals(id) && misses.cpu.contains(raw) && profiles.containsKey(raw) && id.endsWith(".shape")) {
+                s.append("  - the raw call, for comparison: ").append(NarrowProfiles.describe(profiles.get(raw))).append('\n');
+            }
+        }
         return s.toString();
     }
 

@@ -1,0 +1,277 @@
+package hitbox.bench;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+import jdk.jfr.consumer.RecordedClass;
+import jdk.jfr.consumer.RecordedEvent;
+import jdk.jfr.consumer.RecordedFrame;
+import jdk.jfr.consumer.RecordedStackTrace;
+import jdk.jfr.consumer.RecordingFile;
+import org.openjdk.jmh.runner.Runner;
+import org.openjdk.jmh.runner.RunnerException;
+import org.openjdk.jmh.runner.options.OptionsBuilder;
+import org.openjdk.jmh.runner.options.TimeValue;
+
+/**
+ * Where a missed row of the narrow-phase table spends its time (or its bytes): each Hitbox
+ * call that misses a goal is run once more, alone, under async-profiler (its Linux library
+ * ships inside the {@code tools.profiler:async-profiler} jar), which records to JFR. It samples
+ * without the safepoint bias of JMH's stack profiler, and with {@code -XX:+DebugNonSafepoints}
+ * each sample's top frame names its source line even inside code inlined into the benchmark's
+ * loop, which is where a few-nanosecond test lives. The table then quotes the hottest lines,
+ * so a reader sees what a miss is made of rather than being told.
+ *
+ * <p>CPU samples come from {@code itimer} (no perf_events needed) every 0.1 ms; allocation
+ * samples from the JVM's TLAB events, weighted by size. The agent starts with the JVM, so the
+ * first second (warm-up, the interpreter) is in the samples too; the run is measured for five
+ * more, and only samples inside {@link NarrowPhaseBench#answerEveryCase} count.
+ */
+final class NarrowProfiles {
+    private NarrowProfiles() {
+    }
+
+    /** One line's share of a call's samples, with the source line itself where it is ours. */
+    record Line(String frame, double percent, String source) {
+    }
+
+    /** A call's profile: what was sampled ("cpu" or "alloc"), how many samples, the top lines. */
+    record Profile(String id, String event, long total, List<Line> top) {
+    }
+
+    /** How the profiles were taken, for the table's text. */
+    static final String HOW = "itimer samples every 0.1 ms and allocation samples, 1 s warm-up and 5 s measured,"
+            + " `-XX:+DebugNonSafepoints` so inlined lines are named";
+
+    /**
+     * Why each call misses, as far as its profile and the code say: written by hand from a
+     * profiled run, keyed by contender id (question.key). A miss with no reason here says so
+     * in the table, so a new miss cannot hide behind an old sentence.
+     */
+    private static final Map<String, String> WHY = new HashMap<>();
+
+    static {
+    }
+
+    /** The written reason for a missed call, or a note that there is none yet. */
+    static String why(String id) {
+        return WHY.getOrDefault(id, "No reason written yet for this miss: read the profile below.");
+    }
+
+    private static final int TOP = 5;
+    private static final double MIN_PERCENT = 3;
+
+    /** Profiles every id (cpu for all, allocations too for those in {@code alloc}); written to {@code out}. */
+    static Map<String, List<Profile>> run(Collection<String> cpu, Collection<String> alloc, Path out)
+            throws IOException, RunnerException {
+        Path lib = library();
+        Map<String, List<Profile>> profiles = new LinkedHashMap<>();
+        if (lib == null) {
+            System.out.println("narrow-phase profiles: no async-profiler library for this platform; skipped");
+            return profiles;
+        }
+        Path dir = Path.of("build/narrow-phase-profiles");
+        Files.createDirectories(dir);
+        List<String> jobs = new ArrayList<>();
+        for (String id : cpu) jobs.add(id + " cpu");
+        for (String id : alloc) jobs.add(id + " alloc");
+        for (String job : jobs) {
+            String[] f = job.split(" ");
+            String id = f[0], event = f[1];
+            Path file = dir.resolve(id + "." + event + ".jfr").toAbsolutePath();
+            Files.deleteIfExists(file);
+            String agent = "-agentpath:" + lib + "=start,event=" + (event.equals("cpu") ? "itimer,interval=100us" : "alloc")
+                    + ",jfr,file=" + file;
+            Runner runner = new Runner(new OptionsBuilder()
+                    .include(NarrowPhaseBench.class.getName() + ".answerEveryCase")
+                    .param("contender", id)
+                    .forks(1)
+                    .warmupIterations(1).warmupTime(TimeValue.seconds(1))
+                    .measurementIterations(1).measurementTime(TimeValue.seconds(5))
+                    .jvmArgsAppend("-XX:+UnlockDiagnosticVMOptions", "-XX:+DebugNonSafepoints", agent)
+                    .build());
+            for (int attempt = 1; ; attempt++) {
+                try {
+                    runner.run();
+                    break;
+                } catch (RunnerException e) {
+                    // most often another JMH run holding JMH's lock between two of ours: wait for it
+                    if (attempt == 20) throw e;
+                    System.out.println("narrow-phase profile of " + id + ": " + e.getMessage() + "; trying again in 30 s");
+                    try {
+                        Thread.sleep(30_000);
+                    } catch (InterruptedException stop) {
+                        Thread.currentThread().interrupt();
+                        throw e;
+                    }
+                }
+            }
+            if (Files.exists(file)) {
+                profiles.computeIfAbsent(id, k -> new ArrayList<>()).add(read(id, event, file));
+            }
+        }
+        write(profiles, out);
+        return profiles;
+    }
+
+    /** Copies the profiler's library out of its jar into build/, where the forked JVMs can load it. */
+    private static Path library() throws IOException {
+        String os = System.getProperty("os.name").toLowerCase(Locale.ROOT);
+        String arch = System.getProperty("os.arch");
+        if (!os.contains("linux")) return null;
+        String name = (arch.equals("aarch64") ? "linux-arm64" : "linux-x64") + "/libasyncProfiler.so";
+        try (InputStream in = NarrowProfiles.class.getClassLoader().getResourceAsStream(name)) {
+            if (in == null) return null;
+            Path lib = Path.of("build/async-profiler/libasyncProfiler.so").toAbsolutePath();
+            Files.createDirectories(lib.getParent());
+            Files.copy(in, lib, StandardCopyOption.REPLACE_EXISTING);
+            return lib;
+        }
+    }
+
+    /**
+     * The top lines of a recording, counting only samples in the benchmark's loop. For cpu the
+     * top frame is the line running; for allocations it is the line allocating, and the class
+     * it makes is named beside it, weighted by the sample's size.
+     */
+    static Profile read(String id, String event, Path jfr) throws IOException {
+        Map<String, Long> byLine = new HashMap<>();
+        long total = 0;
+        for (RecordedEvent e : RecordingFile.readAllEvents(jfr)) {
+            String type = e.getEventType().getName();
+            boolean cpu = type.equals("jdk.ExecutionSample");
+            boolean alloc = type.startsWith("jdk.ObjectAllocation");
+            RecordedStackTrace stack = e.getStackTrace();
+            if (!(cpu || alloc) || stack == null || stack.getFrames().isEmpty() || !inLoop(stack)) continue;
+            RecordedFrame top = stack.getFrames().get(0);
+            String line = frame(top);
+            long weight = 1;
+            if (alloc) {
+                RecordedClass made = e.getValue("objectClass");
+                line += " makes " + (made == null ? "?" : clean(made.getName()));
+                weight = e.hasField("tlabSize") && e.getLong("tlabSize") > 0 ? e.getLong("tlabSize")
+                        : e.hasField("allocationSize") ? e.getLong("allocationSize") : 1;
+            }
+            byLine.merge(line, weight, Long::sum);
+            total += weight;
+        }
+        List<Map.Entry<String, Long>> sorted = new ArrayList<>(byLine.entrySet());
+        sorted.sort((a, b) -> Long.compare(b.getValue(), a.getValue()));
+        List<Line> top = new ArrayList<>();
+        for (Map.Entry<String, Long> e : sorted) {
+            double percent = 100.0 * e.getValue() / total;
+            if (top.size() == TOP || percent < MIN_PERCENT) break;
+            top.add(new Line(e.getKey(), percent, source(e.getKey())));
+        }
+        return new Profile(id, event, total, top);
+    }
+
+    private static boolean inLoop(RecordedStackTrace stack) {
+        for (RecordedFrame f : stack.getFrames()) {
+            if (f.getMethod() != null && f.getMethod().getName().equals("answerEveryCase")
+                    && f.getMethod().getType().getName().endsWith("NarrowPhaseBench")) return true;
+        }
+        return false;
+    }
+
+    private static String frame(RecordedFrame f) {
+        if (f.getMethod() == null) return "?";
+        return clean(f.getMethod().getType().getName()) + "." + f.getMethod().getName() + ":" + f.getLineNumber();
+    }
+
+    /** A name as the reader knows it: no package for ours, no lambda's generated suffix. */
+    private static String clean(String name) {
+        return name.replace('/', '.').replace("hitbox.bench.", "").replace("hitbox.", "").replaceAll("\\$\\$Lambda\\$.*", "\\$\\$Lambda");
+    }
+
+    /** The source line a frame "Class.method:line" names, trimmed, if it is one of ours. */
+    static String source(String frame) {
+        String f = frame.contains(" makes ") ? frame.substring(0, frame.indexOf(" makes ")) : frame;
+        int colon = f.lastIndexOf(':');
+        if (colon < 0) return "";
+        String method = f.substring(0, colon);
+        int dot = method.lastIndexOf('.');
+        if (dot < 0) return "";
+        String cls = method.substring(0, dot);
+        if (cls.contains("$")) cls = cls.substring(0, cls.indexOf('$'));
+        if (cls.contains(".")) return ""; // not ours (our package prefixes were taken off)
+        int number;
+        try {
+            number = Integer.parseInt(f.substring(colon + 1));
+        } catch (NumberFormatException e) {
+            return "";
+        }
+        for (Path p : new Path[] {Path.of("src/main/java/hitbox", cls + ".java"), Path.of("src/jmh/java/hitbox/bench", cls + ".java")}) {
+            try {
+                List<String> lines = Files.readAllLines(p, StandardCharsets.UTF_8);
+                if (number >= 1 && number <= lines.size()) {
+                    String text = lines.get(number - 1).trim();
+                    return text.length() > 90 ? text.substring(0, 87) + "..." : text;
+                }
+            } catch (IOException e) {
+                // not this source set
+            }
+        }
+        return "";
+    }
+
+    // ---------------------------------------------------------------- saved beside the CSV
+
+    static void write(Map<String, List<Profile>> profiles, Path out) throws IOException {
+        StringBuilder s = new StringBuilder();
+        for (List<Profile> list : profiles.values()) {
+            for (Profile p : list) {
+                for (Line l : p.top()) {
+                    s.append(p.id()).append('\t').append(p.event()).append('\t').append(p.total()).append('\t')
+                            .append(l.frame()).append('\t').append(String.format(Locale.ROOT, "%.1f", l.percent())).append('\t')
+                            .append(l.source()).append('\n');
+                }
+            }
+        }
+        Files.writeString(out, s.toString(), StandardCharsets.UTF_8);
+    }
+
+    /** The profiles saved by the last run, to write the text again without profiling. */
+    static Map<String, List<Profile>> read(Path saved) throws IOException {
+        Map<String, List<Profile>> profiles = new LinkedHashMap<>();
+        if (!Files.exists(saved)) return profiles;
+        Map<String, Profile> byKey = new LinkedHashMap<>();
+        for (String line : Files.readAllLines(saved, StandardCharsets.UTF_8)) {
+            String[] f = line.split("\t", -1);
+            if (f.length < 6) continue;
+            Profile p = byKey.computeIfAbsent(f[0] + " " + f[1], k -> {
+                Profile made = new Profile(f[0], f[1], Long.parseLong(f[2]), new ArrayList<>());
+                profiles.computeIfAbsent(f[0], id -> new ArrayList<>()).add(made);
+                return made;
+            });
+            p.top().add(new Line(f[3], Double.parseDouble(f[4]), f[5]));
+        }
+        return profiles;
+    }
+
+    /** The profile of one call as a sentence for the table: the hottest lines and their shares. */
+    static String describe(List<Profile> list) {
+        if (list == null || list.isEmpty()) return "";
+        List<String> parts = new ArrayList<>();
+        for (Profile p : list) {
+            List<String> lines = new ArrayList<>();
+            for (Line l : p.top()) {
+                lines.add(String.format(Locale.ROOT, "%.0f%% `%s`", l.percent(), l.frame())
+                        + (l.source().isEmpty() ? "" : " (`" + l.source().replace("|", "\\|").replace("`", "'") + "`)"));
+            }
+            parts.add((p.event().equals("cpu") ? "time: " : "bytes: ") + String.join(", ", lines));
+        }
+        return String.join("; ", parts);
+    }
+}
