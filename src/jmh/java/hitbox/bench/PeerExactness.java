@@ -52,11 +52,12 @@ public final class PeerExactness {
         rows.add(new Row("point in triangle", "libGDX Intersector.isPointInTriangle", PeerExactness::trianglePoint));
         rows.add(new Row("point in ellipse", "libGDX Ellipse.contains", PeerExactness::ellipsePoint));
         rows.add(new Row("point in capsule", "dyn4j Capsule.contains", PeerExactness::capsulePoint));
+        rows.add(new Row("point in concave 16-gon", "libGDX Intersector.isPointInPolygon", PeerExactness::polygonPoint));
         StringBuilder out = new StringBuilder();
         out.append("# What the peers' faster small tests get wrong\n\n")
                 .append("Made by `gradle peerExactness` (src/jmh/java/hitbox/bench/PeerExactness.java); edit the generator, not the output.\n\n")
                 .append("For each small question of the narrow-phase table where a peer is faster, ").append(String.format(Locale.ROOT, "%,d", CASES))
-                .append(" cases whose second shape\nlies within a relative ").append(NEAR)
+                .append(" cases whose second shape\nlies within a relative 1e-6")
                 .append(" of the first's outline, rounded to float as a sketch's floats are, at screen\n")
                 .append("coordinates (up to 2,000 px) and world coordinates (up to 100,000 px). The exact answer is computed in\n")
                 .append("`BigDecimal` from the floats, independently of Hitbox, by the one touching rule; cases that touch exactly\n")
@@ -247,5 +248,35 @@ public final class PeerExactness {
         Transform at = NarrowPeers.dyn4jAt(k);
         return new boolean[] {c < 0, Collide.capsulePoint(x1, y1, x2, y2, rad, px, py),
                 shape.contains(new org.dyn4j.geometry.Vector2(px, py), at, false)};
+    }
+
+    static boolean[] polygonPoint(SplittableRandom r, float scale, float[] f) {
+        // a star: 16 corners around a centre at alternating radii, so it is concave
+        float cx = coord(r, scale), cy = coord(r, scale);
+        float[] xy = new float[32];
+        for (int i = 0; i < 16; i++) {
+            double a = i * Math.PI / 8, rad = (i % 2 == 0 ? 1 : 0.5) * size(r);
+            xy[2 * i] = (float) (cx + rad * Math.cos(a));
+            xy[2 * i + 1] = (float) (cy + rad * Math.sin(a));
+        }
+        // near a point of one edge, off it along the line from the centre
+        int e = r.nextInt(16), n = (e + 1) % 16;
+        double t = r.nextDouble(), k = near(r);
+        double mx = xy[2 * e] + t * (xy[2 * n] - (double) xy[2 * e]), my = xy[2 * e + 1] + t * (xy[2 * n + 1] - (double) xy[2 * e + 1]);
+        float px = (float) (cx + (mx - cx) * k), py = (float) (cy + (my - cy) * k);
+        // exact crossing number, leaving out points on an edge
+        boolean inside = false;
+        for (int i = 0, j = 15; i < 16; j = i++) {
+            float ax = xy[2 * j], ay = xy[2 * j + 1], bx = xy[2 * i], by = xy[2 * i + 1];
+            int o = orient(ax, ay, bx, by, px, py);
+            if (o == 0 && b(px).compareTo(b(Math.min(ax, bx))) >= 0 && b(px).compareTo(b(Math.max(ax, bx))) <= 0
+                    && b(py).compareTo(b(Math.min(ay, by))) >= 0 && b(py).compareTo(b(Math.max(ay, by))) <= 0) {
+                return null;
+            }
+            if ((ay > py) != (by > py) && (by > ay ? o > 0 : o < 0)) {
+                inside = !inside;
+            }
+        }
+        return new boolean[] {inside, Collide.polygonPoint(xy, px, py), Intersector.isPointInPolygon(xy, 0, 32, px, py)};
     }
 }
