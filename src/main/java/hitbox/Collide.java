@@ -606,13 +606,16 @@ public final class Collide {
      */
     public static boolean trianglePoint(float x1, float y1, float x2, float y2, float x3, float y3,
                                         float px, float py) {
-        if (Check.nan(x1, y1, x2, y2, x3) || Check.nan(y3, px, py, 0, 0)) {
-            return false;
-        }
+        // No NaN check: an orientation with NaN in it is NaN, neither > 0 nor < 0, so NaN
+        // input answers false by the same comparisons. The third edge is looked at only
+        // when the first two put the point on the same side, which half the misses do not.
         double o1 = Lines.orient(x1, y1, x2, y2, px, py);
         double o2 = Lines.orient(x2, y2, x3, y3, px, py);
+        if (o1 > 0 ? !(o2 > 0) : !(o1 < 0 && o2 < 0)) {
+            return false;
+        }
         double o3 = Lines.orient(x3, y3, x1, y1, px, py);
-        return (o1 > 0 && o2 > 0 && o3 > 0) || (o1 < 0 && o2 < 0 && o3 < 0);
+        return o1 > 0 ? o3 > 0 : o3 < 0;
     }
 
     // ---------------------------------------------------------------- ellipses
@@ -637,9 +640,8 @@ public final class Collide {
      * @return true if the point is strictly inside the ellipse
      */
     public static boolean ellipsePoint(float x, float y, float radiusX, float radiusY, float px, float py) {
-        if (Check.nan(x, y, radiusX, radiusY, px) || py != py) {
-            return false;
-        }
+        // No NaN check of its own: a NaN radius fails Ellipses.point's "> 0", and a NaN
+        // position makes its side NaN, which counts as outside.
         return Ellipses.point(x, y, radiusX, radiusY, px, py);
     }
 

@@ -43,14 +43,16 @@ final class Ellipses {
         double u = (qx - cx) * b, v = (qy - cy) * a, w = a * b;
         double s = u * u + v * v - w * w;
         double bound = SUM_ERROR * (u * u + v * v + w * w);
-        if (!(bound < Double.POSITIVE_INFINITY) || s != s) {
-            return s < 0 ? -1 : 1; // infinite values or overflow: compared as they come, NaN is outside
-        }
+        // The usual answers first: clear of the rounding error either way (NaN fails both, and
+        // an infinite bound is never exceeded).
         if (s > bound) {
             return 1;
         }
         if (-s > bound) {
             return -1;
+        }
+        if (!(bound < Double.POSITIVE_INFINITY) || s != s) {
+            return s < 0 ? -1 : 1; // infinite values or overflow: compared as they come, NaN is outside
         }
         if (exact(qx, qy, cx, cy, a, b, s)) {
             return s < 0 ? -1 : s > 0 ? 1 : 0;
