@@ -349,6 +349,13 @@ public final class Polygon implements Shape {
         return corners;
     }
 
+    /** {@inheritDoc} */
+    @Override
+    public boolean overlaps(Shape other) {
+        // this kind's own small part of the table, which a caller's loop can inline (see Overlaps)
+        return Overlaps.polygonWith(this, Check.notNull("other", other));
+    }
+
     /** {@inheritDoc} Same as {@link Collide#polygonPoint}. */
     @Override
     public boolean contains(float px, float py) {
