@@ -10,12 +10,13 @@ package hitbox;
  * {@code a.overlaps(b) == b.overlaps(a)} holds by construction.
  *
  * <p>Each kind has its own small method ({@link #circleWith}, say), which its class's
- * {@code overlaps} calls directly: it answers the pairs whose earlier kind it is, and hands an
- * earlier kind the pair swapped, through {@link #test}. Small is the point: one big dispatch
- * on both shapes was too large for the JIT to inline into a caller's loop, which cost a call
- * (and everything the compiler could not see across it) on every test, up to 1.6x the raw
- * {@code Collide} call; a per-kind method of a few type checks inlines, and the compiler then
- * keeps only the branch the loop takes.
+ * {@code overlaps} calls directly: it answers the pairs whose earlier kind it is, and hands
+ * the pair swapped straight to an earlier kind's method. Small is the point: one big dispatch
+ * on both shapes was too large for the JIT to inline into a caller's loop (once compiled on
+ * its own it is "already compiled into a big method"), which cost a call on every test, up
+ * to 1.6x the raw {@code Collide} call; a per-kind method of a few type checks inlines, and
+ * the compiler then keeps only the branch the loop takes. For the same reason a swap never
+ * goes back through {@link #test}.
  *
  * <table>
  *   <caption>Which Collide method answers each pair</caption>
@@ -84,8 +85,8 @@ final class Overlaps {
 
     /** A capsule with anything: an ellipse, the one earlier kind, takes the pair swapped. */
     static boolean capsuleWith(Capsule k, Shape other) {
-        if (other instanceof Ellipse) {
-            return test(other, k);
+        if (other instanceof Ellipse e) {
+            return ellipseWith(e, k);
         }
         float x1 = k.x1(), y1 = k.y1(), x2 = k.x2(), y2 = k.y2(), r = k.r();
         if (other instanceof Capsule o) {
@@ -103,7 +104,7 @@ final class Overlaps {
         return Collide.polygonCapsule(((Polygon) other).raw(), x1, y1, x2, y2, r);
     }
 
-    /** A circle with anything: an ellipse or a capsule, the earlier kinds, takes the pair swapped. */
+    /** A circle with anything: a capsule or an ellipse, the earlier kinds, takes the pair swapped. */
     static boolean circleWith(Circle c, Shape other) {
         if (other instanceof Circle d) {
             return Collide.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
@@ -117,10 +118,13 @@ final class Overlaps {
         if (other instanceof Polygon p) {
             return Collide.polygonCircle(p.raw(), c.x(), c.y(), c.r());
         }
-        return test(other, c);
+        if (other instanceof Capsule k) {
+            return capsuleWith(k, c);
+        }
+        return ellipseWith((Ellipse) other, c);
     }
 
-    /** A rectangle with anything: a circle, an ellipse or a capsule takes the pair swapped. */
+    /** A rectangle with anything: a circle, a capsule or an ellipse takes the pair swapped. */
     static boolean rectWith(Rect r, Shape other) {
         if (other instanceof Rect s) {
             return Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
@@ -131,7 +135,13 @@ final class Overlaps {
         if (other instanceof Polygon p) {
             return Collide.polygonRect(p.raw(), r.x(), r.y(), r.w(), r.h());
         }
-        return test(other, r);
+        if (other instanceof Circle c) {
+            return circleWith(c, r);
+        }
+        if (other instanceof Capsule k) {
+            return capsuleWith(k, r);
+        }
+        return ellipseWith((Ellipse) other, r);
     }
 
     /** A segment with anything: every kind but a polygon comes earlier and takes the pair swapped. */
@@ -142,7 +152,16 @@ final class Overlaps {
         if (other instanceof Polygon p) {
             return Collide.polygonLine(p.raw(), s.x1(), s.y1(), s.x2(), s.y2());
         }
-        return test(other, s);
+        if (other instanceof Rect r) {
+            return rectWith(r, s);
+        }
+        if (other instanceof Circle c) {
+            return circleWith(c, s);
+        }
+        if (other instanceof Capsule k) {
+            return capsuleWith(k, s);
+        }
+        return ellipseWith((Ellipse) other, s);
     }
 
     /** A polygon with anything: the last kind, so every other kind takes the pair swapped. */
@@ -150,6 +169,18 @@ final class Overlaps {
         if (other instanceof Polygon q) {
             return Polygons.overlap(p, q);
         }
-        return test(other, p);
+        if (other instanceof Rect r) {
+            return rectWith(r, p);
+        }
+        if (other instanceof Circle c) {
+            return circleWith(c, p);
+        }
+        if (other instanceof Segment s) {
+            return segmentWith(s, p);
+        }
+        if (other instanceof Capsule k) {
+            return capsuleWith(k, p);
+        }
+        return ellipseWith((Ellipse) other, p);
     }
 }
