@@ -349,10 +349,27 @@ public final class Polygon implements Shape {
         return corners;
     }
 
-    /** {@inheritDoc} Same as {@link Collide#polygonPoint}. */
+    /** {@inheritDoc} */
+    @Override
+    public boolean overlaps(Shape other) {
+        // this kind's own small part of the table, which a caller's loop can inline (see Overlaps)
+        return Overlaps.polygonWith(this, Check.notNull("other", other));
+    }
+
+    /**
+     * {@inheritDoc} Same as {@link Collide#polygonPoint}; a triangle is answered by
+     * {@link Collide#trianglePoint}, which gives the same answer.
+     */
     @Override
     public boolean contains(float px, float py) {
-        return Collide.polygonPoint(xy, px, py);
+        float[] v = xy;
+        if (v.length == 6) {
+            // Three orientation signs, not the crossing count's walk (1.9x slower). Both decide
+            // the open inside exactly, and a triangle has area (Polygon.of refuses a flat one);
+            // a NaN or infinite point is outside for both (TrianglePointTest).
+            return Collide.trianglePoint(v[0], v[1], v[2], v[3], v[4], v[5], px, py);
+        }
+        return Collide.polygonPoint(v, px, py);
     }
 
     /** {@inheritDoc} */

@@ -34,6 +34,13 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
         Check.finite("y2", y2);
     }
 
+    /** {@inheritDoc} */
+    @Override
+    public boolean overlaps(Shape other) {
+        // this kind's own small part of the table, which a caller's loop can inline (see Overlaps)
+        return Overlaps.segmentWith(this, Check.notNull("other", other));
+    }
+
     /** {@inheritDoc} A point counts when it lies on the segment, end points included. */
     @Override
     public boolean contains(float px, float py) {

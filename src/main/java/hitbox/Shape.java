@@ -18,9 +18,7 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * @return true if the two shapes collide
      * @throws IllegalArgumentException if {@code other} is null
      */
-    default boolean overlaps(Shape other) {
-        return Overlaps.test(this, Check.notNull("other", other));
-    }
+    boolean overlaps(Shape other);
 
     /**
      * How this shape and {@code other} overlap: the unit normal from this shape to the other

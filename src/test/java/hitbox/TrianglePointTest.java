@@ -2,13 +2,21 @@ package hitbox;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import net.jqwik.api.Arbitraries;
+import net.jqwik.api.Arbitrary;
+import net.jqwik.api.Assume;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
-/** Collide.trianglePoint: strictly inside, either winding, the same answer as polygonPoint. */
+/**
+ * Collide.trianglePoint: strictly inside, either winding, the same answer as polygonPoint;
+ * and Polygon.contains, which answers a triangle with it, the same as polygonPoint too.
+ */
 class TrianglePointTest {
 
     static void assertTrianglePoint(boolean expected, float x1, float y1, float x2, float y2, float x3, float y3, float px, float py) {
@@ -63,5 +71,68 @@ class TrianglePointTest {
         boolean t = Collide.trianglePoint(x1, y1, x2, y2, x3, y3, px, py);
         assertEquals(Collide.polygonPoint(xy, px, py), t, "polygonPoint");
         assertEquals(GeometryReference.polygonPoint(xy, px, py), t, "reference");
+    }
+    /** Coordinates of mixed size: small whole numbers, fractions that do not add exactly, a million and more. */
+    @Provide
+    Arbitrary<Float> coordinate() {
+        return Arbitraries.oneOf(
+                Arbitraries.integers().between(-6, 6).map(i -> (float) i),
+                Arbitraries.integers().between(-60, 60).map(i -> i * 0.1f),
+                Arbitraries.integers().between(-3, 3).map(i -> i * 1_000_000f + 0.5f),
+                Arbitraries.floats().between(-1e7f, 1e7f));
+    }
+
+    /**
+     * Polygon.contains on a triangle (answered by trianglePoint) against Collide.polygonPoint
+     * (the crossing count), at the points where they could part: the corners, points on each
+     * edge (rounded to float, so on it or a hair off), the next floats either side of those,
+     * and points well inside and outside.
+     */
+    @Property(tries = 3000)
+    void polygonContains_onATriangle_isPolygonPoint(
+            @ForAll("coordinate") float x1, @ForAll("coordinate") float y1,
+            @ForAll("coordinate") float x2, @ForAll("coordinate") float y2,
+            @ForAll("coordinate") float x3, @ForAll("coordinate") float y3,
+            @ForAll @IntRange(min = 0, max = 2) int edge, @ForAll @IntRange(min = 0, max = 8) int at) {
+        float[] xy = {x1, y1, x2, y2, x3, y3};
+        Polygon p;
+        try {
+            p = Polygon.of(xy);
+        } catch (IllegalArgumentException flat) {
+            Assume.that(false); // no area: not a polygon
+            return;
+        }
+        float ax = xy[2 * edge], ay = xy[2 * edge + 1];
+        float bx = xy[(2 * edge + 2) % 6], by = xy[(2 * edge + 3) % 6];
+        double t = at / 8.0;
+        float ex = (float) (ax + t * (bx - ax)), ey = (float) (ay + t * (by - ay));
+        float cx = (x1 + x2 + x3) / 3, cy = (y1 + y2 + y3) / 3;
+        float[][] points = {
+                {ex, ey}, {Math.nextUp(ex), ey}, {Math.nextDown(ex), ey}, {ex, Math.nextUp(ey)}, {ex, Math.nextDown(ey)},
+                {cx, cy}, {2 * ex - cx, 2 * ey - cy}, {ax, ay},
+        };
+        for (float[] q : points) {
+            assertEquals(Collide.polygonPoint(xy, q[0], q[1]), p.contains(q[0], q[1]), () -> "point " + q[0] + ", " + q[1]);
+        }
+    }
+
+    /**
+     * A point that is NaN or infinite is outside a triangle, as polygonPoint says: the
+     * crossing count never counts it, and no three orientations of it share one sign (with x
+     * infinite each sign is that of the edge's y step, or NaN for a level edge, and the
+     * three y steps sum to 0; likewise with y infinite, or both).
+     */
+    @Test
+    void polygonContains_onATriangle_notFinitePointIsOutside() {
+        float inf = Float.POSITIVE_INFINITY;
+        float[] values = {Float.NaN, inf, -inf, 0, 2, 1e30f};
+        for (float[] xy : new float[][] {{0, 0, 10, 0, 0, 10}, {0, 0, 0, 10, 10, 0}, {-1e30f, -1e30f, 1e30f, 0, 0, 1e30f}}) {
+            Polygon p = Polygon.of(xy);
+            for (float px : values) {
+                for (float py : values) {
+                    assertEquals(Collide.polygonPoint(xy, px, py), p.contains(px, py), "point " + px + ", " + py);
+                }
+            }
+        }
     }
 }
