@@ -96,26 +96,28 @@ final class ConvexSweep {
     // ---------------------------------------------------------------- two convex polygons
 
     /**
-     * Two convex polygons, apart at the start, the mover moving: the entry by the separating
-     * axis test on moving shapes, exact up to the rounding of double, then the promised float
-     * t, each moved position tested with no polygon made (see {@link #movedOverlaps(Polygon,
-     * float, float, Polygon)}). Nothing is allocated but the hit.
+     * Two convex polygons, apart at the start, the mover moving: the entry as a ray cast
+     * against their Minkowski difference, exact up to the rounding of double, then the
+     * promised float t, each moved position tested with no polygon made (see
+     * {@link #movedOverlaps(Polygon, float, float, Polygon)}). Nothing is allocated but the hit.
      *
-     * <p>The insides overlap exactly when no edge normal of either polygon separates them, so
-     * on each such axis the projections overlap during an open interval of time (a slab, as
-     * for two boxes), and the insides overlap while all those intervals do: the entry is the
-     * latest start, through the face of the axis entered last; {@code n + m} axes of
-     * {@code n + m} projections each, with no iteration and no tolerance.
+     * <p>Mover a, moved by {@code t v}, overlaps b exactly when {@code t v} is inside the
+     * convex polygon {@code b - a} (every point of b minus every point of a), whose edges are
+     * the edges of b and of a turned round: each edge gives a half-plane, and the point
+     * {@code t v} is inside all of them during an open interval of time (Cyrus-Beck, as for
+     * boxes in {@link Slabs}), which starts at the entry, through the face entered last.
+     * {@code n + m} faces, each placed by one support point of the other polygon: no
+     * iteration and no tolerance.
      *
-     * <p>Reference: D. Eberly, "Intersection of Convex Objects: The Method of Separating
-     * Axes" (2008), moving objects; C. Ericson, <i>Real-Time Collision Detection</i> (2005),
-     * 5.5.
+     * <p>Reference: C. Ericson, <i>Real-Time Collision Detection</i> (2005), 5.5 (moving
+     * objects as a ray against their Minkowski sum); G. van den Bergen, <i>Collision
+     * Detection in Interactive 3D Environments</i> (2004), 2.5 (the Minkowski sum of two
+     * convex polygons).
      */
     private static Hit convex(Polygon mover, float vx, float vy, Polygon obstacle) {
-        double[] a = mover.corners(), b = obstacle.corners();
         Slabs.Clip clip = new Slabs.Clip();
-        movingAxes(a, a, b, vx, vy, clip);
-        movingAxes(b, a, b, vx, vy, clip);
+        faces(obstacle.corners(), obstacle.convexWinding(), mover.corners(), false, vx, vy, clip);
+        faces(mover.corners(), mover.convexWinding(), obstacle.corners(), true, vx, vy, clip);
         double te = clip.firstTime(1);
         if (te == Slabs.INF) {
             return null;
@@ -132,26 +134,30 @@ final class ConvexSweep {
     }
 
     /**
-     * Adds to the clip, for each edge of {@code edges} (a or b), the slab of times at which
-     * a, moving by t (vx, vy), and b overlap along the edge's normal; the normal is left
-     * unscaled, as the times do not depend on its length (the hit's normal is made unit later).
+     * Adds to the clip the faces of the Minkowski difference {@code b - a} that come from
+     * the edges of convex polygon p (winding {@code w}): b's own faces, or, for the mover a
+     * ({@code mover}), a's faces turned round. Each is a half-plane of the point
+     * {@code t (vx, vy)}: along p's outward edge normal n, b's face lies at the edge minus
+     * a's least reach along n; a's face at b's least reach minus the edge, seen from the
+     * other side. The normal is left unscaled, as the times do not depend on its length
+     * (the hit's normal is made unit later).
      */
-    private static void movingAxes(double[] edges, double[] a, double[] b, double vx, double vy, Slabs.Clip clip) {
-        for (int i = 0, j = edges.length - 2; i < edges.length; j = i, i += 2) {
-            double ax = edges[i + 1] - edges[j + 1], ay = edges[j] - edges[i];
-            double minA = Slabs.INF, maxA = Double.NEGATIVE_INFINITY;
-            for (int k = 0; k < a.length; k += 2) {
-                double d = a[k] * ax + a[k + 1] * ay;
-                minA = Math.min(minA, d);
-                maxA = Math.max(maxA, d);
+    private static void faces(double[] p, int w, double[] q, boolean mover, double vx, double vy, Slabs.Clip clip) {
+        for (int i = 0, j = p.length - 2; i < p.length; j = i, i += 2) {
+            double nx = w * (p[i + 1] - p[j + 1]), ny = w * (p[j] - p[i]);
+            double least = Slabs.INF;
+            for (int k = 0; k < q.length; k += 2) {
+                double d = q[k] * nx + q[k + 1] * ny;
+                if (d < least) {
+                    least = d;
+                }
             }
-            double minB = Slabs.INF, maxB = Double.NEGATIVE_INFINITY;
-            for (int k = 0; k < b.length; k += 2) {
-                double d = b[k] * ax + b[k + 1] * ay;
-                minB = Math.min(minB, d);
-                maxB = Math.max(maxB, d);
+            double edge = p[i] * nx + p[i + 1] * ny;
+            if (mover) {
+                clip.slab(least - edge, Slabs.INF, vx * nx + vy * ny, nx, ny);
+            } else {
+                clip.slab(Double.NEGATIVE_INFINITY, edge - least, vx * nx + vy * ny, nx, ny);
             }
-            clip.slab(minB - maxA, maxB - minA, vx * ax + vy * ay, ax, ay);
         }
     }
 
