@@ -20,6 +20,8 @@ import java.util.List;
  * the pair never meets. The advancement stops within {@link #TOUCH} of contact: an entry
  * time in double that is never later than the real one.
  *
+ * <p>Two convex polygons go the exact way instead, {@link ConvexPolygonSweep}.
+ *
  * <p>From each pair's entry, {@link SweptPairs#lastClear} finds the promised float t on the
  * real shapes, moved as a sketch moves them ({@code x + t * vx} in float) and tested by
  * {@link Overlaps}: the largest float at which the mover does not overlap while at the next
@@ -48,7 +50,7 @@ final class ConvexSweep {
             return null;
         }
         if (mover instanceof Polygon p && p.isConvex() && obstacle instanceof Polygon q && q.isConvex()) {
-            return convex(p, vx, vy, q);
+            return ConvexPolygonSweep.timeOfImpact(p, vx, vy, q);
         }
         return byPieces(mover, vx, vy, obstacle);
     }
@@ -91,133 +93,6 @@ final class ConvexSweep {
             return false;
         }
         return Overlaps.test(moved, obstacle);
-    }
-
-    // ---------------------------------------------------------------- two convex polygons
-
-    /**
-     * Two convex polygons, apart at the start, the mover moving: the entry as a ray cast
-     * against their Minkowski difference, exact up to the rounding of double, then the
-     * promised float t, each moved position tested with no polygon made (see
-     * {@link #movedOverlaps(Polygon, float, float, Polygon)}). Nothing is allocated but the hit.
-     *
-     * <p>Mover a, moved by {@code t v}, overlaps b exactly when {@code t v} is inside the
-     * convex polygon {@code b - a} (every point of b minus every point of a), whose edges are
-     * the edges of b and of a turned round: each edge gives a half-plane, and the point
-     * {@code t v} is inside all of them during an open interval of time (Cyrus-Beck, as for
-     * boxes in {@link Slabs}), which starts at the entry, through the face entered last.
-     * {@code n + m} faces, each placed by one support point of the other polygon: no
-     * iteration and no tolerance.
-     *
-     * <p>Reference: C. Ericson, <i>Real-Time Collision Detection</i> (2005), 5.5 (moving
-     * objects as a ray against their Minkowski sum); G. van den Bergen, <i>Collision
-     * Detection in Interactive 3D Environments</i> (2004), 2.5 (the Minkowski sum of two
-     * convex polygons).
-     */
-    private static Hit convex(Polygon mover, float vx, float vy, Polygon obstacle) {
-        Slabs.Clip clip = new Slabs.Clip();
-        faces(obstacle.corners(), obstacle.convexWinding(), mover.corners(), false, vx, vy, clip);
-        faces(mover.corners(), mover.convexWinding(), obstacle.corners(), true, vx, vy, clip);
-        double te = clip.firstTime(1);
-        if (te == Slabs.INF) {
-            return null;
-        }
-        float[] moved = scratch(mover.raw().length);
-        SweptPairs.Search s = new SweptPairs.Search(te);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(movedOverlaps(mover, t * vx, t * vy, obstacle, moved));
-        }
-        // 1 means no float position up to the end overlaps (1 itself was found clear): a graze.
-        float t = s.t();
-        return t < 1 ? SweptPairs.hit(t, -clip.nx, -clip.ny) : null;
-    }
-
-    /**
-     * Adds to the clip the faces of the Minkowski difference {@code b - a} that come from
-     * the edges of convex polygon p (winding {@code w}): b's own faces, or, for the mover a
-     * ({@code mover}), a's faces turned round. Each is a half-plane of the point
-     * {@code t (vx, vy)}: along p's outward edge normal n, b's face lies at the edge minus
-     * a's least reach along n; a's face at b's least reach minus the edge, seen from the
-     * other side. The normal is left unscaled, as the times do not depend on its length
-     * (the hit's normal is made unit later).
-     */
-    private static void faces(double[] p, int w, double[] q, boolean mover, double vx, double vy, Slabs.Clip clip) {
-        for (int i = 0, j = p.length - 2; i < p.length; j = i, i += 2) {
-            double nx = w * (p[i + 1] - p[j + 1]), ny = w * (p[j] - p[i]);
-            double least = Slabs.INF;
-            for (int k = 0; k < q.length; k += 2) {
-                double d = q[k] * nx + q[k + 1] * ny;
-                if (d < least) {
-                    least = d;
-                }
-            }
-            double edge = p[i] * nx + p[i + 1] * ny;
-            if (mover) {
-                clip.slab(least - edge, Slabs.INF, vx * nx + vy * ny, nx, ny);
-            } else {
-                clip.slab(Double.NEGATIVE_INFINITY, edge - least, vx * nx + vy * ny, nx, ny);
-            }
-        }
-    }
-
-    /**
-     * {@link #movedOverlaps(Shape, float, float, Shape)} for two convex polygons, the moved
-     * vertices written into {@code moved} (as long as the mover's coordinates) instead of a
-     * new polygon, with the same answer: the same float sums as {@link Polygon#translated};
-     * when they are all exact the winding is the mover's, as there; when rounding moved a
-     * vertex, a moved outline that is still convex with no vertex on its neighbour is one
-     * {@link Polygon#of} accepts (a convex outline that goes round once is simple), and it is
-     * convex with the winding {@link Polygons#convexWinding} finds, so the same
-     * {@link Polygons#convexOverlap} answers. Any other outline (rounding bent or squashed it)
-     * goes the general way. The bounds test {@link Polygons#overlap} makes first is left out:
-     * it only ever says no where the exact test says no too.
-     */
-    static boolean movedOverlaps(Polygon mover, float dx, float dy, Polygon obstacle, float[] moved) {
-        float[] xy = mover.raw();
-        boolean exact = true;
-        boolean finite = true;
-        for (int i = 0; i < xy.length; i += 2) {
-            float x = xy[i] + dx, y = xy[i + 1] + dy;
-            moved[i] = x;
-            moved[i + 1] = y;
-            exact &= x == (double) xy[i] + dx && y == (double) xy[i + 1] + dy;
-            finite &= Float.isFinite(x) && Float.isFinite(y);
-        }
-        if (!finite) {
-            return false; // moved past the float range: nothing is there
-        }
-        int w = exact ? mover.convexWinding() : Polygons.convexWinding(moved);
-        if (w == 0 || !exact && repeatsNeighbour(moved)) {
-            return movedOverlaps((Shape) mover, dx, dy, obstacle);
-        }
-        return Polygons.convexOverlap(moved, w, obstacle.raw(), obstacle.convexWinding());
-    }
-
-    /** Does some vertex sit on the next one (which {@link Polygon#of} refuses)? */
-    private static boolean repeatsNeighbour(float[] xy) {
-        for (int i = 0, j = xy.length - 2; i < xy.length; j = i, i += 2) {
-            if (xy[i] == xy[j] && xy[i + 1] == xy[j + 1]) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Per thread, a scratch array for moved coordinates, one per length: a sweep moves a polygon many times a call. */
-    private static final ThreadLocal<float[][]> SCRATCH = ThreadLocal.withInitial(() -> new float[0][]);
-
-    /** This thread's scratch array of exactly {@code length} floats (the polygon tests read the whole array). */
-    private static float[] scratch(int length) {
-        float[][] byLength = SCRATCH.get();
-        if (length >= byLength.length) {
-            byLength = java.util.Arrays.copyOf(byLength, Math.max(length + 1, 2 * byLength.length));
-            SCRATCH.set(byLength);
-        }
-        if (byLength[length] == null) {
-            byLength[length] = new float[length];
-        }
-        return byLength[length];
     }
 
     // ---------------------------------------------------------------- any pair, by convex pieces

@@ -55,7 +55,7 @@ class ConvexSweepTest {
             float dx = qc[0] - pc[0] + rnd.nextInt(60) - 30 + (rnd.nextBoolean() ? rnd.nextFloat() : 0);
             float dy = qc[1] - pc[1] + rnd.nextInt(60) - 30 + (rnd.nextBoolean() ? rnd.nextFloat() : 0);
             boolean general = ConvexSweep.movedOverlaps((Shape) p, dx, dy, q);
-            boolean fast = ConvexSweep.movedOverlaps(p, dx, dy, q, new float[pc.length]);
+            boolean fast = ConvexPolygonSweep.movedOverlaps(p, dx, dy, q, new float[pc.length]);
             assertEquals(general, fast, p + " moved by (" + dx + ", " + dy + ") against " + q);
             overlapping += general ? 1 : 0;
         }
