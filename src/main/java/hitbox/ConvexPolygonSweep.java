@@ -38,10 +38,11 @@ final class ConvexPolygonSweep {
         }
         double te = clip.firstTime(1);
         float[] moved = scratch.moved(mover.raw().length);
+        boolean keeps = keepsConvex(mover, Math.max(Math.abs(vx), Math.abs(vy)));
         SweptPairs.Search s = new SweptPairs.Search(te);
         while (s.searching()) {
             float t = s.t();
-            s.answer(movedOverlaps(mover, t * vx, t * vy, obstacle, moved));
+            s.answer(movedOverlaps(mover, t * vx, t * vy, obstacle, moved, keeps));
         }
         // 1 means no float position up to the end overlaps (1 itself was found clear): a graze.
         float t = s.t();
@@ -115,11 +116,13 @@ final class ConvexPolygonSweep {
      * vertex, a moved outline that is still convex with no vertex on its neighbour is one
      * {@link Polygon#of} accepts (a convex outline that goes round once is simple), and it is
      * convex with the winding {@link Polygons#convexWinding} finds, so the same
-     * {@link Polygons#convexOverlap} answers. Any other outline (rounding bent or squashed it)
-     * goes the general way. The bounds test {@link Polygons#overlap} makes first is left out:
-     * it only ever says no where the exact test says no too.
+     * {@link Polygons#convexOverlap} answers. {@code keeps} ({@link #keepsConvex}) says the
+     * rounding cannot have bent it, so that it need not be looked at. Any other outline
+     * (rounding bent or squashed it) goes the general way. The bounds test
+     * {@link Polygons#overlap} makes first is left out: it only ever says no where the exact
+     * test says no too.
      */
-    static boolean movedOverlaps(Polygon mover, float dx, float dy, Polygon obstacle, float[] moved) {
+    static boolean movedOverlaps(Polygon mover, float dx, float dy, Polygon obstacle, float[] moved, boolean keeps) {
         float[] xy = mover.raw();
         boolean exact = true;
         boolean finite = true;
@@ -133,11 +136,50 @@ final class ConvexPolygonSweep {
         if (!finite) {
             return false; // moved past the float range: nothing is there
         }
-        int w = exact ? mover.convexWinding() : Polygons.convexWinding(moved);
-        if (w == 0 || !exact && repeatsNeighbour(moved)) {
+        int w = keeps || exact ? mover.convexWinding() : Polygons.convexWinding(moved);
+        if (w == 0 || !keeps && !exact && repeatsNeighbour(moved)) {
             return ConvexSweep.movedOverlaps(mover, dx, dy, obstacle);
         }
         return Polygons.convexOverlap(moved, w, obstacle.raw(), obstacle.convexWinding());
+    }
+
+    /**
+     * Can no rounding of the mover's coordinates, moved by up to {@code reach} on each axis
+     * (as {@code x + t * vx} in float, t in [0, 1]), bend a corner the other way? Then the
+     * moved outline is convex with the mover's winding wherever the probes put it, and
+     * {@link #movedOverlaps(Polygon, float, float, Polygon, float[], boolean)} need not check
+     * it each time: asked once a sweep instead of once a probe.
+     *
+     * <p>A moved coordinate is the exact sum rounded to float, off by at most
+     * {@code delta}, half a float step at the largest size M a moved coordinate can have, here
+     * taken as {@code M * 2^-23}, twice that. The exact move keeps every orientation
+     * {@code o = u x v} (u and v from a corner to its neighbours); moving each point by at
+     * most delta on each axis moves u and v by at most {@code 2 delta} on each axis, so o by
+     * at most {@code 2 delta (|u| + |v|) + 8 delta^2} (|.| the sum of the axes' sizes). A
+     * corner that turns the mover's way by more than that, with room for double's rounding
+     * of o, turns that way after any rounding, and so does every corner on the way there, so
+     * the outline still goes round once: convex. False for a straight corner (a vertex
+     * midway along a side), which any rounding may bend.
+     */
+    static boolean keepsConvex(Polygon mover, double reach) {
+        double[] c = mover.corners();
+        int w = mover.convexWinding();
+        double size = 0;
+        for (double v : c) {
+            size = Math.max(size, Math.abs(v));
+        }
+        double delta = Math.max((size + reach) * 0x1p-23, Float.MIN_VALUE);
+        for (int i = 0, a = c.length - 2; i < c.length; a = i, i += 2) {
+            int b = i + 2 == c.length ? 0 : i + 2;
+            double ux = c[i] - c[a], uy = c[i + 1] - c[a + 1], vx = c[b] - c[a], vy = c[b + 1] - c[a + 1];
+            double o = ux * vy - uy * vx;
+            double bound = 2 * delta * (Math.abs(ux) + Math.abs(uy) + Math.abs(vx) + Math.abs(vy)) + 8 * delta * delta
+                    + 1e-12 * (Math.abs(ux * vy) + Math.abs(uy * vx));
+            if (!(w * o > bound)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Does some vertex sit on the next one (which {@link Polygon#of} refuses)? */
