@@ -53,7 +53,7 @@ package hitbox;
  * {@code double}: for whole-number coordinates and velocities every decision (hit or not,
  * which side) is exact.
  *
- * <p>This class is longer than most (about 660 lines) because it is the public face of every
+ * <p>This class is longer than most (about 710 lines) because it is the public face of every
  * swept pair and of the turning sweep, each with its full javadoc; the maths is in
  * package-private kernels ({@code SweptPairs}, {@code MoveAndSlide}, {@code TurningSweep}).
  *
@@ -468,13 +468,16 @@ public final class Sweep {
     /**
      * Where does a moving shape first run into a standing one, for every pair of shapes.
      * Circles, rectangles and segments (but two segments) have exact swept tests, the methods
-     * above. Every other pair (polygons, convex or concave, ellipses aligned or turned,
-     * capsules, two segments) is found by conservative advancement along separating
-     * directions over the shapes' convex pieces (never later than the real entry, so nothing
-     * is passed through), then, as for the exact pairs, the float t promised by
+     * above, and so do two convex polygons (the motion as a ray against their Minkowski
+     * difference, whose faces are the two polygons' edges; the normal is the face entered).
+     * Every other pair (a concave polygon, ellipses aligned or turned, capsules, two
+     * segments, a polygon with a rectangle) is found by conservative advancement along
+     * separating directions over the shapes' convex pieces (never later than the real
+     * entry, so nothing is passed through), the normal being the separating direction found
+     * there, to about 1e-6 radians. Then, as for the exact pairs, the float t promised by
      * {@link Hit}: the largest at which the mover, moved by {@code t * (vx, vy)} in float,
-     * does not overlap while at the next float up it does; the normal is the separating
-     * direction found there, from the mover into the obstacle, to about 1e-6 radians.
+     * does not overlap while at the next float up it does; the normal points from the mover
+     * into the obstacle.
      *
      * @param mover    the moving shape, where it starts, not null
      * @param vx       its motion this frame, x part
