@@ -6,7 +6,7 @@ package hitbox;
  * pieces, {@link ConvexSweep}): the entry as a ray cast against their Minkowski
  * difference, exact up to the rounding of double, then the promised float t, each moved
  * position tested with no polygon made (see
- * {@link #movedOverlaps(Polygon, float, float, Polygon)}). Nothing is allocated but the
+ * {@link #movedOverlaps(Polygon, float, float, Polygon, float[], boolean, boolean)}). Nothing is allocated but the
  * hit.
  *
  * <p>Mover a, moved by {@code t v}, overlaps b exactly when {@code t v} is inside the
@@ -32,17 +32,23 @@ final class ConvexPolygonSweep {
         Scratch scratch = SCRATCH.get();
         Slabs.Clip clip = scratch.clip.reset();
         // A miss often shows in the first faces: the interval, once empty, stays empty.
-        if (!faces(obstacle.corners(), obstacle.convexWinding(), mover.corners(), false, vx, vy, clip)
-                || !faces(mover.corners(), mover.convexWinding(), obstacle.corners(), true, vx, vy, clip)) {
+        if (!faces(obstacle.corners(), obstacle.convexWinding(), mover.corners(), false, vx, vy, clip)) {
             return null;
         }
+        double obstacleEntry = clip.enter;
+        if (!faces(mover.corners(), mover.convexWinding(), obstacle.corners(), true, vx, vy, clip)) {
+            return null;
+        }
+        // Entered last through one of the mover's own faces? Near the entry a clear position is
+        // most often told apart by that face, so the probes try that polygon's edges first.
+        boolean moverFace = clip.enter != obstacleEntry;
         double te = clip.firstTime(1);
         float[] moved = scratch.moved(mover.raw().length);
         boolean keeps = keepsConvex(mover, Math.max(Math.abs(vx), Math.abs(vy)));
         SweptPairs.Search s = new SweptPairs.Search(te);
         while (s.searching()) {
             float t = s.t();
-            s.answer(movedOverlaps(mover, t * vx, t * vy, obstacle, moved, keeps));
+            s.answer(movedOverlaps(mover, t * vx, t * vy, obstacle, moved, keeps, moverFace));
         }
         // 1 means no float position up to the end overlaps (1 itself was found clear): a graze.
         float t = s.t();
@@ -117,12 +123,15 @@ final class ConvexPolygonSweep {
      * {@link Polygon#of} accepts (a convex outline that goes round once is simple), and it is
      * convex with the winding {@link Polygons#convexWinding} finds, so the same
      * {@link Polygons#convexOverlap} answers. {@code keeps} ({@link #keepsConvex}) says the
-     * rounding cannot have bent it, so that it need not be looked at. Any other outline
+     * rounding cannot have bent it, so that it need not be looked at; {@code moverFirst}
+     * has that test try the mover's edges first (the answer is the same either way: no edge
+     * of either polygon separates them). Any other outline
      * (rounding bent or squashed it) goes the general way. The bounds test
      * {@link Polygons#overlap} makes first is left out: it only ever says no where the exact
      * test says no too.
      */
-    static boolean movedOverlaps(Polygon mover, float dx, float dy, Polygon obstacle, float[] moved, boolean keeps) {
+    static boolean movedOverlaps(Polygon mover, float dx, float dy, Polygon obstacle, float[] moved, boolean keeps,
+                                 boolean moverFirst) {
         float[] xy = mover.raw();
         boolean exact = true;
         boolean finite = true;
@@ -140,14 +149,15 @@ final class ConvexPolygonSweep {
         if (w == 0 || !keeps && !exact && repeatsNeighbour(moved)) {
             return ConvexSweep.movedOverlaps(mover, dx, dy, obstacle);
         }
-        return Polygons.convexOverlap(moved, w, obstacle.raw(), obstacle.convexWinding());
+        return moverFirst ? Polygons.convexOverlap(moved, w, obstacle.raw(), obstacle.convexWinding())
+                : Polygons.convexOverlap(obstacle.raw(), obstacle.convexWinding(), moved, w);
     }
 
     /**
      * Can no rounding of the mover's coordinates, moved by up to {@code reach} on each axis
      * (as {@code x + t * vx} in float, t in [0, 1]), bend a corner the other way? Then the
      * moved outline is convex with the mover's winding wherever the probes put it, and
-     * {@link #movedOverlaps(Polygon, float, float, Polygon, float[], boolean)} need not check
+     * {@link #movedOverlaps(Polygon, float, float, Polygon, float[], boolean, boolean)} need not check
      * it each time: asked once a sweep instead of once a probe.
      *
      * <p>A moved coordinate is the exact sum rounded to float, off by at most

@@ -58,11 +58,12 @@ class ConvexSweepTest {
             boolean general = ConvexSweep.movedOverlaps((Shape) p, dx, dy, q);
             String where = p + " moved by (" + dx + ", " + dy + ") against " + q;
             float[] moved = new float[pc.length];
-            assertEquals(general, ConvexPolygonSweep.movedOverlaps(p, dx, dy, q, moved, false), where);
+            assertEquals(general, ConvexPolygonSweep.movedOverlaps(p, dx, dy, q, moved, false, true), where);
+            assertEquals(general, ConvexPolygonSweep.movedOverlaps(p, dx, dy, q, moved, false, false), where);
             if (ConvexPolygonSweep.keepsConvex(p, Math.max(Math.abs(dx), Math.abs(dy)))) {
                 // The claim behind skipping the check: rounded, the outline is as convex as before.
                 assertEquals(p.convexWinding(), Polygons.convexWinding(moved), where);
-                assertEquals(general, ConvexPolygonSweep.movedOverlaps(p, dx, dy, q, moved, true), where);
+                assertEquals(general, ConvexPolygonSweep.movedOverlaps(p, dx, dy, q, moved, true, rnd.nextBoolean()), where);
                 kept++;
             }
             overlapping += general ? 1 : 0;
