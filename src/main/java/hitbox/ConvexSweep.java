@@ -20,6 +20,8 @@ import java.util.List;
  * the pair never meets. The advancement stops within {@link #TOUCH} of contact: an entry
  * time in double that is never later than the real one.
  *
+ * <p>Two convex polygons go the exact way instead, {@link ConvexPolygonSweep}.
+ *
  * <p>From each pair's entry, {@link SweptPairs#lastClear} finds the promised float t on the
  * real shapes, moved as a sketch moves them ({@code x + t * vx} in float) and tested by
  * {@link Overlaps}: the largest float at which the mover does not overlap while at the next
@@ -47,15 +49,18 @@ final class ConvexSweep {
         if (vx == 0 && vy == 0) {
             return null;
         }
-        SweptPairs.OverlapAt overlapAt = t -> {
-            Shape moved;
-            try {
-                moved = mover.translated(t * vx, t * vy);
-            } catch (IllegalArgumentException beyondTheFloats) {
-                return false; // moved past the float range: nothing is there
-            }
-            return Overlaps.test(moved, obstacle);
-        };
+        if (mover instanceof Polygon p && p.isConvex() && obstacle instanceof Polygon q && q.isConvex()) {
+            return ConvexPolygonSweep.timeOfImpact(p, vx, vy, q);
+        }
+        return byPieces(mover, vx, vy, obstacle);
+    }
+
+    /**
+     * {@link #timeOfImpact} for any pair, apart at the start, the mover moving: by
+     * conservative advancement over the convex pieces (see the class comment).
+     */
+    static Hit byPieces(Shape mover, float vx, float vy, Shape obstacle) {
+        SweptPairs.OverlapAt overlapAt = t -> movedOverlaps(mover, t * vx, t * vy, obstacle);
         float best = Float.POSITIVE_INFINITY;
         double bx = 0, by = 0;
         double[] normal = new double[2];
@@ -75,6 +80,22 @@ final class ConvexSweep {
         }
         return best <= 1 ? SweptPairs.hit(best, bx, by) : null;
     }
+
+    /**
+     * Does the mover, moved by (dx, dy) as {@link Shape#translated} moves it, overlap the
+     * obstacle? No, if the move leaves the float range (nothing is there).
+     */
+    static boolean movedOverlaps(Shape mover, float dx, float dy, Shape obstacle) {
+        Shape moved;
+        try {
+            moved = mover.translated(dx, dy);
+        } catch (IllegalArgumentException beyondTheFloats) {
+            return false;
+        }
+        return Overlaps.test(moved, obstacle);
+    }
+
+    // ---------------------------------------------------------------- any pair, by convex pieces
 
     /**
      * The cheap answer first: is the box the mover's box sweeps through clear of the

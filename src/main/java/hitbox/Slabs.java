@@ -109,6 +109,15 @@ final class Slabs {
             return this;
         }
 
+        /** Empties the clip of slabs (inside all of none, at every time), to be used again. */
+        Clip reset() {
+            enter = Double.NEGATIVE_INFINITY;
+            exit = INF;
+            nx = 0;
+            ny = 0;
+            return this;
+        }
+
         /** Is the point inside every slab at t = 0? */
         boolean insideAtStart() {
             return enter < 0 && exit > 0;

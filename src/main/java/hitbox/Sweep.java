@@ -53,7 +53,7 @@ package hitbox;
  * {@code double}: for whole-number coordinates and velocities every decision (hit or not,
  * which side) is exact.
  *
- * <p>This class is longer than most (about 660 lines) because it is the public face of every
+ * <p>This class is longer than most (about 710 lines) because it is the public face of every
  * swept pair and of the turning sweep, each with its full javadoc; the maths is in
  * package-private kernels ({@code SweptPairs}, {@code MoveAndSlide}, {@code TurningSweep}).
  *
@@ -103,9 +103,13 @@ public final class Sweep {
         if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
             return 0;
         }
-        double te = SweptPairs.rectRectTime(x, y, w, h, vx, vy, ox, oy, ow, oh);
-        return te == Slabs.INF ? Float.POSITIVE_INFINITY
-                : SweptPairs.lastClear(te, t -> Collide.rectRect(x + t * vx, y + t * vy, w, h, ox, oy, ow, oh));
+        // The search's loop here, with the overlap test written out: see SweptPairs.Search.
+        SweptPairs.Search s = new SweptPairs.Search(SweptPairs.rectRectTime(x, y, w, h, vx, vy, ox, oy, ow, oh));
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.rectRect(x + t * vx, y + t * vy, w, h, ox, oy, ow, oh));
+        }
+        return s.t();
     }
 
     /**
@@ -129,11 +133,12 @@ public final class Sweep {
      */
     public static float circleCircle(float x, float y, float r, float vx, float vy,
                                      float ox, float oy, float or) {
-        Earliest e = SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or);
-        if (e == null || !e.found()) {
-            return Float.POSITIVE_INFINITY;
+        SweptPairs.Search s = new SweptPairs.Search(SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or));
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
         }
-        return e.inside ? 0 : SweptPairs.lastClear(e.t, t -> Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
+        return s.t();
     }
 
     // ---------------------------------------------------------------- richer answers, on floats
@@ -164,8 +169,13 @@ public final class Sweep {
         if (Check.notFinite(x, y, w, h, vx) || Check.notFinite(vy, ox, oy, ow, oh)) {
             return null;
         }
-        return SweptPairs.hit(SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh), false,
-                t -> Collide.rectRect(x + t * vx, y + t * vy, w, h, ox, oy, ow, oh));
+        Earliest e = SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh);
+        SweptPairs.Search s = new SweptPairs.Search(e);
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.rectRect(x + t * vx, y + t * vy, w, h, ox, oy, ow, oh));
+        }
+        return s.hit(e, false);
     }
 
     /**
@@ -187,8 +197,13 @@ public final class Sweep {
      */
     public static Hit circleCircleHit(float x, float y, float r, float vx, float vy,
                                       float ox, float oy, float or) {
-        return SweptPairs.hit(SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or), false,
-                t -> Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
+        Earliest e = SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or);
+        SweptPairs.Search s = new SweptPairs.Search(e);
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
+        }
+        return s.hit(e, false);
     }
 
     /**
@@ -216,8 +231,13 @@ public final class Sweep {
      */
     public static Hit circleRectHit(float cx, float cy, float r, float vx, float vy,
                                     float rx, float ry, float rw, float rh) {
-        return SweptPairs.hit(SweptPairs.circleRectEntry(cx, cy, r, vx, vy, rx, ry, rw, rh), false,
-                t -> Collide.circleRect(cx + t * vx, cy + t * vy, r, rx, ry, rw, rh));
+        Earliest e = SweptPairs.circleRectEntry(cx, cy, r, vx, vy, rx, ry, rw, rh);
+        SweptPairs.Search s = new SweptPairs.Search(e);
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.circleRect(cx + t * vx, cy + t * vy, r, rx, ry, rw, rh));
+        }
+        return s.hit(e, false);
     }
 
     /**
@@ -244,8 +264,13 @@ public final class Sweep {
      */
     public static Hit rectSegmentHit(float x, float y, float w, float h, float vx, float vy,
                                      float x1, float y1, float x2, float y2) {
-        return SweptPairs.hit(SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2), false,
-                t -> Collide.lineRect(x1, y1, x2, y2, x + t * vx, y + t * vy, w, h));
+        Earliest e = SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2);
+        SweptPairs.Search s = new SweptPairs.Search(e);
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.lineRect(x1, y1, x2, y2, x + t * vx, y + t * vy, w, h));
+        }
+        return s.hit(e, false);
     }
 
     /**
@@ -269,8 +294,13 @@ public final class Sweep {
      */
     public static Hit circleSegmentHit(float cx, float cy, float r, float vx, float vy,
                                        float x1, float y1, float x2, float y2) {
-        return SweptPairs.hit(SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2), false,
-                t -> Collide.lineCircle(x1, y1, x2, y2, cx + t * vx, cy + t * vy, r));
+        Earliest e = SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2);
+        SweptPairs.Search s = new SweptPairs.Search(e);
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.lineCircle(x1, y1, x2, y2, cx + t * vx, cy + t * vy, r));
+        }
+        return s.hit(e, false);
     }
 
     // ---------------------------------------------------------------- on shapes
@@ -342,8 +372,13 @@ public final class Sweep {
         checkArgs(mover, vx, vy, obstacle);
         float x = mover.x(), y = mover.y(), w = mover.w(), h = mover.h();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
-        return SweptPairs.hit(SweptPairs.circleRectEntry(cx, cy, r, -vx, -vy, x, y, w, h), true,
-                t -> Collide.circleRect(cx, cy, r, x + t * vx, y + t * vy, w, h));
+        Earliest e = SweptPairs.circleRectEntry(cx, cy, r, -vx, -vy, x, y, w, h);
+        SweptPairs.Search s = new SweptPairs.Search(e);
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.circleRect(cx, cy, r, x + t * vx, y + t * vy, w, h));
+        }
+        return s.hit(e, true);
     }
 
     /**
@@ -379,8 +414,13 @@ public final class Sweep {
         checkArgs(mover, vx, vy, obstacle);
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float rx = obstacle.x(), ry = obstacle.y(), rw = obstacle.w(), rh = obstacle.h();
-        return SweptPairs.hit(SweptPairs.rectSegmentEntry(rx, ry, rw, rh, -vx, -vy, x1, y1, x2, y2), true,
-                t -> Collide.lineRect(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, rx, ry, rw, rh));
+        Earliest e = SweptPairs.rectSegmentEntry(rx, ry, rw, rh, -vx, -vy, x1, y1, x2, y2);
+        SweptPairs.Search s = new SweptPairs.Search(e);
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.lineRect(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, rx, ry, rw, rh));
+        }
+        return s.hit(e, true);
     }
 
     /**
@@ -416,20 +456,28 @@ public final class Sweep {
         checkArgs(mover, vx, vy, obstacle);
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
-        return SweptPairs.hit(SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2), true,
-                t -> Collide.lineCircle(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, cx, cy, r));
+        Earliest e = SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2);
+        SweptPairs.Search s = new SweptPairs.Search(e);
+        while (s.searching()) {
+            float t = s.t();
+            s.answer(Collide.lineCircle(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, cx, cy, r));
+        }
+        return s.hit(e, true);
     }
 
     /**
      * Where does a moving shape first run into a standing one, for every pair of shapes.
      * Circles, rectangles and segments (but two segments) have exact swept tests, the methods
-     * above. Every other pair (polygons, convex or concave, ellipses aligned or turned,
-     * capsules, two segments) is found by conservative advancement along separating
-     * directions over the shapes' convex pieces (never later than the real entry, so nothing
-     * is passed through), then, as for the exact pairs, the float t promised by
+     * above, and so do two convex polygons (the motion as a ray against their Minkowski
+     * difference, whose faces are the two polygons' edges; the normal is the face entered).
+     * Every other pair (a concave polygon, ellipses aligned or turned, capsules, two
+     * segments, a polygon with a rectangle) is found by conservative advancement along
+     * separating directions over the shapes' convex pieces (never later than the real
+     * entry, so nothing is passed through), the normal being the separating direction found
+     * there, to about 1e-6 radians. Then, as for the exact pairs, the float t promised by
      * {@link Hit}: the largest at which the mover, moved by {@code t * (vx, vy)} in float,
-     * does not overlap while at the next float up it does; the normal is the separating
-     * direction found there, from the mover into the obstacle, to about 1e-6 radians.
+     * does not overlap while at the next float up it does; the normal points from the mover
+     * into the obstacle.
      *
      * @param mover    the moving shape, where it starts, not null
      * @param vx       its motion this frame, x part

@@ -11,6 +11,9 @@ final class SweptPairs {
     }
 
     // ---------------------------------------------------------------- the pairs, as entries
+    // Each entry makes its one Earliest first and returns it with nothing found for bad
+    // input, never null: one allocation and no merge with null, so the JIT, inlining the
+    // entry and the search into the Sweep method, can keep it in registers.
 
     /** Time of impact of two boxes in double, the motion given in double; 0 if overlapping. */
     static double rectRectTime(float x, float y, float w, float h, double vx, double vy,
@@ -41,10 +44,10 @@ final class SweptPairs {
 
     static Earliest circleCircleEntry(float x, float y, float r, float vx, float vy,
                                               float ox, float oy, float or) {
-        if (Check.notFinite(x, y, r, vx, vy) || Check.notFinite(ox, oy, or, 0, 0)) {
-            return null;
-        }
         Earliest e = new Earliest();
+        if (Check.notFinite(x, y, r, vx, vy) || Check.notFinite(ox, oy, or, 0, 0)) {
+            return e;  // no entry
+        }
         if (Collide.circleCircle(x, y, r, ox, oy, or)) {
             e.inside = true;
         } else {
@@ -55,10 +58,10 @@ final class SweptPairs {
 
     static Earliest circleRectEntry(float cx, float cy, float r, float vx, float vy,
                                             float rx, float ry, float rw, float rh) {
-        if (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(rx, ry, rw, rh, 0)) {
-            return null;
-        }
         Earliest e = new Earliest();
+        if (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(rx, ry, rw, rh, 0)) {
+            return e;  // no entry
+        }
         if (Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
             e.inside = true;
             return e;
@@ -85,8 +88,9 @@ final class SweptPairs {
 
     static Earliest rectSegmentEntry(float x, float y, float w, float h, float vx, float vy,
                                              float x1, float y1, float x2, float y2) {
+        Earliest e = new Earliest();
         if (Check.notFinite(x, y, w, h, vx) || Check.notFinite(vy, x1, y1, x2, y2) || !(w > 0 && h > 0)) {
-            return null;
+            return e;  // no entry
         }
         double left = x, right = (double) x + w, top = y, bottom = (double) y + h;
         Slabs.Clip clip = new Slabs.Clip()
@@ -104,17 +108,16 @@ final class SweptPairs {
             double len = Math.hypot(ex, ey);
             clip.slab(s - hi, s - lo, nx * vx + ny * vy, nx / len, ny / len);
         }
-        Earliest e = new Earliest();
         e.clip(clip, 1);
         return e;
     }
 
     static Earliest circleSegmentEntry(float cx, float cy, float r, float vx, float vy,
                                                float x1, float y1, float x2, float y2) {
-        if (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(x1, y1, x2, y2, 0) || !(r > 0)) {
-            return null;
-        }
         Earliest e = new Earliest();
+        if (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(x1, y1, x2, y2, 0) || !(r > 0)) {
+            return e;  // no entry
+        }
         // End circles first: at a tie the point is where an end circle meets the face, and
         // the circle's normal is the true one there.
         e.disc((double) cx - x1, (double) cy - y1, vx, vy, r, 1);
@@ -142,23 +145,6 @@ final class SweptPairs {
         boolean at(float t);
     }
 
-    /**
-     * The hit of an entry: null for none, an already-overlapping hit if the shapes already overlap,
-     * else the promised t (see Sweep) and the normal from the mover into the obstacle.
-     * The entry's normal is the obstacle's outward one, or, when the roles were swapped to
-     * compute it ({@code swapped}), the mover's own outward one.
-     */
-    static Hit hit(Earliest e, boolean swapped, OverlapAt overlapAt) {
-        if (e == null || !e.found()) {
-            return null;
-        }
-        if (e.inside) {
-            return Sweep.OVERLAPPING;
-        }
-        double sign = swapped ? 1 : -1;
-        return hit(lastClear(e.t, overlapAt), sign * e.nx, sign * e.ny);
-    }
-
     /** A hit at time t with the normal (nx, ny) made unit length, and the side it points into. */
     static Hit hit(float t, double nx, double ny) {
         double len = Math.hypot(nx, ny);
@@ -168,66 +154,139 @@ final class SweptPairs {
 
     /**
      * The largest float t in [0, 1] at which the mover does not overlap, while at the next
-     * float up it does, searched near the exact entry {@code te}: down from it while the
-     * float position overlaps, up from it while it does not, the distance from {@code te}
-     * doubling from one float step, then halving the gap between a clear t and an
+     * float up it does, searched near the exact entry {@code te} (see {@link Search}): for
+     * callers whose overlap test is not worth writing out as the search's loop.
+     */
+    static float lastClear(double te, OverlapAt overlapAt) {
+        Search s = new Search(te);
+        while (s.searching()) {
+            s.answer(overlapAt.at(s.t()));
+        }
+        return s.t();
+    }
+
+    /**
+     * The search for the promised t, asked one float at a time, so that the caller's loop
+     * holds its own overlap test: {@code while (s.searching()) s.answer(overlaps(s.t()));}
+     * then {@code s.t()} is the answer ({@link Float#POSITIVE_INFINITY} for no entry), or
+     * {@link #hit} the hit. Written as a loop in the caller, with no test object
+     * handed in, the JIT inlines these small methods and keeps the search in registers: a
+     * sweep allocates nothing but its answer (a shared search method taking the test as a
+     * lambda grew too big to inline, and every call allocated the lambda).
+     *
+     * <p>The search: the largest float t in [0, 1] at which the mover does not overlap, while
+     * at the next float up it does, searched near the exact entry {@code te}: down from it
+     * while the float position overlaps, up from it while it does not, the distance from
+     * {@code te} doubling from one float step, then halving the gap between a clear t and an
      * overlapping one (floats in [0, 1] are ordered like their bits). The steps grow from the
      * exact entry, not from 0, so they cannot jump over the time the mover spends inside a
      * thin obstacle (unless that time is shorter than the rounding of the float positions, a
      * graze, when no float position overlaps). The start is known to be clear. 1 if no float
      * position up to the end overlaps.
      */
-    static float lastClear(double te, OverlapAt overlapAt) {
-        float start = (float) Math.min(Math.max(te, 0), 1);
-        float clear;
-        float hit;
-        double d = Math.ulp(start);
-        if (overlapAt.at(start)) {
-            hit = start;
-            while (true) {
-                if (hit == 0) {
-                    return 0;  // overlapping at the start: callers rule that out
-                }
-                float lower = (float) Math.max(start - d, 0);
-                if (lower >= hit) {
-                    lower = Math.nextDown(hit);
-                }
-                if (!overlapAt.at(lower)) {
-                    clear = lower;
-                    break;
-                }
-                hit = lower;
-                d *= 2;
-            }
-        } else {
-            clear = start;
-            while (true) {
-                if (clear >= 1) {
-                    return 1;
-                }
-                float higher = (float) Math.min(start + d, 1);
-                if (higher <= clear) {
-                    higher = Math.nextUp(clear);
-                }
-                if (overlapAt.at(higher)) {
-                    hit = higher;
-                    break;
-                }
-                clear = higher;
-                d *= 2;
-            }
-        }
-        int lo = Float.floatToRawIntBits(clear);
-        int hi = Float.floatToRawIntBits(hit);
-        while (hi - lo > 1) {
-            int mid = (lo + hi) >>> 1;
-            if (overlapAt.at(Float.intBitsToFloat(mid))) {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-        return Float.intBitsToFloat(lo);
-    }
+    static final class Search {
+        private static final int START = 0, DOWN = 1, UP = 2, HALVE = 3, DONE = 4;
 
+        private final float start;
+        /** How far from the start the next step down or up goes. */
+        private double d;
+        /** The latest float known clear and the earliest known to overlap, as the walk finds them. */
+        private float clear;
+        private float hit;
+        private int phase;
+        /** The float to ask about next; once done, the answer. */
+        private float t;
+
+        /**
+         * A search from the exact entry te (clamped to [0, 1]); none for te = +infinity (no
+         * entry: the answer is +infinity) or -infinity (inside at the start: the answer is 0).
+         */
+        Search(double te) {
+            start = (float) Math.min(Math.max(te, 0), 1);
+            d = Math.ulp(start);
+            t = te == Slabs.INF ? Float.POSITIVE_INFINITY : start;  // -infinity gave 0
+            phase = te == Slabs.INF || te == Double.NEGATIVE_INFINITY ? DONE : START;
+        }
+
+        /** A search from entry e (see {@link #Search(double)}), for {@link #hit}. */
+        Search(Earliest e) {
+            this(!e.found() ? Slabs.INF : e.inside ? Double.NEGATIVE_INFINITY : e.t);
+        }
+
+        /**
+         * The answer as a hit, once done, with entry e's normal (the entry searched from):
+         * null for no entry, an already-overlapping hit if the shapes overlap at the start,
+         * else the promised t and the normal from the mover into the obstacle. The entry's
+         * normal is the obstacle's outward one, or, when the roles were swapped to compute it
+         * ({@code swapped}), the mover's own outward one. (The entry is not kept in the
+         * search: the JIT keeps one object in registers more readily than one held by another.)
+         */
+        Hit hit(Earliest e, boolean swapped) {
+            if (t == Float.POSITIVE_INFINITY) {
+                return null;
+            }
+            if (e.inside) {
+                return Sweep.OVERLAPPING;
+            }
+            double sign = swapped ? 1 : -1;
+            return SweptPairs.hit(t, sign * e.nx, sign * e.ny);
+        }
+
+        /** Is there a float still to ask about (at {@link #t()})? */
+        boolean searching() {
+            return phase != DONE;
+        }
+
+        /** The float to ask about next, or the answer once the search is done. */
+        float t() {
+            return t;
+        }
+
+        /**
+         * Does the mover, moved by {@link #t()} times its motion in float, overlap? One
+         * method with no calls that take the search along, so that it inlines whole even
+         * where a branch is rarely taken: a call left out of line would make the search
+         * escape, and every sweep allocate it.
+         */
+        void answer(boolean overlaps) {
+            if (overlaps) {
+                hit = t;
+            } else {
+                clear = t;
+            }
+            if (phase == START) {
+                phase = overlaps ? DOWN : UP;  // the first answer picks the walk's way
+            } else if (phase == DOWN && overlaps || phase == UP && !overlaps) {
+                d *= 2;  // the walk goes on, twice as far from the start
+            } else {
+                phase = HALVE;  // a clear t and an overlapping one: halve between them
+            }
+            if (phase == DOWN) {
+                if (hit == 0) {
+                    phase = DONE;  // overlapping at the start: callers rule that out
+                    t = 0;
+                } else {
+                    float lower = (float) Math.max(start - d, 0);
+                    t = lower >= hit ? Math.nextDown(hit) : lower;
+                }
+            } else if (phase == UP) {
+                if (clear >= 1) {
+                    phase = DONE;
+                    t = 1;
+                } else {
+                    float higher = (float) Math.min(start + d, 1);
+                    t = higher <= clear ? Math.nextUp(clear) : higher;
+                }
+            } else {
+                int lo = Float.floatToRawIntBits(clear);
+                int hi = Float.floatToRawIntBits(hit);
+                if (hi - lo > 1) {
+                    t = Float.intBitsToFloat((lo + hi) >>> 1);
+                } else {
+                    phase = DONE;
+                    t = clear;
+                }
+            }
+        }
+    }
 }
