@@ -550,9 +550,10 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * crosses going in and the first it crosses going out. Each crossing is the parameter
      * {@link #segmentParam} gives at the edge, {@code orient(edge, origin) / cross(d, edge)};
      * a way in and a way out closer than {@link #SAME_EVENT} (a corner only touched) are one
-     * event, as for any polygon. Which side of each edge's line the origin is on (inside, or
-     * outside an edge the ray runs parallel to) is decided exactly: in double, and where that
-     * is within rounding of 0, by {@link Lines#orient}. Allocates nothing but the hit.
+     * event, as for any polygon. Which side of each edge's line the origin is on is decided
+     * exactly (in double, and where that is within rounding of 0 by {@link Lines#orient}), so
+     * a start inside, on the outline, or outside an edge the ray runs parallel to is told
+     * exactly for any floats. Allocates nothing but the hit.
      *
      * <p>Reference: M. Cyrus and J. Beck, "Generalized two- and three-dimensional clipping",
      * Computers &amp; Graphics 3 (1978).
@@ -576,11 +577,15 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
             int j = i + 1 == n ? 0 : i + 1;
             double ex = c[2 * j] - c[2 * i], ey = c[2 * j + 1] - c[2 * i + 1];
             double denom = dx * ey - dy * ex;
-            // orient(vertex i, vertex j, origin), as Lines.orient computes it when not near 0
+            // orient(vertex i, vertex j, origin), as Lines.orient computes it when not near 0,
+            // and by Lines.orient when it is: every sign below is exact.
             double num = (c[2 * i] - ox) * ey - (c[2 * i + 1] - oy) * ex;
+            if (Math.abs(num) <= rounding) {
+                num = Lines.orient(c[2 * i], c[2 * i + 1], c[2 * j], c[2 * j + 1], ox, oy);
+            }
             least = Math.min(least, w * num);
             if (denom == 0) {
-                if (w * num <= rounding && w * exactSide(c, i, j) <= 0) {
+                if (w * num <= 0) {
                     return null; // along the edge's line, on or outside it: never strictly inside
                 }
                 continue;
@@ -601,8 +606,8 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
                 outDen = denom;
             }
         }
-        if (least > rounding || (least > -rounding && startsInside(c, w))) {
-            return inside();
+        if (least > 0) {
+            return inside(); // strictly inside every edge's line
         }
         // Some edge is crossed going in and some going out: a bounded polygon is.
         double in = inNum / inDen, out = outNum / outDen;
@@ -611,22 +616,6 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
             return null;
         }
         return hitPolygon(p, w, in + 0.0, near); // (+ 0.0: a start on the outline is at 0, not -0)
-    }
-
-    /** {@code orient(vertex i, vertex j, origin)}, of exact sign. */
-    private double exactSide(double[] c, int i, int j) {
-        return Lines.orient(c[2 * i], c[2 * i + 1], c[2 * j], c[2 * j + 1], ox, oy);
-    }
-
-    /** Is the origin strictly inside every edge's line of the convex outline (winding w)? Exact. */
-    private boolean startsInside(double[] c, int w) {
-        int n = c.length / 2;
-        for (int i = 0; i < n; i++) {
-            if (w * exactSide(c, i, i + 1 == n ? 0 : i + 1) <= 0) {
-                return false;
-            }
-        }
-        return true;
     }
 
     /**
