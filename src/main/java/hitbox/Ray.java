@@ -636,8 +636,10 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
             }
             double at = segmentParam(ox, oy, dx, dy, Slabs.INF, xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1]);
             if (at != Slabs.INF && Math.abs(at - s) <= near) {
-                // The outward normal, as Polygons.outwardNormal gives it (edges of a Polygon have length).
-                double len = Math.hypot(ex, ey), outX = turn * ey / len, outY = -turn * ex / len;
+                // The outward normal (edges of a Polygon have length). A plain square root, not
+                // Math.hypot (several times dearer): the squares of float differences neither
+                // overflow nor underflow in double.
+                double len = Math.sqrt(ex * ex + ey * ey), outX = turn * ey / len, outY = -turn * ex / len;
                 if (outX * dx + outY * dy < 0) {
                     sx += outX;
                     sy += outY;
