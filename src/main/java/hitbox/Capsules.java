@@ -35,9 +35,12 @@ final class Capsules {
 
     /** The sign of x^2 + y^2 - reach^2, exact when the products are. */
     private static double compareSquares(double x, double y, double reach) {
-        double a = Math.hypot(x, y);
-        if (Math.abs(a - reach) > 1e-9 * (a + reach)) {
-            return a - reach;
+        // Squares, not Math.hypot (several times dearer): the coordinates are floats, their
+        // differences, or products of two such, so the squares neither overflow nor underflow
+        // in double, and the sum is off by a few units of 2^-53 of itself; far inside the band.
+        double d2 = x * x + y * y, r2 = reach * reach;
+        if (Math.abs(d2 - r2) > 1e-9 * (d2 + r2)) {
+            return d2 - r2;
         }
         // Near the tie: x^2 - (reach - y)(reach + y), each product's sign exact.
         return Lines.signOfProductDifference(x, x, reach - y, reach + y);
@@ -78,11 +81,29 @@ final class Capsules {
     /** A capsule (radius r > 0) and a polygon's raw outline (at least 3 vertices, no NaN). */
     static boolean polygon(float[] xy, float x1, float y1, float x2, float y2, float r) {
         int n = xy.length / 2;
+        float loX = Math.min(x1, x2), hiX = Math.max(x1, x2), loY = Math.min(y1, y2), hiY = Math.max(y1, y2);
         for (int i = 0, h = n - 1; i < n; h = i++) {
-            if (segmentsWithin(x1, y1, x2, y2, xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], r)) {
+            float ax = xy[2 * h], ay = xy[2 * h + 1], bx = xy[2 * i], by = xy[2 * i + 1];
+            // An edge whose box is r or more from the segment's box is r or more from the
+            // segment: most edges are turned away by four comparisons.
+            if (boxesApart(Math.min(ax, bx), Math.max(ax, bx), loX, hiX, r)
+                    || boxesApart(Math.min(ay, by), Math.max(ay, by), loY, hiY, r)) {
+                continue;
+            }
+            if (segmentsWithin(x1, y1, x2, y2, ax, ay, bx, by, r)) {
                 return true;
             }
         }
         return Polygons.contains(xy, x1, y1);
+    }
+
+    /**
+     * Are the intervals [lo1, hi1] and [lo2, hi2] at least r > 0 apart? Only yes when sure: a
+     * difference of floats in double is off by at most a unit of 2^-53 of itself, so a gap
+     * above r by more than that is above it exactly.
+     */
+    private static boolean boxesApart(float lo1, float hi1, float lo2, float hi2, float r) {
+        double gap = Math.max((double) lo1 - hi2, (double) lo2 - hi1);
+        return gap > r * (1 + 1e-15);
     }
 }

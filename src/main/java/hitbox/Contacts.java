@@ -205,17 +205,27 @@ final class Contacts {
         boolean convexA = !(a instanceof Polygon p) || p.isConvex();
         boolean convexB = !(b instanceof Polygon p) || p.isConvex();
         if (convexA && convexB) {
-            if (a instanceof Polygon p && b instanceof Polygon q) {
-                // Apart is answered exactly and cheaply first; the search then only measures.
-                return Polygons.overlap(p, q) ? SeparatingAxis.contact(p.corners(), q.corners()) : null;
+            // Boxes that do not overlap are apart (touching ones too: the shapes are open).
+            Rect r = a.bounds(), s = b.bounds();
+            if (!Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h())) {
+                return null;
             }
-            // A rectangle and a polygon (two rectangles went to Contact.rectRect): the
-            // polygon's cached corners and the rectangle's written into this thread's scratch
-            // array, so that nothing is allocated but the answer. The search only reads them.
-            double[] scratch = RECT_CORNERS.get();
-            return SeparatingAxis.contact(cornersOf(a, scratch), cornersOf(b, scratch));
+            // A polygon's cached corners, or a rectangle's written into this thread's scratch
+            // array (two rectangles went to Contact.rectRect), so that nothing is allocated
+            // but the answer. The search decides apart exactly and only reads them.
+            double[] scratch = a instanceof Rect || b instanceof Rect ? RECT_CORNERS.get() : null;
+            return SeparatingAxis.contact(cornersOf(a, scratch), windingOf(a), r, cornersOf(b, scratch), windingOf(b), s);
         }
         return Clearance.polygons(Clearance.Parts.of(a), Clearance.Parts.of(b));
+    }
+
+    /**
+     * A convex polygon's winding, or a rectangle's: its corners go top-left, top-right,
+     * bottom-right, bottom-left, which with y growing down turns as +1 (a flat rectangle may
+     * take either).
+     */
+    private static int windingOf(Shape s) {
+        return s instanceof Polygon p ? p.convexWinding() : 1;
     }
 
     /**
