@@ -45,9 +45,7 @@ public final class Collide {
     public static boolean circlePoint(float cx, float cy, float r, float px, float py) {
         double dx = (double) px - cx;
         double dy = (double) py - cy;
-        // The distance first and the radius's sign after: the same answer (both must hold),
-        // but a miss, half of all cases after a broad phase, is settled by the first.
-        return dx * dx + dy * dy < (double) r * r && r > 0;
+        return r > 0 && dx * dx + dy * dy < (double) r * r;
     }
 
     /**
@@ -70,12 +68,13 @@ public final class Collide {
      * @return true if the distance between the centres is less than the sum of the radii
      */
     public static boolean circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
+        if (!(r1 >= 0 && r2 >= 0)) {
+            return false;
+        }
         double dx = (double) x2 - x1;
         double dy = (double) y2 - y1;
         double reach = (double) r1 + r2;
-        // The radii's signs after the distance: the same answer (all must hold), and a miss
-        // is settled by one comparison.
-        return dx * dx + dy * dy < reach * reach && r1 >= 0 && r2 >= 0;
+        return dx * dx + dy * dy < reach * reach;
     }
 
     /**
@@ -153,15 +152,12 @@ public final class Collide {
      * @return true if the circle's inside and the rectangle's inside overlap
      */
     public static boolean circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
-        double dx = cx - clamp(cx, rx, (double) rx + rw);
-        double dy = cy - clamp(cy, ry, (double) ry + rh);
-        double d2 = dx * dx + dy * dy;
-        if (!(d2 < (double) r * r) && d2 != 0) {
-            return false; // a miss whatever the sizes (NaN included): the signs need no check
-        }
         if (!(r >= 0 && rw >= 0 && rh >= 0)) {
             return false;
         }
+        double dx = cx - clamp(cx, rx, (double) rx + rw);
+        double dy = cy - clamp(cy, ry, (double) ry + rh);
+        double d2 = dx * dx + dy * dy;
         if (d2 == 0) {
             // The centre is in the closed rectangle (NaN cannot get here: clamp passes it on,
             // and NaN is not 0). A real circle's inside covers the centre, so the two meet,
