@@ -259,30 +259,13 @@ final class Contacts {
      */
     static Contact closestFeature(float cx, float cy, float r, float[] xy, boolean flip) {
         int n = xy.length / 2;
-        // Each edge's nearest point to the centre: its interior (distance^2, edge) or its
-        // first vertex. The second vertex is the next edge's first, so it is not repeated.
-        double[] d2 = new double[n];
-        boolean[] interior = new boolean[n];
+        // Each edge's nearest point to the centre: its interior or its first vertex. The
+        // second vertex is the next edge's first, so it is not repeated. The distances are
+        // worked out again in the loop below rather than kept in an array: the same sums give
+        // the same doubles, and a contact then allocates only its answer.
         double min = Double.POSITIVE_INFINITY;
         for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            // Relative to the centre: differences of floats are exact in double.
-            double px = (double) xy[2 * i] - cx, py = (double) xy[2 * i + 1] - cy;
-            double qx = (double) xy[2 * j] - cx, qy = (double) xy[2 * j + 1] - cy;
-            double ex = qx - px, ey = qy - py;
-            double len2 = ex * ex + ey * ey;
-            double along = -(px * ex + py * ey);
-            if (len2 == 0 || along <= 0) {
-                d2[i] = px * px + py * py;
-            } else if (along < len2) {
-                double cross = ex * (-py) - ey * (-px);
-                d2[i] = cross * cross / len2;
-                interior[i] = true;
-            } else {
-                // The far vertex is nearest; the next edge offers it (or something nearer).
-                d2[i] = Double.POSITIVE_INFINITY;
-            }
-            min = Math.min(min, d2[i]);
+            min = Math.min(min, partDistance2(xy, i, cx, cy, nearestPart(xy, i, cx, cy)));
         }
         boolean inside = Collide.polygonPoint(xy, cx, cy);
         double dist = Math.sqrt(min);
@@ -295,10 +278,11 @@ final class Contacts {
         Shortest best = new Shortest(0, flip);
         double near = min + 2 * Contact.TIE * min;
         for (int i = 0; i < n; i++) {
-            if (!(d2[i] <= near)) {
+            int part = nearestPart(xy, i, cx, cy);
+            if (!(partDistance2(xy, i, cx, cy, part) <= near)) {
                 continue;
             }
-            if (interior[i]) {
+            if (part == EDGE) {
                 // The circle leaves along the edge's outward normal; the polygon goes the other way.
                 double[] out = Polygons.outwardNormal(xy, i, turn);
                 best.offer(-out[0], -out[1], depth);
@@ -329,5 +313,37 @@ final class Contacts {
             }
         }
         return best.contact();
+    }
+
+    /** Parts of an edge nearest a point: its first vertex, its interior, its far vertex. */
+    private static final int FIRST = -1, EDGE = 0, FAR = 1;
+
+    /** Which part of edge i (vertex i to vertex i + 1) is nearest the centre. */
+    private static int nearestPart(float[] xy, int i, float cx, float cy) {
+        int j = (i + 1) % (xy.length / 2);
+        // Relative to the centre: differences of floats are exact in double.
+        double px = (double) xy[2 * i] - cx, py = (double) xy[2 * i + 1] - cy;
+        double ex = ((double) xy[2 * j] - cx) - px, ey = ((double) xy[2 * j + 1] - cy) - py;
+        double len2 = ex * ex + ey * ey;
+        double along = -(px * ex + py * ey);
+        return len2 == 0 || along <= 0 ? FIRST : along < len2 ? EDGE : FAR;
+    }
+
+    /**
+     * The squared distance from the centre to that part of edge i; infinity for its far
+     * vertex, which the next edge offers as its first (or something nearer).
+     */
+    private static double partDistance2(float[] xy, int i, float cx, float cy, int part) {
+        double px = (double) xy[2 * i] - cx, py = (double) xy[2 * i + 1] - cy;
+        if (part == FIRST) {
+            return px * px + py * py;
+        }
+        if (part == FAR) {
+            return Double.POSITIVE_INFINITY;
+        }
+        int j = (i + 1) % (xy.length / 2);
+        double ex = ((double) xy[2 * j] - cx) - px, ey = ((double) xy[2 * j + 1] - cy) - py;
+        double cross = ex * (-py) - ey * (-px);
+        return cross * cross / (ex * ex + ey * ey);
     }
 }
