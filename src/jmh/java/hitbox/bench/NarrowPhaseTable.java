@@ -405,7 +405,11 @@ public final class NarrowPhaseTable {
         StringBuilder s = new StringBuilder();
         s.append("\n**Where the missed rows' time goes.** Each call that misses a goal was run again alone under async-profiler\n");
         s.append("(").append(NarrowProfiles.HOW).append("). For each: why it misses, then the hottest source lines of its own samples\n");
-        s.append("(the `NarrowContender` lines are the benchmark's loop, reading the case, common to every contender).\n\n");
+        s.append("(the `NarrowContender` lines are the benchmark's loop, reading the case, common to every contender).\n");
+        s.append("Where a peer is faster on a small test it mostly computes in float: `gradle peerExactness` counts how often\n");
+        s.append("such a peer answers nearly touching shapes wrongly, against exact arithmetic, and checks Hitbox answers none\n");
+        s.append("wrongly (`docs/peer-exactness.md`). That exactness, and the checks behind the NaN and negative-size rules,\n");
+        s.append("are what the small rows pay for.\n\n");
         for (Map.Entry<String, String> row : misses.rows.entrySet()) {
             String id = row.getKey();
             s.append("- ").append(row.getValue()).append(". ").append(NarrowProfiles.why(id)).append('\n');
