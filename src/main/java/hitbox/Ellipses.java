@@ -260,10 +260,17 @@ final class Ellipses {
         return 0;
     }
 
+    /**
+     * segmentDistance's place for the outline's nearest point, one per thread (as Contacts'
+     * scratch corners): the rare cases that need the distance then allocate nothing either.
+     * Nothing called while it is in use calls segmentDistance again.
+     */
+    private static final ThreadLocal<double[]> NEAR = ThreadLocal.withInitial(() -> new double[2]);
+
     /** The distance from a segment outside the ellipse (centre at the origin) to it. */
     static double segmentDistance(double a, double b, double px, double py, double qx, double qy) {
         double dx = qx - px, dy = qy - py;
-        double[] near = new double[2];
+        double[] near = NEAR.get();
         double lo = 0, hi = 1;
         if (slope(a, b, px, py, dx, dy, near) >= 0) {
             return distance(a, b, px, py, null);
