@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.math.BigDecimal;
 import java.math.MathContext;
-import java.util.Arrays;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
@@ -19,41 +18,6 @@ import org.junit.jupiter.api.Test;
  * on the outline): there the answer must be the exact one, worked out in {@link BigDecimal}.
  */
 class RayConvexAgreementTest {
-
-    private static Polygon ring(SplittableRandom rnd, boolean half) {
-        while (true) {
-            int sides = 3 + rnd.nextInt(8);
-            double cx = 50 + rnd.nextInt(100) / 2.0, cy = 50 + rnd.nextInt(100) / 2.0, r = 3 + rnd.nextInt(40);
-            double[] angles = new double[sides];
-            for (int k = 0; k < sides; k++) {
-                angles[k] = rnd.nextDouble() * 2 * Math.PI;
-            }
-            Arrays.sort(angles);
-            float[] xy = new float[2 * sides];
-            for (int k = 0; k < sides; k++) {
-                double x = cx + r * Math.cos(angles[k]), y = cy + r * Math.sin(angles[k]);
-                xy[2 * k] = half ? Math.round(2 * x) / 2f : (float) x;
-                xy[2 * k + 1] = half ? Math.round(2 * y) / 2f : (float) y;
-            }
-            try {
-                Polygon p = Polygon.of(xy);
-                if (p.isConvex()) {
-                    return rnd.nextBoolean() ? p : reversed(p);
-                }
-            } catch (IllegalArgumentException e) {
-                // corners rounded onto each other: draw again
-            }
-        }
-    }
-
-    private static Polygon reversed(Polygon p) {
-        float[] xy = p.coordinates(), back = new float[xy.length];
-        for (int k = 0; k < xy.length / 2; k++) {
-            back[2 * k] = xy[xy.length - 2 - 2 * k];
-            back[2 * k + 1] = xy[xy.length - 1 - 2 * k];
-        }
-        return Polygon.of(back);
-    }
 
     /** A ray's start: anywhere, or on the polygon's vertices, edges and edge lines. */
     private static float[] start(SplittableRandom rnd, Polygon p, boolean half) {
@@ -78,7 +42,7 @@ class RayConvexAgreementTest {
     private static void agree(SplittableRandom rnd, boolean half, int cases) {
         int hits = 0, inside = 0, misjudged = 0;
         for (int c = 0; c < cases; c++) {
-            Polygon p = ring(rnd, half);
+            Polygon p = TestShapes.convexRing(rnd, 3 + rnd.nextInt(8), 50 + rnd.nextInt(100) / 2.0, 50 + rnd.nextInt(100) / 2.0, half);
             float[] o = start(rnd, p, half);
             // Aimed at a vertex (through a corner, or along an edge), or anywhere near.
             int v = rnd.nextInt(p.size());

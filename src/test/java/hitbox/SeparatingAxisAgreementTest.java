@@ -3,7 +3,6 @@ package hitbox;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.Arrays;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
@@ -17,39 +16,8 @@ import org.junit.jupiter.api.Test;
  */
 class SeparatingAxisAgreementTest {
 
-    /** A convex polygon: sorted random angles on a circle, rounded to half pixels or not. */
-    private static Polygon ring(SplittableRandom rnd, int sides, boolean half) {
-        while (true) {
-            double cx = rnd.nextInt(200) / 2.0, cy = rnd.nextInt(200) / 2.0, r = 3 + rnd.nextInt(40);
-            double[] angles = new double[sides];
-            for (int k = 0; k < sides; k++) {
-                angles[k] = rnd.nextDouble() * 2 * Math.PI;
-            }
-            Arrays.sort(angles);
-            float[] xy = new float[2 * sides];
-            for (int k = 0; k < sides; k++) {
-                double x = cx + r * Math.cos(angles[k]), y = cy + r * Math.sin(angles[k]);
-                xy[2 * k] = half ? Math.round(2 * x) / 2f : (float) x;
-                xy[2 * k + 1] = half ? Math.round(2 * y) / 2f : (float) y;
-            }
-            try {
-                Polygon p = Polygon.of(xy);
-                if (p.isConvex()) {
-                    return rnd.nextBoolean() ? p : reversed(p);
-                }
-            } catch (IllegalArgumentException e) {
-                // corners rounded onto each other: draw again
-            }
-        }
-    }
-
-    private static Polygon reversed(Polygon p) {
-        float[] xy = p.coordinates(), back = new float[xy.length];
-        for (int k = 0; k < xy.length / 2; k++) {
-            back[2 * k] = xy[xy.length - 2 - 2 * k];
-            back[2 * k + 1] = xy[xy.length - 1 - 2 * k];
-        }
-        return Polygon.of(back);
+    private static Polygon ring(SplittableRandom rnd, boolean half) {
+        return TestShapes.convexRing(rnd, 3 + rnd.nextInt(8), rnd.nextInt(200) / 2.0, rnd.nextInt(200) / 2.0, half);
     }
 
     private static Rect rect(SplittableRandom rnd, boolean half) {
@@ -68,8 +36,8 @@ class SeparatingAxisAgreementTest {
     private static void agree(SplittableRandom rnd, boolean half, int cases) {
         int hits = 0;
         for (int i = 0; i < cases; i++) {
-            Shape a = ring(rnd, 3 + rnd.nextInt(8), half);
-            Shape b = i % 3 == 2 ? rect(rnd, half) : ring(rnd, 3 + rnd.nextInt(8), half);
+            Shape a = ring(rnd, half);
+            Shape b = i % 3 == 2 ? rect(rnd, half) : ring(rnd, half);
             if (i % 6 == 5) {
                 Shape t = a;
                 a = b;

@@ -75,4 +75,44 @@ final class TestShapes {
                 })
                 .filter(GeometryReference::isSimple);
     }
+
+    /**
+     * A random convex polygon: {@code sides} corners at sorted random angles on a circle of
+     * random radius around (cx, cy), rounded to half pixels or not, in either turning
+     * direction. Drawn again when rounding puts corners onto each other or makes it concave.
+     */
+    static Polygon convexRing(java.util.SplittableRandom rnd, int sides, double cx, double cy, boolean half) {
+        while (true) {
+            double r = 3 + rnd.nextInt(40);
+            double[] angles = new double[sides];
+            for (int k = 0; k < sides; k++) {
+                angles[k] = rnd.nextDouble() * 2 * Math.PI;
+            }
+            java.util.Arrays.sort(angles);
+            float[] xy = new float[2 * sides];
+            for (int k = 0; k < sides; k++) {
+                double x = cx + r * Math.cos(angles[k]), y = cy + r * Math.sin(angles[k]);
+                xy[2 * k] = half ? Math.round(2 * x) / 2f : (float) x;
+                xy[2 * k + 1] = half ? Math.round(2 * y) / 2f : (float) y;
+            }
+            try {
+                Polygon p = Polygon.of(xy);
+                if (p.isConvex()) {
+                    return rnd.nextBoolean() ? p : reversed(p);
+                }
+            } catch (IllegalArgumentException e) {
+                // corners rounded onto each other: draw again
+            }
+        }
+    }
+
+    /** The same polygon with its corners in the other order. */
+    static Polygon reversed(Polygon p) {
+        float[] xy = p.coordinates(), back = new float[xy.length];
+        for (int k = 0; k < xy.length / 2; k++) {
+            back[2 * k] = xy[xy.length - 2 - 2 * k];
+            back[2 * k + 1] = xy[xy.length - 1 - 2 * k];
+        }
+        return Polygon.of(back);
+    }
 }
