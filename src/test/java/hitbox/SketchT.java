@@ -59,16 +59,25 @@ final class SketchT {
      * how long a float position can stand still while t grows.
      */
     static double plateau(float vx, float vy, float... coords) {
+        double p = 0;
+        for (float v : new float[] {vx, vy}) {
+            if (v != 0) {
+                p = Math.max(p, plateauAlong(Math.abs(v), coords));
+            }
+        }
+        return p;
+    }
+
+    /**
+     * Two float steps of the largest coordinate over a speed (the motion's part along the
+     * direction that decides the hit): how long t can grow while the rounded positions do
+     * not move along it. Infinite for a speed of 0.
+     */
+    static double plateauAlong(double speed, float... coords) {
         float m = 0;
         for (float c : coords) {
             m = Math.max(m, Math.abs(c));
         }
-        double p = 0;
-        for (float v : new float[] {vx, vy}) {
-            if (v != 0) {
-                p = Math.max(p, 2 * Math.ulp(m) / Math.abs(v));
-            }
-        }
-        return p;
+        return 2 * Math.ulp(m) / speed;
     }
 }

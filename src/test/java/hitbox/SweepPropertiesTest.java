@@ -121,9 +121,7 @@ class SweepPropertiesTest {
             double cx = x + (double) t * vx - ox, cy = y + (double) t * vy - oy, c = Math.hypot(cx, cy);
             along = c > 0 ? Math.abs(vx * cx + vy * cy) / c : 0;
         }
-        double rounding = Math.max(SketchT.plateau(vx, vy, fx, fy, fox, foy),
-                along > 0 ? 2 * Math.ulp(Math.max(Math.abs(fx), Math.max(Math.abs(fy), Math.max(Math.abs(fox), Math.abs(foy))))) / along
-                        : Double.POSITIVE_INFINITY);
+        double rounding = Math.max(SketchT.plateau(vx, vy, fx, fy, fox, foy), SketchT.plateauAlong(along, fx, fy, fox, foy));
         SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, Sweep.circleCircle(fx, fy, r, vx, vy, fox, foy, or),
                 s -> Collide.circleCircle(fx + s * vx, fy + s * vy, r, fox, foy, or),
                 near + rounding, "translated");
