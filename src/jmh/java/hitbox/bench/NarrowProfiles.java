@@ -107,46 +107,46 @@ final class NarrowProfiles {
         }
         Path dir = Path.of("build/narrow-phase-profiles");
         Files.createDirectories(dir);
-        List<String> jobs = new ArrayList<>();
-        for (String id : cpu) jobs.add(id + " cpu");
-        for (String id : alloc) jobs.add(id + " alloc");
-        for (String job : jobs) {
-            String[] f = job.split(" ");
-            String id = f[0], event = f[1];
-            Path file = dir.resolve(id + "." + event + ".jfr").toAbsolutePath();
-            Files.deleteIfExists(file);
-            String agent = "-agentpath:" + lib + "=start,event=" + (event.equals("cpu") ? "itimer,interval=100us" : "alloc")
-                    + ",jfr,file=" + file;
-            Runner runner = new Runner(new OptionsBuilder()
-                    .include(NarrowPhaseBench.class.getName() + ".answerEveryCase")
-                    .param("contender", id)
-                    .forks(1)
-                    .warmupIterations(1).warmupTime(TimeValue.seconds(1))
-                    .measurementIterations(1).measurementTime(TimeValue.seconds(5))
-                    .jvmArgsAppend("-XX:+UnlockDiagnosticVMOptions", "-XX:+DebugNonSafepoints", agent)
-                    .build());
-            for (int attempt = 1; ; attempt++) {
-                try {
-                    runner.run();
-                    break;
-                } catch (RunnerException e) {
-                    // most often another JMH run holding JMH's lock between two of ours: wait for it
-                    if (attempt == 20) throw e;
-                    System.out.println("narrow-phase profile of " + id + ": " + e.getMessage() + "; trying again in 30 s");
-                    try {
-                        Thread.sleep(30_000);
-                    } catch (InterruptedException stop) {
-                        Thread.currentThread().interrupt();
-                        throw e;
-                    }
-                }
-            }
-            if (Files.exists(file)) {
-                profiles.computeIfAbsent(id, k -> new ArrayList<>()).add(read(id, event, file));
-            }
-        }
+        for (String id : cpu) profileOne(id, "cpu", lib, dir, profiles);
+        for (String id : alloc) profileOne(id, "alloc", lib, dir, profiles);
         write(profiles, out);
         return profiles;
+    }
+
+    /** Runs one call alone under the profiler, for one event, and adds its profile. */
+    private static void profileOne(String id, String event, Path lib, Path dir, Map<String, List<Profile>> profiles)
+            throws IOException, RunnerException {
+        Path file = dir.resolve(id + "." + event + ".jfr").toAbsolutePath();
+        Files.deleteIfExists(file);
+        String agent = "-agentpath:" + lib + "=start,event=" + (event.equals("cpu") ? "itimer,interval=100us" : "alloc")
+                + ",jfr,file=" + file;
+        Runner runner = new Runner(new OptionsBuilder()
+                .include(NarrowPhaseBench.class.getName() + ".answerEveryCase")
+                .param("contender", id)
+                .forks(1)
+                .warmupIterations(1).warmupTime(TimeValue.seconds(1))
+                .measurementIterations(1).measurementTime(TimeValue.seconds(5))
+                .jvmArgsAppend("-XX:+UnlockDiagnosticVMOptions", "-XX:+DebugNonSafepoints", agent)
+                .build());
+        for (int attempt = 1; ; attempt++) {
+            try {
+                runner.run();
+                break;
+            } catch (RunnerException e) {
+                // most often another JMH run holding JMH's lock between two of ours: wait for it
+                if (attempt == 20) throw e;
+                System.out.println("narrow-phase profile of " + id + ": " + e.getMessage() + "; trying again in 30 s");
+                try {
+                    Thread.sleep(30_000);
+                } catch (InterruptedException stop) {
+                    Thread.currentThread().interrupt();
+                    throw e;
+                }
+            }
+        }
+        if (Files.exists(file)) {
+            profiles.computeIfAbsent(id, k -> new ArrayList<>()).add(read(id, event, file));
+        }
     }
 
     /** Copies the profiler's library out of its jar into build/, where the forked JVMs can load it. */

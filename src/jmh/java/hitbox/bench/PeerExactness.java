@@ -35,7 +35,7 @@ public final class PeerExactness {
     /** One question: makes a near case into {@code f} and answers it three ways; null to skip the case. */
     interface Question {
         /** {exact, hitbox, peer}, or null when the case touches exactly. */
-        boolean[] answer(SplittableRandom r, float scale, float[] f);
+        boolean[] answer(SplittableRandom r, float scale);
     }
 
     record Row(String title, String peer, Question q) {
@@ -68,9 +68,8 @@ public final class PeerExactness {
             for (float scale : new float[] {2_000, 100_000}) {
                 SplittableRandom r = new SplittableRandom(row.title().hashCode() * 31L + (long) scale);
                 int cases = 0, peerWrong = 0, hitboxWrong = 0;
-                float[] f = new float[12];
                 while (cases < CASES) {
-                    boolean[] a = row.q().answer(r, scale, f);
+                    boolean[] a = row.q().answer(r, scale);
                     if (a == null) continue;
                     cases++;
                     if (a[1] != a[0]) hitboxWrong++;
@@ -120,7 +119,7 @@ public final class PeerExactness {
 
     // ---------------------------------------------------------------- the questions
 
-    static boolean[] circlePoint(SplittableRandom r, float scale, float[] f) {
+    static boolean[] circlePoint(SplittableRandom r, float scale) {
         float cx = coord(r, scale), cy = coord(r, scale), rad = size(r);
         double a = r.nextDouble() * 2 * Math.PI, d = rad * near(r);
         float px = (float) (cx + d * Math.cos(a)), py = (float) (cy + d * Math.sin(a));
@@ -130,7 +129,7 @@ public final class PeerExactness {
                 new com.badlogic.gdx.math.Circle(cx, cy, rad).contains(px, py)};
     }
 
-    static boolean[] circleCircle(SplittableRandom r, float scale, float[] f) {
+    static boolean[] circleCircle(SplittableRandom r, float scale) {
         float x1 = coord(r, scale), y1 = coord(r, scale), r1 = size(r), r2 = size(r);
         double a = r.nextDouble() * 2 * Math.PI, d = (r1 + (double) r2) * near(r);
         float x2 = (float) (x1 + d * Math.cos(a)), y2 = (float) (y1 + d * Math.sin(a));
@@ -141,7 +140,7 @@ public final class PeerExactness {
                 new com.badlogic.gdx.math.Circle(x1, y1, r1).overlaps(new com.badlogic.gdx.math.Circle(x2, y2, r2))};
     }
 
-    static boolean[] rectPoint(SplittableRandom r, float scale, float[] f) {
+    static boolean[] rectPoint(SplittableRandom r, float scale) {
         float x = coord(r, scale), y = coord(r, scale), w = size(r), h = size(r);
         float px = (float) ((x + (double) w) * near(r)), py = (float) (y + h * r.nextDouble());
         int right = b(px).compareTo(b(x).add(b(w)));
@@ -151,7 +150,7 @@ public final class PeerExactness {
                 new com.badlogic.gdx.math.Rectangle(x, y, w, h).contains(px, py)};
     }
 
-    static boolean[] rectRect(SplittableRandom r, float scale, float[] f) {
+    static boolean[] rectRect(SplittableRandom r, float scale) {
         float x1 = coord(r, scale), y1 = coord(r, scale), w1 = size(r), h1 = size(r), w2 = size(r), h2 = size(r);
         float x2 = (float) ((x1 + (double) w1) * near(r)), y2 = (float) (y1 + (h1 - 1) * r.nextDouble());
         int c = b(x1).add(b(w1)).compareTo(b(x2));
@@ -162,7 +161,7 @@ public final class PeerExactness {
                 new com.badlogic.gdx.math.Rectangle(x1, y1, w1, h1).overlaps(new com.badlogic.gdx.math.Rectangle(x2, y2, w2, h2))};
     }
 
-    static boolean[] circleRect(SplittableRandom r, float scale, float[] f) {
+    static boolean[] circleRect(SplittableRandom r, float scale) {
         float x = coord(r, scale), y = coord(r, scale), w = size(r), h = size(r), rad = size(r);
         // near a corner or a side: a point of the rect's outline, then out along a direction
         double a = r.nextDouble() * 2 * Math.PI, d = rad * near(r);
@@ -176,7 +175,7 @@ public final class PeerExactness {
                 Intersector.overlaps(new com.badlogic.gdx.math.Circle(cx, cy, rad), new com.badlogic.gdx.math.Rectangle(x, y, w, h))};
     }
 
-    static boolean[] lineLine(SplittableRandom r, float scale, float[] f) {
+    static boolean[] lineLine(SplittableRandom r, float scale) {
         float x1 = coord(r, scale), y1 = coord(r, scale);
         double a = r.nextDouble() * 2 * Math.PI, len = size(r);
         float x2 = (float) (x1 + len * Math.cos(a)), y2 = (float) (y1 + len * Math.sin(a));
@@ -193,7 +192,7 @@ public final class PeerExactness {
                 Intersector.intersectSegments(x1, y1, x2, y2, x3, y3, x4, y4, null)};
     }
 
-    static boolean[] trianglePoint(SplittableRandom r, float scale, float[] f) {
+    static boolean[] trianglePoint(SplittableRandom r, float scale) {
         float x1 = coord(r, scale), y1 = coord(r, scale);
         float x2 = x1 + size(r), y2 = y1 + size(r) * 0.3f, x3 = x1 + size(r) * 0.5f, y3 = y1 + size(r);
         // near the edge from corner 1 to corner 2
@@ -208,7 +207,7 @@ public final class PeerExactness {
                 Intersector.isPointInTriangle(px, py, x1, y1, x2, y2, x3, y3)};
     }
 
-    static boolean[] ellipsePoint(SplittableRandom r, float scale, float[] f) {
+    static boolean[] ellipsePoint(SplittableRandom r, float scale) {
         float x = coord(r, scale), y = coord(r, scale), rx = size(r), ry = size(r);
         double a = r.nextDouble() * 2 * Math.PI, k = near(r);
         float px = (float) (x + rx * k * Math.cos(a)), py = (float) (y + ry * k * Math.sin(a));
@@ -220,7 +219,7 @@ public final class PeerExactness {
                 new com.badlogic.gdx.math.Ellipse(x, y, 2 * rx, 2 * ry).contains(px, py)};
     }
 
-    static boolean[] capsulePoint(SplittableRandom r, float scale, float[] f) {
+    static boolean[] capsulePoint(SplittableRandom r, float scale) {
         float x1 = coord(r, scale), y1 = coord(r, scale), rad = size(r) / 4;
         double a = r.nextDouble() * 2 * Math.PI, len = size(r);
         float x2 = (float) (x1 + len * Math.cos(a)), y2 = (float) (y1 + len * Math.sin(a));
@@ -250,7 +249,7 @@ public final class PeerExactness {
                 shape.contains(new org.dyn4j.geometry.Vector2(px, py), at, false)};
     }
 
-    static boolean[] polygonPoint(SplittableRandom r, float scale, float[] f) {
+    static boolean[] polygonPoint(SplittableRandom r, float scale) {
         // a star: 16 corners around a centre at alternating radii, so it is concave
         float cx = coord(r, scale), cy = coord(r, scale);
         float[] xy = new float[32];
