@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * A capsule: the points closer than {@code r} to a segment, a stadium with round ends. The
  * usual shape for a top-down player or a thick laser.

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * A circle: its centre and its radius (the tutorial's, not Processing's diameter; draw it
  * with {@code circle(x, y, 2 * r)}).

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * Collision tests, one static method per pair of shapes, on plain floats: the tutorial's
  * (circle/point, circle/circle, rectangle/point, rectangle/rectangle) and the pairs its section
@@ -155,8 +157,8 @@ public final class Collide {
         if (!(r >= 0 && rw >= 0 && rh >= 0)) {
             return false;
         }
-        double dx = cx - clamp(cx, rx, (double) rx + rw);
-        double dy = cy - clamp(cy, ry, (double) ry + rh);
+        double dx = cx - Lines.clamp(cx, rx, (double) rx + rw);
+        double dy = cy - Lines.clamp(cy, ry, (double) ry + rh);
         double d2 = dx * dx + dy * dy;
         if (d2 == 0) {
             // The centre is in the closed rectangle (NaN cannot get here: clamp passes it on,
@@ -251,15 +253,6 @@ public final class Collide {
     public static int lineSide(float x1, float y1, float x2, float y2, float px, float py) {
         double o = Lines.orient(x1, y1, x2, y2, px, py);
         return o > 0 ? 1 : (o < 0 ? -1 : 0);
-    }
-
-    /**
-     * Clamps {@code v} into [lo, hi]; used for the closest point of a rectangle. NaN in any
-     * argument gives NaN (Math.min and Math.max pass it on), so a NaN rectangle edge cannot
-     * be clamped away into a false "collision".
-     */
-    static double clamp(double v, double lo, double hi) {
-        return Math.max(lo, Math.min(v, hi));
     }
 
     /**

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * How two overlapping shapes overlap: the direction and the distance that pull them apart.
  *
@@ -132,9 +134,9 @@ public record Contact(float nx, float ny, float depth) {
         double dist = Math.sqrt(dx * dx + dy * dy);
         double reach = (double) r1 + r2;
         if (dist == 0) {
-            return of(0, 1, reach);
+            return Contacts.of(0, 1, reach);
         }
-        return of(dx / dist, dy / dist, reach - dist);
+        return Contacts.of(dx / dist, dy / dist, reach - dist);
     }
 
     /**
@@ -215,7 +217,7 @@ public record Contact(float nx, float ny, float depth) {
         // The first rectangle's shortest way out of the second (exact depths, exact ties in
         // the tie rule's order): the same push Snap.pushOut makes.
         Side side = RectPush.leastOverlap(x1, y1, w1, h1, x2, y2, w2, h2);
-        return of(RectPush.normalX(side), RectPush.normalY(side), RectPush.depth(side, x1, y1, w1, h1, x2, y2, w2, h2));
+        return Contacts.of(RectPush.normalX(side), RectPush.normalY(side), RectPush.depth(side, x1, y1, w1, h1, x2, y2, w2, h2));
     }
 
     // ---------------------------------------------------------------- ellipses and capsules, raw floats
@@ -422,12 +424,4 @@ public record Contact(float nx, float ny, float depth) {
         return Side.ofNormal(nx, ny);
     }
 
-    /**
-     * A contact from double-precision results. The depth is rounded to float and kept above
-     * 0, and held at {@code Float.MAX_VALUE} for shapes so big that it is past the float
-     * range (found by fuzzing); the normal is a unit vector already.
-     */
-    static Contact of(double nx, double ny, double depth) {
-        return new Contact((float) nx, (float) ny, Math.max(Check.held(depth), Float.MIN_VALUE));
-    }
 }

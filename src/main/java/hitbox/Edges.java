@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * The window's edges: which ones a shape has crossed, and the three things a sketch does about
  * it: bounce back, wrap around to the other side, or stay inside.

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * An axis-aligned ellipse: its centre and its two radii, Processing's
  * {@code ellipse(x, y, w, h)} (in the default {@code CENTER} mode) with {@code rx = w / 2} and

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.util.Arrays;
 
 /**
@@ -50,6 +52,11 @@ import java.util.Arrays;
  * next to the cells.
  */
 public final class Grid {
+    // First of the static initialisers: the map readers (GridMaps) write the cells through this.
+    static {
+        HiddenParts.grant((HiddenParts.GridAccess) g -> g.cells);
+    }
+
 
     /** The terrain of an empty cell: open floor. Never solid. */
     public static final int EMPTY = 0;
@@ -62,8 +69,8 @@ public final class Grid {
     private final int rows;
     private final float cellWidth;
     private final float cellHeight;
-    /** The cells' terrains, row by row; read and written by {@link GridMaps} too. */
-    final int[] cells;
+    /** The cells' terrains, row by row; read and written by GridMaps too (through HiddenParts). */
+    private final int[] cells;
     private int[] passable = new int[0];
 
     /**

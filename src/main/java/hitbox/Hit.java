@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * Where a moving shape first runs into an obstacle: the answer of every
  * {@code Sweep.timeOfImpact} method.

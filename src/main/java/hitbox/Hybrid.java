@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * The hybrid check: cheap tests first, the exact one only when it is needed.
  *

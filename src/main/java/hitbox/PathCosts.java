@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.util.Arrays;
 
 /**
@@ -154,16 +156,17 @@ public final class PathCosts {
                         + (diagonals ? "neighbour" : "neighbour across or down"));
             }
             float c = cost(grid.get(route[i] % grid.cols(), route[i] / grid.cols()));
-            total += dc + dr == 2 ? DIAGONAL * c : c;
+            total += dc + dr == 2 ? GridPaths.DIAGONAL * c : c;
         }
         return total;
     }
 
-    /** How much longer a diagonal step is than a straight one. */
-    static final double DIAGONAL = Math.sqrt(2);
-
-    /** The least cost of any step into a cell: what the search's distance estimate assumes. */
-    float cheapest() {
+    /**
+     * The least cost of any step into a cell: what a path search's distance estimate assumes.
+     *
+     * @return the cheapest step's cost, never NaN
+     */
+    public float cheapest() {
         return cheapest;
     }
 

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.math.BigDecimal;
 import java.math.MathContext;
 import java.util.Arrays;
@@ -15,8 +17,36 @@ import java.util.Arrays;
  * <p>Edge i runs from vertex i to vertex i + 1; the last edge closes the outline back to
  * vertex 0, so do not repeat the first vertex at the end. Immutable: moving a polygon makes
  * a new one ({@link #translated}).
+ *
+ * <p>The class is longer than most: its factories ({@link #of}, {@link #regular},
+ * {@link #rotatedRect}) check every outline a user can hand in, and it grants the kernels in
+ * {@code hitbox.internal} read access to the parts it keeps (see {@code HiddenParts}).
  */
 public final class Polygon implements Shape {
+    // First of the static initialisers: the kernels read a polygon's kept parts through this.
+    static {
+        HiddenParts.grant(new HiddenParts.PolygonAccess() {
+            @Override
+            public float[] raw(Polygon p) {
+                return p.xy;
+            }
+
+            @Override
+            public double[] corners(Polygon p) {
+                return p.corners;
+            }
+
+            @Override
+            public int convexWinding(Polygon p) {
+                return p.convexWinding;
+            }
+
+            @Override
+            public int concaveVertex(Polygon p) {
+                return p.concaveVertex;
+            }
+        });
+    }
 
     /**
      * The most sides {@link #regular} makes: 4096. Checking an outline compares every pair of

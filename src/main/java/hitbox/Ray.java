@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.util.Arrays;
 
 /**
@@ -104,7 +106,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
             throw new IllegalArgumentException("the two points must differ, both were (" + x1 + ", " + y1 + ")");
         }
         float dx = x2 - x1, dy = y2 - y1;
-        return new Ray(x1, y1, dx, dy, (float) length(dx, dy));
+        return new Ray(x1, y1, dx, dy, (float) RayCast.length(dx, dy));
     }
 
     /**
@@ -118,12 +120,12 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
     public RayHit cast(Shape shape) {
         Check.notNull("shape", shape);
         if (shape instanceof Ellipse e) {
-            return castEllipse(e, limit(dx, dy, maxDistance));
+            return castEllipse(e, RayCast.limit(dx, dy, maxDistance));
         }
         if (shape instanceof Capsule k) {
-            return castCapsule(k, limit(dx, dy, maxDistance));
+            return castCapsule(k, RayCast.limit(dx, dy, maxDistance));
         }
-        double limit = limit(dx, dy, maxDistance);
+        double limit = RayCast.limit(dx, dy, maxDistance);
         if (shape instanceof Circle c) {
             return castCircle(c, limit);
         }
@@ -160,7 +162,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(cx, cy, r, 0, 0)) {
             return Float.POSITIVE_INFINITY;
         }
-        return distance(circleParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), cx, cy, r), dx, dy);
+        return distance(circleParam(ox, oy, dx, dy, RayCast.limit(dx, dy, maxDistance), cx, cy, r), dx, dy);
     }
 
     /**
@@ -186,7 +188,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(rx, ry, rw, rh, 0)) {
             return Float.POSITIVE_INFINITY;
         }
-        return distance(rectParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), rx, ry, rw, rh), dx, dy);
+        return distance(rectParam(ox, oy, dx, dy, RayCast.limit(dx, dy, maxDistance), rx, ry, rw, rh), dx, dy);
     }
 
     /**
@@ -211,7 +213,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(x1, y1, x2, y2, 0)) {
             return Float.POSITIVE_INFINITY;
         }
-        return distance(segmentParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), x1, y1, x2, y2), dx, dy);
+        return distance(segmentParam(ox, oy, dx, dy, RayCast.limit(dx, dy, maxDistance), x1, y1, x2, y2), dx, dy);
     }
 
     // ---------------------------------------------------------------- the maths, in units of (dx, dy)
@@ -245,7 +247,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
                 || radiusX < 0 || radiusY < 0) {
             return Float.POSITIVE_INFINITY;
         }
-        double s = ellipseParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), x, y, radiusX, radiusY);
+        double s = ellipseParam(ox, oy, dx, dy, RayCast.limit(dx, dy, maxDistance), x, y, radiusX, radiusY);
         return distance(s < 0 ? 0 : s, dx, dy);
     }
 
@@ -273,33 +275,15 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(x1, y1, x2, y2, r) || r < 0) {
             return Float.POSITIVE_INFINITY;
         }
-        return distance(capsuleParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), x1, y1, x2, y2, r), dx, dy);
+        return distance(capsuleParam(ox, oy, dx, dy, RayCast.limit(dx, dy, maxDistance), x1, y1, x2, y2, r), dx, dy);
     }
 
     private static boolean badRay(float ox, float oy, float dx, float dy, float maxDistance) {
         return Check.notFinite(ox, oy, dx, dy, 0) || (dx == 0 && dy == 0) || !(maxDistance >= 0);
     }
 
-    /** How far the ray reaches in units of its direction; exactly 1 when it ends at (ox + dx, oy + dy). */
-    static double limit(float dx, float dy, float maxDistance) {
-        if (maxDistance == Float.POSITIVE_INFINITY) {
-            return Slabs.INF;
-        }
-        double length = length(dx, dy);
-        return maxDistance == (float) length ? 1 : maxDistance / length;
-    }
-
     private static float distance(double s, float dx, float dy) {
-        return s == Slabs.INF ? Float.POSITIVE_INFINITY : (float) (s * length(dx, dy));
-    }
-
-    /**
-     * The direction's length: in double the squares of floats are exact and their sum cannot
-     * overflow or underflow, so a plain square root is as good as {@link Math#hypot} here, at
-     * a third of its cost.
-     */
-    private static double length(double dx, double dy) {
-        return Math.sqrt(dx * dx + dy * dy);
+        return s == Slabs.INF ? Float.POSITIVE_INFINITY : (float) (s * RayCast.length(dx, dy));
     }
 
     /**
@@ -448,7 +432,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         }
         double ex = (double) k.x2() - k.x1(), ey = (double) k.y2() - k.y1(), len = Math.hypot(ex, ey);
         double hx = ox + s * dx, hy = oy + s * dy;
-        double t = len == 0 ? 0 : Collide.clamp(((hx - k.x1()) * ex + (hy - k.y1()) * ey) / (len * len), 0, 1);
+        double t = len == 0 ? 0 : Lines.clamp(((hx - k.x1()) * ex + (hy - k.y1()) * ey) / (len * len), 0, 1);
         double nx = hx - (k.x1() + t * ex), ny = hy - (k.y1() + t * ey);
         return nx == 0 && ny == 0 ? hitAt(s, -dx, -dy) : hitAt(s, nx, ny);
     }
@@ -661,7 +645,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
     private RayHit hitAt(double s, double outX, double outY) {
         double len = Math.hypot(outX, outY);
         // Held in the float range: a ray across a polygon wider than it cannot say more.
-        return new RayHit(Check.held(s * length(dx, dy)), Check.held(ox + s * dx), Check.held(oy + s * dy),
+        return new RayHit(Check.held(s * RayCast.length(dx, dy)), Check.held(ox + s * dx), Check.held(oy + s * dy),
                 (float) (-outX / len), (float) (-outY / len));
     }
 }

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * Where a {@link Ray} first meets a shape: the answer of {@link Ray#cast}.
  *

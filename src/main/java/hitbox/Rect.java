@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * An axis-aligned rectangle: its top-left corner and its size, Processing's {@code CORNER}
  * mode ({@code rect(x, y, w, h)}).

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * What to do after a hit, given its {@link Contact}: push the shapes apart, bounce, or slide.
  *

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * A line segment between two end points: what a sketch draws with {@code line()}.
  *

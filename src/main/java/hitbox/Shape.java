@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * A shape in the plane: an immutable value that can be tested against any other shape.
  *

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * Snapping to an edge: after a move has put a rectangle into the ground or into an obstacle,
  * move it back out so that it just touches, and say which side it hit.

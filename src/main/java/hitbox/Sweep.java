@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * Moving objects done exactly: when, during this frame's motion, does a moving shape first
  * run into an obstacle? A swept test never tunnels: a small object moving thousands of
@@ -65,9 +67,6 @@ public final class Sweep {
 
     /** How many times {@link #move} stops at an obstacle and slides on before giving up. */
     public static final int MAX_SLIDES = 4;
-
-    /** The answer when the shapes already overlap at the start. */
-    static final Hit OVERLAPPING = new Hit(0, 0, 0, Side.NONE);
 
     private Sweep() {
     }

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.util.Arrays;
 
 /**
@@ -44,7 +46,7 @@ public final class TerrainColors {
         int i = find(rgb);
         if (i >= 0) {
             if (terrains[i] != terrain) {
-                throw new IllegalArgumentException("color " + hex(rgb) + " already stands for terrain " + terrains[i]
+                throw new IllegalArgumentException("color " + GridImages.hex(rgb) + " already stands for terrain " + terrains[i]
                         + ", so it cannot also be terrain " + terrain + ": give each terrain its own colour");
             }
             return this;
@@ -77,7 +79,7 @@ public final class TerrainColors {
     public int terrainOf(int color) {
         int i = find(color & 0xFFFFFF);
         if (i < 0) {
-            throw new IllegalArgumentException("colour " + hex(color) + " is not in the key (" + this + ")");
+            throw new IllegalArgumentException("colour " + GridImages.hex(color) + " is not in the key (" + this + ")");
         }
         return terrains[i];
     }
@@ -109,7 +111,7 @@ public final class TerrainColors {
     public String toString() {
         StringBuilder s = new StringBuilder();
         for (int i = 0; i < colors.length; i++) {
-            s.append(i == 0 ? "" : ", ").append(hex(colors[i])).append(" -> ").append(terrains[i]);
+            s.append(i == 0 ? "" : ", ").append(GridImages.hex(colors[i])).append(" -> ").append(terrains[i]);
         }
         return colors.length == 0 ? "no colours" : s.toString();
     }
@@ -123,8 +125,4 @@ public final class TerrainColors {
         return -1;
     }
 
-    /** A colour as {@code #RRGGBB}, the way paint programs and Processing write it. */
-    static String hex(int color) {
-        return String.format("#%06X", color & 0xFFFFFF);
-    }
 }

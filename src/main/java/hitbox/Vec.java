@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 /**
  * A 2D vector: a velocity, a direction or a point, as an immutable value.
  *

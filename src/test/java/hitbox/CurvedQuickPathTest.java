@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.SplittableRandom;

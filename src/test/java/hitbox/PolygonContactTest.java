@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.util.ArrayList;
 import java.util.List;
 import net.jqwik.api.Arbitraries;

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -119,7 +121,7 @@ class RayConvexAgreementTest {
         if (inside) {
             return true;
         }
-        double reach = Ray.limit(ray.dx(), ray.dy(), ray.maxDistance());
+        double reach = RayCast.limit(ray.dx(), ray.dy(), ray.maxDistance());
         MathContext mc = new MathContext(40);
         BigDecimal tin = in[0].divide(in[1], mc), tout = out[0].divide(out[1], mc);
         BigDecimal near = BigDecimal.valueOf(10 * Ray.SAME_EVENT).multiply(tout.abs().max(BigDecimal.ONE));

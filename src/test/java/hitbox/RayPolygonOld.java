@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.util.Arrays;
 
 /**
@@ -12,7 +14,7 @@ final class RayPolygonOld {
     }
 
     static RayHit cast(Ray ray, Polygon p) {
-        return new Cast(ray).castPolygon(p, Ray.limit(ray.dx(), ray.dy(), ray.maxDistance()));
+        return new Cast(ray).castPolygon(p, RayCast.limit(ray.dx(), ray.dy(), ray.maxDistance()));
     }
 
     private static final class Cast {

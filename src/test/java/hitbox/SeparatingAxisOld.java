@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.math.BigDecimal;
 
 /**
@@ -62,7 +64,7 @@ final class SeparatingAxisOld {
                 }
             }
         }
-        return best == Double.POSITIVE_INFINITY ? null : Contact.of(bestX, bestY, best);
+        return best == Double.POSITIVE_INFINITY ? null : Contacts.of(bestX, bestY, best);
     }
 
     private static BigDecimal[] exactOverlaps(double[] owner, int i, int j, double[] a, double[] b) {

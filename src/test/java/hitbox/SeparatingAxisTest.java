@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.util.List;
 import net.jqwik.api.Arbitrary;
 import net.jqwik.api.Assume;

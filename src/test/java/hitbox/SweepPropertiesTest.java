@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -47,7 +49,7 @@ class TurningSweepAgreementTest {
             Hit now = TurningSweep.timeOfImpact(mover, px, py, vx, vy, turn, obstacle);
             Hit old = TurningSweepOld.timeOfImpact(mover, px, py, vx, vy, turn, obstacle);
             String what = "case " + i + ": " + mover + " " + vx + ", " + vy + ", turn " + turn + " into " + obstacle;
-            if (now == Sweep.OVERLAPPING || old == Sweep.OVERLAPPING) {
+            if (now == SweptPairs.OVERLAPPING || old == SweptPairs.OVERLAPPING) {
                 assertTrue(now == old, what);
                 continue;
             }

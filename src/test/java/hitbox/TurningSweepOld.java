@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import java.util.List;
 
 /**
@@ -46,7 +48,7 @@ final class TurningSweepOld {
     static Hit timeOfImpact(Polygon mover, float px, float py, float vx, float vy, float turn, Shape obstacle) {
         float[] xy = mover.raw();
         if (Overlaps.test(mover, obstacle)) {
-            return Sweep.OVERLAPPING;
+            return SweptPairs.OVERLAPPING;
         }
         double reach = 0;
         for (int i = 0; i < xy.length; i += 2) {

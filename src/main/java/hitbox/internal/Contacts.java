@@ -1,0 +1,361 @@
+package hitbox.internal;
+
+import hitbox.*;
+
+/**
+ * The table behind {@link Contact#between}: every pair of shape kinds routed to the code for
+ * that pair, plus the one tie rule every contact uses.
+ */
+public final class Contacts {
+    private Contacts() {
+    }
+
+    /**
+     * The shortest push seen so far (not to be confused with {@link Earliest}, the first
+     * entry of a sweep), with the tie rule of {@link Contact}: among equal depths
+     * the more vertical normal wins, then the larger {@code nx * ny}, then the larger ny,
+     * then the larger nx. The keys after the first are unchanged when every normal is
+     * reversed, or (for the last two) only meet between exactly opposite normals, so
+     * {@code contact(b, a)} picks the reverse of {@code contact(a, b)} whenever the input is
+     * not symmetric.
+     */
+    public static final class Shortest {
+        public double nx;
+        public double ny;
+        public double depth = Double.POSITIVE_INFINITY;
+        /**
+         * An absolute slack for ties, for searches whose candidates are only placed to within
+         * a tolerance of their own (see {@link Clearance}); 0 for the exact pairs.
+         */
+        public final double tolerance;
+        /**
+         * Are the candidates offered from the second shape's side ({@code contact(b, a)}, to
+         * be reported for {@code contact(a, b)})? Then the tie rule is applied to the normals
+         * as they will be reported, turned round, so the rule does not depend on which shape
+         * the pair's code puts first.
+         */
+        public final boolean flip;
+
+        public Shortest() {
+            this(0, false);
+        }
+
+        public Shortest(double tolerance) {
+            this(tolerance, false);
+        }
+
+        public Shortest(double tolerance, boolean flip) {
+            this.tolerance = tolerance;
+            this.flip = flip;
+        }
+
+        /**
+         * Keeps (nx, ny, depth) if it is shorter than the best so far, or ties and wins.
+         * Depths within {@link Contact#TIE} of each other (relative), or within the search's
+         * tolerance, tie: the same distance reached through different arithmetic (a square
+         * root here, a division there) must not let rounding pick the direction.
+         */
+        public void offer(double nx, double ny, double depth) {
+            if (beats(nx, ny, depth, this.nx, this.ny, this.depth, tolerance, flip)) {
+                this.nx = nx;
+                this.ny = ny;
+                this.depth = depth;
+            }
+        }
+
+        /**
+         * The rule of {@link #offer}, on plain values, for searches that keep their best in
+         * locals so as to allocate nothing: does (nx, ny, depth) beat the best so far
+         * (bx, by, best)?
+         */
+        public static boolean beats(double nx, double ny, double depth, double bx, double by, double best,
+                             double tolerance, boolean flip) {
+            double slack = Math.max(Contact.TIE * Math.min(depth, best), tolerance);
+            double f = flip ? -1 : 1;
+            return depth < best - slack || (depth <= best + slack && preferred(f * nx, f * ny, f * bx, f * by));
+        }
+
+        /**
+         * Can nothing at distance {@code bound} or more beat (or tie with) the best so far?
+         * For pruning a search; uses the same slack as the tie rule, so that a candidate that
+         * ties is still looked at.
+         */
+        public boolean beyond(double bound) {
+            return bound > depth + slack(depth);
+        }
+
+        private double slack(double d) {
+            return Math.max(Contact.TIE * d, tolerance);
+        }
+
+        public boolean found() {
+            return depth != Double.POSITIVE_INFINITY;
+        }
+
+        /** The best push as a contact (turned round if {@link #flip}), or null if nothing was offered. */
+        public Contact contact() {
+            double f = flip ? -1 : 1;
+            return found() ? Contacts.of(f * nx, f * ny, depth) : null;
+        }
+    }
+
+    /** Is normal (nx, ny) preferred to (ox, oy) when both push equally far? */
+    public static boolean preferred(double nx, double ny, double ox, double oy) {
+        if (Math.abs(ny) != Math.abs(oy)) {
+            return Math.abs(ny) > Math.abs(oy);
+        }
+        if (nx * ny != ox * oy) {
+            return nx * ny > ox * oy;
+        }
+        if (ny != oy) {
+            return ny > oy;
+        }
+        return nx > ox;
+    }
+
+    /** The four axis directions. */
+    private static final int[][] AXES = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
+
+    public static Contact between(Shape a, Shape b) {
+        if (a instanceof Segment || b instanceof Segment) {
+            String which = a instanceof Segment ? "a" : "b";
+            throw new IllegalArgumentException("contact needs two shapes with area, but " + which
+                    + " is a Segment, which has none: there is no inside to push out of. Use"
+                    + " overlaps(...) to test a segment for a hit, or a sweep or ray cast to find"
+                    + " where a moving shape first touches it");
+        }
+        if (a instanceof Ellipse || b instanceof Ellipse || a instanceof Capsule || b instanceof Capsule) {
+            if (!Overlaps.test(a, b)) {
+                return null;
+            }
+            if (a instanceof Polygon p && !p.isConvex()) {
+                return CurvedClearance.contact(b, p, true); // the whole polygon, not its nearest piece
+            }
+            if (b instanceof Polygon p && !p.isConvex()) {
+                return CurvedClearance.contact(a, p, false);
+            }
+            return Supports.contact(a, b);
+        }
+        if (a instanceof Circle c) {
+            if (b instanceof Circle d) {
+                return Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
+            }
+            return circleWith(c, b, false);
+        }
+        if (b instanceof Circle c) {
+            // Computed from the circle's side, reported from a's: the tie rule sees a's normals.
+            return circleWith(c, a, true);
+        }
+        if (a instanceof Rect r && b instanceof Rect s) {
+            return Contact.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
+        }
+        return polygonal(a, b);
+    }
+
+    /** A circle against a rectangle or polygon, reported from the circle's side or (flip) the other's. */
+    private static Contact circleWith(Circle c, Shape other, boolean flip) {
+        if (other instanceof Rect r) {
+            return circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h(), flip);
+        }
+        return circlePolygon(c.x(), c.y(), c.r(), (Polygon) other, flip);
+    }
+
+    /**
+     * A circle (first) against a rectangle, valid values; normal from the circle to the
+     * rectangle, or from the rectangle to the circle if {@code flip}.
+     */
+    public static Contact circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh, boolean flip) {
+        if (!Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
+            return null;
+        }
+        double right = (double) rx + rw;
+        double bottom = (double) ry + rh;
+        double dx = Lines.clamp(cx, rx, right) - cx;
+        double dy = Lines.clamp(cy, ry, bottom) - cy;
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        double f = flip ? -1 : 1;
+        if (dist > 0) {
+            return Contacts.of(f * dx / dist, f * dy / dist, r - dist);
+        }
+        // The centre is in the closed rectangle: leave through the nearest edge. The circle
+        // going up out of the top means the rectangle moves down, normal (0, 1).
+        Shortest best = new Shortest(0, flip);
+        best.offer(0, 1, (double) cy - ry + r);
+        best.offer(0, -1, bottom - cy + r);
+        best.offer(1, 0, (double) cx - rx + r);
+        best.offer(-1, 0, right - cx + r);
+        return best.contact();
+    }
+
+    /** A scratch array per thread for a rectangle's four corners ({@link #polygonal}). */
+    private static final ThreadLocal<double[]> RECT_CORNERS = ThreadLocal.withInitial(() -> new double[8]);
+
+    /**
+     * A polygon's cached corners, or a rectangle's written into {@code scratch}, the same
+     * values as {@link Polygons#corners}.
+     */
+    private static double[] cornersOf(Shape s, double[] scratch) {
+        if (s instanceof Polygon p) {
+            return HiddenParts.corners(p);
+        }
+        Polygons.corners((Rect) s, scratch);
+        return scratch;
+    }
+
+    /** Rectangles and polygons, at least one of them a polygon. */
+    private static Contact polygonal(Shape a, Shape b) {
+        boolean convexA = !(a instanceof Polygon p) || p.isConvex();
+        boolean convexB = !(b instanceof Polygon p) || p.isConvex();
+        if (convexA && convexB) {
+            // Boxes that do not overlap are apart (touching ones too: the shapes are open).
+            Rect r = a.bounds(), s = b.bounds();
+            if (!Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h())) {
+                return null;
+            }
+            // A polygon's cached corners, or a rectangle's written into this thread's scratch
+            // array (two rectangles went to Contact.rectRect), so that nothing is allocated
+            // but the answer. The search decides apart exactly and only reads them.
+            double[] scratch = a instanceof Rect || b instanceof Rect ? RECT_CORNERS.get() : null;
+            return FaceQuery.convexPolygons(cornersOf(a, scratch), windingOf(a), r, cornersOf(b, scratch), windingOf(b), s);
+        }
+        return Clearance.polygons(Clearance.Parts.of(a), Clearance.Parts.of(b));
+    }
+
+    /**
+     * A convex polygon's winding, or a rectangle's: its corners go top-left, top-right,
+     * bottom-right, bottom-left, which with y growing down turns as +1 (a flat rectangle may
+     * take either).
+     */
+    private static int windingOf(Shape s) {
+        return s instanceof Polygon p ? HiddenParts.convexWinding(p) : 1;
+    }
+
+    /**
+     * A circle (first) against a polygon (second). The closest boundary feature (an edge or a
+     * vertex) gives the answer, which is the minimum translation for a convex polygon, and for
+     * any polygon when the radius is 0; a concave polygon and a real circle are handed to
+     * {@link Clearance#circle}, since pushing out of the nearest edge can land the circle in
+     * another part of the polygon.
+     */
+    public static Contact circlePolygon(float cx, float cy, float r, Polygon p, boolean flip) {
+        float[] xy = HiddenParts.raw(p);
+        Contact near = closestFeature(cx, cy, r, xy, flip);
+        if (near == null || r == 0 || p.isConvex()) {
+            return near;
+        }
+        // The search cannot come back empty for shapes that overlap; if rounding ever made it,
+        // the closest-feature answer is still a push that clears the nearest edge.
+        Contact clear = CircleClearance.circle(cx, cy, r, xy, flip);
+        return clear != null ? clear : near;
+    }
+
+    /**
+     * The circle pushed out through the polygon's closest edge or vertex: the circle leaves
+     * along the feature's outward direction so that it ends at distance r from it. Normal from
+     * the circle to the polygon (or the other way if {@code flip}); null when the circle does
+     * not overlap (its centre is outside and at least r from the outline). Features whose
+     * distances differ only by rounding (within {@link Contact#TIE}) are all offered, so the
+     * tie rule decides between them, not the rounding. A centre exactly on a convex corner
+     * may leave in any direction of the corner's cone of outward directions, all equally
+     * short: the cone's ends (the edge normals) and the axis directions inside it are offered.
+     */
+    public static Contact closestFeature(float cx, float cy, float r, float[] xy, boolean flip) {
+        int n = xy.length / 2;
+        // Each edge's nearest point to the centre: its interior or its first vertex. The
+        // second vertex is the next edge's first, so it is not repeated. The distances are
+        // worked out again in the loop below rather than kept in an array: the same sums give
+        // the same doubles, and a contact then allocates only its answer.
+        double min = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < n; i++) {
+            min = Math.min(min, partDistance2(xy, i, cx, cy, nearestPart(xy, i, cx, cy)));
+        }
+        boolean inside = Collide.polygonPoint(xy, cx, cy);
+        double dist = Math.sqrt(min);
+        double depth = inside ? r + dist : r - dist;
+        if (!(depth > 0)) {
+            return null;
+        }
+        // Every feature at the least distance is offered, so ties follow the rule in Shortest.
+        double turn = Polygons.winding(xy);
+        Shortest best = new Shortest(0, flip);
+        double near = min + 2 * Contact.TIE * min;
+        for (int i = 0; i < n; i++) {
+            int part = nearestPart(xy, i, cx, cy);
+            if (!(partDistance2(xy, i, cx, cy, part) <= near)) {
+                continue;
+            }
+            if (part == EDGE) {
+                // The circle leaves along the edge's outward normal; the polygon goes the other way.
+                double[] out = Polygons.outwardNormal(xy, i, turn);
+                best.offer(-out[0], -out[1], depth);
+            } else if (dist > 0) {
+                double vx = (double) xy[2 * i] - cx, vy = (double) xy[2 * i + 1] - cy;
+                double sign = inside ? -1 : 1;
+                best.offer(sign * vx / dist, sign * vy / dist, depth);
+            } else {
+                // The centre is on vertex i: leave along either neighbouring edge's normal, or,
+                // at a convex corner, along any direction between them (an axis one, say).
+                for (int e : new int[] {(i + n - 1) % n, i}) {
+                    double[] out = Polygons.outwardNormal(xy, e, turn);
+                    if (out != null) {
+                        best.offer(-out[0], -out[1], depth);
+                    }
+                }
+                int h = Polygons.distinctNeighbour(xy, i, n - 1), k = Polygons.distinctNeighbour(xy, i, 1);
+                double ax = (double) xy[2 * h] - xy[2 * i], ay = (double) xy[2 * h + 1] - xy[2 * i + 1];
+                double bx = (double) xy[2 * k] - xy[2 * i], by = (double) xy[2 * k + 1] - xy[2 * i + 1];
+                if (turn * Lines.orient(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]) > 0) {
+                    for (int[] d : AXES) {
+                        // In the outward cone: pointing away from both neighbouring edges.
+                        if (d[0] * ax + d[1] * ay <= 0 && d[0] * bx + d[1] * by <= 0) {
+                            best.offer(-d[0], -d[1], depth);
+                        }
+                    }
+                }
+            }
+        }
+        return best.contact();
+    }
+
+    /** Parts of an edge nearest a point: its first vertex, its interior, its far vertex. */
+    private static final int FIRST = -1, EDGE = 0, FAR = 1;
+
+    /** Which part of edge i (vertex i to vertex i + 1) is nearest the centre. */
+    private static int nearestPart(float[] xy, int i, float cx, float cy) {
+        int j = (i + 1) % (xy.length / 2);
+        // Relative to the centre: differences of floats are exact in double.
+        double px = (double) xy[2 * i] - cx, py = (double) xy[2 * i + 1] - cy;
+        double ex = ((double) xy[2 * j] - cx) - px, ey = ((double) xy[2 * j + 1] - cy) - py;
+        double len2 = ex * ex + ey * ey;
+        double along = -(px * ex + py * ey);
+        return len2 == 0 || along <= 0 ? FIRST : along < len2 ? EDGE : FAR;
+    }
+
+    /**
+     * The squared distance from the centre to that part of edge i; infinity for its far
+     * vertex, which the next edge offers as its first (or something nearer).
+     */
+    private static double partDistance2(float[] xy, int i, float cx, float cy, int part) {
+        double px = (double) xy[2 * i] - cx, py = (double) xy[2 * i + 1] - cy;
+        if (part == FIRST) {
+            return px * px + py * py;
+        }
+        if (part == FAR) {
+            return Double.POSITIVE_INFINITY;
+        }
+        int j = (i + 1) % (xy.length / 2);
+        double ex = ((double) xy[2 * j] - cx) - px, ey = ((double) xy[2 * j + 1] - cy) - py;
+        double cross = ex * (-py) - ey * (-px);
+        return cross * cross / (ex * ex + ey * ey);
+    }
+
+    /**
+     * A contact from double-precision results. The depth is rounded to float and kept above
+     * 0, and held at {@code Float.MAX_VALUE} for shapes so big that it is past the float
+     * range (found by fuzzing); the normal is a unit vector already.
+     */
+    public static Contact of(double nx, double ny, double depth) {
+        return new Contact((float) nx, (float) ny, Math.max(Check.held(depth), Float.MIN_VALUE));
+    }
+
+}

@@ -1,0 +1,298 @@
+package hitbox.internal;
+
+import hitbox.*;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The straight time of impact for every pair that has no exact swept test of its own
+ * (polygons, ellipses, capsules, two segments), as a mover or as an obstacle, against any
+ * shape: {@link Sweep#timeOfImpact(Shape, float, float, Shape)}.
+ *
+ * <p>Each shape is taken as convex pieces (a concave polygon as its triangulation's pieces, a
+ * segment as its two ends, a curved shape as itself, read through its support function, see
+ * {@link Supports}). For each pair of pieces, conservative advancement along a separating
+ * direction (G. van den Bergen, "Ray Casting against General Convex Objects", 2004, the
+ * advancement without the simplex; Ericson, <i>Real-Time Collision Detection</i>, 9.5.3):
+ * at time t the best separating direction n found (sampled and refined, as in
+ * {@link TurningSweep}) leaves a gap g along n that is a lower bound on the distance, and the
+ * gap along a fixed n closes at exactly {@code v . n}, so the mover can advance by
+ * {@code g / (v . n)} and still not overlap; if {@code v . n <= 0} the gap never closes and
+ * the pair never meets. The advancement stops within {@link #TOUCH} of contact: an entry
+ * time in double that is never later than the real one.
+ *
+ * <p>Two convex polygons go the exact way instead, {@link ConvexPolygonSweep}.
+ *
+ * <p>From each pair's entry, {@link SweptPairs#lastClear} finds the promised float t on the
+ * real shapes, moved as a sketch moves them ({@code x + t * vx} in float) and tested by
+ * {@link Overlaps}: the largest float at which the mover does not overlap while at the next
+ * float up it does. Every answer it finds is such a boundary, so the least over the pairs is
+ * the first one. Like every sweep here, a graze shorter than the float positions' rounding
+ * (no float position overlaps) is not a hit.
+ */
+public final class ConvexSweep {
+    private ConvexSweep() {
+    }
+
+    /** Closer than this (pixels) ends the advancement: the entry is within a float step or two. */
+    public static final double TOUCH = 1e-6;
+    private static final int MAX_STEPS = 500;
+    private static final int DIRECTIONS = 32;
+
+    /** The hit of a mover moving by (vx, vy) into the obstacle (both valid), or null. */
+    public static Hit timeOfImpact(Shape mover, float vx, float vy, Shape obstacle) {
+        if (apart(mover.bounds(), vx, vy, obstacle.bounds())) {
+            return null;
+        }
+        if (Overlaps.test(mover, obstacle)) {
+            return SweptPairs.OVERLAPPING;
+        }
+        if (vx == 0 && vy == 0) {
+            return null;
+        }
+        if (mover instanceof Polygon p && p.isConvex() && obstacle instanceof Polygon q && q.isConvex()) {
+            return ConvexPolygonSweep.timeOfImpact(p, vx, vy, q);
+        }
+        return byPieces(mover, vx, vy, obstacle);
+    }
+
+    /**
+     * {@link #timeOfImpact} for any pair, apart at the start, the mover moving: by
+     * conservative advancement over the convex pieces (see the class comment).
+     */
+    public static Hit byPieces(Shape mover, float vx, float vy, Shape obstacle) {
+        SweptPairs.OverlapAt overlapAt = t -> movedOverlaps(mover, t * vx, t * vy, obstacle);
+        float best = Float.POSITIVE_INFINITY;
+        double bx = 0, by = 0;
+        double[] normal = new double[2];
+        for (Object a : pieces(mover)) {
+            for (Object b : pieces(obstacle)) {
+                double te = entry(a, b, vx, vy, normal);
+                if (te > 1) {
+                    continue;
+                }
+                float t = SweptPairs.lastClear(te, overlapAt);
+                if (t < best && (t < 1 || overlapAt.at(1))) {
+                    best = t;
+                    bx = normal[0];
+                    by = normal[1];
+                }
+            }
+        }
+        return best <= 1 ? SweptPairs.hit(best, bx, by) : null;
+    }
+
+    /**
+     * Does the mover, moved by (dx, dy) as {@link Shape#translated} moves it, overlap the
+     * obstacle? No, if the move leaves the float range (nothing is there).
+     */
+    public static boolean movedOverlaps(Shape mover, float dx, float dy, Shape obstacle) {
+        Shape moved;
+        try {
+            moved = mover.translated(dx, dy);
+        } catch (IllegalArgumentException beyondTheFloats) {
+            return false;
+        }
+        return Overlaps.test(moved, obstacle);
+    }
+
+    // ---------------------------------------------------------------- any pair, by convex pieces
+
+    /**
+     * The cheap answer first: is the box the mover's box sweeps through clear of the
+     * obstacle's box by more than the rounding of the float positions (a moved coordinate
+     * {@code x + t * vx} in float lies between x and the float nearest {@code x + vx})?
+     */
+    public static boolean apart(Rect m, float vx, float vy, Rect o) {
+        double mr = (double) m.x() + m.w(), mb = (double) m.y() + m.h();
+        double or = (double) o.x() + o.w(), ob = (double) o.y() + o.h();
+        double left = Math.min(m.x(), m.x() + (double) vx), top = Math.min(m.y(), m.y() + (double) vy);
+        double right = Math.max(mr, mr + vx), bottom = Math.max(mb, mb + vy);
+        double slack = 1e-6 * (Math.abs(left) + Math.abs(right) + Math.abs(top) + Math.abs(bottom)
+                + Math.abs(o.x()) + Math.abs(o.y()) + Math.abs(or) + Math.abs(ob)) + Float.MIN_NORMAL;
+        return left > or + slack || right < o.x() - slack || top > ob + slack || bottom < o.y() - slack;
+    }
+
+    /** The shape's convex pieces: vertex lists (double[]), or the curved shape itself. */
+    public static List<Object> pieces(Shape s) {
+        List<Object> out = new ArrayList<>();
+        if (s instanceof Polygon p && !p.isConvex()) {
+            out.addAll(Clearance.Parts.of(s).pieces());
+        } else if (s instanceof Segment g) {
+            out.add(new double[] {g.x1(), g.y1(), g.x2(), g.y2()});
+        } else if (s instanceof Rect || s instanceof Polygon) {
+            out.add(Polygons.corners(s));
+        } else {
+            out.add(new Round(s));
+        }
+        return out;
+    }
+
+    /**
+     * A curved piece with what its support function needs worked out once: a turned
+     * ellipse's cos and sin (the hot loop asks for thousands of directions), a circle as an
+     * ellipse with equal radii, a capsule as its segment and radius.
+     */
+    public static final class Round {
+        public final Shape shape;
+        public final double x, y, a, b, c, s, x2, y2;
+        public final boolean capsule;
+
+        public Round(Shape shape) {
+            this.shape = shape;
+            if (shape instanceof Capsule k) {
+                capsule = true;
+                x = k.x1();
+                y = k.y1();
+                x2 = k.x2();
+                y2 = k.y2();
+                a = b = k.r();
+                c = 1;
+                s = 0;
+            } else if (shape instanceof Ellipse e) {
+                capsule = false;
+                x = e.x();
+                y = e.y();
+                a = e.rx();
+                b = e.ry();
+                c = e.angle() == 0 ? 1 : Math.cos(e.angle());
+                s = e.angle() == 0 ? 0 : Math.sin(e.angle());
+                x2 = y2 = 0;
+            } else {
+                Circle o = (Circle) shape;
+                capsule = false;
+                x = o.x();
+                y = o.y();
+                a = b = o.r();
+                c = 1;
+                s = 0;
+                x2 = y2 = 0;
+            }
+        }
+
+        /** How far it reaches along (nx, ny), as {@link Supports#support}. */
+        public double reach(double nx, double ny) {
+            if (capsule) {
+                return Math.max(x * nx + y * ny, x2 * nx + y2 * ny) + a;
+            }
+            return x * nx + y * ny + Math.hypot(a * (nx * c + ny * s), b * (-nx * s + ny * c));
+        }
+    }
+
+    /**
+     * When piece a, moving by (vx, vy), comes within {@link #TOUCH} of piece b (never later
+     * than the real contact), with the separating direction (from a to b) into
+     * {@code normal}; +infinity if never within the motion.
+     */
+    public static double entry(Object a, Object b, double vx, double vy, double[] normal) {
+        return entry(a, b, 0, 0, vx, vy, normal);
+    }
+
+    /** As {@link #entry(Object, Object, double, double, double[])}, piece a starting moved by (sx, sy). */
+    public static double entry(Object a, Object b, double sx, double sy, double vx, double vy, double[] normal) {
+        double t = 0;
+        double[] n = new double[2];
+        for (int step = 0; step < MAX_STEPS; step++) {
+            double gap = separation(a, b, sx + t * vx, sy + t * vy, n);
+            normal[0] = n[0];
+            normal[1] = n[1];
+            if (gap <= TOUCH) {
+                return t;
+            }
+            double closing = vx * n[0] + vy * n[1];
+            if (!(closing > 0)) {
+                return Double.POSITIVE_INFINITY; // the gap along n never closes
+            }
+            t += gap / closing;
+            if (t > 1) {
+                return Double.POSITIVE_INFINITY;
+            }
+        }
+        return t;
+    }
+
+    /**
+     * The best gap found between piece a moved by (dx, dy) and piece b: the largest
+     * {@code least_b(n) - most_a(n)} over a ring of directions and both pieces' edge normals,
+     * the best ring direction refined by golden-section search. A lower bound on the distance
+     * (negative when they overlap); its direction goes into {@code n}.
+     */
+    private static double separation(Object a, Object b, double dx, double dy, double[] n) {
+        double best = Double.NEGATIVE_INFINITY, bx = 1, by = 0;
+        boolean ring = true;
+        for (int i = 0; i < DIRECTIONS; i++) {
+            double nx = Math.cos(2 * Math.PI * i / DIRECTIONS), ny = Math.sin(2 * Math.PI * i / DIRECTIONS);
+            double g = gap(a, b, dx, dy, nx, ny);
+            if (g > best) {
+                best = g;
+                bx = nx;
+                by = ny;
+            }
+        }
+        for (Object piece : new Object[] {a, b}) {
+            double[] xy = edges(piece);
+            int m = xy.length / 2;
+            for (int i = 0; i < m && m > 1; i++) {
+                int j = (i + 1) % m;
+                double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = Math.hypot(ex, ey);
+                if (len > 0) {
+                    for (int sign = -1; sign <= 1; sign += 2) {
+                        double nx = sign * ey / len, ny = -sign * ex / len;
+                        double g = gap(a, b, dx, dy, nx, ny);
+                        if (g > best) {
+                            best = g;
+                            bx = nx;
+                            by = ny;
+                            ring = false;
+                        }
+                    }
+                }
+            }
+        }
+        if (ring || a instanceof Round || b instanceof Round) {
+            // Golden-section search about the best direction (a curved piece's best gap is
+            // seldom an edge normal): still a lower bound, since every direction's gap is one.
+            double lo = Math.atan2(by, bx) - 2 * Math.PI / DIRECTIONS, hi = lo + 4 * Math.PI / DIRECTIONS;
+            // The largest gap is the least of its negative.
+            double[] r = Golden.least(t -> -gap(a, b, dx, dy, Math.cos(t), Math.sin(t)), lo, hi, 50, 1e-13);
+            double m = r[0], g = -r[1];
+            if (g > best) {
+                best = g;
+                bx = Math.cos(m);
+                by = Math.sin(m);
+            }
+        }
+        n[0] = bx;
+        n[1] = by;
+        return best;
+    }
+
+    /** The piece's outline for edge normals: its vertices, a capsule's segment, nothing for a round shape. */
+    private static double[] edges(Object piece) {
+        if (piece instanceof double[] xy) {
+            return xy;
+        }
+        if (piece instanceof Round r && r.capsule) {
+            return new double[] {r.x, r.y, r.x2, r.y2};
+        }
+        return new double[0];
+    }
+
+    /** How far apart along unit n: b's least reach minus a's greatest, a moved by (dx, dy). */
+    private static double gap(Object a, Object b, double dx, double dy, double nx, double ny) {
+        return -reach(b, -nx, -ny) - (reach(a, nx, ny) + dx * nx + dy * ny);
+    }
+
+    /** How far the piece reaches along (nx, ny). */
+    private static double reach(Object piece, double nx, double ny) {
+        if (piece instanceof double[] xy) {
+            double best = Double.NEGATIVE_INFINITY;
+            for (int i = 0; i + 1 < xy.length; i += 2) {
+                best = Math.max(best, xy[i] * nx + xy[i + 1] * ny);
+            }
+            return best;
+        }
+        return ((Round) piece).reach(nx, ny);
+    }
+}

@@ -1,0 +1,124 @@
+package hitbox.internal;
+
+import hitbox.Grid;
+import hitbox.Polygon;
+
+/**
+ * What the kernels read of a {@link Polygon} and a {@link Grid} that the API does not hand
+ * out: a polygon's coordinates and corners without a copy, its convex winding and first
+ * concave vertex, and a grid's cells. The API classes grant the access once, from their
+ * static initialisers (the JDK's {@code SharedSecrets} pattern), so the kernels can live
+ * apart from the API without those members becoming public.
+ *
+ * <p>The granted access is read through a static final field, which the JIT treats as a
+ * constant: a call here costs what the package-private accessor it replaces cost.
+ */
+public final class HiddenParts {
+    private HiddenParts() {
+    }
+
+    /** A polygon's kept parts, granted by {@link Polygon}. */
+    public interface PolygonAccess {
+        /**
+         * @param p the polygon
+         * @return its coordinates {@code x0, y0, x1, y1, ...} without a copy: never written
+         */
+        float[] raw(Polygon p);
+
+        /**
+         * @param p the polygon
+         * @return its vertices widened to double, without a copy: never written
+         */
+        double[] corners(Polygon p);
+
+        /**
+         * @param p the polygon
+         * @return its winding (+1 or -1) if it is convex, 0 if it is concave
+         */
+        int convexWinding(Polygon p);
+
+        /**
+         * @param p the polygon
+         * @return its first vertex where the outline bends inwards, or -1 if convex
+         */
+        int concaveVertex(Polygon p);
+    }
+
+    /** A grid's cells, granted by {@link Grid}. */
+    public interface GridAccess {
+        /**
+         * @param g the grid
+         * @return its cells' terrains, row by row, without a copy (written by the map readers)
+         */
+        int[] cells(Grid g);
+    }
+
+    private static PolygonAccess polygons;
+    private static GridAccess grids;
+
+    /**
+     * Called once, by {@link Polygon}'s static initialiser.
+     *
+     * @param access the access, not null
+     * @throws IllegalStateException if it was granted already
+     */
+    public static synchronized void grant(PolygonAccess access) {
+        if (polygons != null) {
+            throw new IllegalStateException("polygon access granted already");
+        }
+        polygons = access;
+    }
+
+    /**
+     * Called once, by {@link Grid}'s static initialiser.
+     *
+     * @param access the access, not null
+     * @throws IllegalStateException if it was granted already
+     */
+    public static synchronized void grant(GridAccess access) {
+        if (grids != null) {
+            throw new IllegalStateException("grid access granted already");
+        }
+        grids = access;
+    }
+
+    /** The granted accesses as constants; loading this first initialises Polygon and Grid. */
+    private static final class Granted {
+        static final PolygonAccess POLYGONS = initialised(Polygon.class) ? polygons : null;
+        static final GridAccess GRIDS = initialised(Grid.class) ? grids : null;
+
+        private static boolean initialised(Class<?> type) {
+            try {
+                Class.forName(type.getName(), true, type.getClassLoader());
+                return true;
+            } catch (ClassNotFoundException e) {
+                throw new AssertionError(e);
+            }
+        }
+    }
+
+    /** @param p the polygon @return its coordinates without a copy */
+    public static float[] raw(Polygon p) {
+        return Granted.POLYGONS.raw(p);
+    }
+
+    /** @param p the polygon @return its vertices in double without a copy */
+    public static double[] corners(Polygon p) {
+        return Granted.POLYGONS.corners(p);
+    }
+
+    /** @param p the polygon @return its winding if convex, else 0 */
+    public static int convexWinding(Polygon p) {
+        return Granted.POLYGONS.convexWinding(p);
+    }
+
+    /** @param p the polygon @return its first concave vertex, or -1 */
+    public static int concaveVertex(Polygon p) {
+        return Granted.POLYGONS.concaveVertex(p);
+    }
+
+    /** @param g the grid @return its cells without a copy */
+    public static int[] cells(Grid g) {
+        return Granted.GRIDS.cells(g);
+    }
+}

@@ -1,0 +1,101 @@
+package hitbox.internal;
+
+import hitbox.*;
+
+/**
+ * The walk behind {@link Sweep#move}: a box goes until it first hits an obstacle, stands
+ * against the face it hit, and slides on with the rest of its motion, the part into that
+ * face dropped. Arguments are checked by {@code Sweep.move}.
+ */
+public final class MoveAndSlide {
+    private MoveAndSlide() {
+    }
+
+    public static Sweep.Move move(Rect mover, float vx, float vy, Iterable<Rect> obstacles) {
+        final float x0 = mover.x(), y0 = mover.y(), w = mover.w(), h = mover.h();
+        float x = x0, y = y0;
+        double mx = vx, my = vy;  // the motion still to do this frame
+        float keepVx = vx, keepVy = vy;
+        int sides = 0;
+        for (int stop = 0; stop < Sweep.MAX_SLIDES && (mx != 0 || my != 0); stop++) {
+            double first = Slabs.INF;
+            Rect hitRect = null;
+            for (Rect o : obstacles) {
+                if (!Collide.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
+                    double t = SweptPairs.rectRectTime(x, y, w, h, mx, my, o.x(), o.y(), o.w(), o.h());
+                    if (t < first) {
+                        first = t;
+                        hitRect = o;
+                    }
+                }
+            }
+            if (hitRect == null) {
+                float[] end = safeAlong(x, y, w, h, mx, my, 1, (float) (x + mx), (float) (y + my), x0, y0, obstacles);
+                x = end[0];
+                y = end[1];
+                break;
+            }
+            Earliest e = SweptPairs.rectRectEntry(x, y, w, h, mx, my, hitRect.x(), hitRect.y(), hitRect.w(), hitRect.h());
+            // The entry's normal is the face's outward one; the side is the face it points out of.
+            Side side = e.inside ? Side.NONE : Side.ofNormal(-e.nx, -e.ny);
+            if (side == Side.NONE) {
+                break;  // cannot happen: the box is never left overlapping an obstacle it did not start in
+            }
+            // Stand exactly against the face hit (rounding could leave it a hair inside),
+            // the other coordinate where the motion had got to.
+            float tx = (float) (x + first * mx), ty = (float) (y + first * my);
+            tx = RectPush.placedX(side, tx, w, hitRect.x(), hitRect.w());
+            ty = RectPush.placedY(side, ty, h, hitRect.y(), hitRect.h());
+            float[] at = safeAlong(x, y, w, h, mx, my, first, tx, ty, x0, y0, obstacles);
+            x = at[0];
+            y = at[1];
+            mx *= 1 - first;
+            my *= 1 - first;
+            if (side.isWall()) {
+                mx = 0;
+                keepVx = 0;
+            } else {
+                my = 0;
+                keepVy = 0;
+            }
+            sides |= side.bit();
+        }
+        return new Sweep.Move(x, y, keepVx, keepVy, sides);
+    }
+
+    /**
+     * The wanted stop (tx, ty) if it overlaps no obstacle (except those the box started in);
+     * otherwise, which only rounding can cause, the farthest point along the motion before
+     * {@code t} that is clear, found by halving. The start (x, y) is always clear.
+     */
+    private static float[] safeAlong(float x, float y, float w, float h, double mx, double my, double t,
+                                     float tx, float ty, float x0, float y0, Iterable<Rect> obstacles) {
+        if (clear(tx, ty, w, h, x0, y0, obstacles)) {
+            return new float[] {tx, ty};
+        }
+        float bestX = x, bestY = y;
+        double lo = 0, hi = t;
+        for (int i = 0; i < 64 && lo < hi; i++) {
+            double mid = (lo + hi) / 2;
+            float px = (float) (x + mid * mx), py = (float) (y + mid * my);
+            if (clear(px, py, w, h, x0, y0, obstacles)) {
+                lo = mid;
+                bestX = px;
+                bestY = py;
+            } else {
+                hi = mid;
+            }
+        }
+        return new float[] {bestX, bestY};
+    }
+
+    private static boolean clear(float x, float y, float w, float h, float x0, float y0, Iterable<Rect> obstacles) {
+        for (Rect o : obstacles) {
+            if (Collide.rectRect(x, y, w, h, o.x(), o.y(), o.w(), o.h())
+                    && !Collide.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
+                return false;
+            }
+        }
+        return true;
+    }
+}

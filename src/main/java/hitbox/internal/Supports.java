@@ -1,0 +1,108 @@
+package hitbox.internal;
+
+import hitbox.*;
+
+/**
+ * Contacts for the curved shapes ({@link Ellipse}, {@link Capsule}) against any convex shape
+ * with area, by support functions. For convex A and B the shortest push that separates them
+ * is, over all unit directions n, the least of {@code h_A(n) + h_B(-n)} (h the support
+ * function: how far the shape reaches along n): the Minkowski difference's distance from the
+ * origin to its outline, the quantity EPA converges to. Here it is minimised over the angle
+ * of n directly: 72 directions and every edge normal of a rectangle, polygon or capsule
+ * (where a flat side makes the least exact), then each local least refined by golden-section
+ * search. The depth is found to about 1e-12 of the shapes' size; a normal, where the least
+ * is flat, to about 1e-6 radians.
+ *
+ * <p>Reference: G. van den Bergen, <i>Collision Detection in Interactive 3D Environments</i>
+ * (2004), 4.3 (penetration depth as the Minkowski difference's distance to its boundary).
+ */
+public final class Supports {
+    private Supports() {
+    }
+
+    private static final int STEPS = 72;
+
+    /** Is the shape convex (every shape but a concave polygon and a segment)? */
+    public static boolean convex(Shape s) {
+        return !(s instanceof Segment) && !(s instanceof Polygon p && !p.isConvex());
+    }
+
+    /** How far the shape reaches along (nx, ny): the largest dot product of its points with it. */
+    public static double support(Shape s, double nx, double ny) {
+        if (s instanceof Circle c) {
+            return c.x() * nx + c.y() * ny + c.r();
+        }
+        if (s instanceof Ellipse e) {
+            return TurnedEllipses.support(e, nx, ny);
+        }
+        if (s instanceof Capsule k) {
+            return Math.max(k.x1() * nx + k.y1() * ny, k.x2() * nx + k.y2() * ny) + k.r();
+        }
+        double[] xy = Polygons.corners(s);
+        double best = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < xy.length; i += 2) {
+            best = Math.max(best, xy[i] * nx + xy[i + 1] * ny);
+        }
+        return best;
+    }
+
+    /** The push for direction angle t: how far b must move along (cos t, sin t) to clear a. */
+    private static double push(Shape a, Shape b, double t) {
+        double nx = Math.cos(t), ny = Math.sin(t);
+        return support(a, nx, ny) + support(b, -nx, -ny);
+    }
+
+    /** The contact of two overlapping convex shapes, normal from a to b. */
+    public static Contact contact(Shape a, Shape b) {
+        Contacts.Shortest best = new Contacts.Shortest(1e-9 * scale(a, b));
+        double[] f = new double[STEPS];
+        for (int i = 0; i < STEPS; i++) {
+            f[i] = push(a, b, 2 * Math.PI * i / STEPS);
+        }
+        for (int i = 0; i < STEPS; i++) {
+            double prev = f[(i + STEPS - 1) % STEPS], next = f[(i + 1) % STEPS];
+            if (f[i] <= prev && f[i] <= next) {
+                double t = refine(a, b, 2 * Math.PI * (i - 1) / STEPS, 2 * Math.PI * (i + 1) / STEPS);
+                offer(best, a, b, t);
+            }
+        }
+        for (Shape s : new Shape[] {a, b}) {
+            double[] xy = s instanceof Capsule k ? new double[] {k.x1(), k.y1(), k.x2(), k.y2()}
+                    : s instanceof Rect || s instanceof Polygon ? Polygons.corners(s) : new double[0];
+            int n = xy.length / 2;
+            for (int i = 0; i < n; i++) {
+                int j = (i + 1) % n;
+                double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1];
+                if (ex != 0 || ey != 0) {
+                    offer(best, a, b, Math.atan2(ex, -ey));
+                    offer(best, a, b, Math.atan2(-ex, ey));
+                }
+            }
+        }
+        return best.contact();
+    }
+
+    private static void offer(Contacts.Shortest best, Shape a, Shape b, double t) {
+        double nx = Math.cos(t), ny = Math.sin(t);
+        // Exact axis directions where rounding of cos and sin would leave a hair.
+        if (Math.abs(nx) < 1e-15) {
+            nx = 0;
+            ny = Math.signum(ny);
+        } else if (Math.abs(ny) < 1e-15) {
+            ny = 0;
+            nx = Math.signum(nx);
+        }
+        best.offer(nx, ny, support(a, nx, ny) + support(b, -nx, -ny));
+    }
+
+    /** Golden-section search for the least push in [lo, hi]. */
+    private static double refine(Shape a, Shape b, double lo, double hi) {
+        return Golden.least(t -> push(a, b, t), lo, hi, 80, 1e-15)[0];
+    }
+
+    /** The shapes' size, for the tie tolerance. */
+    private static double scale(Shape a, Shape b) {
+        Rect p = a.bounds(), q = b.bounds();
+        return Math.max(1, Math.max(Math.max(p.w(), p.h()), Math.max(q.w(), q.h())));
+    }
+}

@@ -1,0 +1,253 @@
+package hitbox.internal;
+
+import hitbox.*;
+
+/**
+ * The maths of turned ellipses (an {@link Ellipse} with an angle), apart from the
+ * axis-aligned maths in {@link Ellipses} that it reuses: the other shape is taken into the
+ * turned ellipse's own frame in double, where the aligned tests apply. Decided to double
+ * precision, so a pair within about 1e-12 of its size from touching may go either way (the
+ * {@link Ellipse} doc says so); an ellipse whose radii are equal, or whose angle is 0, is
+ * handed to the exact aligned code instead.
+ */
+public final class TurnedEllipses {
+    private TurnedEllipses() {
+    }
+
+    /**
+     * Is the ellipse decided as axis-aligned: angle 0, or equal radii (a circle, or a point),
+     * where the angle changes nothing?
+     */
+    public static boolean aligned(Ellipse e) {
+        return e.angle() == 0 || e.rx() == e.ry();
+    }
+
+    /** Half the width of the ellipse's box: exact when aligned, else widened past the rounding. */
+    public static double halfWidth(Ellipse e) {
+        if (aligned(e)) {
+            return e.rx();
+        }
+        double c = Math.cos(e.angle()), s = Math.sin(e.angle());
+        return widen(Math.hypot(e.rx() * c, e.ry() * s));
+    }
+
+    /** Half the height of the ellipse's box: exact when aligned, else widened past the rounding. */
+    public static double halfHeight(Ellipse e) {
+        if (aligned(e)) {
+            return e.ry();
+        }
+        double c = Math.cos(e.angle()), s = Math.sin(e.angle());
+        return widen(Math.hypot(e.rx() * s, e.ry() * c));
+    }
+
+    /** A few double roundings more (cos, sin, products, hypot), so the box holds the ellipse. */
+    private static double widen(double h) {
+        return h * (1 + 0x1p-48);
+    }
+
+    /** Is the point strictly inside the turned ellipse (taken into its frame in double)? */
+    public static boolean turnedPoint(Ellipse e, double px, double py) {
+        if (e.rx() == 0 || e.ry() == 0) {
+            return false;
+        }
+        Frame f = new Frame(e);
+        return Ellipses.side(f.u(px, py), f.v(px, py), 0, 0, e.rx(), e.ry()) < 0;
+    }
+
+    /**
+     * A turned ellipse's own frame: centre at the origin, its rx along u and ry along v. A
+     * point goes in by {@code u = dx cos + dy sin, v = -dx sin + dy cos} (the turn undone).
+     */
+    public record Frame(double x, double y, double c, double s) {
+        public Frame(Ellipse e) {
+            this(e.x(), e.y(), Math.cos(e.angle()), Math.sin(e.angle()));
+        }
+
+        public double u(double px, double py) {
+            return (px - x) * c + (py - y) * s;
+        }
+
+        public double v(double px, double py) {
+            return -(px - x) * s + (py - y) * c;
+        }
+    }
+
+    /** The flat turned ellipse's segment (one radius 0, not aligned): ends rounded to float. */
+    public static Segment flatSegment(Ellipse e) {
+        double c = Math.cos(e.angle()), s = Math.sin(e.angle());
+        double hx = e.rx() * c - e.ry() * s, hy = e.rx() * s + e.ry() * c; // one term is 0
+        return new Segment((float) (e.x() - hx), (float) (e.y() - hy), (float) (e.x() + hx), (float) (e.y() + hy));
+    }
+
+    /** Has the shape an inside (area)? */
+    private static boolean hasArea(Shape s) {
+        if (s instanceof Circle c) {
+            return c.r() > 0;
+        }
+        if (s instanceof Rect r) {
+            return r.w() > 0 && r.h() > 0;
+        }
+        if (s instanceof Ellipse e) {
+            return e.rx() > 0 && e.ry() > 0;
+        }
+        if (s instanceof Capsule k) {
+            return k.r() > 0;
+        }
+        return s instanceof Polygon;
+    }
+
+    /**
+     * A turned ellipse (not {@link #aligned}) against any shape, or an aligned one against a
+     * turned ellipse: the other shape taken into the turned one's frame in double, where the
+     * axis-aligned maths applies.
+     */
+    public static boolean turned(Ellipse e, Shape other) {
+        if (aligned(e)) {
+            return turned((Ellipse) other, e); // other is the turned one
+        }
+        if (e.rx() == 0 || e.ry() == 0) {
+            return flat(flatSegment(e), other);
+        }
+        if (other instanceof Ellipse f && f.rx() > 0 && f.ry() > 0) {
+            if (aligned(f) || before(f, e)) {
+                return ellipses(f, e);
+            }
+            return ellipses(e, f);
+        }
+        if (other instanceof Ellipse f && !aligned(f) && (f.rx() > 0 || f.ry() > 0)) {
+            return turned(e, flatSegment(f)); // a flat turned ellipse: its open segment
+        }
+        Frame fr = new Frame(e);
+        double a = e.rx(), b = e.ry();
+        if (other instanceof Circle c) {
+            double u = fr.u(c.x(), c.y()), v = fr.v(c.x(), c.y());
+            if (Ellipses.side(u, v, 0, 0, a, b) < 0) {
+                return true;
+            }
+            return c.r() > 0 && (Ellipses.side(u, v, 0, 0, a, b) == 0 || Ellipses.distance(a, b, u, v, null) < c.r());
+        }
+        if (other instanceof Segment g) {
+            return segmentIn(fr, a, b, g.x1(), g.y1(), g.x2(), g.y2(), false);
+        }
+        if (other instanceof Capsule k) {
+            if (segmentIn(fr, a, b, k.x1(), k.y1(), k.x2(), k.y2(), k.r() > 0)) {
+                return true;
+            }
+            return k.r() > 0 && Ellipses.segmentDistance(a, b, fr.u(k.x1(), k.y1()), fr.v(k.x1(), k.y1()),
+                    fr.u(k.x2(), k.y2()), fr.v(k.x2(), k.y2())) < k.r();
+        }
+        if (other instanceof Ellipse f) {
+            // An aligned flat ellipse is its flat box, as below; both radii 0 is a point.
+            return turned(e, new Rect(f.x() - f.rx(), f.y() - f.ry(), 2 * f.rx(), 2 * f.ry()));
+        }
+        if (other instanceof Rect r) {
+            double right = (double) r.x() + r.w(), bottom = (double) r.y() + r.h();
+            if (r.w() == 0 || r.h() == 0) {
+                return segmentIn(fr, a, b, r.x(), r.y(), right, bottom, false);
+            }
+            double[] xy = {r.x(), r.y(), right, r.y(), right, bottom, r.x(), bottom};
+            return outlineIn(fr, a, b, xy) || Collide.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
+        }
+        float[] raw = HiddenParts.raw((Polygon) other);
+        double[] xy = new double[raw.length];
+        for (int i = 0; i < raw.length; i++) {
+            xy[i] = raw[i];
+        }
+        return outlineIn(fr, a, b, xy) || Polygons.contains(raw, e.x(), e.y());
+    }
+
+    /** Does the segment (world coordinates) reach into the turned real ellipse (or its closed form)? */
+    private static boolean segmentIn(Frame f, double a, double b, double x1, double y1, double x2, double y2,
+                                     boolean closed) {
+        return Capsules.nearOrigin(f.u(x1, y1) * b, f.v(x1, y1) * a, f.u(x2, y2) * b, f.v(x2, y2) * a, a * b, closed);
+    }
+
+    /** Does any edge of the closed outline reach into the turned real ellipse? */
+    private static boolean outlineIn(Frame f, double a, double b, double[] xy) {
+        int n = xy.length / 2;
+        for (int i = 0, h = n - 1; i < n; h = i++) {
+            if (segmentIn(f, a, b, xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], false)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * A flat turned ellipse, the open segment s, against any shape: a shape with area is
+     * reached as the closed segment reaches it (the same for an open shape); a shape without
+     * area only by crossing it properly, like two flat rectangles in a plus sign.
+     */
+    private static boolean flat(Segment s, Shape other) {
+        if (hasArea(other)) {
+            return Overlaps.test(s, other);
+        }
+        Segment o;
+        if (other instanceof Segment g) {
+            o = g;
+        } else if (other instanceof Rect r && (r.w() > 0 || r.h() > 0)) {
+            o = new Segment(r.x(), r.y(), r.x() + r.w(), r.y() + r.h());
+        } else if (other instanceof Ellipse f && (f.rx() > 0 || f.ry() > 0)) {
+            o = aligned(f) ? new Segment(f.x() - f.rx(), f.y() - f.ry(), f.x() + f.rx(), f.y() + f.ry()) : flatSegment(f);
+        } else {
+            return false; // a point-like shape, or a capsule of radius 0: no inside, no crossing
+        }
+        return Lines.orient(s.x1(), s.y1(), s.x2(), s.y2(), o.x1(), o.y1())
+                * Lines.orient(s.x1(), s.y1(), s.x2(), s.y2(), o.x2(), o.y2()) < 0
+                && Lines.orient(o.x1(), o.y1(), o.x2(), o.y2(), s.x1(), s.y1())
+                * Lines.orient(o.x1(), o.y1(), o.x2(), o.y2(), s.x2(), s.y2()) < 0;
+    }
+
+    /** A fixed order on ellipses, the angle included, so a pair is always worked from the same side. */
+    private static boolean before(Ellipse p, Ellipse q) {
+        if (p.x() != q.x() || p.y() != q.y() || p.rx() != q.rx() || p.ry() != q.ry()) {
+            return Ellipses.before(p.x(), p.y(), p.rx(), p.ry(), q.x(), q.y(), q.rx(), q.ry());
+        }
+        return Float.compare(p.angle(), q.angle()) < 0;
+    }
+
+    /**
+     * Two real ellipses, at least one turned: in p's frame, scaled by (ry, rx) so p is a
+     * circle of radius rx ry, q is still an ellipse, whose axes are found from its shape
+     * matrix M M^T (M = scale x turn x radii); then q's distance from the circle's centre is
+     * compared with that radius, as for two aligned ellipses.
+     */
+    public static boolean ellipses(Ellipse p, Ellipse q) {
+        int sure = Ellipses.discs((double) q.x() - p.x(), (double) q.y() - p.y(), p.rx(), p.ry(), q.rx(), q.ry());
+        if (sure != 0) {
+            return sure > 0;
+        }
+        Frame f = new Frame(p);
+        double a1 = p.rx(), b1 = p.ry();
+        double cu = f.u(q.x(), q.y()) * b1, cv = f.v(q.x(), q.y()) * a1;
+        double phi = (double) q.angle() - p.angle();
+        double c = Math.cos(phi), s = Math.sin(phi);
+        // M's columns: q's two half axes in the scaled frame.
+        double m00 = b1 * c * q.rx(), m10 = a1 * s * q.rx();
+        double m01 = -b1 * s * q.ry(), m11 = a1 * c * q.ry();
+        double pp = m00 * m00 + m01 * m01, ss = m10 * m10 + m11 * m11, qq = m00 * m10 + m01 * m11;
+        double det = m00 * m11 - m01 * m10;
+        double big = (pp + ss) / 2 + Math.hypot((pp - ss) / 2, qq);
+        double small = det * det / big; // the other eigenvalue, without the cancellation
+        double psi = 0.5 * Math.atan2(2 * qq, pp - ss);
+        double A = Math.sqrt(big), B = Math.sqrt(small);
+        // The circle's centre (the origin) relative to q's centre, in q's own axes.
+        double ox = -cu, oy = -cv;
+        double cp = Math.cos(psi), sp = Math.sin(psi);
+        double x = ox * cp + oy * sp, y = -ox * sp + oy * cp;
+        if (Ellipses.side(x, y, 0, 0, A, B) <= 0) {
+            return true;
+        }
+        return Ellipses.distance(A, B, x, y, null) < a1 * b1;
+    }
+
+    /** How far the (possibly turned) ellipse reaches along (nx, ny). */
+    public static double support(Ellipse e, double nx, double ny) {
+        double base = e.x() * nx + e.y() * ny;
+        if (e.angle() == 0) {
+            return base + Math.hypot(e.rx() * nx, e.ry() * ny);
+        }
+        double c = Math.cos(e.angle()), s = Math.sin(e.angle());
+        return base + Math.hypot(e.rx() * (nx * c + ny * s), e.ry() * (-nx * s + ny * c));
+    }
+}

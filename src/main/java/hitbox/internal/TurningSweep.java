@@ -1,0 +1,359 @@
+package hitbox.internal;
+
+import hitbox.*;
+
+import java.util.List;
+
+/**
+ * The time of impact of a convex polygon that moves and turns during the frame
+ * ({@link Sweep#turningTimeOfImpact}), by conservative advancement (B. Mirtich, "Impulse-based
+ * Dynamic Simulation of Rigid Body Systems", 1996; Ericson, <i>Real-Time Collision
+ * Detection</i>, 9.5.3): at time t the gap d to the obstacle is bounded from below, and no
+ * point of the mover can travel faster than {@code |v| + |turn| R} (R its farthest vertex
+ * from the pivot), so it can advance by {@code d / (|v| + |turn| R)} without touching. Each
+ * gap is a lower bound (a separating direction's gap never exceeds the distance), so the
+ * mover never passes through anything, however fast it turns.
+ *
+ * <p>Touching (a gap below {@link #TOUCH}) is a hit only while the gap is closing; a
+ * mover leaving a shape it touches moves on, and may come within {@link #TOUCH} minus the
+ * gap of it for that one step: the only overlap it can make, and only with what it was
+ * already touching.
+ *
+ * <p>The gap between convex pieces is {@code -(h_A(n) + h_B(-n))} maximised over the
+ * direction n, as in {@link Supports}; a concave polygon obstacle is its convex pieces.
+ */
+public final class TurningSweep {
+    private TurningSweep() {
+    }
+
+    /** Closer than this (pixels) counts as touching: the hit. */
+    public static final double TOUCH = 1e-3;
+    private static final int MAX_STEPS = 2000;
+    private static final int DIRECTIONS = 32;
+
+    /** The mover's vertices at time t: turned by t * turn about the pivot, then moved by t * v. */
+    public static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t) {
+        return at(xy, px, py, vx, vy, turn, t, new double[xy.length]);
+    }
+
+    /** {@link #at(float[], double, double, double, double, double, double)} into {@code out}, returned. */
+    private static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t, double[] out) {
+        double c = turn == 0 ? 1 : Math.cos(t * turn), s = turn == 0 ? 0 : Math.sin(t * turn);
+        for (int i = 0; i + 1 < xy.length; i += 2) {
+            double x = xy[i] - px, y = xy[i + 1] - py;
+            out[i] = px + t * vx + c * x - s * y;
+            out[i + 1] = py + t * vy + s * x + c * y;
+        }
+        return out;
+    }
+
+    public static Hit timeOfImpact(Polygon mover, float px, float py, float vx, float vy, float turn, Shape obstacle) {
+        float[] xy = HiddenParts.raw(mover);
+        if (Overlaps.test(mover, obstacle)) {
+            return SweptPairs.OVERLAPPING;
+        }
+        double reach = 0;
+        for (int i = 0; i < xy.length; i += 2) {
+            reach = Math.max(reach, Math.hypot(xy[i] - px, xy[i + 1] - py));
+        }
+        double spin = Math.abs(turn) * reach;
+        double speed = Math.hypot(vx, vy) + spin;
+        if (speed == 0) {
+            return null;
+        }
+        List<double[]> pieces = pieces(obstacle);
+        double t = 0;
+        double[] normal = new double[2], scratch = new double[2];
+        double[] a = new double[xy.length];
+        for (int step = 0; step < MAX_STEPS; step++) {
+            double gap = gap(at(xy, px, py, vx, vy, turn, t, a), pieces, obstacle, normal);
+            if (gap <= TOUCH) {
+                // Touching: a hit if the mover is closing in, not if it is leaving (a blade
+                // turning back from the post it just touched). One TOUCH of motion on, the
+                // gap tells which.
+                double later = t + TOUCH / speed;
+                if (later > 1 || gap(at(xy, px, py, vx, vy, turn, later, a), pieces, obstacle, scratch) <= gap) {
+                    return SweptPairs.hit((float) t, normal[0], normal[1]);
+                }
+                t = later;
+                continue;
+            }
+            // Advance by most of the safe step, so the gap shrinks towards TOUCH and never past 0.
+            // With one piece the gap is the separation along the normal n, and no point of the
+            // mover gains on the obstacle along n faster than v.n + |turn| R: the bound that
+            // lets the step grow where the motion is not head-on (and no step at all is
+            // needed when it never gains).
+            double rate = pieces.size() == 1 ? Math.min(speed, vx * normal[0] + vy * normal[1] + spin) : speed;
+            if (!(rate > 0)) {
+                return null;
+            }
+            t += (gap - TOUCH / 2) / rate;
+            if (t > 1) {
+                return null;
+            }
+        }
+        return SweptPairs.hit((float) t, normal[0], normal[1]);
+    }
+
+    /** The least gap between the mover's vertices {@code a} and the obstacle's pieces; its direction into {@code normal}. */
+    private static double gap(double[] a, List<double[]> pieces, Shape obstacle, double[] normal) {
+        double gap = Double.POSITIVE_INFINITY;
+        for (double[] piece : pieces) {
+            gap = Math.min(gap, piece.length >= 4 ? polygonGap(a, piece, normal, gap) : gap(a, piece, obstacle, normal, gap));
+        }
+        return gap;
+    }
+
+    /**
+     * The gap between two convex vertex lists (a segment is two vertices): the distance when
+     * they are apart (the least over each vertex of one and each edge of the other, its
+     * direction from the mover's closest point to the obstacle's), else the best separating
+     * axis among both edge normals (0 or less). Writes the direction into {@code normal} when
+     * the gap is below {@code best}. Allocates nothing.
+     */
+    private static double polygonGap(double[] a, double[] b, double[] normal, double best) {
+        double sat = Double.NEGATIVE_INFINITY, sx = 0, sy = 0;
+        // The last direction found (or the one between the centres) first: most steps it still
+        // separates them, and then the edge normals need not be tried.
+        double hx = normal[0], hy = normal[1];
+        if (hx == 0 && hy == 0) {
+            for (int k = 0; k < b.length; k += 2) {
+                hx += b[k] / (b.length / 2);
+                hy += b[k + 1] / (b.length / 2);
+            }
+            for (int k = 0; k < a.length; k += 2) {
+                hx -= a[k] / (a.length / 2);
+                hy -= a[k + 1] / (a.length / 2);
+            }
+            double len = Math.sqrt(hx * hx + hy * hy);
+            hx /= len;
+            hy /= len;
+        }
+        if (hx * hx + hy * hy > 0.5) {
+            double maxA = Double.NEGATIVE_INFINITY, minB = Double.POSITIVE_INFINITY;
+            for (int k = 0; k < a.length; k += 2) {
+                double p = a[k] * hx + a[k + 1] * hy;
+                maxA = p > maxA ? p : maxA;
+            }
+            for (int k = 0; k < b.length; k += 2) {
+                double p = b[k] * hx + b[k + 1] * hy;
+                minB = p < minB ? p : minB;
+            }
+            if (minB - maxA > 0) {
+                sat = minB - maxA;
+                sx = hx;
+                sy = hy;
+            }
+        }
+        for (int side = sat > 0 ? 2 : 0; side < 2; side++) {
+            double[] e = side == 0 ? a : b;
+            int n = e.length / 2;
+            for (int i = 0; i < n; i++) {
+                int j = i + 1 == n ? 0 : i + 1;
+                double ex = e[2 * j] - e[2 * i], ey = e[2 * j + 1] - e[2 * i + 1], len = Math.sqrt(ex * ex + ey * ey);
+                if (!(len > 0 && len < Double.POSITIVE_INFINITY)) {
+                    continue;
+                }
+                double nx = ey / len, ny = -ex / len;
+                // Both ways at once: along n, b's least minus a's greatest; along -n, a's least minus b's greatest.
+                double minA = Double.POSITIVE_INFINITY, maxA = Double.NEGATIVE_INFINITY;
+                double minB = Double.POSITIVE_INFINITY, maxB = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < a.length; k += 2) {
+                    double p = a[k] * nx + a[k + 1] * ny;
+                    minA = p < minA ? p : minA;
+                    maxA = p > maxA ? p : maxA;
+                }
+                for (int k = 0; k < b.length; k += 2) {
+                    double p = b[k] * nx + b[k + 1] * ny;
+                    minB = p < minB ? p : minB;
+                    maxB = p > maxB ? p : maxB;
+                }
+                double g = minB - maxA, h = minA - maxB;
+                if (h > g) {
+                    g = h;
+                    nx = -nx;
+                    ny = -ny;
+                }
+                if (g > sat) {
+                    sat = g;
+                    sx = nx;
+                    sy = ny;
+                }
+            }
+        }
+        if (sat > 0) {
+            // Apart: the exact distance, from a vertex of one to an edge of the other. A vertex
+            // of a is at least (b's least along s) - (its own reach along s) from b, and a
+            // vertex of b (its reach) - (a's greatest) from a: those whose bound is already
+            // beyond the best distance are skipped, and the two extreme vertices go first.
+            double minB = Double.POSITIVE_INFINITY, maxA = Double.NEGATIVE_INFINITY;
+            int ia = 0, ib = 0;
+            for (int k = 0; k < a.length; k += 2) {
+                double p = a[k] * sx + a[k + 1] * sy;
+                if (p > maxA) {
+                    maxA = p;
+                    ia = k;
+                }
+            }
+            for (int k = 0; k < b.length; k += 2) {
+                double p = b[k] * sx + b[k + 1] * sy;
+                if (p < minB) {
+                    minB = p;
+                    ib = k;
+                }
+            }
+            double[] best2 = {Double.POSITIVE_INFINITY, 0, 0};
+            vertexToEdges(a[ia], a[ia + 1], b, 1, best2);
+            vertexToEdges(b[ib], b[ib + 1], a, -1, best2);
+            for (int k = 0; k < a.length; k += 2) {
+                double lb = minB - (a[k] * sx + a[k + 1] * sy);
+                if (k != ia && lb * lb < best2[0]) {
+                    vertexToEdges(a[k], a[k + 1], b, 1, best2);
+                }
+            }
+            for (int k = 0; k < b.length; k += 2) {
+                double lb = b[k] * sx + b[k + 1] * sy - maxA;
+                if (k != ib && lb * lb < best2[0]) {
+                    vertexToEdges(b[k], b[k + 1], a, -1, best2);
+                }
+            }
+            double d = Math.sqrt(best2[0]);
+            if (d > sat) {
+                if (d < best) {
+                    normal[0] = best2[1] / d;
+                    normal[1] = best2[2] / d;
+                }
+                return d;
+            }
+        }
+        if (sat < best) {
+            normal[0] = sx;
+            normal[1] = sy;
+        }
+        return sat;
+    }
+
+    /**
+     * The squared distance from (qx, qy) to the edges of {@code e}, kept in {@code best} (squared
+     * distance, then the direction times {@code sign}) when below it.
+     */
+    private static void vertexToEdges(double qx, double qy, double[] e, double sign, double[] best) {
+        int n = e.length / 2;
+        for (int i = 0; i < n; i++) {
+            int j = i + 1 == n ? 0 : i + 1;
+            double x0 = e[2 * i], y0 = e[2 * i + 1], ex = e[2 * j] - x0, ey = e[2 * j + 1] - y0;
+            double l2 = ex * ex + ey * ey;
+            double u = l2 > 0 ? ((qx - x0) * ex + (qy - y0) * ey) / l2 : 0;
+            u = u < 0 ? 0 : u > 1 ? 1 : u;
+            double cx = x0 + u * ex - qx, cy = y0 + u * ey - qy;
+            double c2 = cx * cx + cy * cy;
+            if (c2 < best[0]) {
+                best[0] = c2;
+                best[1] = sign * cx;
+                best[2] = sign * cy;
+            }
+        }
+    }
+
+    /** The obstacle as convex vertex lists; circles, ellipses and capsules are one piece, kept as the shape. */
+    private static List<double[]> pieces(Shape s) {
+        if (s instanceof Polygon p && !p.isConvex()) {
+            return Clearance.Parts.of(s).pieces();
+        }
+        if (s instanceof Segment g) {
+            return List.of(new double[] {g.x1(), g.y1(), g.x2(), g.y2()});
+        }
+        if (s instanceof Rect || s instanceof Polygon) {
+            return List.of(Polygons.corners(s));
+        }
+        return List.of(new double[0]);
+    }
+
+    /**
+     * A lower bound on the gap between the mover's vertices and one obstacle piece (vertex
+     * list, or the curved shape itself when empty): the best separating direction among a
+     * ring of directions and the edge normals of both, refined. Writes the direction (from
+     * the mover to the obstacle) into {@code normal} when the gap is below {@code best}.
+     */
+    private static double gap(double[] a, double[] piece, Shape obstacle, double[] normal, double best) {
+        double bestGap = Double.NEGATIVE_INFINITY, bx = 0, by = 0;
+        int k = 0;
+        double[] dirs = directions(a, piece);
+        for (int i = 0; i < dirs.length; i += 2) {
+            double g = separation(a, piece, obstacle, dirs[i], dirs[i + 1]);
+            if (g > bestGap) {
+                bestGap = g;
+                bx = dirs[i];
+                by = dirs[i + 1];
+                k = i;
+            }
+        }
+        if (k < 2 * DIRECTIONS) {
+            // A ring direction won: refine its angle by golden-section search (still a lower bound).
+            double lo = Math.atan2(by, bx) - 2 * Math.PI / DIRECTIONS, hi = lo + 4 * Math.PI / DIRECTIONS;
+            double g = (Math.sqrt(5) - 1) / 2;
+            for (int i = 0; i < 60; i++) {
+                double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+                if (separation(a, piece, obstacle, Math.cos(m1), Math.sin(m1)) > separation(a, piece, obstacle, Math.cos(m2), Math.sin(m2))) {
+                    hi = m2;
+                } else {
+                    lo = m1;
+                }
+            }
+            double m = (lo + hi) / 2, gm = separation(a, piece, obstacle, Math.cos(m), Math.sin(m));
+            if (gm > bestGap) {
+                bestGap = gm;
+                bx = Math.cos(m);
+                by = Math.sin(m);
+            }
+        }
+        if (bestGap < best) {
+            normal[0] = bx;
+            normal[1] = by;
+        }
+        return bestGap;
+    }
+
+    /** The ring of directions, then each edge normal of both vertex lists, both ways. */
+    private static double[] directions(double[] a, double[] piece) {
+        int na = a.length / 2, nb = piece.length / 2;
+        double[] d = new double[2 * DIRECTIONS + 4 * (na + nb)];
+        for (int i = 0; i < DIRECTIONS; i++) {
+            d[2 * i] = Math.cos(2 * Math.PI * i / DIRECTIONS);
+            d[2 * i + 1] = Math.sin(2 * Math.PI * i / DIRECTIONS);
+        }
+        int k = 2 * DIRECTIONS;
+        for (double[] xy : new double[][] {a, piece}) {
+            int n = xy.length / 2;
+            for (int i = 0; i < n; i++) {
+                int j = (i + 1) % n;
+                double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = Math.hypot(ex, ey);
+                if (len > 0) {
+                    d[k++] = ey / len;
+                    d[k++] = -ex / len;
+                    d[k++] = -ey / len;
+                    d[k++] = ex / len;
+                }
+            }
+        }
+        return java.util.Arrays.copyOf(d, k);
+    }
+
+    /** How far apart along unit n: the obstacle's least reach minus the mover's greatest. */
+    private static double separation(double[] a, double[] piece, Shape obstacle, double nx, double ny) {
+        double reachA = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < a.length; i += 2) {
+            reachA = Math.max(reachA, a[i] * nx + a[i + 1] * ny);
+        }
+        double leastB;
+        if (piece.length == 0) {
+            leastB = -Supports.support(obstacle, -nx, -ny);
+        } else {
+            leastB = Double.POSITIVE_INFINITY;
+            for (int i = 0; i < piece.length; i += 2) {
+                leastB = Math.min(leastB, piece[i] * nx + piece[i + 1] * ny);
+            }
+        }
+        return leastB - reachA;
+    }
+}
