@@ -568,7 +568,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         double left = box.x(), top = box.y(), right = left + box.w(), bottom = top + box.h();
         double farX = Math.max(Math.abs(left - ox), Math.abs(right - ox));
         double farY = Math.max(Math.abs(top - oy), Math.abs(bottom - oy));
-        double rounding = 1e-14 * (farX * box.h() + farY * box.w());
+        double rounding = Tolerance.ORIENTATION_ROUNDING * (farX * box.h() + farY * box.w());
         // The crossings kept as fractions num / den with den > 0, compared by cross
         // multiplication, so that only the answer is divided; and the origin's least depth
         // inside an edge's line (times its length), to tell whether it starts inside.
@@ -631,7 +631,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
             int j = i + 1 == n ? 0 : i + 1;
             double ex = (double) xy[2 * j] - xy[2 * i], ey = (double) xy[2 * j + 1] - xy[2 * i + 1];
             double ahead = turn * (dx * ey - dy * ex);
-            if (ahead > 1e-9 * (Math.abs(dx * ey) + Math.abs(dy * ex))) {
+            if (ahead > Tolerance.NEAR_TIE * (Math.abs(dx * ey) + Math.abs(dy * ex))) {
                 continue; // clearly facing away (the test below would say so too): skip its crossing
             }
             double at = segmentParam(ox, oy, dx, dy, Slabs.INF, xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1]);
