@@ -172,21 +172,21 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * @param dx          the ray's direction, x part
      * @param dy          the ray's direction, y part
      * @param maxDistance how far the ray reaches
-     * @param rx          the rectangle's left edge
-     * @param ry          the rectangle's top edge
-     * @param rw          the rectangle's width
-     * @param rh          the rectangle's height
+     * @param rectX          the rectangle's left edge
+     * @param rectY          the rectangle's top edge
+     * @param rectW          the rectangle's width
+     * @param rectH          the rectangle's height
      * @return the distance in pixels, 0 if the origin is inside, or
      *         {@link Float#POSITIVE_INFINITY} if the ray does not go into the rectangle
      *         (also for NaN or infinite input, a direction of (0, 0), a negative
      *         maxDistance or a negative size)
      */
     public static float distanceToRect(float ox, float oy, float dx, float dy, float maxDistance,
-                                       float rx, float ry, float rw, float rh) {
-        if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(rx, ry, rw, rh, 0)) {
+                                       float rectX, float rectY, float rectW, float rectH) {
+        if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(rectX, rectY, rectW, rectH, 0)) {
             return Float.POSITIVE_INFINITY;
         }
-        return distance(rectParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), rx, ry, rw, rh), dx, dy);
+        return distance(rectParam(ox, oy, dx, dy, limit(dx, dy, maxDistance), rectX, rectY, rectW, rectH), dx, dy);
     }
 
     /**
