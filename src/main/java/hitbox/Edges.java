@@ -32,6 +32,10 @@ package hitbox;
  * hand the speed back unchanged, and the wrap and clamp methods answer NaN (a NaN position)
  * or hand the position back unchanged (a NaN size or window). A negative size or window
  * counts as NaN does: no crossing, the position unchanged.
+ *
+ * <p>This class is longer than most (about 470 lines) for one release only: beside the
+ * crossing, bounce, wrap and clamp methods it carries the deprecated aliases of
+ * {@link Side}'s bits, each with the javadoc that says what to call instead.
  */
 public final class Edges {
     private Edges() {
