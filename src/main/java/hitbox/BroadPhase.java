@@ -18,7 +18,7 @@ import java.util.function.IntConsumer;
  * world.query(mouseX - 20, mouseY - 20, 40, 40, id -> picked[id] = true);
  * }</pre>
  *
- * <h2>One answer, six structures</h2>
+ * <h2>One answer, five structures</h2>
  * Two boxes overlap exactly when {@link Collide#rectRect} says so on the stored numbers: the
  * <a href="package-summary.html#touching">touching rule</a> (boxes side by side are not a
  * pair), boxes of width or height 0 included, any finite coordinates, near the origin or far

@@ -16,7 +16,15 @@ import hitbox.internal.*;
  * Infinite values are compared as the formulas compare them. The polygon methods throw only
  * for a null array ({@link IllegalArgumentException} naming it). Circles are centre and
  * radius; rectangles are top-left corner, width and height (Processing's {@code CORNER}
- * mode).
+ * mode), named {@code rectX, rectY, rectW, rectH} where another shape comes first (an
+ * ellipse's {@code rx} is its x radius, never a rectangle's x).
+ *
+ * <p>The {@code line...} methods ({@link #lineLine}, {@link #lineCircle}, {@link #lineRect},
+ * {@link #lineSide}, and the {@code ...Line} ones such as {@link #polygonLine}) take
+ * <em>segments</em>: two end points, closed, as a {@link Segment} is. "Line" is the
+ * tutorial's word and the method names keep it; everywhere else, {@link Sweep} and
+ * {@link Ray} included, Hitbox says segment. {@link #lineSide} alone reads the whole line
+ * through the two points.
  *
  * <p>This class is longer than most (about 1,070 lines): it is the whole table of tests, one
  * public method per pair with its full javadoc (the ellipses and capsules included); the
@@ -82,23 +90,24 @@ public final class Collide {
     /**
      * Is the point inside the rectangle? A point on an edge is not inside.
      *
-     * <p>The tutorial's {@code px > rx && px < rx + rw && py > ry && py < ry + rh}. A rectangle
+     * <p>The tutorial's {@code px > rx && px < rx + rw && py > ry && py < ry + rh} (its {@code rx} is
+     * this method's {@code rectX}, and so on). A rectangle
      * of width or height 0 contains no point.
      *
      * <p>A NaN in any argument answers false, and so does a negative size; infinite values
      * are compared as the formula compares them (the
      * <a href="package-summary.html#bad-input">NaN rule</a>).
      *
-     * @param rx the rectangle's left edge
-     * @param ry the rectangle's top edge
-     * @param rw the rectangle's width
-     * @param rh the rectangle's height
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
      * @param px the point's x
      * @param py the point's y
      * @return true if the point is strictly inside the rectangle
      */
-    public static boolean rectPoint(float rx, float ry, float rw, float rh, float px, float py) {
-        return px > rx && px < (double) rx + rw && py > ry && py < (double) ry + rh;
+    public static boolean rectPoint(float rectX, float rectY, float rectW, float rectH, float px, float py) {
+        return px > rectX && px < (double) rectX + rectW && py > rectY && py < (double) rectY + rectH;
     }
 
     /**
@@ -147,27 +156,49 @@ public final class Collide {
      * @param cx the circle's centre x
      * @param cy the circle's centre y
      * @param r  the circle's radius
-     * @param rx the rectangle's left edge
-     * @param ry the rectangle's top edge
-     * @param rw the rectangle's width
-     * @param rh the rectangle's height
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
      * @return true if the circle's inside and the rectangle's inside overlap
      */
-    public static boolean circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
-        if (!(r >= 0 && rw >= 0 && rh >= 0)) {
+    public static boolean circleRect(float cx, float cy, float r, float rectX, float rectY, float rectW, float rectH) {
+        if (!(r >= 0 && rectW >= 0 && rectH >= 0)) {
             return false;
         }
-        double dx = cx - Lines.clamp(cx, rx, (double) rx + rw);
-        double dy = cy - Lines.clamp(cy, ry, (double) ry + rh);
+        double dx = cx - Lines.clamp(cx, rectX, (double) rectX + rectW);
+        double dy = cy - Lines.clamp(cy, rectY, (double) rectY + rectH);
         double d2 = dx * dx + dy * dy;
         if (d2 == 0) {
             // The centre is in the closed rectangle (NaN cannot get here: clamp passes it on,
             // and NaN is not 0). A real circle's inside covers the centre, so the two meet,
             // even for a zero-size rectangle; a circle of radius 0 is a point, which must be
             // strictly inside. A NaN radius fails both tests.
-            return r > 0 || (r == 0 && rectPoint(rx, ry, rw, rh, cx, cy));
+            return r > 0 || (r == 0 && rectPoint(rectX, rectY, rectW, rectH, cx, cy));
         }
         return d2 < (double) r * r;
+    }
+
+    /**
+     * Does the rectangle overlap the circle? {@link #circleRect} with the shapes the other way
+     * round, the same answer, for a sketch whose player is the rectangle (as
+     * {@link Contact#rectCircle} is to {@link Contact#circleRect}).
+     *
+     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
+     * are compared as the formula compares them (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
+     * @param x  the rectangle's left edge
+     * @param y  the rectangle's top edge
+     * @param w  the rectangle's width
+     * @param h  the rectangle's height
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param r  the circle's radius
+     * @return true if the rectangle's inside and the circle's inside overlap
+     */
+    public static boolean rectCircle(float x, float y, float w, float h, float cx, float cy, float r) {
+        return circleRect(cx, cy, r, x, y, w, h);
     }
 
     /**
@@ -362,33 +393,33 @@ public final class Collide {
      * @param y1 the segment's first end y
      * @param x2 the segment's second end x
      * @param y2 the segment's second end y
-     * @param rx the rectangle's left edge
-     * @param ry the rectangle's top edge
-     * @param rw the rectangle's width
-     * @param rh the rectangle's height
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
      * @return true if some point of the segment is strictly inside the rectangle
      */
     public static boolean lineRect(float x1, float y1, float x2, float y2,
-                                   float rx, float ry, float rw, float rh) {
-        if (Check.nan(x1, y1, x2, y2, rx) || Check.nan(ry, rw, rh, 0, 0)) {
+                                   float rectX, float rectY, float rectW, float rectH) {
+        if (Check.nan(x1, y1, x2, y2, rectX) || Check.nan(rectY, rectW, rectH, 0, 0)) {
             return false;
         }
-        if (!(rw > 0 && rh > 0)) {
+        if (!(rectW > 0 && rectH > 0)) {
             return false;
         }
-        double right = (double) rx + rw;
-        double bottom = (double) ry + rh;
-        if (!(Math.max(x1, x2) > rx && Math.min(x1, x2) < right
-                && Math.max(y1, y2) > ry && Math.min(y1, y2) < bottom)) {
+        double right = (double) rectX + rectW;
+        double bottom = (double) rectY + rectH;
+        if (!(Math.max(x1, x2) > rectX && Math.min(x1, x2) < right
+                && Math.max(y1, y2) > rectY && Math.min(y1, y2) < bottom)) {
             return false;
         }
         if (x1 == x2 && y1 == y2) {
             return true; // a point, and the test above put it strictly inside
         }
-        double o1 = Lines.orient(x1, y1, x2, y2, rx, ry);
-        double o2 = Lines.orient(x1, y1, x2, y2, right, ry);
+        double o1 = Lines.orient(x1, y1, x2, y2, rectX, rectY);
+        double o2 = Lines.orient(x1, y1, x2, y2, right, rectY);
         double o3 = Lines.orient(x1, y1, x2, y2, right, bottom);
-        double o4 = Lines.orient(x1, y1, x2, y2, rx, bottom);
+        double o4 = Lines.orient(x1, y1, x2, y2, rectX, bottom);
         return (o1 > 0 || o2 > 0 || o3 > 0 || o4 > 0) && (o1 < 0 || o2 < 0 || o3 < 0 || o4 < 0);
     }
 
@@ -436,22 +467,22 @@ public final class Collide {
      * NaN size gives false.
      *
      * @param xy the polygon's vertices, {@code x0, y0, x1, y1, ...}, as in {@link #polygonPoint}
-     * @param rx the rectangle's left edge
-     * @param ry the rectangle's top edge
-     * @param rw the rectangle's width
-     * @param rh the rectangle's height
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
      * @return true if the insides of the rectangle and the polygon overlap
      * @throws IllegalArgumentException if {@code xy} is null
      */
-    public static boolean polygonRect(float[] xy, float rx, float ry, float rw, float rh) {
-        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(rx, ry, rw, rh, 0)) {
+    public static boolean polygonRect(float[] xy, float rectX, float rectY, float rectW, float rectH) {
+        if (Check.nan(Check.notNull("xy", xy)) || Check.nan(rectX, rectY, rectW, rectH, 0)) {
             return false;
         }
-        if (!(rw >= 0 && rh >= 0)) {
+        if (!(rectW >= 0 && rectH >= 0)) {
             return false;
         }
-        if (rw == 0 || rh == 0) {
-            return polygonLine(xy, rx, ry, rx + rw, ry + rh);
+        if (rectW == 0 || rectH == 0) {
+            return polygonLine(xy, rectX, rectY, rectX + rectW, rectY + rectH);
         }
         int w = Polygons.winding(xy);
         if (w == 0) {
@@ -459,11 +490,11 @@ public final class Collide {
         }
         int n = xy.length / 2;
         for (int i = 0, h = n - 1; i < n; h = i++) {
-            if (lineRect(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], rx, ry, rw, rh)) {
+            if (lineRect(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], rectX, rectY, rectW, rectH)) {
                 return true;
             }
         }
-        return Polygons.stepsInside(xy, w, rx, ry, 1, 1);
+        return Polygons.stepsInside(xy, w, rectX, rectY, 1, 1);
     }
 
     /**
@@ -618,7 +649,7 @@ public final class Collide {
     /**
      * Is the point inside the ellipse? Touching the outline is not inside.
      *
-     * <p>The ellipse's equation, {@code (dx / rx)^2 + (dy / ry)^2 < 1}, multiplied out so nothing is
+     * <p>The ellipse's equation, {@code (dx / rectX)^2 + (dy / rectY)^2 < 1}, multiplied out so nothing is
      * divided, and decided exactly for every float. An ellipse with a radius of 0 contains
      * no point.
      *
@@ -692,21 +723,21 @@ public final class Collide {
      * @param y       the ellipse's centre y
      * @param radiusX its horizontal radius
      * @param radiusY its vertical radius
-     * @param rx      the rectangle's left edge
-     * @param ry      the rectangle's top edge
-     * @param rw      the rectangle's width
-     * @param rh      the rectangle's height
+     * @param rectX      the rectangle's left edge
+     * @param rectY      the rectangle's top edge
+     * @param rectW      the rectangle's width
+     * @param rectH      the rectangle's height
      * @return true if the insides overlap
      */
-    public static boolean ellipseRect(float x, float y, float radiusX, float radiusY, float rx, float ry, float rw, float rh) {
-        if (Check.nan(x, y, radiusX, radiusY, rx) || Check.nan(ry, rw, rh, 0, 0)
-                || !(radiusX >= 0 && radiusY >= 0 && rw >= 0 && rh >= 0)) {
+    public static boolean ellipseRect(float x, float y, float radiusX, float radiusY, float rectX, float rectY, float rectW, float rectH) {
+        if (Check.nan(x, y, radiusX, radiusY, rectX) || Check.nan(rectY, rectW, rectH, 0, 0)
+                || !(radiusX >= 0 && radiusY >= 0 && rectW >= 0 && rectH >= 0)) {
             return false;
         }
         if (radiusX == 0 || radiusY == 0) {
-            return rectRect(x - radiusX, y - radiusY, 2 * radiusX, 2 * radiusY, rx, ry, rw, rh);
+            return rectRect(x - radiusX, y - radiusY, 2 * radiusX, 2 * radiusY, rectX, rectY, rectW, rectH);
         }
-        return Ellipses.rect(x, y, radiusX, radiusY, rx, ry, rw, rh);
+        return Ellipses.rect(x, y, radiusX, radiusY, rectX, rectY, rectW, rectH);
     }
 
     /**
@@ -921,21 +952,21 @@ public final class Collide {
      * @param x2 the capsule's segment, second end x
      * @param y2 the capsule's segment, second end y
      * @param r  the capsule's radius
-     * @param rx the rectangle's left edge
-     * @param ry the rectangle's top edge
-     * @param rw the rectangle's width
-     * @param rh the rectangle's height
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
      * @return true if the insides overlap
      */
     public static boolean capsuleRect(float x1, float y1, float x2, float y2, float r,
-                                      float rx, float ry, float rw, float rh) {
-        if (Check.nan(x1, y1, x2, y2, r) || Check.nan(rx, ry, rw, rh, 0) || !(r >= 0 && rw >= 0 && rh >= 0)) {
+                                      float rectX, float rectY, float rectW, float rectH) {
+        if (Check.nan(x1, y1, x2, y2, r) || Check.nan(rectX, rectY, rectW, rectH, 0) || !(r >= 0 && rectW >= 0 && rectH >= 0)) {
             return false;
         }
         if (r == 0) {
-            return lineRect(x1, y1, x2, y2, rx, ry, rw, rh);
+            return lineRect(x1, y1, x2, y2, rectX, rectY, rectW, rectH);
         }
-        return Capsules.rect(x1, y1, x2, y2, r, rx, ry, rw, rh);
+        return Capsules.rect(x1, y1, x2, y2, r, rectX, rectY, rectW, rectH);
     }
 
     /**

@@ -152,40 +152,40 @@ public record Contact(float nx, float ny, float depth) {
      * @param cx the circle's centre x
      * @param cy the circle's centre y
      * @param r  the circle's radius
-     * @param rx the rectangle's left edge
-     * @param ry the rectangle's top edge
-     * @param rw the rectangle's width
-     * @param rh the rectangle's height
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
      * @return the contact, normal from the circle to the rectangle, or null when apart, and
      *         for NaN or infinite input or a negative size (never throws)
      */
-    public static Contact circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
-        if (Check.notFinite(cx, cy, r, rx, ry) || Check.notFinite(rw, rh, 0, 0, 0) || r < 0 || rw < 0 || rh < 0
-                || !Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
+    public static Contact circleRect(float cx, float cy, float r, float rectX, float rectY, float rectW, float rectH) {
+        if (Check.notFinite(cx, cy, r, rectX, rectY) || Check.notFinite(rectW, rectH, 0, 0, 0) || r < 0 || rectW < 0 || rectH < 0
+                || !Collide.circleRect(cx, cy, r, rectX, rectY, rectW, rectH)) {
             return null;
         }
-        return Contacts.circleRect(cx, cy, r, rx, ry, rw, rh, false);
+        return Contacts.circleRect(cx, cy, r, rectX, rectY, rectW, rectH, false);
     }
 
     /**
      * The contact between a rectangle (first) and a circle (second): {@link #circleRect} seen
      * from the rectangle, with the normal pointing from the rectangle to the circle.
      *
-     * @param rx the rectangle's left edge
-     * @param ry the rectangle's top edge
-     * @param rw the rectangle's width
-     * @param rh the rectangle's height
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
      * @param cx the circle's centre x
      * @param cy the circle's centre y
      * @param r  the circle's radius
      * @return the contact, or null when apart, and for NaN or infinite input or a negative
      *         size (never throws)
      */
-    public static Contact rectCircle(float rx, float ry, float rw, float rh, float cx, float cy, float r) {
-        if (Check.notFinite(cx, cy, r, rx, ry) || Check.notFinite(rw, rh, 0, 0, 0) || r < 0 || rw < 0 || rh < 0) {
+    public static Contact rectCircle(float rectX, float rectY, float rectW, float rectH, float cx, float cy, float r) {
+        if (Check.notFinite(cx, cy, r, rectX, rectY) || Check.notFinite(rectW, rectH, 0, 0, 0) || r < 0 || rectW < 0 || rectH < 0) {
             return null;
         }
-        return Contacts.circleRect(cx, cy, r, rx, ry, rw, rh, true);
+        return Contacts.circleRect(cx, cy, r, rectX, rectY, rectW, rectH, true);
     }
 
     /**
@@ -256,19 +256,19 @@ public record Contact(float nx, float ny, float depth) {
      * @param y       the ellipse's centre y
      * @param radiusX the ellipse's horizontal radius
      * @param radiusY the ellipse's vertical radius
-     * @param rx      the rectangle's left edge
-     * @param ry      the rectangle's top edge
-     * @param rw      the rectangle's width
-     * @param rh      the rectangle's height
+     * @param rectX      the rectangle's left edge
+     * @param rectY      the rectangle's top edge
+     * @param rectW      the rectangle's width
+     * @param rectH      the rectangle's height
      * @return the contact, normal from the ellipse to the rectangle, or null when apart or
      *         touching, and for NaN or infinite input or a negative size (never throws)
      */
-    public static Contact ellipseRect(float x, float y, float radiusX, float radiusY, float rx, float ry, float rw, float rh) {
-        if (Check.notFinite(x, y, radiusX, radiusY, rx) || Check.notFinite(ry, rw, rh, 0, 0)
-                || radiusX < 0 || radiusY < 0 || rw < 0 || rh < 0) {
+    public static Contact ellipseRect(float x, float y, float radiusX, float radiusY, float rectX, float rectY, float rectW, float rectH) {
+        if (Check.notFinite(x, y, radiusX, radiusY, rectX) || Check.notFinite(rectY, rectW, rectH, 0, 0)
+                || radiusX < 0 || radiusY < 0 || rectW < 0 || rectH < 0) {
             return null;
         }
-        return between(new Ellipse(x, y, radiusX, radiusY), new Rect(rx, ry, rw, rh));
+        return between(new Ellipse(x, y, radiusX, radiusY), new Rect(rectX, rectY, rectW, rectH));
     }
 
     /**
@@ -326,18 +326,18 @@ public record Contact(float nx, float ny, float depth) {
      * @param x2 the capsule's segment, second end x
      * @param y2 the capsule's segment, second end y
      * @param r  the capsule's radius
-     * @param rx the rectangle's left edge
-     * @param ry the rectangle's top edge
-     * @param rw the rectangle's width
-     * @param rh the rectangle's height
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
      * @return the contact, normal from the capsule to the rectangle, or null when apart or
      *         touching, and for NaN or infinite input or a negative size (never throws)
      */
-    public static Contact capsuleRect(float x1, float y1, float x2, float y2, float r, float rx, float ry, float rw, float rh) {
-        if (Check.notFinite(x1, y1, x2, y2, r) || Check.notFinite(rx, ry, rw, rh, 0) || r < 0 || rw < 0 || rh < 0) {
+    public static Contact capsuleRect(float x1, float y1, float x2, float y2, float r, float rectX, float rectY, float rectW, float rectH) {
+        if (Check.notFinite(x1, y1, x2, y2, r) || Check.notFinite(rectX, rectY, rectW, rectH, 0) || r < 0 || rectW < 0 || rectH < 0) {
             return null;
         }
-        return between(new Capsule(x1, y1, x2, y2, r), new Rect(rx, ry, rw, rh));
+        return between(new Capsule(x1, y1, x2, y2, r), new Rect(rectX, rectY, rectW, rectH));
     }
 
     /**

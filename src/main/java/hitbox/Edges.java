@@ -20,10 +20,11 @@ import hitbox.internal.*;
  * <p>Crossing follows the <a href="package-summary.html#touching">touching rule</a>: a shape
  * that only touches an edge (a ball of radius 10 at {@code x = 10}) has not crossed it; one
  * that reaches past it, even by a little, has. The answer is a set of sides in
- * {@link Side}'s <a href="Side.html#bits">bit scheme</a>: {@link #LEFT}, {@link #RIGHT},
- * {@link #TOP} and {@link #BOTTOM} are {@code Side.LEFT.bit()} and so on, or {@link #NONE};
- * test one with {@link #has(int, int)}, {@link Side#has(int, Side)} or
- * {@code (crossed & Edges.LEFT) != 0}, and get an {@code EnumSet} with {@link Side#setOf}.
+ * {@link Side}'s <a href="Side.html#bits">bit scheme</a> ({@code Side.LEFT.bit()} and so on),
+ * or {@link #NONE}: test one with {@code Side.has(crossed, Side.LEFT)}, print them with
+ * {@link Side#describe(int)}, and get an {@code EnumSet} with {@link Side#setOf}. (This
+ * class's own {@code LEFT}..{@code BOTTOM}, {@code has} and {@code describe} are deprecated
+ * aliases of {@code Side}'s, kept one release.)
  * A shape bigger than the window crosses both opposite edges at once.
  *
  * <p>Circles are centre and radius, rectangles top-left corner and size, as everywhere in
@@ -33,6 +34,10 @@ import hitbox.internal.*;
  * hand the speed back unchanged, and the wrap and clamp methods answer NaN (a NaN position)
  * or hand the position back unchanged (a NaN size or window). A negative size or window
  * counts as NaN does: no crossing, the position unchanged.
+ *
+ * <p>This class is longer than most (about 470 lines) for one release only: beside the
+ * crossing, bounce, wrap and clamp methods it carries the deprecated aliases of
+ * {@link Side}'s bits, each with the javadoc that says what to call instead.
  */
 public final class Edges {
     private Edges() {
@@ -40,13 +45,37 @@ public final class Edges {
 
     /** No edge crossed: the shape is inside the window (touching an edge is inside). */
     public static final int NONE = 0;
-    /** The left edge, {@code x = 0}: {@code Side.LEFT.bit()}, 1. */
+    /**
+     * The left edge, {@code x = 0}: {@code Side.LEFT.bit()}, 1.
+     *
+     * @deprecated an alias of {@link Side#LEFT}'s bit, kept one release: test a crossing with
+     *             {@code Side.has(crossed, Side.LEFT)}, build one with {@code Side.LEFT.bit()}.
+     */
+    @Deprecated
     public static final int LEFT = 1;
-    /** The right edge, {@code x = width}: {@code Side.RIGHT.bit()}, 2. */
+    /**
+     * The right edge, {@code x = width}: {@code Side.RIGHT.bit()}, 2.
+     *
+     * @deprecated an alias of {@link Side#RIGHT}'s bit, kept one release: use
+     *             {@code Side.has(crossed, Side.RIGHT)} or {@code Side.RIGHT.bit()}.
+     */
+    @Deprecated
     public static final int RIGHT = 2;
-    /** The top edge, {@code y = 0}: {@code Side.TOP.bit()}, 4. */
+    /**
+     * The top edge, {@code y = 0}: {@code Side.TOP.bit()}, 4.
+     *
+     * @deprecated an alias of {@link Side#TOP}'s bit, kept one release: use
+     *             {@code Side.has(crossed, Side.TOP)} or {@code Side.TOP.bit()}.
+     */
+    @Deprecated
     public static final int TOP = 4;
-    /** The bottom edge, {@code y = height}: {@code Side.BOTTOM.bit()}, 8. */
+    /**
+     * The bottom edge, {@code y = height}: {@code Side.BOTTOM.bit()}, 8.
+     *
+     * @deprecated an alias of {@link Side#BOTTOM}'s bit, kept one release: use
+     *             {@code Side.has(crossed, Side.BOTTOM)} or {@code Side.BOTTOM.bit()}.
+     */
+    @Deprecated
     public static final int BOTTOM = 8;
 
     /**
@@ -169,7 +198,11 @@ public final class Edges {
      * @param edge    the edge to ask about: {@link #LEFT}, {@link #RIGHT}, {@link #TOP} or
      *                {@link #BOTTOM}
      * @return true if {@code crossed} includes {@code edge}
+     * @deprecated kept one release; the same answer as {@link Side#hasAny(int, int)} for
+     *             the edges' bits (for one side, {@link Side#has(int, Side)} reads better:
+     *             {@code Side.has(crossed, Side.LEFT)}).
      */
+    @Deprecated
     public static boolean has(int crossed, int edge) {
         return (crossed & edge) != 0;
     }
@@ -181,7 +214,9 @@ public final class Edges {
      *
      * @param crossed the edges from one of the crossing tests
      * @return the names of the edges in {@code crossed}, joined by {@code |}, never null
+     * @deprecated kept one release; returns exactly what {@link Side#describe(int)} returns.
      */
+    @Deprecated
     public static String describe(int crossed) {
         return Side.describe(crossed);
     }

@@ -737,8 +737,8 @@ public final class Grid {
      * @param toRow   the goal's row, from 0 to {@code rows() - 1}
      * @return the route, or an empty array if there is none (the goal is walled off, or the
      *         start or the goal is solid), never null
-     * @throws IllegalArgumentException if a cell is not in the grid; the message names the
-     *                                  parameter
+     * @throws IndexOutOfBoundsException if a cell is not in the grid, as for {@link #get};
+     *                                   the message names the parameter
      */
     public int[] path(int fromCol, int fromRow, int toCol, int toRow) {
         return GridPaths.path(this, fromCol, fromRow, toCol, toRow);
@@ -758,10 +758,10 @@ public final class Grid {
      * @param costs   what each step costs, not null
      * @return a cheapest route, or an empty array if there is none (or the start or the goal
      *         is solid or impassable), never null
-     * @throws IllegalArgumentException if a cell is not in the grid (the message names the
-     *                                  parameter), {@code costs} is null, or the search meets
-     *                                  a cell whose terrain has no cost (the message names
-     *                                  the cell)
+     * @throws IndexOutOfBoundsException if a cell is not in the grid, as for {@link #get};
+     *                                   the message names the parameter
+     * @throws IllegalArgumentException  if {@code costs} is null, or the search meets a cell
+     *                                   whose terrain has no cost (the message names the cell)
      */
     public int[] path(int fromCol, int fromRow, int toCol, int toRow, PathCosts costs) {
         return GridPaths.path(this, fromCol, fromRow, toCol, toRow, costs);

@@ -16,7 +16,8 @@ import hitbox.internal.*;
  * {@link #side()} names the side of the <em>obstacle</em> that was hit, by the one rule of
  * {@link Side#ofNormal}: for a round or slanted surface it is the side the normal mostly
  * points into (a normal exactly at 45 degrees counts as {@link Side#TOP} or
- * {@link Side#BOTTOM}).
+ * {@link Side#BOTTOM}). Every result that names one side gives it this way, as
+ * {@code side()} (see <a href="Side.html#results">the side of a result</a>).
  *
  * <p>When the two shapes already overlap at the start of the motion there is no moment of
  * impact to report: {@code t} is 0, the normal is {@code (0, 0)} and the side is

@@ -8,7 +8,8 @@ import java.util.function.IntConsumer;
 
 /**
  * Many objects: the tutorial's loop over a list of obstacles, written once. Ask whether a shape
- * hits {@link #any any} of them, the index of the {@link #first first} one it hits, how many
+ * hits {@link #any any} of them, the index of the {@link #first first} one it hits (or the
+ * shape itself, {@link #firstShape firstShape}), how many
  * it hits ({@link #count count}), {@link #all all} their indices, or visit each hit with
  * {@link #each each}:
  * <pre>{@code
@@ -37,6 +38,11 @@ import java.util.function.IntConsumer;
  * Every question has one implementation, on a list; the array overloads hand a view of the
  * array to it.
  *
+ * <p>Which form to call: a shape against a list or an array of shapes, a raw-float
+ * rectangle ({@code x, y, w, h}, the tutorial's way) against a list of {@code Rect}s, or a
+ * raw-float rectangle against a {@link BroadPhase} for thousands. The raw-float rectangle
+ * against an array of {@code Rect}s is deprecated (kept one release).
+ *
  * <p>This class is longer than most (about 520 lines) because it is the public face of five
  * questions for three kinds of obstacle list (shapes, raw rectangles, a broad phase), in list
  * and array forms, each overload with its full javadoc; each answer is a few lines, every
@@ -62,7 +68,10 @@ public final class Hits {
     }
 
     /**
-     * The index of the first of the others that the shape overlaps.
+     * The index of the first of the others that the shape overlaps. An index into
+     * {@code others}, as {@link List#indexOf} gives: not a {@link Hit} (a {@code Hit} is a
+     * sweep's moment of impact) and not the shape; for the shape itself, call
+     * {@link #firstShape(Shape, List)}.
      *
      * @param shape  the shape, not null
      * @param others the shapes to test against, not null and with no null element
@@ -71,6 +80,36 @@ public final class Hits {
      */
     public static int first(Shape shape, List<? extends Shape> others) {
         return next(Check.notNull("shape", shape), Check.notNull("others", others), 0);
+    }
+
+    /**
+     * The first of the others that the shape overlaps, itself rather than its index: the
+     * element {@link #first(Shape, List)} points at, so
+     * {@code Rect wall = Hits.firstShape(player, walls);} needs no {@code get(i)}.
+     *
+     * @param <T>    the kind of the others ({@code Rect}, {@code Shape}, ...)
+     * @param shape  the shape, not null
+     * @param others the shapes to test against, not null and with no null element
+     * @return the first overlapping shape, or null if none overlaps
+     * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
+     */
+    public static <T extends Shape> T firstShape(Shape shape, List<T> others) {
+        int i = first(shape, others);
+        return i < 0 ? null : others.get(i);
+    }
+
+    /**
+     * The first of the others that the shape overlaps, itself rather than its index:
+     * {@link #firstShape(Shape, List)} for an array.
+     *
+     * @param <T>    the kind of the others ({@code Rect}, {@code Shape}, ...)
+     * @param shape  the shape, not null
+     * @param others the shapes to test against, not null and with no null element
+     * @return the first overlapping shape, or null if none overlaps
+     * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
+     */
+    public static <T extends Shape> T firstShape(Shape shape, T[] others) {
+        return firstShape(shape, view("others", others));
     }
 
     /**
@@ -317,7 +356,12 @@ public final class Hits {
      * @param rects the rectangles to test against, not null and with no null element
      * @return true if at least one of them overlaps the rectangle (false for NaN)
      * @throws IllegalArgumentException if {@code rects} or an element is null
+     * @deprecated kept one release: a raw-float rectangle against an array of {@code Rect}s is
+     *             a form the tutorial never writes; call {@link #any(float, float, float, float, List)} with
+     *             {@code Arrays.asList(rects)}, or {@link #any(Shape, Shape[])} with the
+     *             rectangle as a {@code Rect}.
      */
+    @Deprecated
     public static boolean any(float x, float y, float w, float h, Rect[] rects) {
         return any(x, y, w, h, view("rects", rects));
     }
@@ -333,7 +377,12 @@ public final class Hits {
      * @param rects the rectangles to test against, not null and with no null element
      * @return the smallest index of an overlapping rectangle, or -1 if none overlaps (or for NaN)
      * @throws IllegalArgumentException if {@code rects} or an element is null
+     * @deprecated kept one release: a raw-float rectangle against an array of {@code Rect}s is
+     *             a form the tutorial never writes; call {@link #first(float, float, float, float, List)} with
+     *             {@code Arrays.asList(rects)}, or {@link #first(Shape, Shape[])} with the
+     *             rectangle as a {@code Rect}.
      */
+    @Deprecated
     public static int first(float x, float y, float w, float h, Rect[] rects) {
         return first(x, y, w, h, view("rects", rects));
     }
@@ -352,7 +401,12 @@ public final class Hits {
      * @param rects the rectangles to test against, not null and with no null element
      * @return the number of overlapping rectangles, 0 or more
      * @throws IllegalArgumentException if {@code rects} or an element is null
+     * @deprecated kept one release: a raw-float rectangle against an array of {@code Rect}s is
+     *             a form the tutorial never writes; call {@link #count(float, float, float, float, List)} with
+     *             {@code Arrays.asList(rects)}, or {@link #count(Shape, Shape[])} with the
+     *             rectangle as a {@code Rect}.
      */
+    @Deprecated
     public static int count(float x, float y, float w, float h, Rect[] rects) {
         return count(x, y, w, h, view("rects", rects));
     }
@@ -371,7 +425,12 @@ public final class Hits {
      * @param rects the rectangles to test against, not null and with no null element
      * @return a new array of the overlapping rectangles' indices, ascending; empty if none, never null
      * @throws IllegalArgumentException if {@code rects} or an element is null
+     * @deprecated kept one release: a raw-float rectangle against an array of {@code Rect}s is
+     *             a form the tutorial never writes; call {@link #all(float, float, float, float, List)} with
+     *             {@code Arrays.asList(rects)}, or {@link #all(Shape, Shape[])} with the
+     *             rectangle as a {@code Rect}.
      */
+    @Deprecated
     public static int[] all(float x, float y, float w, float h, Rect[] rects) {
         return all(x, y, w, h, view("rects", rects));
     }
@@ -390,7 +449,12 @@ public final class Hits {
      * @param rects  the rectangles to test against, not null and with no null element
      * @param action what to do with each overlapping rectangle's index, not null
      * @throws IllegalArgumentException if {@code rects}, an element or {@code action} is null
+     * @deprecated kept one release: a raw-float rectangle against an array of {@code Rect}s is
+     *             a form the tutorial never writes; call {@link #each(float, float, float, float, List, IntConsumer)} with
+     *             {@code Arrays.asList(rects)}, or {@link #each(Shape, Shape[], IntConsumer)} with the
+     *             rectangle as a {@code Rect}.
      */
+    @Deprecated
     public static void each(float x, float y, float w, float h, Rect[] rects, IntConsumer action) {
         each(x, y, w, h, view("rects", rects), action);
     }

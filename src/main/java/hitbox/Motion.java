@@ -9,9 +9,9 @@ import java.util.List;
  * which speeds to reverse before it moves.
  *
  * <p>Before moving a shape by its speed {@code (vx, vy)}, ask whether it would run into an
- * obstacle: on the {@link #X} axis if the shape moved to {@code (x + vx, y)} would overlap it,
- * on the {@link #Y} axis if the shape moved to {@code (x, y + vy)} would. The answer is a set
- * of bit flags, so the sketch reverses exactly those speeds:
+ * obstacle: across ({@link Side#LEFT_RIGHT}) if the shape moved to {@code (x + vx, y)} would
+ * overlap it, down ({@link Side#TOP_BOTTOM}) if the shape moved to {@code (x, y + vy)} would.
+ * The answer is a set of {@link Side} bits, so the sketch reverses exactly those speeds:
  * <pre>{@code
  * int blocked = Motion.rectBlocked(x, y, w, h, vx, vy, walls);
  * vx = Motion.reverseX(blocked, vx);
@@ -31,7 +31,7 @@ import java.util.List;
  * allowed, by the <a href="package-summary.html#touching">touching rule</a>). It is a check of
  * the next position, not of the path: a mover faster than an obstacle is thick can jump over
  * it in one frame (use a swept test for bullets). It assumes the mover starts outside: one
- * that already overlaps the obstacle usually gets {@link #BOTH} every frame and jitters in
+ * that already overlaps the obstacle usually gets both axes ({@link Side#ALL_BITS}) every frame and jitters in
  * place; push it out first with {@link Snap#pushOut(Rect, Rect)}. With several obstacles the
  * answer is the OR over them, and a reversed speed can carry the mover into another obstacle
  * that lies closer than one frame's move.
@@ -44,9 +44,17 @@ import java.util.List;
  * that the obstacles are there.
  *
  * <p>The answer is an {@code int} in {@link Side}'s <a href="Side.html#bits">bit scheme</a>:
- * a blocked axis sets the bits of both its sides ({@link #X} is {@code LEFT | RIGHT}, {@link #Y}
- * is {@code TOP | BOTTOM}), since the next-position check knows the axis, not which face;
- * {@code Motion.has(blocked, Motion.X)} and {@code Side.has(blocked, Side.LEFT)} both read it.
+ * a blocked axis sets the bits of both its sides ({@link Side#LEFT_RIGHT} across,
+ * {@link Side#TOP_BOTTOM} down), since the next-position check knows the axis, not which face;
+ * {@code Side.hasAny(blocked, Side.LEFT_RIGHT)} (or {@code Side.has(blocked, Side.LEFT)}) reads
+ * it, {@link #reverseX} and {@link #reverseY} act on it, and {@link Side#describe(int)} prints
+ * it. This class's own {@code X}, {@code Y}, {@code BOTH}, {@code has} and {@code describe} are
+ * deprecated aliases of {@code Side}'s, kept one release; {@link #NONE} stays.
+ *
+ * <p>Which form to call: the mover as raw floats (the tutorial's {@code x, y, w, h} and
+ * {@code vx, vy}) or as a shape, against one obstacle's raw floats, a list or an array of
+ * {@code Rect}s, or a {@link BroadPhase}. The forms taking one {@code Rect} obstacle are
+ * deprecated (kept one release).
  *
  * <p>This class is longer than most (about 590 lines) because it is the public face of
  * "which axes are blocked" for a box and a ball, against one obstacle, an array, a list and a
@@ -63,22 +71,36 @@ public final class Motion {
     /**
      * The horizontal move is blocked: reverse (or stop) {@code vx}. In {@link Side}'s
      * <a href="Side.html#bits">bit scheme</a> it is the two walls, {@code LEFT | RIGHT}: 3.
+     *
+     * @deprecated an alias of {@link Side#LEFT_RIGHT}, kept one release: test it with
+     *             {@code Side.hasAny(blocked, Side.LEFT_RIGHT)}, or let {@link #reverseX} read it.
      */
-    public static final int X = 3;
+    @Deprecated
+    public static final int X = Side.LEFT_RIGHT;
     /**
      * The vertical move is blocked: reverse (or stop) {@code vy}. In {@link Side}'s bit
      * scheme, {@code TOP | BOTTOM}: 12.
+     *
+     * @deprecated an alias of {@link Side#TOP_BOTTOM}, kept one release: test it with
+     *             {@code Side.hasAny(blocked, Side.TOP_BOTTOM)}, or let {@link #reverseY} read it.
      */
-    public static final int Y = 12;
-    /** Both axes are blocked, {@code X | Y}: reverse both speeds. 15. */
-    public static final int BOTH = X | Y;
+    @Deprecated
+    public static final int Y = Side.TOP_BOTTOM;
+    /**
+     * Both axes are blocked, {@code X | Y}: reverse both speeds. 15.
+     *
+     * @deprecated an alias of {@link Side#ALL_BITS}, kept one release.
+     */
+    @Deprecated
+    public static final int BOTH = Side.ALL_BITS;
 
     // ---- rectangle mover --------------------------------------------------------------
 
     /**
-     * Which axes of a moving rectangle's next move would run into the obstacle? {@link #X}
-     * if the rectangle at {@code (x + vx, y)} would overlap it, {@link #Y} if the rectangle at
-     * {@code (x, y + vy)} would, and {@link #BOTH} for a diagonal hit on a corner (see the
+     * Which axes of a moving rectangle's next move would run into the obstacle?
+     * {@link Side#LEFT_RIGHT} if the rectangle at {@code (x + vx, y)} would overlap it,
+     * {@link Side#TOP_BOTTOM} if the rectangle at {@code (x, y + vy)} would, and both
+     * ({@link Side#ALL_BITS}) for a diagonal hit on a corner (see the
      * class description).
      *
      * <p>A NaN in any argument answers {@link #NONE}
@@ -94,7 +116,7 @@ public final class Motion {
      * @param oy the obstacle's top edge
      * @param ow the obstacle's width
      * @param oh the obstacle's height
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      */
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy,
                                   float ox, float oy, float ow, float oh) {
@@ -125,9 +147,13 @@ public final class Motion {
      * @param vx       the mover's horizontal speed
      * @param vy       the mover's vertical speed
      * @param obstacle the obstacle, not null
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code obstacle} is null
+     * @deprecated kept one release: one {@code Rect} obstacle is a fourth form of the same
+     *             question; call {@link #rectBlocked(float, float, float, float, float, float, float, float, float, float)} with
+     *             the obstacle's {@code x(), y(), w(), h()}, or the {@code List} form.
      */
+    @Deprecated
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, Rect obstacle) {
         Check.notNull("obstacle", obstacle);
         return rectBlocked(x, y, w, h, vx, vy, obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
@@ -147,7 +173,7 @@ public final class Motion {
      * @param vx        the mover's horizontal speed
      * @param vy        the mover's vertical speed
      * @param obstacles the obstacles, not null and with no null element
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
      */
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, Rect[] obstacles) {
@@ -168,14 +194,15 @@ public final class Motion {
      * @param vx        the mover's horizontal speed
      * @param vy        the mover's vertical speed
      * @param obstacles the obstacles, not null and with no null element
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
      */
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, List<Rect> obstacles) {
         Check.notNull("obstacles", obstacles);
         int blocked = NONE;
         for (int i = 0, n = obstacles.size(); i < n && blocked != BOTH; i++) {
-            blocked |= rectBlocked(x, y, w, h, vx, vy, Hits.element(obstacles, i, "obstacles"));
+            Rect o = Hits.element(obstacles, i, "obstacles");
+            blocked |= rectBlocked(x, y, w, h, vx, vy, o.x(), o.y(), o.w(), o.h());
         }
         return blocked;
     }
@@ -184,8 +211,9 @@ public final class Motion {
 
     /**
      * Which axes of a moving circle's next move would run into the rectangular obstacle?
-     * {@link #X} if the circle centred at {@code (cx + vx, cy)} would overlap it, {@link #Y} if
-     * the circle centred at {@code (cx, cy + vy)} would, and {@link #BOTH} for a diagonal hit
+     * {@link Side#LEFT_RIGHT} if the circle centred at {@code (cx + vx, cy)} would overlap it,
+     * {@link Side#TOP_BOTTOM} if the circle centred at {@code (cx, cy + vy)} would, and both
+     * ({@link Side#ALL_BITS}) for a diagonal hit
      * (see the class description).
      *
      * <p>A NaN in any argument answers {@link #NONE}
@@ -200,7 +228,7 @@ public final class Motion {
      * @param oy the obstacle's top edge
      * @param ow the obstacle's width
      * @param oh the obstacle's height
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      */
     public static int circleBlocked(float cx, float cy, float r, float vx, float vy,
                                     float ox, float oy, float ow, float oh) {
@@ -230,9 +258,13 @@ public final class Motion {
      * @param vx       the mover's horizontal speed
      * @param vy       the mover's vertical speed
      * @param obstacle the obstacle, not null
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code obstacle} is null
+     * @deprecated kept one release: one {@code Rect} obstacle is a fourth form of the same
+     *             question; call {@link #circleBlocked(float, float, float, float, float, float, float, float, float)} with
+     *             the obstacle's {@code x(), y(), w(), h()}, or the {@code List} form.
      */
+    @Deprecated
     public static int circleBlocked(float cx, float cy, float r, float vx, float vy, Rect obstacle) {
         Check.notNull("obstacle", obstacle);
         return circleBlocked(cx, cy, r, vx, vy, obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
@@ -251,7 +283,7 @@ public final class Motion {
      * @param vx        the mover's horizontal speed
      * @param vy        the mover's vertical speed
      * @param obstacles the obstacles, not null and with no null element
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
      */
     public static int circleBlocked(float cx, float cy, float r, float vx, float vy, Rect[] obstacles) {
@@ -271,14 +303,15 @@ public final class Motion {
      * @param vx        the mover's horizontal speed
      * @param vy        the mover's vertical speed
      * @param obstacles the obstacles, not null and with no null element
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code obstacles} or one of its elements is null
      */
     public static int circleBlocked(float cx, float cy, float r, float vx, float vy, List<Rect> obstacles) {
         Check.notNull("obstacles", obstacles);
         int blocked = NONE;
         for (int i = 0, n = obstacles.size(); i < n && blocked != BOTH; i++) {
-            blocked |= circleBlocked(cx, cy, r, vx, vy, Hits.element(obstacles, i, "obstacles"));
+            Rect o = Hits.element(obstacles, i, "obstacles");
+            blocked |= circleBlocked(cx, cy, r, vx, vy, o.x(), o.y(), o.w(), o.h());
         }
         return blocked;
     }
@@ -296,9 +329,13 @@ public final class Motion {
      * @param vx       its horizontal speed
      * @param vy       its vertical speed
      * @param obstacle the obstacle, not null
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code mover} or {@code obstacle} is null
+     * @deprecated kept one release: one {@code Rect} obstacle is a fourth form of the same
+     *             question; call {@link #blocked(Rect, float, float, List)} with {@code List.of(obstacle)}, or
+     *             {@link #rectBlocked(float, float, float, float, float, float, float, float, float, float)}.
      */
+    @Deprecated
     public static int blocked(Rect mover, float vx, float vy, Rect obstacle) {
         Check.notNull("mover", mover);
         return rectBlocked(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy, obstacle);
@@ -315,7 +352,7 @@ public final class Motion {
      * @param vx        its horizontal speed
      * @param vy        its vertical speed
      * @param obstacles the obstacles, not null and with no null element
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
      *                                  elements is null
      */
@@ -335,7 +372,7 @@ public final class Motion {
      * @param vx        its horizontal speed
      * @param vy        its vertical speed
      * @param obstacles the obstacles, not null and with no null element
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
      *                                  elements is null
      */
@@ -355,9 +392,13 @@ public final class Motion {
      * @param vx       its horizontal speed
      * @param vy       its vertical speed
      * @param obstacle the obstacle, not null
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code mover} or {@code obstacle} is null
+     * @deprecated kept one release: one {@code Rect} obstacle is a fourth form of the same
+     *             question; call {@link #blocked(Circle, float, float, List)} with {@code List.of(obstacle)}, or
+     *             {@link #circleBlocked(float, float, float, float, float, float, float, float, float)}.
      */
+    @Deprecated
     public static int blocked(Circle mover, float vx, float vy, Rect obstacle) {
         Check.notNull("mover", mover);
         return circleBlocked(mover.x(), mover.y(), mover.r(), vx, vy, obstacle);
@@ -374,7 +415,7 @@ public final class Motion {
      * @param vx        its horizontal speed
      * @param vy        its vertical speed
      * @param obstacles the obstacles, not null and with no null element
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
      *                                  elements is null
      */
@@ -394,7 +435,7 @@ public final class Motion {
      * @param vx        its horizontal speed
      * @param vy        its vertical speed
      * @param obstacles the obstacles, not null and with no null element
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
      *                                  elements is null
      */
@@ -413,13 +454,16 @@ public final class Motion {
      * @param blocked the axes from one of the checks
      * @param axis    {@link #X} or {@link #Y}
      * @return true if {@code blocked} includes {@code axis}
+     * @deprecated kept one release; the same answer as {@link Side#hasAny(int, int)}:
+     *             {@code Side.hasAny(blocked, Side.LEFT_RIGHT)} for the move across.
      */
+    @Deprecated
     public static boolean has(int blocked, int axis) {
         return (blocked & axis) != 0;
     }
 
     /**
-     * The horizontal speed to use this frame: reversed if the {@link #X} axis is blocked,
+     * The horizontal speed to use this frame: reversed if the move across is blocked,
      * unchanged otherwise.
      *
      * <p>A NaN speed comes back NaN, unchanged
@@ -427,14 +471,14 @@ public final class Motion {
      *
      * @param blocked the axes from one of the checks
      * @param vx      the horizontal speed
-     * @return {@code -vx} if {@code blocked} includes {@link #X}, else {@code vx}
+     * @return {@code -vx} if {@code blocked} has a bit of {@link Side#LEFT_RIGHT}, else {@code vx}
      */
     public static float reverseX(int blocked, float vx) {
         return has(blocked, X) ? -vx : vx;
     }
 
     /**
-     * The vertical speed to use this frame: reversed if the {@link #Y} axis is blocked,
+     * The vertical speed to use this frame: reversed if the move down is blocked,
      * unchanged otherwise.
      *
      * <p>A NaN speed comes back NaN, unchanged
@@ -442,7 +486,7 @@ public final class Motion {
      *
      * @param blocked the axes from one of the checks
      * @param vy      the vertical speed
-     * @return {@code -vy} if {@code blocked} includes {@link #Y}, else {@code vy}
+     * @return {@code -vy} if {@code blocked} has a bit of {@link Side#TOP_BOTTOM}, else {@code vy}
      */
     public static float reverseY(int blocked, float vy) {
         return has(blocked, Y) ? -vy : vy;
@@ -450,13 +494,20 @@ public final class Motion {
 
     /**
      * The blocked axes as words, for printing: {@code "NONE"}, {@code "X"}, {@code "Y"} or
-     * {@code "BOTH"}.
+     * {@code "BOTH"}. An axis counts as blocked when either of its bits is set, so 3 and 1
+     * both print {@code "X"}.
      *
      * <p>Any int is taken: bits outside the scheme are ignored.
      *
      * @param blocked the axes from one of the checks
      * @return the name of the answer, never null
+     * @deprecated kept one release, still answering {@code "NONE"}, {@code "X"}, {@code "Y"}
+     *             or {@code "BOTH"} as before. Hitbox prints every bit set one way,
+     *             {@link Side#describe(int)}, which names the sides: {@code "LEFT|RIGHT"} for
+     *             a move blocked across, {@code "TOP|BOTTOM"} down, {@code "LEFT|RIGHT|TOP|BOTTOM"}
+     *             both.
      */
+    @Deprecated
     public static String describe(int blocked) {
         boolean x = has(blocked, X);
         boolean y = has(blocked, Y);
@@ -512,7 +563,7 @@ public final class Motion {
      * @param vx        the mover's horizontal speed
      * @param vy        the mover's vertical speed
      * @param obstacles the obstacles, each stored under its id, not null
-     * @return the blocked axes: {@link #NONE}, {@link #X}, {@link #Y} or {@link #BOTH}
+     * @return the blocked axes: {@link #NONE}, {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM} or {@link Side#ALL_BITS}
      * @throws IllegalArgumentException if {@code obstacles} is null
      */
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, BroadPhase obstacles) {
@@ -573,8 +624,8 @@ public final class Motion {
      * @param y       the box's new top edge
      * @param vx      its new speed across
      * @param vy      its new speed down
-     * @param blocked the axes an obstacle blocked before the move ({@link #X}, {@link #Y},
-     *                {@link #BOTH} or {@link #NONE}): non-zero means it hit an obstacle
+     * @param blocked the axes an obstacle blocked before the move (in {@link Side}'s bit scheme:
+     *                {@link Side#LEFT_RIGHT}, {@link Side#TOP_BOTTOM}, both, or {@link #NONE}): non-zero means it hit an obstacle
      * @param crossed the window edges the move would have crossed ({@link Edges} flags, in
      *                {@link Side}'s bit scheme)
      */

@@ -2,6 +2,8 @@ package hitbox;
 
 import hitbox.internal.*;
 
+import hitbox.internal.*;
+
 import java.util.Arrays;
 
 /**
@@ -174,21 +176,21 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * @param dx          the ray's direction, x part
      * @param dy          the ray's direction, y part
      * @param maxDistance how far the ray reaches
-     * @param rx          the rectangle's left edge
-     * @param ry          the rectangle's top edge
-     * @param rw          the rectangle's width
-     * @param rh          the rectangle's height
+     * @param rectX          the rectangle's left edge
+     * @param rectY          the rectangle's top edge
+     * @param rectW          the rectangle's width
+     * @param rectH          the rectangle's height
      * @return the distance in pixels, 0 if the origin is inside, or
      *         {@link Float#POSITIVE_INFINITY} if the ray does not go into the rectangle
      *         (also for NaN or infinite input, a direction of (0, 0), a negative
      *         maxDistance or a negative size)
      */
     public static float distanceToRect(float ox, float oy, float dx, float dy, float maxDistance,
-                                       float rx, float ry, float rw, float rh) {
-        if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(rx, ry, rw, rh, 0)) {
+                                       float rectX, float rectY, float rectW, float rectH) {
+        if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(rectX, rectY, rectW, rectH, 0)) {
             return Float.POSITIVE_INFINITY;
         }
-        return distance(rectParam(ox, oy, dx, dy, RayCast.limit(dx, dy, maxDistance), rx, ry, rw, rh), dx, dy);
+        return distance(rectParam(ox, oy, dx, dy, RayCast.limit(dx, dy, maxDistance), rectX, rectY, rectW, rectH), dx, dy);
     }
 
     /**
@@ -552,7 +554,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         double left = box.x(), top = box.y(), right = left + box.w(), bottom = top + box.h();
         double farX = Math.max(Math.abs(left - ox), Math.abs(right - ox));
         double farY = Math.max(Math.abs(top - oy), Math.abs(bottom - oy));
-        double rounding = 1e-14 * (farX * box.h() + farY * box.w());
+        double rounding = Tolerance.ORIENTATION_ROUNDING * (farX * box.h() + farY * box.w());
         // The crossings kept as fractions num / den with den > 0, compared by cross
         // multiplication, so that only the answer is divided; and the origin's least depth
         // inside an edge's line (times its length), to tell whether it starts inside.
@@ -615,7 +617,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
             int j = i + 1 == n ? 0 : i + 1;
             double ex = (double) xy[2 * j] - xy[2 * i], ey = (double) xy[2 * j + 1] - xy[2 * i + 1];
             double ahead = turn * (dx * ey - dy * ex);
-            if (ahead > 1e-9 * (Math.abs(dx * ey) + Math.abs(dy * ex))) {
+            if (ahead > Tolerance.NEAR_TIE * (Math.abs(dx * ey) + Math.abs(dy * ex))) {
                 continue; // clearly facing away (the test below would say so too): skip its crossing
             }
             double at = segmentParam(ox, oy, dx, dy, Slabs.INF, xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1]);

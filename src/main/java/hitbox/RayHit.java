@@ -10,7 +10,10 @@ import hitbox.internal.*;
  * goes straight to {@link Response#bounce(float, float, float, float, float)}. A ray that
  * starts inside a shape with area hits it at once: distance 0, the point is the ray's origin
  * and the normal points along the ray. {@link #side()} names the side of the shape that was
- * hit, by the same rule as {@link Hit#side()}. For a shape that spans more than the float
+ * hit, by the same rule as {@link Hit#side()} (worked out from the normal, where a
+ * {@code Hit} carries it, since a hit that started overlapping has a zero normal and still
+ * says so); every result that names one side gives it this way, as {@code side()} (see
+ * <a href="Side.html#results">the side of a result</a>). For a shape that spans more than the float
  * range, the distance and the point are held at {@code Float.MAX_VALUE}.
  *
  * @param distance how far along the ray the hit is, in pixels (0 or more)

@@ -21,6 +21,13 @@ import hitbox.internal.*;
  * would turn it back into b, and an object that is still overlapping after its first bounce
  * (because it went deep in one frame) would then bounce again every frame, trembling inside
  * the other instead of leaving it.
+ *
+ * <p>Which push-out to call (the package documentation says the same): {@link #separate}
+ * when a shape must end up clear of another, exactly ({@code overlaps} false afterwards),
+ * whatever the shapes; {@code pushOutA}/{@code pushOutB} when you already have the
+ * {@link Contact} and want to move by its depth, or share the push between the two with
+ * {@code share}; {@link Snap#pushOut} for a box against a box, along one axis, with the
+ * {@link Side} it was pushed to (a platformer's tiles).
  */
 public final class Response {
     private Response() {
@@ -28,7 +35,9 @@ public final class Response {
 
     /**
      * Where a goes when it alone is pushed out of b: moved against the normal by the depth,
-     * so the two just touch.
+     * so the two just touch. Which push-out: the {@code pushOut} methods move by a contact
+     * you already have (and can share the push between a and b); {@link #separate} when a
+     * must end up clear, exactly; {@link Snap#pushOut} for two boxes, with the side.
      *
      * @param ax      any point that moves with a (its centre or its corner)
      * @param ay      that point's y
@@ -309,13 +318,12 @@ public final class Response {
         return new Vec((float) (x + d * contact.nx()), (float) (y + d * contact.ny()));
     }
 
-    /** The shape moved along the normal by {@code signedShare * depth}, after checking the share. */
-    // Every Shape.translated returns a shape of its own kind (the sealed family's contract,
-    // and each record narrows the return type), so the cast back to S is safe.
     /**
      * Shape a moved the shortest way out of b, so that afterwards {@code a.overlaps(b)} is
      * false, exactly, and the two touch to within float rounding. Shapes that do not overlap
-     * come back unchanged.
+     * come back unchanged. Which push-out: this one when a must end up clear of b, any pair
+     * with area; {@link #pushOutA(Shape, Contact)} to move by a contact you already have;
+     * {@link Snap#pushOut} for two boxes, with the side.
      *
      * <p>Why more than {@link #pushOutA(Shape, Contact)}: a contact's normal and depth are
      * floats, so moving by them can leave the shapes overlapping by a rounding error (a few
@@ -324,7 +332,7 @@ public final class Response {
      * smallest float steps more (doubling each time), until the exact test agrees.
      *
      * @param <S> the kind of shape
-     * @param a   the shape to move, with area (circle, rect or polygon), not null
+     * @param a   the shape to move, with area (circle, rect, polygon, ellipse or capsule), not null
      * @param b   the shape it must leave, with area, not null
      * @return a, moved out of b (or a itself if they do not overlap), never null
      * @throws IllegalArgumentException if a shape is null or a segment (see
@@ -378,6 +386,9 @@ public final class Response {
         return (S) a.translated((float) (-d * contact.nx()), (float) (-d * contact.ny()));
     }
 
+    /** The shape moved along the normal by {@code signedShare * depth}, after checking the share. */
+    // Every Shape.translated returns a shape of its own kind (the sealed family's contract,
+    // and each record narrows the return type), so the cast back to S is safe.
     @SuppressWarnings("unchecked")
     private static <S extends Shape> S translated(S s, Contact contact, float signedShare, float share) {
         Check.notNull("contact", contact);

@@ -22,8 +22,19 @@ import java.util.Set;
  * {@link #LEFT} is 1, {@link #RIGHT} 2, {@link #TOP} 4 and {@link #BOTTOM} 8 ({@link #bit()}),
  * and {@link #NONE} is 0. Read them with {@link #has(int, Side)}, print them with
  * {@link #describe(int)}, or turn them into an {@link EnumSet} with {@link #setOf(int)}. The
- * bits are fixed numbers, never the enum's ordinals. {@link Edges#LEFT} is
- * {@code Side.LEFT.bit()}, and so on.
+ * bits are fixed numbers, never the enum's ordinals. {@link #LEFT_RIGHT} and
+ * {@link #TOP_BOTTOM} name the two pairs {@link Motion} answers for a blocked axis; ask
+ * about several bits at once with {@link #hasAny(int, int)}. {@link Edges} and
+ * {@link Motion} take and give these bits; their own constants and {@code has} and
+ * {@code describe} are deprecated aliases of these (kept one release).
+ *
+ * <h2 id="results">The side of a result</h2>
+ * Every result that names one side gives it as {@code side()}: {@link Hit#side()},
+ * {@link RayHit#side()}, {@link Contact#side()} and {@link Snap.Push#side()}, each a
+ * {@code Side}, {@link #NONE} when the result has none. A result that can name several
+ * gives them as an {@code int} in the bit scheme: {@link Sweep.Move#sides()} (with
+ * {@link Sweep.Move#sideSet()} for an {@code EnumSet}), like the answers of {@link Edges}
+ * and {@link Motion}.
  */
 public enum Side {
     /** No side: nothing was hit. Its bit is 0. */
@@ -39,6 +50,20 @@ public enum Side {
 
     /** Every side's bit: {@code LEFT | RIGHT | TOP | BOTTOM}, 15. */
     public static final int ALL_BITS = 15;
+
+    /**
+     * The two walls' bits, {@code LEFT | RIGHT}, 3: what {@link Motion} answers when the move
+     * across is blocked (the next-position check knows the axis, not the face), so
+     * {@code Side.hasAny(blocked, Side.LEFT_RIGHT)} reads "reverse vx". Replaces
+     * {@code Motion.X}.
+     */
+    public static final int LEFT_RIGHT = 3;
+
+    /**
+     * The top and bottom bits, {@code TOP | BOTTOM}, 12: what {@link Motion} answers when the
+     * move down (or up) is blocked. Replaces {@code Motion.Y}.
+     */
+    public static final int TOP_BOTTOM = 12;
 
     private final int bit;
 
@@ -127,6 +152,23 @@ public enum Side {
     }
 
     /**
+     * Do two bit sets share a side? True when {@code sides} has any of the bits of
+     * {@code bits}: {@code Side.hasAny(crossed, Side.LEFT_RIGHT)} asks "did it cross the left
+     * or the right edge?", {@code Side.hasAny(blocked, Side.TOP_BOTTOM)} "is the move down or
+     * up blocked?". For one side, {@link #has(int, Side)} reads better.
+     *
+     * <p>Any int is taken: bits outside the scheme are ignored.
+     *
+     * @param sides the sides, in the <a href="#bits">bit scheme</a> (an answer of
+     *              {@link Edges}, {@link Motion} or {@link Sweep.Move#sides()})
+     * @param bits  the sides to ask about, in the same scheme
+     * @return true if {@code sides & bits} names a side; false when either names none
+     */
+    public static boolean hasAny(int sides, int bits) {
+        return (sides & bits & ALL_BITS) != 0;
+    }
+
+    /**
      * The bits of some sides, OR-ed together.
      *
      * @param sides the sides, none of them null; {@link #NONE} adds nothing
@@ -175,6 +217,9 @@ public enum Side {
 
     /**
      * The sides of a bit set as words, for printing: {@code "LEFT|TOP"}, or {@code "NONE"}.
+     * This is the one way Hitbox prints a bit set, whatever answered it: a move of
+     * {@link Motion} blocked across is {@link #LEFT_RIGHT}, printed {@code "LEFT|RIGHT"}
+     * (the deprecated {@code Motion.describe} printed it {@code "X"}).
      *
      * <p>Any int is taken: bits outside the scheme are ignored.
      *

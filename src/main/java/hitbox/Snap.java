@@ -193,6 +193,11 @@ public final class Snap {
      * Pushes the mover out of the obstacle along the axis of least overlap, the shortest way
      * out, so that the two touch.
      *
+     * <p>Which push-out: this one for two boxes, when the side matters (landed, bumped a
+     * wall); {@link Response#separate} for any other pair, or a guaranteed clear result;
+     * {@link Response#pushOutA(Shape, Contact)} to move by a contact you already have (see the
+     * <a href="package-summary.html#push-out">package documentation</a>).
+     *
      * <p>Of the four ways out (up onto the top, down below the bottom, left, right) the
      * shortest wins. Ties go in the order {@link Side#TOP}, {@link Side#BOTTOM},
      * {@link Side#LEFT}, {@link Side#RIGHT}: vertical before horizontal, so a player that

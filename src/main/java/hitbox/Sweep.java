@@ -46,8 +46,8 @@ import hitbox.internal.*;
  * any argument, or a negative size, gives "no hit". The methods on shapes check their
  * arguments as constructors do.
  *
- * <p>Three levels, as elsewhere in the library: {@link #rectRect} and {@link #circleCircle}
- * return only {@code t}; the {@code ...Hit} methods on plain floats and the
+ * <p>Three levels, as elsewhere in the library: {@link #rectRect}, {@link #circleCircle}
+ * and {@link #circleRect} return only {@code t}; the {@code ...Hit} methods on plain floats and the
  * {@code timeOfImpact} methods on shapes return a {@link Hit} with the normal and the
  * {@link Side} hit; {@link #move} walks a box through a list of obstacles, sliding along what
  * it hits (the walk itself lives in a class of its own). The maths is shared with
@@ -140,6 +140,31 @@ public final class Sweep {
         return s.t();
     }
 
+    /**
+     * When does a moving circle first overlap a standing rectangle? The fast ball against a
+     * thin wall or a paddle, as a time only: the same {@code t} as
+     * {@link #circleRectHit}'s, for a sketch that needs no normal.
+     *
+     * @param x  the mover's centre x at the start
+     * @param y  the mover's centre y at the start
+     * @param r  the mover's radius
+     * @param vx the mover's motion this frame, x part
+     * @param vy the mover's motion this frame, y part
+     * @param ox the obstacle's left edge
+     * @param oy the obstacle's top edge
+     * @param ow the obstacle's width
+     * @param oh the obstacle's height
+     * @return the time of impact in [0, 1] (see <a href="#t">what t promises</a>); 0 if they
+     *         already overlap (exactly when {@link Collide#circleRect} says so);
+     *         {@link Float#POSITIVE_INFINITY} if they do not start to overlap within the
+     *         motion, or for NaN, infinite or negative input
+     */
+    public static float circleRect(float x, float y, float r, float vx, float vy,
+                                   float ox, float oy, float ow, float oh) {
+        Hit hit = circleRectHit(x, y, r, vx, vy, ox, oy, ow, oh);
+        return hit == null ? Float.POSITIVE_INFINITY : hit.t();
+    }
+
     // ---------------------------------------------------------------- richer answers, on floats
 
     /**
@@ -220,21 +245,21 @@ public final class Sweep {
      * @param r  the circle's radius
      * @param vx the circle's motion this frame, x part
      * @param vy the circle's motion this frame, y part
-     * @param rx the rectangle's left edge
-     * @param ry the rectangle's top edge
-     * @param rw the rectangle's width
-     * @param rh the rectangle's height
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
      * @return the hit ({@code t = 0} with {@link Side#NONE} if {@link Collide#circleRect}
      *         says they already overlap), or null if they do not start to overlap within the
      *         motion, or for NaN, infinite or negative input
      */
     public static Hit circleRectHit(float cx, float cy, float r, float vx, float vy,
-                                    float rx, float ry, float rw, float rh) {
-        Earliest e = SweptPairs.circleRectEntry(cx, cy, r, vx, vy, rx, ry, rw, rh);
+                                    float rectX, float rectY, float rectW, float rectH) {
+        Earliest e = SweptPairs.circleRectEntry(cx, cy, r, vx, vy, rectX, rectY, rectW, rectH);
         SweptPairs.Search s = new SweptPairs.Search(e);
         while (s.searching()) {
             float t = s.t();
-            s.answer(Collide.circleRect(cx + t * vx, cy + t * vy, r, rx, ry, rw, rh));
+            s.answer(Collide.circleRect(cx + t * vx, cy + t * vy, r, rectX, rectY, rectW, rectH));
         }
         return s.hit(e, false);
     }
@@ -412,12 +437,12 @@ public final class Sweep {
     public static Hit timeOfImpact(Segment mover, float vx, float vy, Rect obstacle) {
         checkArgs(mover, vx, vy, obstacle);
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
-        float rx = obstacle.x(), ry = obstacle.y(), rw = obstacle.w(), rh = obstacle.h();
-        Earliest e = SweptPairs.rectSegmentEntry(rx, ry, rw, rh, -vx, -vy, x1, y1, x2, y2);
+        float rectX = obstacle.x(), rectY = obstacle.y(), rectW = obstacle.w(), rectH = obstacle.h();
+        Earliest e = SweptPairs.rectSegmentEntry(rectX, rectY, rectW, rectH, -vx, -vy, x1, y1, x2, y2);
         SweptPairs.Search s = new SweptPairs.Search(e);
         while (s.searching()) {
             float t = s.t();
-            s.answer(Collide.lineRect(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, rx, ry, rw, rh));
+            s.answer(Collide.lineRect(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, rectX, rectY, rectW, rectH));
         }
         return s.hit(e, true);
     }
@@ -626,7 +651,10 @@ public final class Sweep {
 
     /**
      * Where {@link #move} left a box: its position, the velocity to keep for the next frame
-     * and the sides of the obstacles it hit on the way.
+     * and the sides of the obstacles it hit on the way. A move can hit several sides (a floor
+     * and a wall), so it gives them as bits, {@link #sides()}, like {@link Edges} and
+     * {@link Motion}; a result with one side gives it as {@code side()} (see
+     * <a href="Side.html#results">the side of a result</a>).
      *
      * @param x     the box's left edge after the move
      * @param y     the box's top edge after the move

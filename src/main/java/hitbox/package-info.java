@@ -44,8 +44,9 @@
  * A segment of length 0 is a point, and closed like every segment: it meets a segment through
  * it. Segments and points have no inside, so a segment never collides with a zero-size shape
  * (a circle of radius 0, a rectangle of width or height 0).
- * Comparisons are exact, with no hidden epsilon: for whole-number coordinates of modest
- * size (up to about a million) every answer, touching cases included, is exact.
+ * Comparisons are exact, with no hidden epsilon in any yes-or-no answer: for whole-number
+ * coordinates of modest size (up to about a million) every answer, touching cases included,
+ * is exact. The tolerances that do exist are named and listed <a href="#tolerances">below</a>.
  *
  * <h2 id="polygons">Polygons</h2>
  * A {@link hitbox.Polygon} is its vertices in order, {@code x0, y0, x1, y1, ...}; edge i runs
@@ -78,13 +79,21 @@
  *       normal gives its side by one rule, {@link hitbox.Side#ofNormal}. Answers that name
  *       several sides at once ({@link hitbox.Edges}, {@link hitbox.Motion},
  *       {@link hitbox.Sweep.Move#sides()}) are {@code int}s in one bit scheme, LEFT 1, RIGHT 2,
- *       TOP 4, BOTTOM 8 ({@link hitbox.Side#bit()}), read with {@link hitbox.Side#has} or
- *       {@link hitbox.Side#setOf} (an {@code EnumSet}).</li>
+ *       TOP 4, BOTTOM 8 ({@link hitbox.Side#bit()}), read with {@link hitbox.Side#has},
+ *       {@link hitbox.Side#hasAny} or {@link hitbox.Side#setOf} (an {@code EnumSet}) and
+ *       printed with {@link hitbox.Side#describe}; {@code Edges} and {@code Motion} take
+ *       and give these bits (their own {@code LEFT}..{@code BOTTOM}, {@code X}, {@code Y},
+ *       {@code BOTH}, {@code has} and {@code describe} are deprecated aliases, kept one
+ *       release). A result that names one side gives it as {@code side()}
+ *       ({@link hitbox.Hit}, {@link hitbox.RayHit}, {@link hitbox.Contact},
+ *       {@link hitbox.Snap.Push}).</li>
  *   <li><b>No result.</b> An answer that is an object is {@code null} when there is none (no
  *       contact, no hit, no ray hit, no bounds for an empty mask); a {@code float} time or
  *       distance is {@link java.lang.Float#POSITIVE_INFINITY}, so {@code t <= 1} reads "hits
  *       this frame"; an index is -1, as in {@link java.util.List#indexOf}; a boolean is
- *       false; a set of sides is 0 ({@code NONE}). {@link hitbox.Side#NONE} is never "no
+ *       false; a set of sides is 0 ({@code NONE}); an array of answers is empty, never
+ *       null ({@link hitbox.Grid#path} when there is no route, {@link hitbox.Hits#all} when
+ *       nothing is hit). {@link hitbox.Side#NONE} is never "no
  *       result" on its own: it is the side of a result that has no side (a hit that started
  *       overlapping, a {@link hitbox.Snap.Push} that did not push).</li>
  *   <li><b>Exact, and conservative where it rounds.</b> Decisions are exact for floats; a
@@ -107,11 +116,61 @@
  *   <li>Constructors and methods that take objects (shapes, contacts, lists) check what
  *       they are given: they throw {@link java.lang.IllegalArgumentException} for null, NaN,
  *       infinite values, negative sizes and out-of-range counts, with a message that names
- *       the parameter and the value, for example {@code "radius must be >= 0, was -1.0"}.
- *       Nothing throws anything else ({@code NullPointerException},
- *       {@code NegativeArraySizeException}, {@code ArithmeticException}) for any input,
- *       except {@link hitbox.Grid#get}/{@link hitbox.Grid#set}, whose out-of-grid cell is an
- *       {@link java.lang.IndexOutOfBoundsException}, like a list's.</li>
+ *       the parameter and the value, for example {@code "radius must be >= 0, was -1.0"}.</li>
+ *   <li>One exception per kind of mistake: a bad value (null, NaN, infinite, negative, out
+ *       of its range) is an {@link java.lang.IllegalArgumentException}; an index that must
+ *       name an existing element and does not (a grid cell outside the grid, given to
+ *       {@link hitbox.Grid#get}, {@link hitbox.Grid#set}, {@link hitbox.Grid#path} or
+ *       {@link hitbox.Grid#fillRandom(float, long, int, int)}) is an
+ *       {@link java.lang.IndexOutOfBoundsException}, like a list's, its message naming the
+ *       cell or the parameter; changing a {@link hitbox.BroadPhase} from inside its own
+ *       callback is an {@link java.lang.IllegalStateException}. Nothing throws anything else
+ *       ({@code NullPointerException}, {@code NegativeArraySizeException},
+ *       {@code ArithmeticException}) for any input. (Until issue 19, {@code Grid.path} threw
+ *       an {@code IllegalArgumentException} for a cell outside the grid.)</li>
  * </ul>
+ *
+ * <h2 id="tolerances">Tolerances</h2>
+ * No yes-or-no answer depends on a tolerance. The ones Hitbox has are named, and each says
+ * why in the source:
+ * <ul>
+ *   <li>Public: {@link hitbox.Contact#UNIT_TOLERANCE} (how far from 1 a hand-made contact's
+ *       normal may be), {@link hitbox.Contact#TIE} (when two contact depths are equally
+ *       short for the tie rule), {@link hitbox.Hybrid#CIRCLE_SLACK} (the bounding-circle
+ *       stage's margin, so rounding never rejects a touching pair).</li>
+ *   <li>Guard bands, inside the exact tests: a double comparison is trusted only outside a
+ *       band a little wider than its proven rounding; inside it, an exact test decides. They
+ *       change speed, never an answer.</li>
+ *   <li>Paddings of a broad phase's query box (1e-9 of the coordinates): a candidate too
+ *       many, which the exact test drops, never one too few.</li>
+ *   <li>Stopping rules of the searches behind curved and turning shapes: contacts of
+ *       ellipses and capsules, and {@link hitbox.Sweep#turningTimeOfImpact} and the curved
+ *       sweeps, answer to within those rules (each method's documentation says how
+ *       closely).</li>
+ * </ul>
+ *
+ * <h2 id="push-out">Which push-out to use</h2>
+ * <ul>
+ *   <li>{@link hitbox.Response#separate}: a shape must end up clear of another, exactly
+ *       ({@code overlaps} is false afterwards), for any pair with area. The default.</li>
+ *   <li>{@link hitbox.Response#pushOutA(hitbox.Shape, hitbox.Contact)} and {@code pushOutB}: you already
+ *       have the {@link hitbox.Contact} and move by its depth, one shape or both (a
+ *       {@code share} each); may leave a rounding hair of overlap.</li>
+ *   <li>{@link hitbox.Snap#pushOut(hitbox.Rect, hitbox.Rect)}: two boxes, pushed along one axis, with the
+ *       {@link hitbox.Side} the mover was pushed to (landed, hit a wall): a platformer's
+ *       tiles.</li>
+ * </ul>
+ *
+ * <h2 id="words">Words</h2>
+ * A {@link hitbox.Segment} is a segment everywhere in these docs; the {@code Collide.line...}
+ * methods keep the tutorial's word "line" in their names, but take segments, two closed end
+ * points ({@code Collide.lineSide} alone reads the whole line through them). A rectangle's corner and size are
+ * {@code x, y, w, h}, or {@code rectX, rectY, rectW, rectH} beside another shape's
+ * coordinates; an ellipse's {@code rx} and {@code ry} are its radii. The verb says what comes
+ * back: {@code overlaps}, {@code contains} and the {@code Collide} tests a boolean,
+ * {@code contact} a {@link hitbox.Contact} or null, {@code timeOfImpact} a
+ * {@link hitbox.Hit} or null (its time in [0, 1]), {@code distance...} a length or
+ * {@code +Infinity}; {@link hitbox.Hits#first} an index, {@link hitbox.Hits#firstShape} the
+ * shape.
  */
 package hitbox;

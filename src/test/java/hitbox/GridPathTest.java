@@ -93,6 +93,8 @@ class GridPathTest {
     }
 
     @ParameterizedTest(name = "path({0}, {1}, {2}, {3}) on a 4 x 3 grid: {4}")
+    // A cell outside the grid is an index out of range: IndexOutOfBoundsException, as for get
+    // and set (issue 19's one exception per kind of mistake; it was IllegalArgumentException).
     @CsvSource(delimiter = '|', value = {
             "-1 | 0 | 0 | 0 | fromCol must be from 0 to 3 (a cell of the 4 x 3 grid), was -1",
             "4 | 0 | 0 | 0 | fromCol must be from 0 to 3 (a cell of the 4 x 3 grid), was 4",
@@ -102,9 +104,9 @@ class GridPathTest {
     })
     void path_cellOutsideTheGrid_isNamed(int fromCol, int fromRow, int toCol, int toRow, String message) {
         Grid g = new Grid(4, 3, 10);
-        assertEquals(message, assertThrows(IllegalArgumentException.class,
+        assertEquals(message, assertThrows(IndexOutOfBoundsException.class,
                 () -> g.path(fromCol, fromRow, toCol, toRow)).getMessage());
-        assertEquals(message, assertThrows(IllegalArgumentException.class,
+        assertEquals(message, assertThrows(IndexOutOfBoundsException.class,
                 () -> g.path(fromCol, fromRow, toCol, toRow, PathCosts.steps())).getMessage());
     }
 

@@ -380,8 +380,8 @@ public abstract class AbstractBroadPhase implements BroadPhase {
             try {
                 Rect b = s.bounds();
                 double right = (double) b.x() + b.w(), bottom = (double) b.y() + b.h();
-                double padX = 1e-9 * (Math.abs(b.x()) + Math.abs(right)) + Double.MIN_NORMAL;
-                double padY = 1e-9 * (Math.abs(b.y()) + Math.abs(bottom)) + Double.MIN_NORMAL;
+                double padX = Tolerance.pad(b.x(), right);
+                double padY = Tolerance.pad(b.y(), bottom);
                 findBoxes(b.x() - padX, b.y() - padY, right + padX, bottom + padY, this);
             } finally {
                 shape = null;

@@ -39,7 +39,7 @@ public final class Capsules {
         // differences, or products of two such, so the squares neither overflow nor underflow
         // in double, and the sum is off by a few units of 2^-53 of itself; far inside the band.
         double d2 = x * x + y * y, r2 = reach * reach;
-        if (Math.abs(d2 - r2) > 1e-9 * (d2 + r2)) {
+        if (Math.abs(d2 - r2) > Tolerance.NEAR_TIE * (d2 + r2)) {
             return d2 - r2;
         }
         // Near the tie: x^2 - (reach - y)(reach + y), each product's sign exact.
@@ -104,6 +104,6 @@ public final class Capsules {
      */
     private static boolean boxesApart(float lo1, float hi1, float lo2, float hi2, float r) {
         double gap = Math.max((double) lo1 - hi2, (double) lo2 - hi1);
-        return gap > r * (1 + 1e-15);
+        return gap > r * (1 + Tolerance.DIFFERENCE_ROUNDING);
     }
 }

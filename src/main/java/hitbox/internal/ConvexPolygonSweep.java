@@ -180,13 +180,13 @@ public final class ConvexPolygonSweep {
         for (double v : c) {
             size = Math.max(size, Math.abs(v));
         }
-        double delta = Math.max((size + reach) * 0x1p-23, Float.MIN_VALUE);
+        double delta = Math.max((size + reach) * Tolerance.FLOAT_STEP, Float.MIN_VALUE);
         for (int i = 0, a = c.length - 2; i < c.length; a = i, i += 2) {
             int b = i + 2 == c.length ? 0 : i + 2;
             double ux = c[i] - c[a], uy = c[i + 1] - c[a + 1], vx = c[b] - c[a], vy = c[b + 1] - c[a + 1];
             double o = ux * vy - uy * vx;
             double bound = 2 * delta * (Math.abs(ux) + Math.abs(uy) + Math.abs(vx) + Math.abs(vy)) + 8 * delta * delta
-                    + 1e-12 * (Math.abs(ux * vy) + Math.abs(uy * vx));
+                    + Tolerance.TURN_ROUNDING * (Math.abs(ux * vy) + Math.abs(uy * vx));
             if (!(w * o > bound)) {
                 return false;
             }

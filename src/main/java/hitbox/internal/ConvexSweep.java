@@ -109,7 +109,7 @@ public final class ConvexSweep {
         double or = (double) o.x() + o.w(), ob = (double) o.y() + o.h();
         double left = Math.min(m.x(), m.x() + (double) vx), top = Math.min(m.y(), m.y() + (double) vy);
         double right = Math.max(mr, mr + vx), bottom = Math.max(mb, mb + vy);
-        double slack = 1e-6 * (Math.abs(left) + Math.abs(right) + Math.abs(top) + Math.abs(bottom)
+        double slack = Tolerance.SWEEP_BOX_SLACK * (Math.abs(left) + Math.abs(right) + Math.abs(top) + Math.abs(bottom)
                 + Math.abs(o.x()) + Math.abs(o.y()) + Math.abs(or) + Math.abs(ob)) + Float.MIN_NORMAL;
         return left > or + slack || right < o.x() - slack || top > ob + slack || bottom < o.y() - slack;
     }
@@ -255,7 +255,7 @@ public final class ConvexSweep {
             // seldom an edge normal): still a lower bound, since every direction's gap is one.
             double lo = Math.atan2(by, bx) - 2 * Math.PI / DIRECTIONS, hi = lo + 4 * Math.PI / DIRECTIONS;
             // The largest gap is the least of its negative.
-            double[] r = Golden.least(t -> -gap(a, b, dx, dy, Math.cos(t), Math.sin(t)), lo, hi, 50, 1e-13);
+            double[] r = Golden.least(t -> -gap(a, b, dx, dy, Math.cos(t), Math.sin(t)), lo, hi, 50, Tolerance.SWEEP_ANGLE);
             double m = r[0], g = -r[1];
             if (g > best) {
                 best = g;

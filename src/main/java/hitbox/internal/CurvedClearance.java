@@ -115,6 +115,6 @@ public final class CurvedClearance {
 
     /** Golden-section search for the least f in [lo, hi]: {angle, f}. */
     private static double[] refine(Object k, List<Object> pieces, double lo, double hi, double far) {
-        return Golden.least(t -> push(k, pieces, t, far), lo, hi, 32, 1e-10);
+        return Golden.least(t -> push(k, pieces, t, far), lo, hi, 32, Tolerance.CLEARANCE_ANGLE);
     }
 }

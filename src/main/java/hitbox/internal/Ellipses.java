@@ -158,10 +158,10 @@ public final class Ellipses {
     public static int discs(double dx, double dy, double a1, double b1, double a2, double b2) {
         double d2 = dx * dx + dy * dy;
         double inner = Math.min(a1, b1) + Math.min(a2, b2), outer = Math.max(a1, b1) + Math.max(a2, b2);
-        if (d2 < inner * inner * (1 - 1e-9)) {
+        if (d2 < inner * inner * (1 - Tolerance.NEAR_TIE)) {
             return 1;
         }
-        if (d2 > outer * outer * (1 + 1e-9)) {
+        if (d2 > outer * outer * (1 + Tolerance.NEAR_TIE)) {
             return -1;
         }
         return 0;
@@ -225,7 +225,7 @@ public final class Ellipses {
         if (!(scale < Double.POSITIVE_INFINITY)) {
             return 0;
         }
-        double margin = 1e-10 * scale;
+        double margin = Tolerance.QUICK_MARGIN * scale;
         double ex = qx - px, ey = qy - py, len2 = ex * ex + ey * ey;
         double sx = 0, sy = 0; // the point of the ellipse the segment is measured from: first its centre
         for (int round = 0; round < 6; round++) {

@@ -64,7 +64,7 @@ public final class FaceQuery {
                 }
                 // Each term has a relative rounding error of a few units of 2^-53 in its
                 // differences and products; far below this bound.
-                if (reach <= 1e-14 * (spreadX * Math.abs(mx) + spreadY * Math.abs(my))) {
+                if (reach <= Tolerance.ORIENTATION_ROUNDING * (spreadX * Math.abs(mx) + spreadY * Math.abs(my))) {
                     // Within rounding of touching: decide with exact orientation signs. A
                     // polygon thinner than a double's rounding of its size (found by
                     // fuzzing) would otherwise look flat, and apart from itself.

@@ -241,7 +241,7 @@ public final class GridPaths {
 
     private static void checkCell(Grid grid, String name, int value, int count) {
         if (value < 0 || value >= count) {
-            throw new IllegalArgumentException(name + " must be from 0 to " + (count - 1) + " (a cell of the "
+            throw new IndexOutOfBoundsException(name + " must be from 0 to " + (count - 1) + " (a cell of the "
                     + grid.cols() + " x " + grid.rows() + " grid), was " + value);
         }
     }

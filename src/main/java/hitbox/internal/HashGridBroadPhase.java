@@ -526,8 +526,8 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
             double xa = ray.ox + t * ray.dx, xb = ray.ox + u * ray.dx;
             double ya = ray.oy + t * ray.dy, yb = ray.oy + u * ray.dy;
             double left = Math.min(xa, xb), right = Math.max(xa, xb), top = Math.min(ya, yb), bottom = Math.max(ya, yb);
-            double padX = 1e-9 * (Math.abs(left) + Math.abs(right)) + 1e-30;
-            double padY = 1e-9 * (Math.abs(top) + Math.abs(bottom)) + 1e-30;
+            double padX = Tolerance.pad(left, right);
+            double padY = Tolerance.pad(top, bottom);
             for (int i = 0; i < levels; i++) {
                 lookUp(left - padX, top - padY, right + padX, bottom + padY, occupied[i], -1, null, null, ray);
             }

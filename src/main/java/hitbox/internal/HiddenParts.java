@@ -84,8 +84,8 @@ public final class HiddenParts {
 
     /** The granted accesses as constants; loading this first initialises Polygon and Grid. */
     private static final class Granted {
-        static final PolygonAccess POLYGONS = initialised(Polygon.class) ? polygons : null;
-        static final GridAccess GRIDS = initialised(Grid.class) ? grids : null;
+        public static final PolygonAccess POLYGONS = initialised(Polygon.class) ? polygons : null;
+        public static final GridAccess GRIDS = initialised(Grid.class) ? grids : null;
 
         private static boolean initialised(Class<?> type) {
             try {

@@ -86,7 +86,7 @@ public final class RayCast {
     }
 
     private static double pad(double lo, double hi) {
-        return 1e-9 * (Math.abs(lo) + Math.abs(hi)) + 1e-30;
+        return Tolerance.pad(lo, hi);
     }
 
     private static double slabIn(double lo, double hi, float o, float d) {

@@ -54,7 +54,7 @@ public final class Supports {
 
     /** The contact of two overlapping convex shapes, normal from a to b. */
     public static Contact contact(Shape a, Shape b) {
-        Contacts.Shortest best = new Contacts.Shortest(1e-9 * scale(a, b));
+        Contacts.Shortest best = new Contacts.Shortest(Tolerance.SUPPORT_TIE * scale(a, b));
         double[] f = new double[STEPS];
         for (int i = 0; i < STEPS; i++) {
             f[i] = push(a, b, 2 * Math.PI * i / STEPS);
@@ -85,10 +85,10 @@ public final class Supports {
     private static void offer(Contacts.Shortest best, Shape a, Shape b, double t) {
         double nx = Math.cos(t), ny = Math.sin(t);
         // Exact axis directions where rounding of cos and sin would leave a hair.
-        if (Math.abs(nx) < 1e-15) {
+        if (Math.abs(nx) < Tolerance.AXIS_SNAP) {
             nx = 0;
             ny = Math.signum(ny);
-        } else if (Math.abs(ny) < 1e-15) {
+        } else if (Math.abs(ny) < Tolerance.AXIS_SNAP) {
             ny = 0;
             nx = Math.signum(nx);
         }
@@ -97,7 +97,7 @@ public final class Supports {
 
     /** Golden-section search for the least push in [lo, hi]. */
     private static double refine(Shape a, Shape b, double lo, double hi) {
-        return Golden.least(t -> push(a, b, t), lo, hi, 80, 1e-15)[0];
+        return Golden.least(t -> push(a, b, t), lo, hi, 80, Tolerance.SUPPORT_ANGLE)[0];
     }
 
     /** The shapes' size, for the tie tolerance. */

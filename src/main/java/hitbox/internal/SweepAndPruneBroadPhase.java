@@ -272,7 +272,7 @@ public final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
     /** The first entry whose box could reach right of x: none before it can (its left edge is too far left). */
     private int firstEntryFrom(double x) {
         double from = x - widest;
-        from -= 1e-9 * Math.abs(from) + 1e-9 * widest;  // a hair more, against rounding in right - left
+        from -= Tolerance.PAD * Math.abs(from) + Tolerance.PAD * widest;  // a hair more, against rounding in right - left
         int lo = 0, hi = length;
         while (lo < hi) {
             int mid = (lo + hi) >>> 1;
@@ -300,8 +300,8 @@ public final class SweepAndPruneBroadPhase extends AbstractBroadPhase {
         double xa = ray.ox + t0 * ray.dx, xb = ray.ox + t1 * ray.dx;
         double ya = ray.oy + t0 * ray.dy, yb = ray.oy + t1 * ray.dy;
         double left = Math.min(xa, xb), right = Math.max(xa, xb), top = Math.min(ya, yb), bottom = Math.max(ya, yb);
-        double padX = 1e-9 * (Math.abs(left) + Math.abs(right)) + 1e-30;
-        double padY = 1e-9 * (Math.abs(top) + Math.abs(bottom)) + 1e-30;
+        double padX = Tolerance.pad(left, right);
+        double padY = Tolerance.pad(top, bottom);
         left -= padX;
         right += padX;
         top -= padY;

@@ -23,6 +23,9 @@ public final class SweptPairs {
     /** Time of impact of two boxes in double, the motion given in double; 0 if overlapping. */
     public static double rectRectTime(float x, float y, float w, float h, double vx, double vy,
                                float ox, float oy, float ow, float oh) {
+        if (!(w >= 0 && h >= 0 && ow >= 0 && oh >= 0)) {
+            return Slabs.INF;  // a negative size (or NaN) is no box: no hit, as documented
+        }
         if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
             return 0;
         }
@@ -38,6 +41,9 @@ public final class SweptPairs {
     public static Earliest rectRectEntry(float x, float y, float w, float h, double vx, double vy,
                                   float ox, float oy, float ow, float oh) {
         Earliest e = new Earliest();
+        if (!(w >= 0 && h >= 0 && ow >= 0 && oh >= 0)) {
+            return e;  // a negative size (or NaN) is no box: no entry, as documented
+        }
         if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
             e.inside = true;
         } else if (Discs.finite(vx, vy)) {
@@ -50,8 +56,8 @@ public final class SweptPairs {
     public static Earliest circleCircleEntry(float x, float y, float r, float vx, float vy,
                                               float ox, float oy, float or) {
         Earliest e = new Earliest();
-        if (Check.notFinite(x, y, r, vx, vy) || Check.notFinite(ox, oy, or, 0, 0)) {
-            return e;  // no entry
+        if (Check.notFinite(x, y, r, vx, vy) || Check.notFinite(ox, oy, or, 0, 0) || r < 0 || or < 0) {
+            return e;  // no entry (a negative radius is no circle, as documented)
         }
         if (Collide.circleCircle(x, y, r, ox, oy, or)) {
             e.inside = true;
@@ -64,8 +70,8 @@ public final class SweptPairs {
     public static Earliest circleRectEntry(float cx, float cy, float r, float vx, float vy,
                                             float rx, float ry, float rw, float rh) {
         Earliest e = new Earliest();
-        if (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(rx, ry, rw, rh, 0)) {
-            return e;  // no entry
+        if (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(rx, ry, rw, rh, 0) || r < 0 || rw < 0 || rh < 0) {
+            return e;  // no entry (a negative size is no shape, as documented)
         }
         if (Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
             e.inside = true;

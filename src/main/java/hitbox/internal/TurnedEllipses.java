@@ -42,7 +42,7 @@ public final class TurnedEllipses {
 
     /** A few double roundings more (cos, sin, products, hypot), so the box holds the ellipse. */
     private static double widen(double h) {
-        return h * (1 + 0x1p-48);
+        return h * (1 + Tolerance.TURNED_BOX_WIDEN);
     }
 
     /** Is the point strictly inside the turned ellipse (taken into its frame in double)? */

@@ -1,0 +1,154 @@
+package hitbox.internal;
+
+/**
+ * Every tolerance Hitbox uses, each with its reason: the one place to look before asking
+ * "is there an epsilon in this answer?".
+ *
+ * <p>None of them decides a touching case. They are of four kinds:
+ * <ul>
+ *   <li><b>Guard bands</b> around a double comparison whose rounding is bounded: outside the
+ *       band the double answer is sure; inside it an exact (or slower, exact-enough) test
+ *       decides. Widening a band costs time, never an answer.</li>
+ *   <li><b>Paddings</b> of a broad phase's query box: a candidate filter may take a box too
+ *       many (the exact test drops it), never one too few.</li>
+ *   <li><b>Stopping rules</b> of the iterative searches behind the curved and turning cases
+ *       (contacts of ellipses and capsules, sweeps of curved or turning shapes), whose answers
+ *       are as close as those rules say, no closer.</li>
+ *   <li><b>Checks on hand-made results</b>: the public {@link Contact#UNIT_TOLERANCE}, and the
+ *       tie rule's {@link Contact#TIE}; {@link Hybrid#CIRCLE_SLACK}, a public guard band.</li>
+ * </ul>
+ *
+ * <p>Named next to their one use, with their reasons there: {@code Clearance.TOLERANCE}
+ * (1e-9, how close a search's point must be to the overlap set), {@code ConvexSweep.TOUCH}
+ * (1e-6 pixels, where conservative advancement stops), {@code TurningSweep.TOUCH} (1e-3
+ * pixels, the same for a turning mover), {@code Ray.SAME_EVENT} (1e-12 of the ray, events
+ * on a polygon's outline that are one), and the public ones above; and two proven error
+ * bounds of floating-point sums, {@code Lines.ORIENT_ERROR} and {@code Ellipses.SUM_ERROR}
+ * (multiples of 2^-53 with their derivation beside them). The rest are here.
+ *
+ * <p>The values are the ones the code had when they were written out as literals; naming
+ * them changed no answer (they are compile-time constants, so even the bytecode is the same).
+ * The package documentation lists them for users.
+ */
+public final class Tolerance {
+    private Tolerance() {
+    }
+
+    // ---- guard bands ----------------------------------------------------------------
+
+    /**
+     * A relative band around a comparison of two sums of squares or products in double
+     * ({@code x*x + y*y} against {@code r*r}; an edge's facing, {@code dx*ey - dy*ex}): each
+     * side is off by a few units of 2^-53 (about 1e-16) of itself, so a difference larger than
+     * 1e-9 of their size is sure; inside it the exact test decides. Used by
+     * {@link Capsules}, {@link Ellipses#discs} and {@link Ray}'s concave polygon cast.
+     */
+    public static final double NEAR_TIE = 1e-9;
+
+    /**
+     * A relative margin over one rounding of a difference of two floats in double (at most a
+     * unit of 2^-53, 1.1e-16, of itself): a gap larger than {@code r * (1 + 1e-15)} is larger
+     * than {@code r} exactly. {@link Capsules}' box test.
+     */
+    public static final double DIFFERENCE_ROUNDING = 1e-15;
+
+    /**
+     * A relative bound on the rounding of an orientation (two products of differences, each
+     * off by a few units of 2^-53 of its size) over the size of its terms: below it, "touching
+     * or not" is decided with exact orientation signs. {@link SeparatingAxis}' reach and
+     * {@link Ray}'s convex cast.
+     */
+    public static final double ORIENTATION_ROUNDING = 1e-14;
+
+    /**
+     * The relative rounding allowed in a corner's turn (a cross product of two edges) when
+     * {@link ConvexPolygonSweep} asks whether a polygon stays convex after a move rounded to
+     * floats: generous against the double products, so "stays convex" is only said when sure.
+     */
+    public static final double TURN_ROUNDING = 1e-12;
+
+    /**
+     * A float's relative step, 2^-23: how far a coordinate moved in float ({@code x + t * vx})
+     * can be from the exact sum, relative to its size. {@link ConvexPolygonSweep}.
+     */
+    public static final double FLOAT_STEP = 0x1p-23;
+
+    /**
+     * The relative margin {@link Ellipses#capsuleQuick}'s proofs must hold by: far above the
+     * double rounding of its sums, so the quick answer never differs from the long way's.
+     */
+    public static final double QUICK_MARGIN = 1e-10;
+
+    /**
+     * How much a turned ellipse's box half-size is widened, relative: a few double roundings
+     * (cos, sin, products, hypot) of 2^-53 each, so the float box still holds the ellipse.
+     * {@link TurnedEllipses}.
+     */
+    public static final double TURNED_BOX_WIDEN = 0x1p-48;
+
+    /**
+     * The relative slack of {@link ConvexSweep}'s cheap "boxes apart" test: a position moved
+     * in float lies within a float step (about 6e-8 of its size) of the exact one, and 1e-6
+     * covers that for every coordinate of both boxes.
+     */
+    public static final double SWEEP_BOX_SLACK = 1e-6;
+
+    // ---- paddings -------------------------------------------------------------------
+
+    /**
+     * How much a broad phase widens a query box, relative to its coordinates: far above the
+     * rounding of the double sums behind the box ({@code x + w}, a ray's points), so a box
+     * that touches the query is always found. See {@link #pad}.
+     */
+    public static final double PAD = 1e-9;
+
+    /** The least padding, for a box at the origin: any positive amount keeps an edge at 0. */
+    public static final double PAD_FLOOR = 1e-30;
+
+    /**
+     * The padding for a query interval [lo, hi]: {@code PAD * (|lo| + |hi|) + PAD_FLOOR}, the
+     * one formula behind every broad phase's widened query ({@link AbstractBroadPhase},
+     * {@link HashGridBroadPhase}, {@link SweepAndPruneBroadPhase}, {@link RayCast}).
+     *
+     * @param lo the interval's low end
+     * @param hi the interval's high end
+     * @return the amount to move each end outwards, positive
+     */
+    public static double pad(double lo, double hi) {
+        return PAD * (Math.abs(lo) + Math.abs(hi)) + PAD_FLOOR;
+    }
+
+    // ---- stopping rules of the searches ---------------------------------------------
+
+    /**
+     * The tie slack of {@link Supports}' contact search, relative to the shapes' size: its
+     * candidate depths are only as good as the angle search (see {@link #SUPPORT_ANGLE}), so
+     * depths this close count as one for the tie rule.
+     */
+    public static final double SUPPORT_TIE = 1e-9;
+
+    /**
+     * Where {@link Supports}' angle search stops, in radians: at a double's resolution of an
+     * angle near pi (its 80 steps usually end first).
+     */
+    public static final double SUPPORT_ANGLE = 1e-15;
+
+    /**
+     * A direction's part smaller than this is taken as 0 ({@link Supports}): cos and sin of
+     * an axis direction round to about 6e-17, not 0, and the exact axis keeps a box's
+     * support exact.
+     */
+    public static final double AXIS_SNAP = 1e-15;
+
+    /**
+     * Where {@link ConvexSweep}'s search for the best separating direction stops, in radians:
+     * any direction gives a safe step, so this only buys a longer one.
+     */
+    public static final double SWEEP_ANGLE = 1e-13;
+
+    /**
+     * Where {@link CurvedClearance}'s angle search stops, in radians: far below what its
+     * answers are checked against ({@code Clearance.TOLERANCE}).
+     */
+    public static final double CLEARANCE_ANGLE = 1e-10;
+}
