@@ -80,8 +80,9 @@ public final class Progress implements TestExecutionListener {
             int[] c = counts.getOrDefault(id.getUniqueId(), new int[3]);
             Long t0 = started.remove(id.getUniqueId());
             double seconds = t0 == null ? 0 : (System.nanoTime() - t0) / 1e9;
-            print(String.format("[%3d/%d] %s: %d passed, %d failed, %d skipped (%.1f s)", classesDone, classes,
-                    className(id), c[0], c[1], c[2], seconds));
+            // Not "N passed, N failed": CI reads a line of that shape as the run's closing count.
+            print(String.format("[%3d/%d] %s (%.1f s): %d tests%s%s", classesDone, classes, className(id), seconds,
+                    c[0] + c[1] + c[2], c[1] > 0 ? ", " + c[1] + " FAILED" : "", c[2] > 0 ? ", " + c[2] + " skipped" : ""));
         }
     }
 
