@@ -27,13 +27,22 @@ public final class Launcher {
     }
 
     /**
+     * What {@code gradle run} says with no display: it shows windows to a person, so the advice
+     * is a desktop, X forwarding or {@code DISPLAY}, not a virtual display nobody sees.
+     * ({@code gradle/sketches.gradle} says the same before building anything.)
+     */
+    static final String NO_DISPLAY_TO_SHOW = "No display: gradle run opens the sketches in windows, and DISPLAY is not set.\n"
+            + "Run it in a desktop session (a terminal on the desktop), over ssh with X forwarding (ssh -X <host>),\n"
+            + "or with DISPLAY set to a running X server (export DISPLAY=:0).";
+
+    /**
      * Opens the gallery (no arguments) or the named sketch.
      *
      * @param args nothing, or a sketch's folder name
      */
     public static void main(String[] args) {
         if (!SketchRun.displayAvailable()) {
-            System.err.println(noDisplay("gradle run"));
+            System.err.println(NO_DISPLAY_TO_SHOW);
             System.exit(2);
         }
         Catalog catalog = Catalog.load();

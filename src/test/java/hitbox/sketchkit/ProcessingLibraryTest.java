@@ -43,8 +43,8 @@ class ProcessingLibraryTest {
 
     @BeforeAll
     static void unpackTheZipIntoASketchbook() throws IOException {
-        File[] zips = new File("build/distributions").listFiles((dir, n) -> n.startsWith("Hitbox-") && n.endsWith(".zip"));
-        assertTrue(zips != null && zips.length == 1, "one build/distributions/Hitbox-<version>.zip: run gradle processingLibrary");
+        File[] zips = new File("build/distributions").listFiles((dir, n) -> n.equals("Hitbox.zip"));
+        assertTrue(zips != null && zips.length == 1, "build/distributions/Hitbox.zip: run gradle processingLibrary");
         Path libraries = sketchbook.resolve("libraries");
         try (ZipInputStream zip = new ZipInputStream(new FileInputStream(zips[0]))) {
             for (ZipEntry e; (e = zip.getNextEntry()) != null; ) {
