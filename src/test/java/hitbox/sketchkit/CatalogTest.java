@@ -84,4 +84,18 @@ class CatalogTest {
                     + " has no \"Tutorial section\", \"Homework\" or \"Beyond the tutorial\" line after its title");
         }
     }
+
+    @Test
+    void theIndexes_linkEverySketchFolder() throws IOException {
+        Catalog catalog = Catalog.load();
+        File project = catalog.root().getAbsoluteFile().getParentFile();
+        String readme = Files.readString(new File(project, "README.md").toPath());
+        String index = Files.readString(new File(catalog.root(), "README.md").toPath());
+        for (Catalog.SketchInfo info : catalog.sketches()) {
+            assertTrue(readme.contains("](sketches/" + info.name() + ")"),
+                    info.name() + " has no line in the README's table of sections");
+            assertTrue(index.contains("- [" + info.name() + "](" + info.name() + "/)"),
+                    info.name() + " has no line in sketches/README.md, the sketch index");
+        }
+    }
 }
