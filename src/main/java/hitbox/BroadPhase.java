@@ -6,9 +6,9 @@ import java.util.function.IntConsumer;
 
 /**
  * A broad phase: many boxes, each under an id you choose, and the one question an all-pairs
- * loop answers slowly, "which of them overlap?". The tutorial's section 10 calls this the next
- * step: keep the objects in a structure that knows where they are, so the player on the left
- * is never checked against the objects on the right.
+ * loop answers slowly, "which of them overlap?". The tutorial's section 10 names the tool for
+ * it: location-based structures such as R-trees and quadtrees, which organise the objects so
+ * that a player on the left of the screen is not checked against the objects on the right.
  * <pre>{@code
  * BroadPhase world = BroadPhase.grid();
  * for (int i = 0; i < n; i++) {
@@ -44,7 +44,7 @@ import java.util.function.IntConsumer;
  *   <tr><td>{@link #bruteForce()}</td><td>every pair, n(n-1)/2 tests</td><td>a few dozen
  *       boxes, and as the reference the others are tested against</td></tr>
  * </table>
- * The README's benchmark table gives the numbers.
+ * {@code docs/benchmarks.md} (linked from the README) gives the numbers.
  *
  * <h2>Rules</h2>
  * <ul>

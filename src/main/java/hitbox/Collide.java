@@ -4,8 +4,8 @@ import hitbox.internal.*;
 
 /**
  * Collision tests, one static method per pair of shapes, on plain floats: the tutorial's
- * (circle/point, circle/circle, rectangle/point, rectangle/rectangle) and the pairs its section
- * 10 leaves to "the right maths" (lines, polygons, triangles).
+ * (circle/point, circle/circle, rectangle/point, rectangle/rectangle) and shapes its section
+ * 10 leaves to "the right math" (lines, polygons, triangles, ellipses, capsules).
  *
  * <p>The tutorial's four are the {@code if} statements it writes, made exact: the arithmetic is
  * done in {@code double}, so for whole-number coordinates up to about a million a touching case
@@ -204,9 +204,9 @@ public final class Collide {
     /**
      * Is the point inside the polygon? A point on an edge or at a vertex is not inside.
      *
-     * <p>The crossing test the video names (count the edges a ray to the right crosses; odd
-     * is inside; the tutorial has no polygon code), made exact: each edge counts by the
-     * half-open rule (one end below the point,
+     * <p>The crossing test the video names (count the edges a line from the point crosses; odd
+     * is inside; the tutorial has no polygon code), with the line going to the right, made
+     * exact: each edge counts by the half-open rule (one end below the point,
      * the other at or above it), so a ray through a vertex is counted by rule, and which side
      * of an edge the point lies on is an orientation sign, so vertical edges and points on an
      * edge are exact cases too. On a rectangle's four corners it answers exactly as

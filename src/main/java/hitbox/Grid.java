@@ -5,8 +5,8 @@ import hitbox.internal.*;
 import java.util.Arrays;
 
 /**
- * A grid of cells, each holding a terrain number: the tutorial's tile map, for maze and
- * platform games.
+ * A grid of cells, each holding a terrain number: the tutorial's grid, for maze and platform
+ * games.
  *
  * <p>The grid has {@code cols} columns and {@code rows} rows of cells, each
  * {@code cellWidth} by {@code cellHeight} pixels, with cell (0, 0) at the top-left corner of
@@ -407,7 +407,7 @@ public final class Grid {
      *
      * <p>The same seed and size give the same grid on every run and every Java version, since
      * {@link java.util.Random}'s algorithm is fixed by its specification. The tutorial
-     * flips a coin per cell ({@code random(1) < 0.2}), so its count of obstacles changes from
+     * gives each cell a 20% chance ({@code random(1) < .2}), so its count of obstacles changes from
      * run to run and one may land on the player; this makes exactly the asked share solid,
      * e.g. {@code new Grid(20, 20, cellSize).fillRandom(0.2f, seed, 0, 0)}: 80 solid cells,
      * the top-left one kept free.

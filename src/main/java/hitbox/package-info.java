@@ -27,7 +27,7 @@
  *   <li>Shapes with area (circles, rectangles, polygons, ellipses, capsules) are open sets:
  *       their outline is not part of them. Two circles whose distance equals the sum of their radii, two
  *       rectangles side by side, a point exactly on an edge: none of them collide. In the
- *       tutorial's words this is {@code dist < r1 + r2} and
+ *       tutorial's form this is {@code dist < r1 + r2} and
  *       {@code px > rx && px < rx + rw && py > ry && py < ry + rh}, strict inequalities.</li>
  *   <li>Segments and points are closed: a segment collides with what it touches, so two
  *       segments meeting at an end point intersect, and so does a segment that reaches the

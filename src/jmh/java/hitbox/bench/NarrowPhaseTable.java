@@ -31,8 +31,8 @@ import org.openjdk.jmh.runner.options.OptionsBuilder;
  * Makes the narrow-phase table: checks that every contender agrees with Hitbox on every case
  * (failing before anything is timed if one does not, except where a touching rule or a skin
  * explains it), runs {@link NarrowPhaseBench} for every contender with JMH's GC profiler, and
- * writes {@code docs/narrow-phase.md} and the README's section between the narrow-phase
- * markers. Arguments are JMH's own ({@code -f 1 -wi 2 ...}); {@code -Dnarrow.only=regex}
+ * writes {@code docs/narrow-phase.md} (the README links to it, with a one-line summary written by
+ * hand). Arguments are JMH's own ({@code -f 1 -wi 2 ...}); {@code -Dnarrow.only=regex}
  * picks questions by id (and then writes {@code build/narrow-phase-some.md} only),
  * {@code -Dnarrow.checkOnly=true} stops after the check, and {@code -Dnarrow.fromCsv=true} writes
  * the text again from the last run's results ({@code build/narrow-phase.csv}) without timing.
@@ -102,15 +102,15 @@ public final class NarrowPhaseTable {
         String text = table(questions, agreements, measured, how.get(0), how.get(1), how.get(2), profiles, new Misses());
         if (some) {
             Files.writeString(Path.of(name + ".md"), text, StandardCharsets.UTF_8);
-            System.out.println("wrote " + name + ".md (some questions only: docs and README left as they are)");
+            System.out.println("wrote " + name + ".md (some questions only: docs/narrow-phase.md left as it is)");
             return;
         }
         Files.writeString(Path.of("docs/narrow-phase.md"), "# Hitbox's narrow phase against the peers\n\n"
-                + "Made by `gradle narrowPhaseTable` (src/jmh/java/hitbox/bench/NarrowPhaseTable.java), which also writes this\n"
-                + "section into the README; edit the generator, not the output.\n\n" + text.substring(text.indexOf('\n') + 2),
+                + "Made by `gradle narrowPhaseTable` (src/jmh/java/hitbox/bench/NarrowPhaseTable.java); edit the generator,\n"
+                + "not the output. The README's one-line summary of it is written by hand: check it after a new run.\n\n"
+                + text.substring(text.indexOf('\n') + 2),
                 StandardCharsets.UTF_8);
-        replaceReadmeSection(Path.of("README.md"), text);
-        System.out.println("wrote docs/narrow-phase.md and the README section");
+        System.out.println("wrote docs/narrow-phase.md (check the README's one-line summary of it)");
     }
 
     // ---------------------------------------------------------------- result objects
@@ -436,19 +436,5 @@ public final class NarrowPhaseTable {
 
     private static String bytes(double v) {
         return Double.isNaN(v) ? "-" : String.format(Locale.ROOT, "%.0f", Math.max(0, v));
-    }
-
-    // ---------------------------------------------------------------- the README
-
-    static final String BEGIN = "<!-- narrow-phase:begin -->", END = "<!-- narrow-phase:end -->";
-
-    /** Replaces what is between the markers; fails if the README has lost them. */
-    static void replaceReadmeSection(Path readme, String text) throws IOException {
-        String s = Files.readString(readme, StandardCharsets.UTF_8);
-        int begin = s.indexOf(BEGIN), end = s.indexOf(END);
-        if (begin < 0 || end < begin) {
-            throw new IllegalStateException(readme + " has no " + BEGIN + " ... " + END + " section");
-        }
-        Files.writeString(readme, s.substring(0, begin + BEGIN.length()) + "\n" + text + s.substring(end), StandardCharsets.UTF_8);
     }
 }

@@ -111,12 +111,61 @@ public final class Catalog {
     }
 
     /**
+     * Where a sketch belongs, from the second line of its header: the gallery shows each group
+     * under its own heading, in this order.
+     */
+    public enum Group {
+        /** "Tutorial section N: ...": a section of the tutorial (or the video beside it). */
+        TUTORIAL("Tutorial section", "The tutorial, section by section"),
+        /** "Homework N: ...": the tutorial's homework. */
+        HOMEWORK("Homework", "The tutorial's homework"),
+        /** "Beyond the tutorial: ...": an idea the tutorial does not have. */
+        BEYOND("Beyond the tutorial", "Beyond the tutorial"),
+        /** No such line: a sketch of your own, say. */
+        OTHER("", "Other sketches");
+
+        private final String prefix;
+        private final String heading;
+
+        Group(String prefix, String heading) {
+            this.prefix = prefix;
+            this.heading = heading;
+        }
+
+        /** @return the words a header's second line starts with, "" for {@link #OTHER} */
+        public String prefix() {
+            return prefix;
+        }
+
+        /** @return the heading the gallery shows above the group */
+        public String heading() {
+            return heading;
+        }
+
+        /**
+         * The group a header's second line names.
+         *
+         * @param line the line after the title, e.g. "Beyond the tutorial: fast objects"
+         * @return its group, {@link #OTHER} when it starts with no group's words
+         */
+        public static Group of(String line) {
+            for (Group g : values()) {
+                if (!g.prefix.isEmpty() && line.startsWith(g.prefix)) {
+                    return g;
+                }
+            }
+            return OTHER;
+        }
+    }
+
+    /**
      * A sketch folder and what its header comment says about it.
      *
      * @param name    the folder name, which is also the class name
      * @param folder  the sketch folder
      * @param title   the header's first line, e.g. "Circle/Point"
-     * @param section the header's "Tutorial section ..." line, or "" if there is none
+     * @param section the header's second line when it starts "Tutorial section", "Homework" or
+     *                "Beyond the tutorial" (see {@link Group}), or "" if it does not
      * @param classes where its compiled class, problems and line map are found
      */
     public record SketchInfo(String name, File folder, String title, String section, ClassLoader classes) {
@@ -146,14 +195,24 @@ public final class Catalog {
                     break;
                 }
                 String text = line.replaceFirst("^\\*\\s?", "").trim();
-                if (!titleSeen && !text.isEmpty()) {
+                if (text.isEmpty()) {
+                    continue;
+                }
+                if (!titleSeen) {
                     title = text;
                     titleSeen = true;
-                } else if (text.startsWith("Tutorial section") || text.startsWith("Homework")) {
-                    section = text;
+                } else {
+                    // Only the line after the title: later prose may start with the same words.
+                    section = Group.of(text) == Group.OTHER ? "" : text;
+                    break;
                 }
             }
             return new SketchInfo(folder.getName(), folder, title, section, classes);
+        }
+
+        /** @return the group its header's second line names, {@link Group#OTHER} for none */
+        public Group group() {
+            return Group.of(section);
         }
 
         /** @return the sketch's name, as test reports and messages show it */

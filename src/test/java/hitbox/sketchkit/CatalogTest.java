@@ -55,6 +55,20 @@ class CatalogTest {
     }
 
     @Test
+    void load_beyondTheTutorial_isASectionLineOfItsOwnGroup() throws IOException {
+        sketch("S10e_FastObjects", "/**\n * Fast objects\n * Beyond the tutorial: fast objects\n */\n");
+        sketch("S02_CirclePoint", "/**\n * Circle/Point\n * Tutorial section 2: Circle/Point\n */\n");
+
+        Catalog catalog = Catalog.load(root.toFile());
+
+        Catalog.SketchInfo beyond = catalog.find("S10e_FastObjects").orElseThrow();
+        assertEquals("Beyond the tutorial: fast objects", beyond.section());
+        assertEquals(Catalog.Group.BEYOND, beyond.group());
+        assertEquals(Catalog.Group.TUTORIAL, catalog.find("S02_CirclePoint").orElseThrow().group());
+        assertEquals(Catalog.Group.OTHER, Catalog.Group.of("Fast objects"));
+    }
+
+    @Test
     void load_missingFolder_saysWhereItLooked() {
         File missing = root.resolve("nope").toFile();
         IllegalStateException e = assertThrows(IllegalStateException.class, () -> Catalog.load(missing));
@@ -66,7 +80,22 @@ class CatalogTest {
         Catalog catalog = Catalog.load();
         for (Catalog.SketchInfo info : catalog.sketches()) {
             assertTrue(!info.title().equals(info.name()), info.name() + " has no header title");
-            assertTrue(!info.section().isEmpty(), info.name() + " has no \"Tutorial section\" or \"Homework\" line");
+            assertTrue(!info.section().isEmpty(), info.name()
+                    + " has no \"Tutorial section\", \"Homework\" or \"Beyond the tutorial\" line after its title");
+        }
+    }
+
+    @Test
+    void theIndexes_linkEverySketchFolder() throws IOException {
+        Catalog catalog = Catalog.load();
+        File project = catalog.root().getAbsoluteFile().getParentFile();
+        String readme = Files.readString(new File(project, "README.md").toPath());
+        String index = Files.readString(new File(catalog.root(), "README.md").toPath());
+        for (Catalog.SketchInfo info : catalog.sketches()) {
+            assertTrue(readme.contains("](sketches/" + info.name() + ")"),
+                    info.name() + " has no line in the README's table of sections");
+            assertTrue(index.contains("- [" + info.name() + "](" + info.name() + "/)"),
+                    info.name() + " has no line in sketches/README.md, the sketch index");
         }
     }
 }

@@ -117,13 +117,11 @@ class SketchBuildTest {
     @Test
     void gallery_showsABrokenSketchWithItsError_andOpensOnlyTheOthers() {
         assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
-        List<String> names = catalog.sketches().stream().map(Catalog.SketchInfo::name).toList();
-        int broken = names.indexOf("BrokenTypeInTab");
-        int good = names.indexOf("StaticMode");
         List<String> opened = new ArrayList<>();
-        int[] b = Gallery.thumbnailCentre(broken);
-        int[] g = Gallery.thumbnailCentre(good);
-        SketchRun.Result<Gallery> r = SketchRun.of(new Gallery(catalog, info -> opened.add(info.name())))
+        Gallery gallery = new Gallery(catalog, info -> opened.add(info.name()));
+        int[] b = gallery.thumbnailCentre("BrokenTypeInTab");
+        int[] g = gallery.thumbnailCentre("StaticMode");
+        SketchRun.Result<Gallery> r = SketchRun.of(gallery)
                 .script(new Script().frames(12).click(3, b[0], b[1]).click(7, g[0], g[1])).run();
         assertEquals(List.of("StaticMode"), opened, "a click on a broken sketch opens nothing");
         assertEquals(0xFF5A1E22, r.lastFrame().get(b[0] - 90, b[1] + 60), "the broken sketch's card is red");
