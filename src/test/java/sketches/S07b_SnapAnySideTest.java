@@ -58,27 +58,66 @@ class S07b_SnapAnySideTest {
         return states;
     }
 
+    /** A tour round the center rectangle (250, 130, 100 x 140), from the player's start at (60, 60). */
+    private static Script tour(boolean snapCall) {
+        Script script = new Script().frames(400);
+        if (snapCall) {
+            script.key(1, 't');
+        }
+        String[] moves = {"RIGHT 40", "DOWN 20",                // onto the top
+                          "RIGHT 30", "DOWN 30", "LEFT 20",     // against the right side
+                          "DOWN 20", "LEFT 20", "UP 20",        // up against the bottom
+                          "LEFT 30", "UP 10", "RIGHT 30"};      // against the left side
+        int f = 3;
+        for (String move : moves) {
+            String[] w = move.split(" ");
+            int length = Integer.parseInt(w[1]);
+            script.hold(f, w[0], length);
+            f += length + 2;
+        }
+        return script;
+    }
+
     @ParameterizedTest(name = "Snap.pushBack: {0}")
     @ValueSource(booleans = {false, true})
-    void randomWalk_neverEndsInside_andRestsAgainstEverySide(boolean snapCall) {
+    void aTourRoundIt_restsFlushAgainstEverySide_andNeverEndsInside(boolean snapCall) {
         Map<String, Integer> rested = new HashMap<>();
-        SketchRun.of(new S07b_SnapAnySide()).script(walk(snapCall)).everyFrame(s -> {
-            assertFalse(Collide.rectRect(s.playerX, s.playerY, s.playerWidth, s.playerHeight,
-                    s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight),
-                    "inside the center rectangle at (" + s.playerX + ", " + s.playerY + "), frame " + s.frameCount);
-            assertTrue(s.playerX >= 0 && s.playerX + s.playerWidth <= s.width && s.playerY >= 0 && s.playerY + s.playerHeight <= s.height,
-                    "in the window, frame " + s.frameCount);
+        SketchRun.of(new S07b_SnapAnySide()).script(tour(snapCall)).everyFrame(s -> {
+            assertNotInside(s);
             rested.merge(s.touchedSide(), 1, Integer::sum);
         }).run();
         for (String side : new String[] {"left", "right", "top", "bottom"}) {
-            assertTrue(rested.getOrDefault(side, 0) > 0, "rested against the " + side + " side: " + rested);
+            assertTrue(rested.getOrDefault(side, 0) > 5, "rested against the " + side + " side: " + rested);
         }
+    }
+
+    @ParameterizedTest(name = "Snap.pushBack: {0}")
+    @ValueSource(booleans = {false, true})
+    void randomWalk_neverEndsInside_norOutOfTheWindow(boolean snapCall) {
+        Map<String, Integer> rested = new HashMap<>();
+        SketchRun.of(new S07b_SnapAnySide()).script(walk(snapCall)).everyFrame(s -> {
+            assertNotInside(s);
+            rested.merge(s.touchedSide(), 1, Integer::sum);
+        }).run();
+        assertTrue(rested.size() >= 3, "the walk ran into at least two sides: " + rested);
+    }
+
+    private static void assertNotInside(S07b_SnapAnySide s) {
+        assertFalse(Collide.rectRect(s.playerX, s.playerY, s.playerWidth, s.playerHeight,
+                s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight),
+                "inside the center rectangle at (" + s.playerX + ", " + s.playerY + "), frame " + s.frameCount);
+        assertTrue(s.playerX >= 0 && s.playerX + s.playerWidth <= s.width && s.playerY >= 0 && s.playerY + s.playerHeight <= s.height,
+                "in the window, frame " + s.frameCount);
     }
 
     @Test
     void theIfs_andSnapPushBack_moveItAlike_everyFrame() {
         List<float[]> ifs = positions(walk(false));
         List<float[]> call = positions(walk(true));
+        List<float[]> ifsTour = positions(tour(false));
+        List<float[]> callTour = positions(tour(true));
+        ifs.addAll(ifsTour);
+        call.addAll(callTour);
         assertEquals(ifs.size(), call.size());
         for (int f = 0; f < ifs.size(); f++) {
             assertEquals(ifs.get(f)[0], call.get(f)[0], "playerX, frame " + (f + 1));
