@@ -6,7 +6,7 @@ void drawMaths() {
   float uy = d > 0.5 ? (circleCenterY - y) / d : 0;
 
   Overlay.radius(g, x, y, ux, uy, r, "r");
-  Overlay.radius(g, circleCenterX, circleCenterY, -ux, -uy, circleRadius, "R");
+  Overlay.radius(g, circleCenterX, circleCenterY, -ux, -uy, circleRadius, "circleRadius");
   Overlay.guide(g, x, y, circleCenterX, circleCenterY);
   noStroke();
   fill(Overlay.GUIDE);
@@ -15,6 +15,6 @@ void drawMaths() {
   Overlay.labelBeside(g, (x + circleCenterX) / 2 + uy * 18, (y + circleCenterY) / 2 - ux * 18, uy, -ux, "dist = " + Overlay.number(d), Overlay.GUIDE);
 
   color colour = inside ? Overlay.HIT : Overlay.MISS;
-  float verdictY = y - r < 60 && abs(x - width / 2) < 150 ? height - 46 : 36;
+  float verdictY = y - r < 60 && abs(x - width / 2) < 150 ? height - 46 : 28;
   Overlay.labelCentered(g, width / 2, verdictY, "dist < r + circleRadius\n" + Overlay.verdict(d, "<", r + circleRadius, inside), colour);
 }

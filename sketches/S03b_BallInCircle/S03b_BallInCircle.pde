@@ -93,8 +93,8 @@ void draw() {
   if (showMaths) {
     drawMaths();
   }
-  Overlay.label(g, 8, 8, tutorialsCode ? "the tutorial's tests: the centre, speed *= -1; dist()" : "Hitbox's: Edges, Collide.circleCircle");
-  Overlay.hint(g, "t: " + (tutorialsCode ? "Hitbox's tests" : "the tutorial's tests") + "     d: show the maths     space: pause     click: put the ball there");
+  Overlay.hint(g, (tutorialsCode ? "the tutorial's tests (t: Hitbox's)" : "Hitbox's tests (t: the tutorial's)")
+      + "     d: show the maths     space: pause     click: put the ball there");
   drawBounce();
 }
 
