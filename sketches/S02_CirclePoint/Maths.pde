@@ -1,7 +1,32 @@
-// The "show the maths" overlay: the distance, the radius, and the test both ways.
+// How close the mouse is, the answers, and the "show the maths" overlay (key d).
+
+/** One answer, written in its colour: "Collide.circlePoint: inside". */
+void answer(float x, float y, String who, boolean inside) {
+  Overlay.label(g, x, y, who + ": " + (inside ? "inside" : "outside"), inside ? Overlay.HIT : Overlay.MISS);
+}
+
+/**
+ * The mouse is close: the ring closeDistance out from the outline, a line from the mouse to
+ * the nearest point of the outline, and how far that is, dist(...) - circleRadius.
+ */
+void drawHowClose() {
+  float d = dist(mouseX, mouseY, circleCenterX, circleCenterY);
+  float nearestX = circleCenterX + (mouseX - circleCenterX) * circleRadius / d;
+  float nearestY = circleCenterY + (mouseY - circleCenterY) * circleRadius / d;
+  noFill();
+  stroke(Palette.ACCENT, 90);
+  strokeWeight(1);
+  ellipse(circleCenterX, circleCenterY, (circleRadius + closeDistance) * 2, (circleRadius + closeDistance) * 2);
+  stroke(Palette.ACCENT);
+  strokeWeight(2);
+  line(mouseX, mouseY, nearestX, nearestY);
+  Overlay.labelBeside(g, mouseX + (mouseX - circleCenterX) / d * 10, mouseY + (mouseY - circleCenterY) / d * 10,
+      (mouseX - circleCenterX) / d, (mouseY - circleCenterY) / d,
+      "close: " + Overlay.number(d - circleRadius) + " px from the circle", Palette.ACCENT);
+}
 
 /** The distance from the centre to the mouse, the radius beside it, and dist < r written out. */
-void drawMaths() {
+void drawMaths(boolean inside) {
   float d = dist(circleCenterX, circleCenterY, mouseX, mouseY);
   // The direction from the centre to the mouse (to the right when the mouse is on the centre).
   float ux = d > 0.5 ? (mouseX - circleCenterX) / d : 1;
@@ -25,6 +50,6 @@ void drawMaths() {
   float dy = mouseY - circleCenterY;
   String squared = "dx * dx + dy * dy < r * r:  " + int(dx * dx + dy * dy) + " < " + int(circleRadius * circleRadius);
   color colour = inside ? Overlay.HIT : Overlay.MISS;
-  Overlay.labelCentered(g, width / 2, 34, "dist < r:  " + Overlay.verdict(d, "<", circleRadius, inside)
+  Overlay.labelCentered(g, width / 2, 8, "dist < r:  " + Overlay.verdict(d, "<", circleRadius, inside)
       + "\n" + squared + "  (Collide.circlePoint)", colour);
 }

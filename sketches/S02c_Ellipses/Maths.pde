@@ -14,7 +14,8 @@ void drawMaths() {
   float c = cos(e.angle());
   float s = sin(e.angle());
   Overlay.radius(g, e.x(), e.y(), c, s, e.rx(), "rx");
-  Overlay.radius(g, e.x(), e.y(), s, -c, e.ry(), "ry");
+  // ry drawn down its axis (-s, c): its label goes above the centre, rx's to the left, apart.
+  Overlay.radius(g, e.x(), e.y(), -s, c, e.ry(), "ry");
   Overlay.guide(g, e.x(), e.y(), mouseX, mouseY);
   noStroke();
   fill(Overlay.GUIDE);

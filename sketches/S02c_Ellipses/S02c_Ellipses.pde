@@ -1,6 +1,11 @@
 /**
- * Ellipses: the tutorial's ball as the ellipse it is drawn with
- * Tutorial section 2: Circle/Point, for ellipses
+ * Ellipses: when ellipse() is given two sizes
+ * Tutorial section 2: Circle/Point, for ellipses (beyond the tutorial)
+ *
+ * The tutorial draws its ball and its circles with ellipse(), always as wide as they are
+ * tall, so they are circles and its distance tests fit them (section 1 tests only the ball's
+ * centre). Give ellipse() a different width and height and the shape is an ellipse, which
+ * no distance test fits; the tutorial has no test for it, so this sketch goes beyond it.
  *
  * ellipse(x, y, w, h) draws an ellipse with radii w / 2 and h / 2. A point is inside when
  * (dx / rx)^2 + (dy / ry)^2 < 1: Collide.ellipsePoint(x, y, rx, ry, mouseX, mouseY). A circle

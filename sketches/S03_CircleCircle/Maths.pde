@@ -1,7 +1,12 @@
-// The "show the maths" overlay: the line between the centres, both radii, and the test.
+// The answers, and the "show the maths" overlay: the line between the centres, both radii, and the test.
+
+/** One answer, written in its colour: "Collide.circleCircle: colliding". */
+void answer(float x, float y, String who, boolean colliding) {
+  Overlay.label(g, x, y, who + ": " + (colliding ? "colliding" : "not colliding"), colliding ? Overlay.HIT : Overlay.MISS);
+}
 
 /** The line between the centres with its length, each radius along it, and dist < r1 + r2. */
-void drawMaths() {
+void drawMaths(boolean colliding) {
   float x1 = mouseX;                 // circle 1: the small one, on the mouse
   float y1 = mouseY;
   float r1 = smallCircleRadius;

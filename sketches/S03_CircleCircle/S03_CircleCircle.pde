@@ -2,12 +2,13 @@
  * Circle/Circle
  * Tutorial section 3: Circle/Circle
  *
- * Two circles overlap when the distance between their centres is less than the sum of their
- * radii: the tutorial writes dist(mouseX, mouseY, width / 2, height / 2) < bigCircleRadius +
- * smallCircleRadius. Move the blue circle with the mouse; the one in the middle turns red
- * while they overlap. Hitbox's Collide.circleCircle asks the same question squared, in
- * double: the same answers with no square root to round, so circles that only touch (the
- * distance exactly the sum) never collide.
+ * The tutorial's program: a big circle in the middle of the window, drawn as an outline, and
+ * a small one on the mouse. They collide when the distance between their centres is less
+ * than the sum of their radii: dist(mouseX, mouseY, width / 2, height / 2) < bigCircleRadius
+ * + smallCircleRadius. The small circle turns red while they collide, green otherwise.
+ * Hitbox's Collide.circleCircle asks the same question squared, in double: the same answers
+ * with no square root to round, so circles that only touch (the distance exactly the sum)
+ * never collide. Both answers are written at the top, every frame.
  *
  * Try this: change the radii; give the mouse circle radius 0 and it behaves as a point
  * (section 2); put circles in an array and test every pair.
@@ -16,10 +17,9 @@
 import hitbox.*;
 import hitbox.processing.*;
 
-float bigCircleRadius = 100;   // the circle in the middle of the window
-float smallCircleRadius = 75;  // the circle on the mouse
+float bigCircleRadius = 100;   // the tutorial's is 50 in a 300 x 300 window
+float smallCircleRadius = 75;  // and 25: here both are bigger, the sum is the 175 of its pictures
 
-boolean colliding;   // do they overlap? The colour shows it, the overlay writes it out
 boolean showMaths;   // d
 
 void setup() {
@@ -29,29 +29,38 @@ void setup() {
 
 void draw() {
   background(Palette.BACKGROUND);
+  //draw the big circle
+  noFill();
+  stroke(255);
+  strokeWeight(2);
+  ellipse(width / 2, height / 2, bigCircleRadius * 2, bigCircleRadius * 2);
 
-  // The tutorial's test: is the distance between the centres less than the sum of the radii?
-  //   if (dist(mouseX, mouseY, width / 2, height / 2) < bigCircleRadius + smallCircleRadius)
-  // Collide.circleCircle is that test, compared squared:
-  colliding = Collide.circleCircle(mouseX, mouseY, smallCircleRadius, width / 2, height / 2, bigCircleRadius);
+  //the tutorial's if: is the distance between the centres less than the sum of the radii?
+  boolean tutorialsIf = dist(mouseX, mouseY, width / 2, height / 2) < bigCircleRadius + smallCircleRadius;
+  //Hitbox's call: the same question, compared squared
+  boolean colliding = Collide.circleCircle(mouseX, mouseY, smallCircleRadius, width / 2, height / 2, bigCircleRadius);
+
+  //change color if circles are colliding
   if (colliding) {
     fill(Palette.HIT);
   } else {
     fill(Palette.MISS);
   }
+  //draw the small circle
   noStroke();
-  circle(width / 2, height / 2, 2 * bigCircleRadius);
-
-  // The mouse circle, see-through so the overlap shows.
-  stroke(Palette.PLAYER);
-  strokeWeight(2);
-  fill(Palette.PLAYER, 150);
-  circle(mouseX, mouseY, 2 * smallCircleRadius);
+  ellipse(mouseX, mouseY, smallCircleRadius * 2, smallCircleRadius * 2);
+  // The big circle's outline again, over it, so the overlap shows.
+  noFill();
+  stroke(255);
+  ellipse(width / 2, height / 2, bigCircleRadius * 2, bigCircleRadius * 2);
 
   if (showMaths) {
-    drawMaths();
+    drawMaths(colliding);
+  } else {
+    answer(8, 8, "the tutorial's if, dist() < bigCircleRadius + smallCircleRadius", tutorialsIf);
+    answer(8, 30, "Collide.circleCircle", colliding);
   }
-  Overlay.hint(g, "move the blue circle onto the other one     d: show the maths");
+  Overlay.hint(g, "move the small circle onto the big one     d: show the maths");
 }
 
 void keyPressed() {

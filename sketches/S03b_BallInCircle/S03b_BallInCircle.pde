@@ -2,25 +2,30 @@
  * Ball in a Circle
  * Tutorial section 3: Circle/Circle
  *
- * The tutorial's "try this" at the end of the circle sections: a ball that bounces off the
- * edges of the window and turns red inside a circle in the middle. Two tests each frame:
- * section 1's edges, and section 3's circle/circle, Collide.circleCircle(x, y, r, cx, cy, R),
- * the tutorial's dist(x, y, cx, cy) < r + R. Red here means "overlapping": the ball turns
- * red as soon as it reaches in. The edges are Hitbox's way from S01 (the ball's edge
- * tested, the speed's sign set), with the ball put back at the edge.
+ * The tutorial's "try this" at the end of section 3: a ball that bounces off the edges of
+ * the screen and also turns red when it is inside a circle at the center of the window. The
+ * tutorial leaves the program to you; here it is, with two tests each frame: section 1's
+ * edges, and section 3's circles, dist(x, y, circleCenterX, circleCenterY) < r +
+ * circleRadius. Red here means "overlapping": the ball turns red as soon as it reaches in.
  *
- * Try this: make it red only when wholly inside (dist + r < R); make the ball bigger than
- * the circle; add a second ball and test the two balls against each other.
- * Keys: d shows the maths (distance, both radii, dist < r + R, the edges crossed). Space
- * pauses. Click to put the ball at the mouse.
+ * Press t for the tutorial's own tests: section 1's centre against the edges with the speed
+ * multiplied by -1 (the ball goes half out of the window before it turns), and the dist()
+ * test written out. By default Hitbox's: the ball's edge against the window's (Edges, as in
+ * S01), the speed's sign set and the ball put back at the edge, and Collide.circleCircle,
+ * the same test compared squared.
+ *
+ * Try this: make it red only when wholly inside (dist + r < circleRadius); make the ball
+ * bigger than the circle; add a second ball and test the two balls against each other.
+ * Keys: t the tutorial's tests / Hitbox's, d shows the maths (distance, both radii,
+ * dist < r + circleRadius, the edges crossed), space pauses, click puts the ball at the mouse.
  */
 import hitbox.*;
 import hitbox.processing.*;
 
 // The circle in the middle.
-float cx = 300;
-float cy = 200;
-float R = 90;
+float circleCenterX = 300;
+float circleCenterY = 200;
+float circleRadius = 90;
 
 // The ball: position, radius and speed (pixels a frame).
 float x = 110;
@@ -30,6 +35,7 @@ float xSpeed = 3.3;
 float ySpeed = 2.1;
 
 boolean inside;      // does the ball overlap the circle? It is drawn red while it does
+boolean tutorialsCode;  // t: the tutorial's tests instead of Hitbox's
 boolean paused;      // space
 boolean showMaths;   // d
 
@@ -44,23 +50,39 @@ void draw() {
   if (!paused) {
     x += xSpeed;
     y += ySpeed;
-    // Section 1: bounce off the window's edges, Hitbox's way (S01), then put it back at the edge.
-    int crossed = Edges.circleCrossed(x, y, r, width, height);
-    xSpeed = Edges.bounceX(crossed, xSpeed);
-    ySpeed = Edges.bounceY(crossed, ySpeed);
-    x = Edges.circleClampX(x, r, width);
-    y = Edges.circleClampY(y, r, height);
+    int crossed;
+    if (tutorialsCode) {
+      // Section 1 as the tutorial writes it: the centre past an edge, the speed flipped.
+      if (x < 0 || x > width) {
+        xSpeed *= -1;
+      }
+      if (y < 0 || y > height) {
+        ySpeed *= -1;
+      }
+      crossed = Edges.pointCrossed(x, y, width, height);   // only for the edge that lights up
+    } else {
+      // Hitbox's (S01): the ball's edge, the speed's sign set, then put back at the edge.
+      crossed = Edges.circleCrossed(x, y, r, width, height);
+      xSpeed = Edges.bounceX(crossed, xSpeed);
+      ySpeed = Edges.bounceY(crossed, ySpeed);
+      x = Edges.circleClampX(x, r, width);
+      y = Edges.circleClampY(y, r, height);
+    }
     addToTrail(crossed);
   }
 
-  // Section 3: does the ball overlap the circle? dist(x, y, cx, cy) < r + R
-  inside = Collide.circleCircle(x, y, r, cx, cy, R);
+  // Section 3: does the ball overlap the circle?
+  if (tutorialsCode) {
+    inside = dist(x, y, circleCenterX, circleCenterY) < r + circleRadius;
+  } else {
+    inside = Collide.circleCircle(x, y, r, circleCenterX, circleCenterY, circleRadius);
+  }
 
   // The circle: an obstacle the ball passes through.
   stroke(Palette.OBSTACLE);
   strokeWeight(2);
   fill(Palette.OBSTACLE, 50);
-  circle(cx, cy, 2 * R);
+  circle(circleCenterX, circleCenterY, 2 * circleRadius);
 
   color ballColour = inside ? Palette.HIT : Palette.MISS;
   drawTrail(ballColour);
@@ -71,7 +93,8 @@ void draw() {
   if (showMaths) {
     drawMaths();
   }
-  Overlay.hint(g, "d: show the maths     space: pause     click: put the ball there");
+  Overlay.hint(g, (tutorialsCode ? "the tutorial's tests (t: Hitbox's)" : "Hitbox's tests (t: the tutorial's)")
+      + "     d: show the maths     space: pause     click: put the ball there");
   drawBounce();
 }
 
@@ -83,6 +106,8 @@ void mousePressed() {
 void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
+  } else if (key == 't') {
+    tutorialsCode = !tutorialsCode;
   } else if (key == ' ') {
     paused = !paused;
   }

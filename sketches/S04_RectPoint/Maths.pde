@@ -1,5 +1,10 @@
 // The "show the maths" overlay: each comparison at its edge, in the order Java reaches them.
 
+/** One answer, written in its colour: "Collide.rectPoint: inside". */
+void answer(float x, float y, String who, boolean inside) {
+  Overlay.label(g, x, y, who + ": " + (inside ? "inside" : "not inside"), inside ? Overlay.HIT : Overlay.MISS);
+}
+
 // The colour of a comparison Java never reaches: && (or the outer if) stopped before it.
 color NOT_REACHED = Palette.OBSTACLE;
 
@@ -8,7 +13,7 @@ color NOT_REACHED = Palette.OBSTACLE;
  * grey if it is never reached. Both forms reach them in the same order and stop at the
  * first false one, so only the code written at the top changes with n.
  */
-void drawMaths() {
+void drawMaths(boolean hovered) {
   float px = mouseX;
   float py = mouseY;
   boolean left = px > rectX;
@@ -51,7 +56,7 @@ void drawMaths() {
         + "    mouseY > rectY && mouseY < rectY + rectHeight) {\n";
   }
   code += hovered ? "inside: the mouse is over the button" : "not inside";
-  Overlay.label(g, 8, 30, code, hovered ? Overlay.HIT : Overlay.MISS);
+  Overlay.label(g, 8, 8, code, hovered ? Overlay.HIT : Overlay.MISS);
 }
 
 /** A comparison's text: what it compares and, if Java reaches it, with the numbers. */

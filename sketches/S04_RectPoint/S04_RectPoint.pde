@@ -5,9 +5,11 @@
  * A button: the mouse is over it when it is right of the left edge, left of the right edge,
  * below the top edge and above the bottom edge. The tutorial writes that two ways, as two
  * nested ifs (across, then down) and combined into one if with &&; n switches between
- * them. They are the same test, even in the work they do: && stops at the first comparison
- * that is false, as the nested if does. Collide.rectPoint is the combined if (it adds
- * rectX + rectWidth in double, so the sum never rounds). A click counts only on the button.
+ * them, and the one chosen colours the button. They are the same test, even in the work they
+ * do: && stops at the first comparison that is false, as the nested if does. Hitbox's
+ * Collide.rectPoint is the combined if (it adds rectX + rectWidth in double, so the sum never
+ * rounds); both answers are written at the top. A click counts only on the button, the
+ * tutorial's "another if statement that also checks whether the mouse is pressed".
  *
  * Try this: make several buttons from an array of rectangles; make the button move away
  * when hovered; change rectMode to CENTER and see which numbers have to change.
@@ -24,7 +26,6 @@ float rectWidth = 200;
 float rectHeight = 100;
 
 boolean nestedIf;    // n: the tutorial's nested ifs, or its combined if
-boolean hovered;     // is the mouse over the button? Its colour shows it
 int clicks;          // clicks that landed on the button
 boolean showMaths;   // d
 
@@ -36,8 +37,9 @@ void setup() {
 void draw() {
   background(Palette.BACKGROUND);
 
+  boolean hovered;
   if (nestedIf) {
-    // Nested: the second if is reached only when the first one holds.
+    //the tutorial's nested ifs: the second is reached only when the first holds
     hovered = false;
     if (mouseX > rectX && mouseX < rectX + rectWidth) {
       if (mouseY > rectY && mouseY < rectY + rectHeight) {
@@ -45,11 +47,11 @@ void draw() {
       }
     }
   } else {
-    // Combined into one if:
-    //   mouseX > rectX && mouseX < rectX + rectWidth && mouseY > rectY && mouseY < rectY + rectHeight
-    // which is Collide.rectPoint:
-    hovered = Collide.rectPoint(rectX, rectY, rectWidth, rectHeight, mouseX, mouseY);
+    //the tutorial's combined if
+    hovered = mouseX > rectX && mouseX < rectX + rectWidth && mouseY > rectY && mouseY < rectY + rectHeight;
   }
+  //Hitbox's call: the combined if
+  boolean onButton = Collide.rectPoint(rectX, rectY, rectWidth, rectHeight, mouseX, mouseY);
 
   noStroke();
   fill(hovered ? Palette.HIT : Palette.MISS);
@@ -66,9 +68,11 @@ void draw() {
   fill(Palette.NEUTRAL);
   circle(mouseX, mouseY, 9);
 
-  Overlay.label(g, 8, 8, nestedIf ? "the nested ifs" : "the combined if: Collide.rectPoint");
   if (showMaths) {
-    drawMaths();
+    drawMaths(hovered);
+  } else {
+    answer(8, 8, nestedIf ? "the tutorial's nested ifs" : "the tutorial's combined if", hovered);
+    answer(8, 30, "Collide.rectPoint", onButton);
   }
   Overlay.hint(g, "hover over the button and click it     n: nested if / combined if     d: show the maths");
 }

@@ -2,32 +2,34 @@
  * Rectangle/Rectangle
  * Tutorial section 5: Rectangle/Rectangle
  *
- * Two rectangles overlap when every edge of one is past the opposite edge of the other: r1's
- * right edge past r2's left, r1's left edge before r2's right, and the same down the page.
- * The mouse holds r1 by its top-left corner, as in the tutorial's sketch (rect() draws from
- * the corner); r2 turns red while they overlap. Rectangles side by side, sharing an edge, do
- * not collide: all four comparisons are strict.
+ * The tutorial's program: a rectangle in the center and one at the mouse, held by its
+ * top-left corner (rect() draws from the corner). They collide when every edge of one is past
+ * the opposite edge of the other: the mouse rectangle's right edge past the center one's
+ * left, its left edge before the center one's right, and the same down the page. The mouse
+ * rectangle turns red while they collide, green otherwise. Rectangles side by side, sharing
+ * an edge, do not collide: all four comparisons are strict.
  *
  * Where Hitbox differs: it does not. Collide.rectRect makes the tutorial's four strict
- * comparisons; it only adds x + w in double, so that large coordinates cannot round.
+ * comparisons; it only adds x + width in double, so that large coordinates cannot round.
+ * Both answers are written at the top, every frame.
  *
- * Try this: make r1 as wide as the window (a floor); make r1 height 0 (a line: it collides
- * only by reaching into r2); hold r1 by its centre (r1x = mouseX - r1w / 2) and see which
- * numbers change. S05b shows the test written the other way round, with ||.
+ * Try this: make the mouse rectangle as wide as the window (a floor); make its height 0 (a
+ * line: it collides only by reaching into the center one); hold it by its center
+ * (mouseX - mouseRectWidth / 2) and see which numbers change. S05b shows the test the
+ * tutorial writes first, "not colliding" with ||.
  * Keys: d shows the maths (the four comparisons, each at the edges it compares).
  */
 import hitbox.*;
 import hitbox.processing.*;
 
-// r1 hangs from the mouse by its top-left corner; r2 stays in the middle of the window.
-float r1x, r1y;
-float r1w = 120;
-float r1h = 80;
-float r2x = 220;
-float r2y = 150;
-float r2w = 160;
-float r2h = 100;
-boolean showMaths;    // the 'd' overlay
+float centerRectX = 250;
+float centerRectY = 100;
+float centerRectWidth = 100;
+float centerRectHeight = 200;
+float mouseRectWidth = 200;
+float mouseRectHeight = 100;
+
+boolean showMaths;    // d
 
 void setup() {
   size(600, 400);
@@ -36,33 +38,41 @@ void setup() {
 
 void draw() {
   background(Palette.BACKGROUND);
-  r1x = mouseX;
-  r1y = mouseY;
-
-  // The tutorial's if: r1's right past r2's left, r1's left before r2's right, r1's bottom
-  // below r2's top, r1's top above r2's bottom.
-  boolean tutorialSays = r1x + r1w > r2x && r1x < r2x + r2w && r1y + r1h > r2y && r1y < r2y + r2h;
-  // The library's call: the same four comparisons.
-  boolean colliding = Collide.rectRect(r1x, r1y, r1w, r1h, r2x, r2y, r2w, r2h);
-
-  noStroke();
-  fill(colliding ? Palette.HIT : Palette.MISS);
-  rect(r2x, r2y, r2w, r2h);
-
-  // r1, see-through so the overlap shows.
-  stroke(Palette.PLAYER);
+  //draw the center rectangle
+  noFill();
+  stroke(255);
   strokeWeight(2);
-  fill(Palette.PLAYER, 150);
-  rect(r1x, r1y, r1w, r1h);
-  names();
+  rect(centerRectX, centerRectY, centerRectWidth, centerRectHeight);
+
+  //the tutorial's if: are the rectangles colliding?
+  boolean tutorialsIf = mouseX + mouseRectWidth > centerRectX && mouseX < centerRectX + centerRectWidth
+      && mouseY + mouseRectHeight > centerRectY && mouseY < centerRectY + centerRectHeight;
+  //Hitbox's call: the same four comparisons
+  boolean colliding = Collide.rectRect(mouseX, mouseY, mouseRectWidth, mouseRectHeight,
+      centerRectX, centerRectY, centerRectWidth, centerRectHeight);
+
+  //change color if rectangles are colliding
+  if (colliding) {
+    fill(Palette.HIT);
+  } else {
+    fill(Palette.MISS);
+  }
+  //draw the mouse rectangle
+  noStroke();
+  rect(mouseX, mouseY, mouseRectWidth, mouseRectHeight);
+  // The center rectangle's outline again, over it, so the overlap shows.
+  noFill();
+  stroke(255);
+  strokeWeight(2);
+  rect(centerRectX, centerRectY, centerRectWidth, centerRectHeight);
 
   if (showMaths) {
     drawMaths(colliding);
   } else {
-    answer(8, 8, "the tutorial's if", tutorialSays);
+    answer(8, 8, "the tutorial's if", tutorialsIf);
     answer(8, 30, "Collide.rectRect", colliding);
   }
-  Overlay.hint(g, "move the blue rectangle (the mouse holds its top-left corner)     d: show the maths");
+  Overlay.hint(g, "move the mouse rectangle (the mouse holds its top-left corner)     d: show the maths");
 }
 
 void keyPressed() {

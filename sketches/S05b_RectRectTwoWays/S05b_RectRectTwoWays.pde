@@ -3,8 +3,9 @@
  * Tutorial section 5: Rectangle/Rectangle
  *
  * The tutorial writes the rectangle test twice. First as "not colliding": four comparisons
- * joined by || (r1's right edge left of r2's left edge, or ...), with the collision in its
- * else. Then reversed: four comparisons joined by && that hold when they ARE colliding. The
+ * joined by || (r1's right edge left of r2's left edge, or ...); an else after it would be
+ * the collision. Then reversed: four comparisons joined by && that hold when they ARE
+ * colliding (it names the rectangles rectOne and rectTwo; here r1 and r2). The
  * video shows both and calls the || form "a bit more efficient". Here both forms run on the
  * same rectangles every frame. Each comparison lights up as Java evaluates it (red: it points
  * to "colliding", green: to "not colliding"); grey ones were skipped, because && stops at

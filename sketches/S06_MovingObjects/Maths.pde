@@ -2,15 +2,12 @@
 
 void drawScene() {
   background(Palette.BACKGROUND);
-  // The block glows red for a moment after each bounce off it.
-  fill(Palette.OBSTACLE);
-  if (flash > 0) {
-    stroke(Palette.HIT);
-    strokeWeight(4);
-  } else {
-    noStroke();
-  }
-  rect(blockX, blockY, blockW, blockH);
+  //draw the center rectangle: a white outline, as the tutorial draws it
+  noFill();
+  stroke(255);
+  strokeWeight(2);
+  rect(centerRectX, centerRectY, centerRectWidth, centerRectHeight);
+  //draw the bouncing rectangle: blue, as in the tutorial's picture
   noStroke();
   if (showMaths) {
     // See-through, so the next-position boxes show around and under it.
@@ -20,16 +17,18 @@ void drawScene() {
   } else {
     fill(Palette.PLAYER);
   }
-  rect(x, y, w, h);
+  rect(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight);
 
-  // Inside the block: what the checks were there to prevent. It is less than a step deep,
-  // so a magnifier shows it 6 times bigger.
+  // Inside the center rectangle: what the checks were there to prevent. It is less than a
+  // step deep, so a magnifier shows it 6 times bigger.
   PImage zoom = null;
-  float ix = max(x, blockX), iy = max(y, blockY);
-  if (Collide.rectRect(x, y, w, h, blockX, blockY, blockW, blockH)) {
+  float ix = max(bouncingRectX, centerRectX), iy = max(bouncingRectY, centerRectY);
+  if (Collide.rectRect(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight,
+      centerRectX, centerRectY, centerRectWidth, centerRectHeight)) {
     noStroke();
     fill(Palette.HIT);
-    rect(ix, iy, min(x + w, blockX + blockW) - ix, min(y + h, blockY + blockH) - iy);
+    rect(ix, iy, min(bouncingRectX + bouncingRectWidth, centerRectX + centerRectWidth) - ix,
+        min(bouncingRectY + bouncingRectHeight, centerRectY + centerRectHeight) - iy);
     zoom = get((int) ix - 10, (int) iy - 10, 20, 20);
   }
 
@@ -44,43 +43,47 @@ void drawScene() {
     image(magnified(zoom, 6), zx, zy);
     noFill();
     rect(zx, zy, 120, 120);
-    Overlay.label(g, zx, zy + 126, "inside the block!\n(6 times bigger)", Overlay.HIT);
+    Overlay.label(g, zx, zy + 126, "inside!\n(6 times bigger)", Overlay.HIT);
   }
-  String way = tutorialWay ? "the tutorial's code" : "Motion.rectBlocked: " + Motion.describe(blocked);
+  String way = library ? "Motion.rectBlocked" : "the tutorial's code";
   Overlay.label(g, 8, 8, (paused ? "paused: n steps one frame, p goes on   " : "") + way);
-  Overlay.label(g, 8, 30, "frames the box ended inside the block: " + framesInside, framesInside > 0 ? Overlay.HIT : Overlay.MISS);
-  Overlay.hint(g, "t: " + (tutorialWay ? "Motion.rectBlocked" : "the tutorial's code")
+  Overlay.label(g, 8, 30, "frames it ended inside the center rectangle: " + framesInside, framesInside > 0 ? Overlay.HIT : Overlay.MISS);
+  Overlay.hint(g, "t: " + (library ? "the tutorial's code" : "Motion.rectBlocked")
       + "   c: aim at the corner   p: pause   n: one frame   d: show the maths");
 }
 
 // The boxes the next frame's checks test, drawn where they are, each with its answer.
 void drawMaths() {
-  boolean hitX = Collide.rectRect(x + vx, y, w, h, blockX, blockY, blockW, blockH);
-  boolean hitY = Collide.rectRect(x, y + vy, w, h, blockX, blockY, blockW, blockH);
-  boolean hitBoth = Collide.rectRect(x + vx, y + vy, w, h, blockX, blockY, blockW, blockH);
-  nextBox(x + vx, y, hitX);
-  nextBox(x, y + vy, hitY);
+  float nextX = bouncingRectX + bouncingRectSpeedX;
+  float nextY = bouncingRectY + bouncingRectSpeedY;
+  float w = bouncingRectWidth;
+  float h = bouncingRectHeight;
+  boolean hitX = Collide.rectRect(nextX, bouncingRectY, w, h, centerRectX, centerRectY, centerRectWidth, centerRectHeight);
+  boolean hitY = Collide.rectRect(bouncingRectX, nextY, w, h, centerRectX, centerRectY, centerRectWidth, centerRectHeight);
+  boolean hitBoth = Collide.rectRect(nextX, nextY, w, h, centerRectX, centerRectY, centerRectWidth, centerRectHeight);
+  nextBox(nextX, bouncingRectY, hitX);
+  nextBox(bouncingRectX, nextY, hitY);
   if (hitBoth && !hitX && !hitY) {
     // The corner case: neither axis alone hits, the diagonal move does.
-    nextBox(x + vx, y + vy, true);
-    Overlay.label(g, x + vx + w + 6, y + vy + h + 6, tutorialWay
-        ? "next x and y (corner): colliding,\nbut the tutorial's code never tests it"
-        : "next x and y (corner): colliding,\nMotion.rectBlocked reverses both", Overlay.HIT);
+    nextBox(nextX, nextY, true);
+    Overlay.label(g, nextX + w + 6, nextY + h + 6, library
+        ? "next across and down (corner): colliding,\nMotion.rectBlocked reverses both"
+        : "next across and down (corner): colliding,\nbut the tutorial's code never tests it", Overlay.HIT);
   }
   stroke(Palette.NEUTRAL);
-  Draw.arrow(g, x + w / 2, y + h / 2, vx * 8, vy * 8);
+  Draw.arrow(g, bouncingRectX + w / 2, bouncingRectY + h / 2, bouncingRectSpeedX * 8, bouncingRectSpeedY * 8);
 
-  // "next x" on the side the box is moving to across, "next y" on the side it moves to down.
-  String sx = "next x: (x + vx, y) = (" + Overlay.number(x + vx) + ", " + Overlay.number(y) + ")\n"
-      + (hitX ? "colliding: reverse vx" : "not colliding");
-  String sy = "next y: (x, y + vy) = (" + Overlay.number(x) + ", " + Overlay.number(y + vy) + ")\n"
-      + (hitY ? "colliding: reverse vy" : "not colliding");
-  float lx = vx > 0 ? x + w + 10 : x - 200;
-  float ly = vy > 0 ? y + h + 10 : y - 44;
-  Overlay.label(g, lx, y, sx, hitX ? Overlay.HIT : Overlay.MISS);
-  Overlay.label(g, x - 40, ly, sy, hitY ? Overlay.HIT : Overlay.MISS);
-  Overlay.label(g, 8, 52, "vx = " + Overlay.number(vx) + "   vy = " + Overlay.number(vy)
-      + "\nwindow: Edges.rectCrossed(next) = " + Edges.describe(Edges.rectCrossed(x + vx, y + vy, w, h, width, height)));
+  // The across check beside the side it moves to, the down check above or below.
+  String sx = "nextBouncingLeft, nextBouncingRight = " + Overlay.number(nextX) + ", " + Overlay.number(nextX + w)
+      + "\nwith the current top and bottom: " + (hitX ? "colliding: bouncingRectSpeedX *= -1" : "not colliding");
+  String sy = "nextBouncingTop, nextBouncingBottom = " + Overlay.number(nextY) + ", " + Overlay.number(nextY + h)
+      + "\nwith the current left and right: " + (hitY ? "colliding: bouncingRectSpeedY *= -1" : "not colliding");
+  float lx = bouncingRectSpeedX > 0 ? bouncingRectX + w + 10 : bouncingRectX - 330;
+  float ly = bouncingRectSpeedY > 0 ? bouncingRectY + h + 10 : bouncingRectY - 44;
+  Overlay.label(g, constrain(lx, 4, width - 330), bouncingRectY, sx, hitX ? Overlay.HIT : Overlay.MISS);
+  Overlay.label(g, constrain(bouncingRectX - 40, 4, width - 330), ly, sy, hitY ? Overlay.HIT : Overlay.MISS);
+  Overlay.label(g, 8, 52, "bouncingRectSpeedX = " + Overlay.number(bouncingRectSpeedX)
+      + "   bouncingRectSpeedY = " + Overlay.number(bouncingRectSpeedY));
 }
 
 void nextBox(float bx, float by, boolean colliding) {
@@ -89,7 +92,7 @@ void nextBox(float bx, float by, boolean colliding) {
   fill(colour, 60);
   strokeWeight(2);
   stroke(colour);
-  rect(bx, by, w, h);
+  rect(bx, by, bouncingRectWidth, bouncingRectHeight);
   popStyle();
 }
 

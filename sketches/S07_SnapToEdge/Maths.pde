@@ -1,109 +1,79 @@
-// The drawing, and the "show the maths" overlay (key d): where the move put the player, the
-// overlap with what it ran into, and the side it was snapped out through.
+// The ground, the words beside the player, and the "show the maths" overlay (key d).
 
-String[] wayNames = {"", "1 sink: stop falling (vy = 0)", "2 stop short: the next position is taken",
-    "3 the tutorial's snap: y = top - h", "4 Snap.pushBack"};
+String[] wayNames = {"", "1: speed 0 where it is (no snap)", "2: stop if the next position is in the ground",
+    "3: the tutorial's snap, playerY = groundY - playerHeight", "4: Hitbox's Snap.onGround and Snap.standY"};
 
-// What the last move ran into, per axis: where the move put the player before the snap,
-// what it overlapped, and the side it was snapped out through.
-Side xSide = Side.NONE;
-Side ySide = Side.NONE;
-Rect xMoved, xHit, yMoved, yHit;
-boolean showMaths = false;
-
-/** Notes a snap before it happens: across or down, what was hit, through which side. */
-void remember(boolean across, Rect hit, Side side) {
-  Rect moved = new Rect(x, y, w, h);
-  if (across) {
-    xMoved = moved;
-    xHit = hit;
-    xSide = side;
-  } else {
-    yMoved = moved;
-    yHit = hit;
-    ySide = side;
-  }
+/** A new way starts with a new fall, from where the tutorial's player starts. */
+void dropAgain() {
+  playerY = 100;
+  playerSpeedY = 0;
+  jumping = false;
 }
 
-void drawScene() {
-  background(Palette.BACKGROUND);
-  // The player first: what it has sunk into hides the part inside.
+/** The tutorial's ground: a white line at groundY. */
+void drawGround() {
+  stroke(255);
+  strokeWeight(2);
+  line(0, groundY, width, groundY);
+}
+
+/** The earth under the line, see-through, over the player: a part inside the ground shows as under it. */
+void drawEarth() {
   noStroke();
-  fill(Palette.PLAYER);
-  rect(x, y, w, h);
-  fill(Palette.OBSTACLE);
-  for (Rect s : solids) {
-    Draw.shape(g, s);
-  }
-
-  if (showMaths) {
-    drawMaths();
-  }
-  standing();
-  Overlay.label(g, 8, 8, "way: " + wayNames[way] + "\n" + (onGround ? "on the ground: UP or SPACE jumps" : "in the air"));
-  Overlay.hint(g, "LEFT / RIGHT: walk   UP or SPACE: jump   1 sink, 2 stop short, 3 snap, 4 Snap.pushBack   d: show the maths");
+  fill(Palette.OBSTACLE, 110);
+  rect(0, groundY, width, height - groundY);
+  drawGround();
 }
 
-/** On what it stands: exactly on it, inside it (1), or hanging above it (2). */
-void standing() {
-  for (Rect s : solids) {
-    float into = y + h - s.y();
-    boolean near = into > 0 ? y < s.bottom() : into > -14 && (onGround || way == STOP_SHORT) && vy >= 0;
-    if (x < s.right() && x + w > s.x() && near) {
-      String text = into > 0 ? "sunk " + Overlay.number(into) + " px into it"
-          : into < 0 ? "hanging " + Overlay.number(-into) + " px above it" : "standing exactly on it";
-      Overlay.labelBeside(g, x + w, y + h / 2, 1, 0, text, into == 0 ? Overlay.MISS : Overlay.HIT);
-      return;
-    }
+/** The way at the top; beside the player, where it stands: inside, above, or exactly on the ground. */
+void drawWay() {
+  Overlay.label(g, 8, 8, "way " + wayNames[way]);
+  float gap = groundY - (playerY + playerHeight);
+  float sx = playerX + playerWidth + 8;
+  float sy = playerY + playerHeight / 2;
+  if (gap < 0) {
+    Overlay.labelBeside(g, sx, sy, 1, 0, "a little bit inside the ground: " + Overlay.number(-gap) + " px", Overlay.HIT);
+  } else if (gap == 0) {
+    Overlay.labelBeside(g, sx, sy, 1, 0, "standing exactly on the ground", Overlay.MISS);
+  } else if (!jumping && gap < 20 && playerSpeedY < 5) {
+    Overlay.labelBeside(g, sx, sy, 1, 0, "floating " + Overlay.number(gap) + " px above the ground", Overlay.HIT);
   }
+  Overlay.hint(g, "1 speed 0   2 next position   3 the tutorial's snap   4 Snap   d: show the maths   any other key: jump");
 }
 
-void drawMaths() {
-  if (ySide != Side.NONE) {
-    showSnap(yMoved, yHit, ySide, ySide == Side.TOP ? "landed on TOP" : "hit head (BOTTOM side)",
-        "pushed " + (ySide == Side.TOP ? "up " : "down ") + Overlay.number(abs(yMoved.y() - y)) + " px", y - 44);
-  }
-  if (xSide != Side.NONE) {
-    showSnap(xMoved, xHit, xSide, "wall (" + xSide + " side)",
-        "pushed " + (xSide == Side.LEFT ? "left " : "right ") + Overlay.number(abs(xMoved.x() - x)) + " px", y - 88);
-  }
-  pushStyle();
-  noFill();
-  stroke(Palette.NEUTRAL);
-  strokeWeight(1);
-  rect(x, y, w, h);
-  popStyle();
-  stroke(Palette.NEUTRAL);
-  Draw.arrow(g, x + w / 2, y + h / 2, vx * 6, vy * 6);
-  Overlay.label(g, 8, 44, "onGround: " + onGround + "\nvx = " + Overlay.number(vx) + "   vy = " + Overlay.number(vy)
-      + "\nacross: " + (xSide == Side.NONE ? "nothing hit" : xSide.toString())
-      + "\ndown: " + (ySide == Side.NONE ? "nothing hit" : ySide.toString()), onGround ? Overlay.MISS : Overlay.TEXT);
-}
+/**
+ * The numbers the test compares: the ground line and the player's bottom, each labelled;
+ * where this frame's move took the player, if a snap moved it back; the state.
+ */
+void drawMaths(float movedY) {
+  float bottom = playerY + playerHeight;
+  Overlay.guide(g, playerX - 60, bottom, playerX + playerWidth + 60, bottom);
+  Overlay.labelBeside(g, width - 12, groundY - 6, -1, -1, "groundY = " + Overlay.number(groundY), Overlay.GUIDE);
+  Overlay.labelBeside(g, playerX - 64, bottom, -1, 0, "playerY + playerHeight = " + Overlay.number(bottom), Overlay.GUIDE);
 
-void showSnap(Rect moved, Rect hit, Side side, String what, String push, float labelY) {
-  pushStyle();
-  // The overlap: the obstacle, drawn only inside the box where the move put the player.
-  clip(moved.x(), moved.y(), moved.w(), moved.h());
-  noStroke();
-  fill(Overlay.HIT);
-  Draw.shape(g, hit);
-  noClip();
-  noFill();
-  stroke(Overlay.HIT);
-  strokeWeight(1);
-  Draw.shape(g, moved);
-  // The side it was pushed out through.
-  stroke(Overlay.GUIDE);
-  strokeWeight(3);
-  if (side == Side.TOP) {
-    line(hit.x(), hit.y(), hit.right(), hit.y());
-  } else if (side == Side.BOTTOM) {
-    line(hit.x(), hit.bottom(), hit.right(), hit.bottom());
-  } else if (side == Side.LEFT) {
-    line(hit.x(), hit.y(), hit.x(), hit.bottom());
+  if ((way == 3 || way == 4) && movedY != playerY) {
+    // The move went into the ground and the snap took it back: the box where the move put it.
+    noFill();
+    stroke(Overlay.HIT);
+    strokeWeight(1.5);
+    rect(playerX, movedY, playerWidth, playerHeight);
+    Overlay.label(g, 8, 100, "the move put its bottom at " + Overlay.number(movedY + playerHeight) + ", "
+        + Overlay.number(movedY + playerHeight - groundY) + " px into the ground (the red box):\nsnapped up to playerY = "
+        + (way == 3 ? "groundY - playerHeight" : "Snap.standY(playerHeight, groundY)") + " = " + Overlay.number(playerY), Overlay.HIT);
+  }
+
+  String test;
+  if (way == 2) {
+    float next = playerY + playerSpeedY + 1 + playerHeight;
+    test = "next frame: playerY + (playerSpeedY + 1) + playerHeight > groundY\n"
+        + Overlay.comparison(next, ">", groundY, next > groundY) + (next > groundY ? ": stop here" : ": move");
   } else {
-    line(hit.right(), hit.y(), hit.right(), hit.bottom());
+    String op = way == 4 ? ">=" : ">";
+    boolean colliding = way == 4 ? movedY + playerHeight >= groundY : movedY + playerHeight > groundY;
+    test = "this frame: playerY + playerHeight " + op + " groundY (after the move)\n"
+        + Overlay.comparison(movedY + playerHeight, op, groundY, colliding)
+        + (colliding ? (way == 1 ? ": playerSpeedY = 0, no snap" : ": snap, playerSpeedY = 0") : ": playerSpeedY++");
   }
-  popStyle();
-  Overlay.label(g, x + w + 8, labelY, what + "\n" + push, Overlay.GUIDE);
+  Overlay.label(g, 8, 32, test + "\nplayerY = " + Overlay.number(playerY) + "   playerSpeedY = " + Overlay.number(playerSpeedY)
+      + "   jumping = " + jumping, Overlay.TEXT);
 }

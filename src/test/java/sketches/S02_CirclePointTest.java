@@ -1,7 +1,6 @@
 package sketches;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -37,14 +36,12 @@ class S02_CirclePointTest {
     @Test
     void circle_isRed_withTheMouseAtItsCentre() {
         SketchRun.Result<S02_CirclePoint> r = runWithMouseAt(300, 200);
-        assertTrue(r.sketch().inside);
         assertCircleColour(r.lastFrame(), Palette.HIT, "circle colour with the mouse at its centre");
     }
 
     @Test
     void circle_isGreen_withTheMouseInACorner() {
         SketchRun.Result<S02_CirclePoint> r = runWithMouseAt(5, 5);
-        assertFalse(r.sketch().inside);
         assertCircleColour(r.lastFrame(), Palette.MISS, "circle colour with the mouse in a corner");
     }
 
@@ -52,11 +49,27 @@ class S02_CirclePointTest {
     void circle_isGreen_withTheMouseExactlyOnTheOutline() {
         // (360, 280) is 60, 80 from the centre: distance 100, the radius. Touching is not inside.
         SketchRun.Result<S02_CirclePoint> r = runWithMouseAt(360, 280);
-        assertFalse(r.sketch().inside);
         assertCircleColour(r.lastFrame(), Palette.MISS, "circle colour with the mouse on the outline");
         // One pixel further in, it is inside.
         SketchRun.Result<S02_CirclePoint> in = runWithMouseAt(359, 280);
         assertCircleColour(in.lastFrame(), Palette.HIT, "circle colour with the mouse just inside the outline");
+    }
+
+    @Test
+    void closeToTheCircle_aLineToItAndTheDistance_onlyWhileClose() {
+        // (420, 290) is 150 from the centre: 50 px from the outline, within closeDistance (70).
+        SketchRun.Result<S02_CirclePoint> close = runWithMouseAt(420, 290);
+        // Far away (5, 5), inside (300, 200), and 80 px from the outline (364, 328): no line.
+        SketchRun.Result<S02_CirclePoint> far = runWithMouseAt(5, 5);
+        SketchRun.Result<S02_CirclePoint> inside = runWithMouseAt(300, 200);
+        SketchRun.Result<S02_CirclePoint> beyond = SketchRun.of(new S02_CirclePoint())
+                .script(new Script().frames(5).mouse(1, 300 + 108, 200 + 144)).run();
+        // The line runs from the mouse to the nearest point of the outline, (380, 260): its middle.
+        SketchPixels.assertColour(close.lastFrame(), 400, 275, Palette.ACCENT, "the line to the circle");
+        assertTrue(SketchPixels.count(close.lastFrame(), 0, 0, 599, 380, Palette.ACCENT) > 20, "the line is drawn");
+        assertEquals(0, SketchPixels.count(far.lastFrame(), 0, 0, 599, 380, Palette.ACCENT), "nothing far away");
+        assertEquals(0, SketchPixels.count(inside.lastFrame(), 0, 0, 599, 380, Palette.ACCENT), "nothing inside");
+        assertEquals(0, SketchPixels.count(beyond.lastFrame(), 0, 0, 599, 380, Palette.ACCENT), "nothing 80 px away");
     }
 
     @Test

@@ -16,8 +16,9 @@ import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
 /**
- * S03_CircleCircle: the centre circle (300, 200, radius 100) is red while the mouse circle
- * (radius 75) overlaps it, green when it is apart or only touching (distance exactly 175).
+ * S03_CircleCircle, the tutorial's program: the mouse circle (radius 75) is red while it
+ * overlaps the big circle (300, 200, radius 100, a white outline), green when it is apart or
+ * only touching (distance exactly 175).
  */
 class S03_CircleCircleTest {
 
@@ -28,25 +29,27 @@ class S03_CircleCircleTest {
 
     @ParameterizedTest(name = "mouse ({0}, {1}): colliding {2}")
     @CsvSource({
-            // mouse x, y, colliding, a pixel of the centre circle away from the mouse circle
-            "180, 290, true,  360, 160",   // distance 150 (120, 90): overlapping
-            "300, 200, true,  388, 200",   // same centre
-            "60,  60,  false, 360, 160",   // far apart
-            "440, 305, false, 240, 160",   // distance exactly 175 (140, 105): touching is not colliding
-            "439, 305, true,  240, 160",   // a pixel closer: overlapping
-            "475, 200, false, 240, 200",   // touching on the right
-            "474, 200, true,  240, 200",
-            "300, 375, false, 300, 130",   // touching below
-            "300, 374, true,  300, 130",
+            // mouse x, y, colliding, a pixel of the mouse circle off the big circle's outline
+            "180, 290, true,  150, 330",   // distance 150 (120, 90): overlapping
+            "300, 200, true,  300, 240",   // same centre
+            "60,  330, false, 40,  340",   // far apart
+            "440, 305, false, 470, 330",   // distance exactly 175 (140, 105): touching is not colliding
+            "439, 305, true,  470, 330",   // a pixel closer: overlapping
+            "475, 200, false, 520, 200",   // touching on the right
+            "474, 200, true,  520, 200",
+            "300, 375, false, 300, 360",   // touching below
+            "300, 374, true,  300, 360",
     })
-    void centreCircle_isRedOnlyWhileTheCirclesOverlap(int mx, int my, boolean colliding, int px, int py) {
+    void mouseCircle_isRedOnlyWhileTheCirclesOverlap(int mx, int my, boolean colliding, int px, int py) {
         SketchRun.Result<S03_CircleCircle> r = SketchRun.of(new S03_CircleCircle())
                 .script(new Script().frames(5).mouse(1, mx, my)).run();
         S03_CircleCircle s = r.sketch();
-        assertEquals(Collide.circleCircle(mx, my, s.smallCircleRadius, 300, 200, s.bigCircleRadius), s.colliding,
-                "the sketch's answer is the library's");
-        assertEquals(colliding, s.colliding, "colliding");
-        SketchPixels.assertColour(r.lastFrame(), px, py, colliding ? Palette.HIT : Palette.MISS, "centre circle");
+        assertEquals(colliding, Collide.circleCircle(mx, my, s.smallCircleRadius, 300, 200, s.bigCircleRadius), "the library");
+        assertEquals(colliding, Math.hypot(mx - 300, my - 200) < s.bigCircleRadius + s.smallCircleRadius, "the tutorial's dist() test");
+        SketchPixels.assertColour(r.lastFrame(), px, py, colliding ? Palette.HIT : Palette.MISS, "mouse circle");
+        SketchPixels.assertColour(r.lastFrame(), 300, 100, 0xFFFFFFFF, "the big circle: a white outline");
+        SketchPixels.assertColour(r.lastFrame(), 300, 130, mx == 300 && my == 200 ? Palette.HIT : Palette.BACKGROUND,
+                "inside the big circle: not filled (unless the mouse circle covers it)");
     }
 
     @Test

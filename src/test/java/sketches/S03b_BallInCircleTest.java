@@ -38,7 +38,7 @@ class S03b_BallInCircleTest {
         SketchRun.of(new S03b_BallInCircle()).script(script).everyFrame(s -> {
             assertTrue(s.x - s.r >= 0 && s.x + s.r <= s.width, "ball inside the window across, x = " + s.x);
             assertTrue(s.y - s.r >= 0 && s.y + s.r <= s.height, "ball inside the window down, y = " + s.y);
-            boolean overlaps = Collide.circleCircle(s.x, s.y, s.r, s.cx, s.cy, s.R);
+            boolean overlaps = Collide.circleCircle(s.x, s.y, s.r, s.circleCenterX, s.circleCenterY, s.circleRadius);
             assertEquals(overlaps, s.inside, "the sketch's answer is the library's");
             // What the ball is drawn in, read at its centre; not on the click frames, whose
             // click moves the ball just after the frame is drawn.
@@ -84,6 +84,25 @@ class S03b_BallInCircleTest {
             SketchPixels.assertColour(r.frame(frame), Math.round(p[0]), Math.round(p[1]),
                     p[2] == 1 ? Palette.HIT : Palette.MISS, "ball on frame " + frame);
         }
+    }
+
+    @Test
+    void tKey_runsTheTutorialsTests_theCentreGoesToTheEdge_andDistSaysInside() {
+        boolean[] halfOut = {false};
+        int[] insideFrames = {0};
+        SketchRun.of(new S03b_BallInCircle()).script(new Script().frames(1500).key(1, 't')).everyFrame(s -> {
+            if (s.frameCount < 2) {
+                return;
+            }
+            // Section 1's test looks at the centre: the ball goes half out before it turns.
+            halfOut[0] |= s.x - s.r < 0 || s.x + s.r > s.width || s.y - s.r < 0 || s.y + s.r > s.height;
+            assertTrue(s.x > -Math.abs(s.xSpeed) && s.x < s.width + Math.abs(s.xSpeed), "the centre turns back at the edge, x = " + s.x);
+            boolean dist = Math.hypot(s.x - s.circleCenterX, s.y - s.circleCenterY) < s.r + s.circleRadius;
+            assertEquals(dist, s.inside, "the tutorial's dist() test, frame " + s.frameCount);
+            insideFrames[0] += s.inside ? 1 : 0;
+        }).run();
+        assertTrue(halfOut[0], "with the tutorial's edges the ball goes half out of the window");
+        assertTrue(insideFrames[0] > 20, "and it passes through the circle: " + insideFrames[0]);
     }
 
     @Test

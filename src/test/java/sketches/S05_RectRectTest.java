@@ -16,9 +16,9 @@ import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
 /**
- * S05_RectRect: r2 (220, 150, 160 x 100) is red while r1 (120 x 80, its top-left corner at
- * the mouse, as in the tutorial) overlaps it, green when apart or side by side (sharing an
- * edge or a corner).
+ * S05_RectRect, the tutorial's program: the mouse rectangle (200 x 100, its top-left corner at
+ * the mouse) is red while it overlaps the center rectangle (250, 100, 100 x 200), green when
+ * apart or side by side (sharing an edge or a corner); the center one stays a white outline.
  */
 class S05_RectRectTest {
 
@@ -29,48 +29,49 @@ class S05_RectRectTest {
 
     @ParameterizedTest(name = "mouse ({0}, {1}): colliding {2}")
     @CsvSource({
-            // mouse x, y (r1's top-left corner), colliding, a pixel of r2 that r1 does not cover
-            "240, 160, true,  230, 245",   // r1 inside r2
-            "330, 205, true,  240, 170",   // r1 over r2's bottom-right corner
-            "20,  300, false, 300, 200",   // far apart
-            "100, 160, false, 300, 200",   // r1's right edge on r2's left edge (x = 220): side by side
-            "101, 160, true,  300, 200",   // one pixel further: overlapping
-            "380, 160, false, 300, 200",   // r1's left edge on r2's right edge (x = 380)
-            "379, 160, true,  300, 200",
-            "240, 70,  false, 300, 230",   // r1's bottom edge on r2's top edge (y = 150)
-            "240, 71,  true,  300, 230",
-            "240, 250, false, 300, 170",   // r1's top edge on r2's bottom edge (y = 250)
-            "240, 249, true,  300, 170",
-            "100, 70,  false, 300, 200",   // corner to corner
+            // mouse x, y (the mouse rectangle's top-left corner), colliding, a pixel of it off the center outline
+            "200, 150, true,  210, 160",   // across the center rectangle
+            "20,  280, false, 30,  290",   // far apart
+            "50,  150, false, 60,  160",   // its right edge on the center one's left edge (x = 250): side by side
+            "51,  150, true,  60,  160",   // one pixel further: overlapping
+            "350, 150, false, 540, 160",   // its left edge on the center one's right edge (x = 350)
+            "349, 150, true,  539, 160",
+            "300, 0,   false, 490, 10",    // its bottom edge on the center one's top edge (y = 100)
+            "300, 1,   true,  490, 10",
+            "200, 300, false, 210, 310",   // its top edge on the center one's bottom edge (y = 300)
+            "200, 299, true,  210, 310",
+            "50,  0,   false, 245, 95",    // corner to corner
     })
-    void r2_isRedOnlyWhileTheRectanglesOverlap(int mx, int my, boolean colliding, int px, int py) {
+    void theMouseRectangle_isRedOnlyWhileTheRectanglesOverlap(int mx, int my, boolean colliding, int px, int py) {
         SketchRun.Result<S05_RectRect> r = SketchRun.of(new S05_RectRect())
                 .script(new Script().frames(5).mouse(1, mx, my)).run();
-        SketchPixels.assertColour(r.lastFrame(), px, py, colliding ? Palette.HIT : Palette.MISS, "r2");
-        // r1 hangs from the mouse by its corner: blue (see-through) just inside the corner,
-        // nothing blue just left of it.
-        assertTrue(blue(r.lastFrame().get(mx + 3, my + 3)) > 130, "r1's fill just inside its top-left corner");
-        assertTrue(blue(r.lastFrame().get(mx - 4, my + 40)) < 110, "no r1 left of the mouse");
-    }
-
-    private static int blue(int argb) {
-        return argb & 0xFF;
+        SketchPixels.assertColour(r.lastFrame(), px, py, colliding ? Palette.HIT : Palette.MISS, "the mouse rectangle");
+        // The center rectangle is the tutorial's white outline, never filled.
+        SketchPixels.assertColour(r.lastFrame(), 250, 200, 0xFFFFFFFF, "the center rectangle's left side");
+        if (mx > 4) {
+            // The mouse rectangle hangs from the mouse by its corner: nothing of it left of the mouse.
+            int left = r.lastFrame().get(mx - 4, my + 40);
+            assertTrue(left != Palette.HIT && left != Palette.MISS, "no mouse rectangle left of the mouse");
+        }
     }
 
     @Test
-    void mouseSweep_r2sColourIsTheLibrarysAnswer_forR1AtTheMouseCorner() {
+    void mouseSweep_theColourIsTheLibrarysAnswer_andTheTutorialsIfAgrees() {
         Script script = new Script().frames(700);
         for (int f = 1; f <= 700; f++) {
-            script.mouse(f, (f * 13) % 600, 20 + (f / 25) * 13 % 360);
+            script.mouse(f, (f * 13) % 400, 60 + (f / 25) * 13 % 210);
         }
         int[] seen = {0, 0};
         SketchRun.of(new S05_RectRect()).script(script).everyFrame(s -> {
-            boolean colliding = Collide.rectRect(s.mouseX, s.mouseY, 120, 80, 220, 150, 160, 100);
-            // r2's corner farthest from r1 is never under r1 (r1 is smaller than r2).
-            int cx = s.mouseX + 60 < 300 ? 376 : 223;
-            int cy = s.mouseY + 40 < 200 ? 246 : 153;
+            boolean colliding = Collide.rectRect(s.mouseX, s.mouseY, 200, 100, 250, 100, 100, 200);
+            boolean tutorialsIf = s.mouseX + s.mouseRectWidth > s.centerRectX && s.mouseX < s.centerRectX + s.centerRectWidth
+                    && s.mouseY + s.mouseRectHeight > s.centerRectY && s.mouseY < s.centerRectY + s.centerRectHeight;
+            assertEquals(colliding, tutorialsIf, "the tutorial's if and Collide.rectRect, mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+            // The mouse rectangle's corner farthest from the center rectangle is never on its outline.
+            int cx = s.mouseX + 100 < 300 ? s.mouseX + 3 : s.mouseX + 197;
+            int cy = s.mouseY + 50 < 200 ? s.mouseY + 3 : s.mouseY + 97;
             assertEquals(Integer.toHexString(colliding ? Palette.HIT : Palette.MISS), Integer.toHexString(s.get(cx, cy)),
-                    "r2 at (" + cx + ", " + cy + ") with the mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+                    "the mouse rectangle at (" + cx + ", " + cy + ") with the mouse at (" + s.mouseX + ", " + s.mouseY + ")");
             seen[colliding ? 1 : 0]++;
         }).run();
         assertTrue(seen[0] > 100 && seen[1] > 50, "frames apart and overlapping: " + seen[0] + ", " + seen[1]);
@@ -78,7 +79,7 @@ class S05_RectRectTest {
 
     @Test
     void overlayKey_changesWhatIsDrawn_andPressingAgainHidesIt() {
-        Script script = new Script().frames(12).mouse(1, 330, 205).key(3, 'd').key(8, 'd');
+        Script script = new Script().frames(12).mouse(1, 300, 170).key(3, 'd').key(8, 'd');
         SketchRun.Result<S05_RectRect> r = SketchRun.of(new S05_RectRect()).script(script)
                 .capture(2).capture(6).run();
         PImage off = r.frame(2);

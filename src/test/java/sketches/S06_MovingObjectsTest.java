@@ -10,16 +10,20 @@ import java.util.List;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import hitbox.Collide;
 import hitbox.Edges;
-import hitbox.Motion;
 import hitbox.processing.Overlay;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
-/** The box looks one frame ahead on each axis, so it bounces off the block's side it hits and never enters it. */
+/**
+ * The bouncing rectangle looks one move ahead on each axis, so it bounces off the side of the
+ * center rectangle it would hit; the tutorial's code misses the corner, Motion.rectBlocked does not.
+ */
 class S06_MovingObjectsTest {
 
     @BeforeAll
@@ -28,45 +32,58 @@ class S06_MovingObjectsTest {
     }
 
     @Test
-    void tenThousandFrames_neverOverlapsTheBlock_andStaysInTheWindow() {
-        SketchRun.of(new S06_MovingObjects()).frames(10_000).everyFrame(s -> {
-            assertFalse(Collide.rectRect(s.x, s.y, s.w, s.h, s.blockX, s.blockY, s.blockW, s.blockH),
-                    "the box overlaps the block at (" + s.x + ", " + s.y + ")");
-            assertEquals(Edges.NONE, Edges.rectCrossed(s.x, s.y, s.w, s.h, s.width, s.height),
-                    "the box left the window at (" + s.x + ", " + s.y + ")");
+    void library_tenThousandFrames_neverOverlapsTheCenterRectangle_andStaysInTheWindow() {
+        SketchRun.of(new S06_MovingObjects()).script(new Script().frames(10_000).key(1, 't')).everyFrame(s -> {
+            assertFalse(Collide.rectRect(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight,
+                    s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight),
+                    "it overlaps the center rectangle at (" + s.bouncingRectX + ", " + s.bouncingRectY + ")");
+            assertEquals(Edges.NONE, Edges.rectCrossed(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight, s.width, s.height),
+                    "it left the window at (" + s.bouncingRectX + ", " + s.bouncingRectY + ")");
         }).run();
     }
 
-    @Test
-    void bouncesOffTheBlock_reversingOnlyTheBlockedSpeed_nextToIt() {
-        float[] prev = new float[4];  // x, y, vx, vy after the previous frame
+    /**
+     * Both ways: a speed reverses when the move along its axis alone would collide with the
+     * center rectangle, and neither changes far from it and from the window's edges.
+     */
+    @ParameterizedTest(name = "Motion.rectBlocked: {0}")
+    @ValueSource(booleans = {false, true})
+    void bouncesOffTheSideItWouldHit_lookingOneMoveAhead(boolean library) {
+        float[] prev = new float[4];  // x, y, speed x, speed y after the previous frame
         int[] bounces = new int[2];   // off a left/right side, off the top/bottom
-        SketchRun.of(new S06_MovingObjects()).frames(3000).everyFrame(s -> {
-            if (s.frameCount > 1 && s.blocked != Motion.NONE) {
-                float px = prev[0], py = prev[1], pvx = Math.abs(prev[2]), pvy = Math.abs(prev[3]);
-                // Within one frame's move of the block: the box grown by its speed reaches into it.
-                assertTrue(Collide.rectRect(px - pvx, py - pvy, s.w + 2 * pvx, s.h + 2 * pvy, s.blockX, s.blockY, s.blockW, s.blockH),
-                        "a bounce far from the block, at (" + px + ", " + py + ")");
-                if (Motion.has(s.blocked, Motion.X)) {
-                    assertEquals(-prev[2], s.vx, "vx reversed");
+        Script script = new Script().frames(3000);
+        if (library) {
+            script.key(1, 't');
+        }
+        SketchRun.of(new S06_MovingObjects()).script(script).everyFrame(s -> {
+            float w = s.bouncingRectWidth, h = s.bouncingRectHeight;
+            if (s.frameCount > 2) {
+                float px = prev[0], py = prev[1], pvx = prev[2], pvy = prev[3];
+                boolean across = Collide.rectRect(px + pvx, py, w, h, s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight);
+                boolean down = Collide.rectRect(px, py + pvy, w, h, s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight);
+                boolean diagonal = Collide.rectRect(px + pvx, py + pvy, w, h, s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight);
+                boolean nearAnEdge = Edges.rectCrossed(px - Math.abs(pvx), py - Math.abs(pvy), w + 2 * Math.abs(pvx), h + 2 * Math.abs(pvy),
+                        s.width, s.height) != Edges.NONE;
+                if (across) {
+                    assertEquals(-pvx, s.bouncingRectSpeedX, "the move across would collide: bouncingRectSpeedX *= -1, frame " + s.frameCount);
                     bounces[0]++;
-                } else {
-                    assertEquals(prev[2], s.vx, "vx kept when only y is blocked");
                 }
-                if (Motion.has(s.blocked, Motion.Y)) {
-                    assertEquals(-prev[3], s.vy, "vy reversed");
+                if (down) {
+                    assertEquals(-pvy, s.bouncingRectSpeedY, "the move down would collide: bouncingRectSpeedY *= -1, frame " + s.frameCount);
                     bounces[1]++;
-                } else {
-                    assertEquals(prev[3], s.vy, "vy kept when only x is blocked");
+                }
+                if (!across && !down && !diagonal && !nearAnEdge) {
+                    assertEquals(pvx, s.bouncingRectSpeedX, "nothing ahead: speed kept, frame " + s.frameCount);
+                    assertEquals(pvy, s.bouncingRectSpeedY, "nothing ahead: speed kept, frame " + s.frameCount);
                 }
             }
-            prev[0] = s.x;
-            prev[1] = s.y;
-            prev[2] = s.vx;
-            prev[3] = s.vy;
+            prev[0] = s.bouncingRectX;
+            prev[1] = s.bouncingRectY;
+            prev[2] = s.bouncingRectSpeedX;
+            prev[3] = s.bouncingRectSpeedY;
         }).run();
-        assertTrue(bounces[0] > 0, "it bounced off a left or right side of the block");
-        assertTrue(bounces[1] > 0, "it bounced off the top or bottom of the block");
+        assertTrue(bounces[0] > 0, "it bounced off a left or right side of the center rectangle");
+        assertTrue(bounces[1] > 0, "it bounced off the top or bottom of the center rectangle");
     }
 
     @Test
@@ -88,7 +105,8 @@ class S06_MovingObjectsTest {
         List<float[]> states = new ArrayList<>();
         states.add(null);
         SketchRun.of(new S06_MovingObjects()).script(script)
-                .everyFrame(s -> states.add(new float[] {s.x, s.y, s.vx, s.vy, s.framesInside})).run();
+                .everyFrame(s -> states.add(new float[] {s.bouncingRectX, s.bouncingRectY, s.bouncingRectSpeedX,
+                        s.bouncingRectSpeedY, s.framesInside})).run();
         return states;
     }
 
@@ -98,8 +116,8 @@ class S06_MovingObjectsTest {
 
     @Test
     void tutorialsCode_aimedAtTheCorner_endsAFrameInsideTheBlock() {
-        // t after frame 1, c after frame 10: frame 11 makes the diagonal move into the corner.
-        List<float[]> states = track(new Script().frames(20).key(1, 't').key(10, 'c'));
+        // The tutorial's code is the default; c after frame 10: frame 11 makes the diagonal move into the corner.
+        List<float[]> states = track(new Script().frames(20).key(10, 'c'));
         assertFalse(inside(states.get(10)));
         assertTrue(inside(states.get(11)), "neither one-axis check saw the corner: the box is in the block");
         assertEquals(1, states.get(11)[4], "and the counter says so");
@@ -110,7 +128,7 @@ class S06_MovingObjectsTest {
 
     @Test
     void library_aimedAtTheCorner_bouncesBackWithoutGoingIn() {
-        List<float[]> states = track(new Script().frames(20).key(10, 'c'));
+        List<float[]> states = track(new Script().frames(20).key(1, 't').key(10, 'c'));
         for (int f = 1; f <= 20; f++) {
             assertFalse(inside(states.get(f)), "frame " + f);
         }
@@ -120,7 +138,7 @@ class S06_MovingObjectsTest {
 
     @Test
     void tutorialsCode_checksTheWindowWhereTheBoxIs_soItPokesOut() {
-        List<float[]> states = track(new Script().frames(600).key(1, 't'));
+        List<float[]> states = track(new Script().frames(600));
         boolean pokedOut = false;
         for (int f = 2; f < states.size(); f++) {
             float[] s = states.get(f);

@@ -6,26 +6,20 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Random;
-import java.util.Set;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.ValueSource;
 
-import hitbox.Collide;
-import hitbox.Rect;
-import hitbox.Side;
-import hitbox.processing.Overlay;
-import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
-/** The player lands, jumps only from the ground, bumps its head, stops at walls, and never ends a frame inside anything. */
+/**
+ * The tutorial's ground program: snapped (3, and Snap in 4) the player lands exactly on the
+ * ground and jumps only from it; with speed 0 only (1) it stays inside; looking at the next
+ * position (2) it stops short, above the ground.
+ */
 class S07_SnapToEdgeTest {
 
     @BeforeAll
@@ -33,15 +27,10 @@ class S07_SnapToEdgeTest {
         assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
     }
 
-    /** The screenshot's walk: fall to the ground, walk under the shelf, jump into it, then walk right into the crate. */
-    private static Script tour() {
-        return new Script().frames(260).hold(40, "RIGHT", 53).key(95, ' ').hold(130, "RIGHT", 120);
-    }
-
-    /** One frame's state, as the test saw it after draw(). */
-    private record State(int frame, float x, float y, float vx, float vy, boolean onGround, Side xSide, Side ySide) {
+    /** One frame's state, in the tutorial's variables, as the test saw it after draw(). */
+    private record State(int frame, float playerY, float playerSpeedY, boolean jumping) {
         static State of(S07_SnapToEdge s) {
-            return new State(s.frameCount, s.x, s.y, s.vx, s.vy, s.onGround, s.xSide, s.ySide);
+            return new State(s.frameCount, s.playerY, s.playerSpeedY, s.jumping);
         }
     }
 
@@ -52,201 +41,138 @@ class S07_SnapToEdgeTest {
         return states;
     }
 
-    @ParameterizedTest(name = "way {0}")
-    @ValueSource(chars = {'3', '4'})
-    void longWalkWithJumps_neverEndsAFrameInsideAnything(char way) {
-        Random random = new Random(7);
-        Script script = new Script().frames(8000).key(1, way);
-        for (int f = 3; f < 7900; ) {
-            int length = 5 + random.nextInt(60);
-            script.hold(f, random.nextBoolean() ? "LEFT" : "RIGHT", length);
-            if (random.nextInt(3) > 0) {
-                script.hold(f + random.nextInt(length), random.nextBoolean() ? "UP" : "SPACE", 1);
-            }
-            f += length + 1 + random.nextInt(8);
-        }
-        Set<Rect> stoodOn = new HashSet<>();
-        int[] walls = new int[1];
-        SketchRun.of(new S07_SnapToEdge()).script(script).everyFrame(s -> {
-            for (Rect o : s.solids) {
-                assertFalse(Collide.rectRect(s.x, s.y, s.w, s.h, o.x(), o.y(), o.w(), o.h()),
-                        "the player at (" + s.x + ", " + s.y + ") is inside " + o);
-            }
-            assertTrue(s.x >= 0 && s.x + s.w <= s.width, "inside the window across, x = " + s.x);
-            if (s.onGround) {
-                stoodOn.add(s.yHit);
-            }
-            if (s.xSide.isWall()) {
-                walls[0]++;
-            }
-        }).run();
-        // The walk is a real test only if it met more than the floor.
-        assertTrue(stoodOn.size() >= 2, "stood on the ground and at least one platform: " + stoodOn);
-        assertTrue(walls[0] > 0, "walked into a side");
+    /** How far the player's bottom is above the ground (negative: inside it). */
+    private static float gap(State s) {
+        S07_SnapToEdge level = new S07_SnapToEdge();
+        return level.groundY - (s.playerY() + level.playerHeight);
+    }
+
+    /** Jumps pressed on the ground, in the air, and on the ground again. */
+    private static Script jumps(char way) {
+        return new Script().frames(200).key(1, way).key(40, ' ').key(45, ' ').key(120, 'j').key(121, 'k');
     }
 
     @Test
-    void falling_landsAndStandsExactlyOnTheGround() {
+    void theTutorialsSnap_landsExactlyOnTheGround_andStaysThere() {
         List<State> states = record(new Script().frames(60));
-        S07_SnapToEdge level = new S07_SnapToEdge();
-        assertFalse(states.get(1).onGround(), "it starts in the air");
-        State last = states.get(60);
-        assertTrue(last.onGround(), "it has landed");
-        assertEquals(level.ground.y(), last.y() + level.h, "its bottom is on the ground's top");
-        assertEquals(0, last.vy(), "and it stopped falling");
         int landed = -1;
-        for (int f = 1; f <= 60 && landed < 0; f++) {
-            if (states.get(f).onGround()) {
+        for (int f = 1; f <= 60; f++) {
+            assertTrue(gap(states.get(f)) >= 0, "never inside the ground after a frame, frame " + f);
+            if (landed < 0 && gap(states.get(f)) == 0) {
                 landed = f;
-                assertEquals(Side.TOP, states.get(f).ySide(), "landing is the ground's TOP side");
             }
         }
+        assertTrue(landed > 1, "it fell, then landed");
+        assertTrue(states.get(landed - 1).playerSpeedY() > 10, "falling fast: the move went into the ground, the snap took it back");
         for (int f = landed; f <= 60; f++) {
-            assertTrue(states.get(f).onGround(), "once down it stays down, frame " + f);
+            assertEquals(0, gap(states.get(f)), "its bottom exactly on groundY, frame " + f);
+            assertFalse(states.get(f).jumping(), "and it may jump, frame " + f);
         }
     }
 
     @Test
-    void jump_onlyFromTheGround() {
-        S07_SnapToEdge level = new S07_SnapToEdge();
-        // Frames 5 and 10: jump pressed in mid-air (it falls until about frame 27); frame 60: on the ground.
-        List<State> states = record(new Script().frames(70).key(5, ' ').hold(10, "UP", 1).key(60, ' '));
-        for (int f = 2; f <= 20; f++) {
-            float expected = Math.min(states.get(f - 1).vy() + level.gravity, level.maxFall);
-            assertFalse(states.get(f).onGround(), "still in the air at frame " + f);
-            assertEquals(expected, states.get(f).vy(), "a jump in the air changes nothing: frame " + f);
+    void jump_onlyWhenNotAlreadyJumping() {
+        List<State> states = record(jumps('3'));
+        assertEquals(0, gap(states.get(39)), "on the ground when the first key comes");
+        assertEquals(-15 + 1, states.get(41).playerSpeedY(), "that key jumps: playerSpeedY = -15, then gravity");
+        assertTrue(states.get(41).jumping() && gap(states.get(41)) > 0, "and it is in the air, jumping");
+        for (int f = 46; f <= 50; f++) {
+            assertEquals(states.get(f - 1).playerSpeedY() + 1, states.get(f).playerSpeedY(), "a key in the air changes nothing: frame " + f);
         }
-        assertTrue(states.get(60).onGround(), "on the ground when the third press comes");
-        assertEquals(-level.jumpSpeed + level.gravity, states.get(61).vy(), "that press jumps");
-        assertFalse(states.get(61).onGround(), "and leaves the ground");
+        assertTrue(states.get(121).playerSpeedY() < 0, "a key on the ground jumps again");
+        assertTrue(states.get(122).playerSpeedY() > states.get(121).playerSpeedY(), "the second key, mid-jump, does not");
     }
 
     @Test
-    void jumpUnderTheShelf_bumpsItsHeadAndStopsGoingUp() {
-        S07_SnapToEdge level = new S07_SnapToEdge();
-        List<State> states = record(tour());
-        int bump = -1;
-        for (int f = 1; f < states.size() && bump < 0; f++) {
-            if (states.get(f).ySide() == Side.BOTTOM) {
-                bump = f;
+    void theTutorialsSnap_andSnap_putThePlayerInTheSamePlace_everyFrame() {
+        List<State> tutorial = record(jumps('3'));
+        List<State> library = record(jumps('4'));
+        int standing = 0;
+        for (int f = 2; f < tutorial.size() - 1; f++) {
+            assertEquals(tutorial.get(f).playerY(), library.get(f).playerY(), "frame " + f);
+            if (tutorial.get(f).jumping() != library.get(f).jumping()) {
+                // Coming down exactly onto the ground: Snap's >= lands it this frame, the
+                // tutorial's > one frame later, after gravity has taken it 1 px in.
+                assertEquals(0, gap(tutorial.get(f)), "they differ only exactly on the ground, frame " + f);
+                assertTrue(tutorial.get(f).jumping() && tutorial.get(f).playerSpeedY() > 0, "frame " + f);
+            }
+            // Standing: on the ground this frame, the one before and the one after (no jump key).
+            if (gap(library.get(f - 1)) == 0 && gap(library.get(f)) == 0 && gap(library.get(f + 1)) == 0) {
+                standing++;
+                // Where they differ: standing exactly on the ground is "on it" for Snap (>=),
+                // so its speed stays 0; the tutorial's > lets gravity make it 1 every other frame.
+                assertEquals(0, library.get(f).playerSpeedY(), "Snap: a standing player's speed stays 0, frame " + f);
+                float before = tutorial.get(f - 1).playerSpeedY(), now = tutorial.get(f).playerSpeedY();
+                assertTrue(now == 0 || now == 1, "the tutorial's: 0 or 1 while standing, frame " + f + ": " + now);
+                if (before == 0 || before == 1) {
+                    assertEquals(1 - before, now, "the tutorial's: 0 and 1 by turns while standing, frame " + f);
+                }
             }
         }
-        assertTrue(bump > 0, "the jump under the shelf hits its BOTTOM side");
-        State at = states.get(bump);
-        assertTrue(states.get(bump - 1).vy() < 0, "it was going up");
-        assertEquals(level.shelf.bottom(), at.y(), "its head touches the shelf's underside");
-        assertEquals(0, at.vy(), "it stops going up");
-        assertTrue(states.get(bump + 1).vy() > 0, "and falls back");
+        assertTrue(standing > 50, "they stood a while: " + standing + " frames");
     }
 
     @Test
-    void walkingIntoTheCrate_stopsAtItsSide() {
-        S07_SnapToEdge level = new S07_SnapToEdge();
-        List<State> states = record(tour());
-        int first = -1;
-        for (int f = 1; f < states.size() && first < 0; f++) {
-            if (states.get(f).xSide() == Side.LEFT) {
-                first = f;
-            }
-        }
-        assertTrue(first > 0, "walking right it runs into the crate's LEFT side");
-        // RIGHT is held until frame 250: it stays against the crate, however long it pushes.
-        for (int f = first; f < 250; f++) {
-            State s = states.get(f);
-            assertEquals(level.crate.x() - level.w, s.x(), "standing against the crate at frame " + f);
-            assertEquals(Side.LEFT, s.xSide(), "pushing into its LEFT side at frame " + f);
-            assertEquals(0, s.vx(), "stopped at frame " + f);
-        }
-    }
-
-    @Test
-    void overlay_showsTheOverlapAndTheSideHit() {
-        S07_SnapToEdge level = new S07_SnapToEdge();
-        Script plain = new Script().frames(102).hold(40, "RIGHT", 53).key(95, ' ');
-        Script maths = new Script().frames(102).hold(40, "RIGHT", 53).key(95, ' ').key(2, 'd');
-        SketchRun.Result<S07_SnapToEdge> off = SketchRun.of(new S07_SnapToEdge()).script(plain).run();
-        SketchRun.Result<S07_SnapToEdge> on = SketchRun.of(new S07_SnapToEdge()).script(maths).run();
-        assertEquals(Side.BOTTOM, on.sketch().ySide, "frame 102 is the head bump");
-        assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame()) > 500, "the overlay changes what is drawn");
-        int sideY = (int) level.shelf.bottom();
-        int midX = (int) (level.shelf.x() + level.shelf.w() / 2) - 30;  // along the shelf, clear of the player
-        assertEquals(Overlay.GUIDE, on.lastFrame().get(midX, sideY), "the BOTTOM side is marked");
-        float px = on.sketch().x + on.sketch().w / 2;
-        assertEquals(Overlay.HIT, on.lastFrame().get((int) px, sideY - 2), "the overlap with the shelf is red");
-        assertTrue(off.lastFrame().get(midX, sideY) != Overlay.GUIDE, "no mark without the overlay");
-    }
-
-    private static List<State> record(Script script, char way) {
-        return record(script.key(1, way));
-    }
-
-    @Test
-    void theTutorialsSnap_andSnapPushBack_moveThePlayerExactlyAlike() {
-        // The tour walks, jumps into the shelf's underside and pushes against the crate.
-        List<State> tutorial = record(tour(), '3');
-        List<State> library = record(tour(), '4');
-        for (int f = 2; f < tutorial.size(); f++) {
-            assertEquals(library.get(f), tutorial.get(f), "frame " + f);
-        }
-    }
-
-    @Test
-    void sink_stopsFalling_butStaysInside_andSinksOnThrough() {
-        S07_SnapToEdge level = new S07_SnapToEdge();
-        List<State> states = record(new Script().frames(90), '1');
-        float groundTop = level.ground.y();
+    void speedZeroOnly_staysALittleBitInsideTheGround() {
+        List<State> states = record(new Script().frames(90).key(1, '1'));
         int landed = -1;
-        for (int f = 2; f < states.size() && landed < 0; f++) {
-            if (states.get(f).y() + level.h > groundTop) {
+        for (int f = 3; f < states.size() && landed < 0; f++) {
+            if (gap(states.get(f)) < 0) {
                 landed = f;
             }
         }
-        assertTrue(landed > 0, "it reached the ground");
-        assertTrue(states.get(landed).onGround() && states.get(landed).vy() == 0, "stopped, where it is: inside");
-        for (int f = landed + 1; f < states.size(); f++) {
-            assertTrue(states.get(f).y() > states.get(f - 1).y(), "it sinks further every frame: frame " + f);
+        assertTrue(landed > 0, "it went into the ground");
+        assertTrue(gap(states.get(landed)) < -5, "by more than 5 px: " + gap(states.get(landed)));
+        for (int f = landed; f < states.size(); f++) {
+            assertEquals(gap(states.get(landed)), gap(states.get(f)), "and stays there, stopped, frame " + f);
+            assertEquals(0, states.get(f).playerSpeedY(), "frame " + f);
         }
-        assertTrue(states.get(90).y() + level.h - groundTop > 20, "deep in the ground by frame 90");
     }
 
     @Test
-    void stopShort_hangsAboveTheGround_thenCreepsDown_neverInside() {
-        S07_SnapToEdge level = new S07_SnapToEdge();
-        float groundTop = level.ground.y();
-        float[] highest = {0};
-        List<State> states = new ArrayList<>();
-        SketchRun.of(new S07_SnapToEdge()).script(new Script().frames(90).key(1, '2')).everyFrame(s -> {
-            for (Rect o : s.solids) {
-                assertFalse(Collide.rectRect(s.x, s.y, s.w, s.h, o.x(), o.y(), o.w(), o.h()), "never inside, frame " + s.frameCount);
+    void nextPosition_stopsShortAboveTheGround_thenCreepsDown_neverInside() {
+        List<State> states = record(new Script().frames(90).key(1, '2'));
+        float highestStop = 0;
+        for (int f = 3; f < states.size(); f++) {
+            State s = states.get(f);
+            assertTrue(gap(s) >= 0, "never inside, frame " + f);
+            if (s.playerSpeedY() == 0 && !s.jumping()) {
+                highestStop = Math.max(highestStop, gap(s));
             }
-            if (s.onGround) {
-                highest[0] = Math.max(highest[0], groundTop - (s.y + s.h));
-            }
-            states.add(State.of(s));
-        }).run();
-        assertTrue(highest[0] > 5, "it stopped more than 5 px above the ground: " + highest[0]);
-        State last = states.get(states.size() - 1);
-        float gap = groundTop - (last.y() + level.h);
-        assertTrue(gap >= 0 && gap < level.gravity, "and crept down to within one gravity step: " + gap);
+        }
+        assertTrue(highestStop > 5, "it stopped more than 5 px above the ground: " + highestStop);
+        assertEquals(0, gap(states.get(90)), "and crept down onto it");
     }
 
     @Test
-    void theScreen_saysHowTheWaysStand() {
-        // 1: sunk into the ground; 4: standing exactly on it. Red and green labels beside the player.
+    void theScreen_saysWhereThePlayerStands() {
+        // 1: a little inside, in red beside the player; 3: exactly on the ground, in green.
         SketchRun.Result<S07_SnapToEdge> sunk = SketchRun.of(new S07_SnapToEdge()).script(new Script().frames(60).key(1, '1')).run();
         SketchRun.Result<S07_SnapToEdge> snapped = SketchRun.of(new S07_SnapToEdge()).script(new Script().frames(60)).run();
-        int x0 = (int) (sunk.sketch().x + sunk.sketch().w), y0 = (int) sunk.sketch().y;
-        assertTrue(reddish(sunk.lastFrame(), x0, y0 - 10, x0 + 200, y0 + 40) > 30, "'sunk ... px into it' in red");
-        x0 = (int) (snapped.sketch().x + snapped.sketch().w);
-        y0 = (int) snapped.sketch().y;
-        assertTrue(greenish(snapped.lastFrame(), x0, y0 - 10, x0 + 200, y0 + 40) > 30, "'standing exactly on it' in green");
-        assertEquals(0, reddish(snapped.lastFrame(), x0, y0 - 10, x0 + 200, y0 + 40), "and nothing red");
-        // And the sunk part of the player is hidden by the ground it is in.
-        SketchPixels.assertColour(sunk.lastFrame(), (int) sunk.sketch().x + 5, (int) sunk.sketch().ground.y() + 2, Palette.OBSTACLE, "the ground in front");
+        S07_SnapToEdge s = snapped.sketch();
+        int x0 = (int) (s.playerX + s.playerWidth), y0 = (int) s.playerY;
+        assertTrue(reddish(sunk.lastFrame(), x0, y0 - 10, x0 + 250, y0 + 60) > 30, "'a little bit inside the ground' in red");
+        assertTrue(greenish(snapped.lastFrame(), x0, y0 - 10, x0 + 250, y0 + 60) > 30, "'standing exactly on the ground' in green");
+        assertEquals(0, reddish(snapped.lastFrame(), x0, y0 - 10, x0 + 250, y0 + 60), "and nothing red");
     }
 
-    /** Pixels of a red label's text (Overlay.HIT, anti-aliased over its dark box). */
-    private static int reddish(PImage image, int x0, int y0, int x1, int y1) {
+    @Test
+    void overlay_showsWhereTheMoveWent_beforeTheSnap() {
+        // Frame 21 is the landing: the move put the bottom 10 px into the ground.
+        SketchRun.Result<S07_SnapToEdge> off = SketchRun.of(new S07_SnapToEdge()).script(new Script().frames(21)).run();
+        SketchRun.Result<S07_SnapToEdge> on = SketchRun.of(new S07_SnapToEdge()).script(new Script().frames(21).key(2, 'd')).run();
+        S07_SnapToEdge s = on.sketch();
+        assertEquals(0, s.groundY - (s.playerY + s.playerHeight), "landed on frame 21");
+        assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame()) > 500, "the overlay changes what is drawn");
+        // The outline where the move put it, below the snapped player: its bottom edge 10 px under the ground line.
+        int bottom = (int) (s.groundY + 10);
+        int red = reddish(on.lastFrame(), (int) s.playerX, bottom - 1, (int) (s.playerX + s.playerWidth), bottom + 1);
+        assertTrue(red > 10, "the box where the move went is outlined in red: " + red);
+        assertEquals(0, reddish(off.lastFrame(), (int) s.playerX, bottom - 1, (int) (s.playerX + s.playerWidth), bottom + 1));
+    }
+
+    /** Pixels of red text or lines (Overlay.HIT). */
+    static int reddish(PImage image, int x0, int y0, int x1, int y1) {
         int n = 0;
         for (int y = y0; y <= y1; y++) {
             for (int x = x0; x <= x1; x++) {
@@ -257,8 +183,8 @@ class S07_SnapToEdgeTest {
         return n;
     }
 
-    /** Pixels of a green label's text (Overlay.MISS). */
-    private static int greenish(PImage image, int x0, int y0, int x1, int y1) {
+    /** Pixels of green text (Overlay.MISS). */
+    static int greenish(PImage image, int x0, int y0, int x1, int y1) {
         int n = 0;
         for (int y = y0; y <= y1; y++) {
             for (int x = x0; x <= x1; x++) {
