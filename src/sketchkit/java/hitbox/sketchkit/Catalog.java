@@ -116,7 +116,8 @@ public final class Catalog {
      * @param name    the folder name, which is also the class name
      * @param folder  the sketch folder
      * @param title   the header's first line, e.g. "Circle/Point"
-     * @param section the header's "Tutorial section ..." line, or "" if there is none
+     * @param section the header's "Tutorial section ...", "Homework ..." or "Beyond the tutorial ..."
+     *                line, or "" if there is none
      * @param classes where its compiled class, problems and line map are found
      */
     public record SketchInfo(String name, File folder, String title, String section, ClassLoader classes) {
@@ -149,7 +150,8 @@ public final class Catalog {
                 if (!titleSeen && !text.isEmpty()) {
                     title = text;
                     titleSeen = true;
-                } else if (text.startsWith("Tutorial section") || text.startsWith("Homework")) {
+                } else if (text.startsWith("Tutorial section") || text.startsWith("Homework")
+                        || text.startsWith("Beyond the tutorial")) {
                     section = text;
                 }
             }
