@@ -10,14 +10,16 @@
  * obstacle), then reverses once and moves only where it is free. Hitbox does it this way,
  * not with the tutorial's flip inside the loop, because random obstacles overlap and leave
  * gaps narrower than one move, where a flip inside the loop can send a bouncer into an
- * obstacle (S08 shows that). That is 100 x 100 = 10,000 bouncer-obstacle pairs a frame, a
+ * obstacle (S08 shows that). Press t for section 8's own loop, flip and all, and watch the
+ * count of bouncers caught inside an obstacle. That is 100 x 100 = 10,000 bouncer-obstacle pairs a frame, a
  * few comparisons each: far below a millisecond, so no grid or other broad phase is needed.
  *
  * Everything random comes from randomSeed, so every run is the same.
  *
  * Try this: make it 1,000 bouncers; make the obstacles bigger until the bouncers are trapped
  * in pockets; give every bouncer the same speed and see patterns appear.
- * Keys: d shows the maths (counts, and bouncer 0's next-position boxes).
+ * Keys: t section 8's loop / Hitbox's, d shows the maths (counts, and bouncer 0's
+ * next-position boxes).
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -31,6 +33,7 @@ ArrayList<Bouncer> bouncers = new ArrayList<Bouncer>();
 int[] glow;       // frames left to show each obstacle red after a hit
 int hitsThisFrame = 0;
 int totalHits = 0;
+boolean tutorialLoop = false;   // t: section 8's own loop, which flips inside the loop
 
 void setup() {
   size(600, 400);
@@ -55,6 +58,10 @@ void draw() {
   background(Palette.BACKGROUND);
   hitsThisFrame = 0;
   for (Bouncer b : bouncers) {
+    if (tutorialLoop) {
+      tutorialStep(b);
+      continue;
+    }
     // Section 8's loop for this bouncer: ask every obstacle, combine the answers.
     int blocked = Motion.NONE;
     for (int i = 0; i < obstacles.size(); i++) {
@@ -83,4 +90,46 @@ void draw() {
     rect(b.x, b.y, size, size);
   }
   drawMaths();   // Maths.pde: only with d
+}
+
+// Section 8's own loop for one bouncer: each obstacle that blocks the next move reverses that
+// speed there and then, and the obstacles after it test the reversed speed.
+void tutorialStep(Bouncer b) {
+  boolean hit = false;
+  for (int i = 0; i < obstacles.size(); i++) {
+    Rect o = obstacles.get(i);
+    // check X movement bounce
+    if (b.x + size + b.vx > o.x() && b.x + b.vx < o.right() && b.y + size > o.y() && b.y < o.bottom()) {
+      b.vx *= -1;
+      glow[i] = 10;
+      hit = true;
+    }
+    // check Y movement bounce
+    if (b.x + size > o.x() && b.x < o.right() && b.y + size + b.vy > o.y() && b.y + b.vy < o.bottom()) {
+      b.vy *= -1;
+      glow[i] = 10;
+      hit = true;
+    }
+  }
+  // The window's edges, as section 6 bounces off them.
+  if (b.x + b.vx < 0 || b.x + size + b.vx > width) {
+    b.vx *= -1;
+  }
+  if (b.y + b.vy < 0 || b.y + size + b.vy > height) {
+    b.vy *= -1;
+  }
+  if (hit) {
+    b.changeColour();
+    hitsThisFrame++;
+  }
+  b.x += b.vx;
+  b.y += b.vy;
+}
+
+void keyPressed() {
+  if (key == 't') {
+    tutorialLoop = !tutorialLoop;
+  } else if (key == 'd') {
+    showMaths = !showMaths;
+  }
 }

@@ -3,7 +3,15 @@
 boolean showMaths = false;
 
 void drawMaths() {
-  Overlay.hint(g, "d: show the maths (counts, and bouncer 0's next-position boxes)");
+  Overlay.hint(g, "t: section 8's loop / Hitbox's   d: show the maths (counts, and bouncer 0's next-position boxes)");
+  if (tutorialLoop) {
+    int caught = 0;
+    for (Bouncer b : bouncers) {
+      caught += Hits.any(b.x, b.y, size, size, obstacles) ? 1 : 0;
+    }
+    Overlay.label(g, 8, height - 48, "section 8's loop (t: Hitbox's): " + caught + " bouncers inside an obstacle now",
+        caught > 0 ? Overlay.HIT : Overlay.TEXT);
+  }
   if (!showMaths) {
     return;
   }
@@ -44,11 +52,5 @@ void nameObstacle(int i) {
   if (i >= 0) {
     Rect o = obstacles.get(i);
     Overlay.label(g, o.right() + 3, o.y() - 4, "" + i, Overlay.HIT);
-  }
-}
-
-void keyPressed() {
-  if (key == 'd') {
-    showMaths = !showMaths;
   }
 }

@@ -13,11 +13,18 @@
  *
  * Everything random comes from randomSeed, so every run is the same.
  *
+ * Section 10 names two of these structures, R-trees and quadtrees. The dynamic tree (3) is
+ * an R-tree kind: it groups nearby boxes under a box that holds them, those groups under
+ * bigger boxes, up to one box round everything, and a search skips every group whose box it
+ * misses (the maths draws its boxes near the mouse). The quadtree (4) cuts the window into
+ * squares instead, and the grid (1) keeps each bouncer in a cell, section 9's "each grid cell
+ * could contain an object (or even multiple objects)".
+ *
  * Try this: press 1 to 5 to switch structures and compare their collision steps; brute force
  * keeps only 1,500 bouncers moving and is still the slowest; make the bouncers bigger.
- * Keys: 1 grid, 2 sweep and prune, 3 dynamic tree, 4 quadtree, 5 brute force (1,500
- * bouncers), d shows the maths (tests this frame against n(n-1)/2, and the structure's cells
- * around the mouse).
+ * Keys: 1 grid, 2 sweep and prune, 3 dynamic tree (an R-tree kind), 4 quadtree, 5 brute
+ * force (1,500 bouncers), d shows the maths (tests this frame against n(n-1)/2, and the
+ * structure's cells or boxes around the mouse).
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -105,7 +112,7 @@ void draw() {
   }
   Overlay.label(g, 8, 8, world + ": " + nfc(active) + " bouncers\ncollision step "
       + nf(smoothMillis, 0, 2) + " ms   frame rate " + round(frameRate) + " fps");
-  Overlay.hint(g, "1 grid  2 sweep and prune  3 dynamic tree  4 quadtree  5 brute force   d: show the maths");
+  Overlay.hint(g, "1 grid  2 sweep and prune  3 dynamic tree (R-tree kind)  4 quadtree  5 brute force   d: maths");
 }
 
 // One overlapping pair, a < b: two obstacles (nothing to do), a bouncer in an obstacle, or two bouncers.

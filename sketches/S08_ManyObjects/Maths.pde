@@ -1,4 +1,4 @@
-// The "show the maths" overlay (d), the labels, the click that adds an obstacle, and the keys.
+// The "show the maths" overlay (d), the labels, and the keys.
 
 String message = "";   // what the last click did, shown for a while
 int messageFrames = 0;
@@ -187,16 +187,6 @@ void nextBox(float bx, float by, boolean colliding) {
   stroke(colour);
   rect(bx, by, w, h);
   popStyle();
-}
-
-void mousePressed() {
-  Obstacle added = new Obstacle(mouseX - 30, mouseY - 15, 60, 30);
-  if (added.overlaps(x, y, w, h)) {
-    say("not added: it would be on top of the box");
-  } else {
-    obstacles.add(added);
-    say("added obstacle " + (obstacles.size() - 1));
-  }
 }
 
 void keyPressed() {

@@ -13,7 +13,8 @@
  * combines the answers, reverses once, and asks again before it moves, so a box with nowhere
  * to go waits a frame (Motion.bounce does the same for a list of Rects).
  *
- * Try this: click to add obstacles; build another narrow slot and watch both loops in it.
+ * Try this (the tutorial's): click to add obstacles, mousePressed below; build another
+ * narrow slot and watch both loops in it.
  * Keys: t the tutorial's loop / Hitbox's, click adds an obstacle, d shows the maths,
  * p pauses, n steps one frame.
  */
@@ -65,6 +66,18 @@ void draw() {
     } else {
       hitboxStep();
     }
+  }
+}
+
+// The tutorial's try-this: "a new obstacle is added when the user clicks the mouse". One more
+// Obstacle in the list, and both loops test it from the next frame on, with no new code.
+void mousePressed() {
+  Obstacle added = new Obstacle(mouseX - 30, mouseY - 15, 60, 30);
+  if (added.overlaps(x, y, w, h)) {
+    say("not added: it would be on top of the box");   // it would start inside it
+  } else {
+    obstacles.add(added);
+    say("added obstacle " + (obstacles.size() - 1));
   }
 }
 

@@ -1,6 +1,29 @@
-// The maths: the box the move swept, turned into cells by dividing by the tile size; the
-// solid tiles among them, the only ones the move checked; and the sides it hit.
+import java.util.List;
+
+// The maths (d): what the last move looked at, and the fields only this overlay needs.
+
+boolean showMaths = false;
+Rect before;          // where the player was before the last move
+float movedX = 0;     // and the motion it was given
+float movedY = 0;
+List<Rect> checked = new ArrayList<Rect>();   // the obstacle cells grid.move looked at
+
+// Called before each move.
+void remember(Rect from, float speedX, float speedY) {
+  before = from;
+  movedX = speedX;
+  movedY = speedY;
+  checked = grid.moveObstacles(from, speedX, speedY);
+}
+
+// Hitbox's way: the box the move swept, turned into cells by dividing by the cell size; the
+// obstacle cells among them, the only ones the move checked; and the sides it hit. The
+// tutorial's way: the cells under the two next positions it looked at.
 void drawMaths() {
+  if (tutorialWay) {
+    drawTutorialMaths();
+    return;
+  }
   float left = min(before.x(), before.x() + movedX);
   float top = min(before.y(), before.y() + movedY);
   float right = max(before.right(), before.right() + movedX);
@@ -56,9 +79,43 @@ void drawMaths() {
   String text = "grid.move(player, " + Overlay.number(movedX) + ", " + Overlay.number(movedY) + ")"
       + "\nswept box x " + Overlay.number(left) + " to " + Overlay.number(right)
       + ", y " + Overlay.number(top) + " to " + Overlay.number(bottom)
-      + "\ncols " + Overlay.number(left) + " / " + (int) tile + " -> " + c0 + " to " + Overlay.number(right) + " / " + (int) tile + " -> " + c1
-      + "\nrows " + Overlay.number(top) + " / " + (int) tile + " -> " + r0 + " to " + Overlay.number(bottom) + " / " + (int) tile + " -> " + r1
+      + "\ncols " + Overlay.number(left) + " / " + (int) cellWidth + " -> " + c0 + " to " + Overlay.number(right) + " / " + (int) cellWidth + " -> " + c1
+      + "\nrows " + Overlay.number(top) + " / " + (int) cellWidth + " -> " + r0 + " to " + Overlay.number(bottom) + " / " + (int) cellWidth + " -> " + r1
       + "\n" + (c1 - c0 + 1) * (r1 - r0 + 1) + " cells under it, " + checked.size() + " solid: the only ones checked"
       + "\nhit: " + (sides.length() > 0 ? sides : "nothing");
   Overlay.label(g, 8, 30, text, last.hitAnything() ? Overlay.HIT : Overlay.MISS);
+}
+
+// The tutorial's look: the box one step across, then one step down, and the cells under each
+// (floor of its corners divided by the cell size); an obstacle cell among them is red.
+void drawTutorialMaths() {
+  float nextX = before.x() + movedX;
+  float nextY = before.y() + movedY;
+  pushStyle();
+  noFill();
+  strokeWeight(2);
+  cellsUnder(nextX, before.y());
+  cellsUnder(player.x(), nextY);
+  stroke(Palette.NEUTRAL);
+  strokeWeight(1);
+  rect(nextX, before.y(), player.w(), player.h());
+  rect(player.x(), nextY, player.w(), player.h());
+  popStyle();
+  String text = "next x: columns floor(" + Overlay.number(nextX) + " / " + (int) cellWidth + ") = " + columnAt(nextX)
+      + " to " + (ceil((nextX + player.w()) / cellWidth) - 1)
+      + (obstacleUnder(nextX, before.y(), player.w(), player.h()) ? ": an obstacle, snap" : ": free, move")
+      + "\nnext y: rows floor(" + Overlay.number(nextY) + " / " + (int) cellHeight + ") = " + rowAt(nextY)
+      + " to " + (ceil((nextY + player.h()) / cellHeight) - 1)
+      + (obstacleUnder(player.x(), nextY, player.w(), player.h()) ? ": an obstacle, snap" : ": free, move");
+  Overlay.label(g, 8, 30, text, last.hitAnything() ? Overlay.HIT : Overlay.MISS);
+}
+
+// Outlines the cells under a box at (x, y), the player's size: red for an obstacle.
+void cellsUnder(float x, float y) {
+  for (int row = rowAt(y); row < ceil((y + player.h()) / cellHeight); row++) {
+    for (int column = columnAt(x); column < ceil((x + player.w()) / cellWidth); column++) {
+      stroke(obstacleAt(column, row) ? Overlay.HIT : Overlay.GUIDE);
+      rect(column * cellWidth, row * cellHeight, cellWidth, cellHeight);
+    }
+  }
 }

@@ -2,28 +2,36 @@
  * Hybrid grid: a pixel player on a tile map
  * Tutorial section 9: Grids
  *
- * The tutorial's hybrid approach, "store your obstacles in a grid, but your player's position
- * in terms of pixels", as the original Super Mario Bros. did: the level is a grid of 24-pixel
- * tiles read from a text map, and the player is a box that moves any number of pixels a
- * frame, with gravity and a jump.
+ * The section's hybrid approach: "store your obstacles in a grid, but your player's position
+ * in terms of pixels. Then to check whether the player is colliding with an obstacle, you
+ * convert the pixel position into a grid cell", as the original Super Mario Bros. did. The
+ * level is a grid of 24-pixel cells read from a text map; the player is a box that moves
+ * any number of pixels a frame, with gravity and a jump.
  *
- * Every frame one call moves it: grid.move(player, vx, vy). The box goes until it hits a
- * solid tile, stops touching it and slides along it with the rest of the motion, so it lands
- * on floors, bumps its head and stops at walls, and it never tunnels through a tile however
- * fast it falls. Touching is not colliding, so running along a floor never catches on the
- * seams between tiles. The grid only looks at the tiles under the box the move sweeps (from
- * where the player is to where the motion would take it): pixels become cells by dividing
- * by 24 (Grid.colAt, Grid.rowAt). The map's edge counts as solid.
+ * The conversion is one division: the column under a pixel x is floor(x / cellWidth), the
+ * row under y is floor(y / cellHeight), and then a look in the grid says whether that cell
+ * is an obstacle (columnAt, rowAt and obstacleAt below; Hitbox's grid.colAt, grid.rowAt and
+ * grid.isSolid do the same). Press t for the tutorial's way with them: section 6's look at
+ * the next position, one axis at a time, in the cells under the box there, and section 7's
+ * snap to the edge of the cell it would enter.
  *
- * Try this: raise maxFall to 60 (more than two tiles a frame) and fall from the top: it still
- * lands. Make the player wider than a tile, or draw your own level in the map below.
- * Keys: LEFT / RIGHT run, UP or SPACE jumps (on the ground only), d shows the maths.
+ * Hitbox's way (the default) is one call, grid.move(player, vx, vy): it sweeps the box from
+ * where it is to where the motion would take it, through the cells under that path, stops
+ * it touching the first obstacle and slides it along with the rest of the motion. The
+ * tutorial's way looks at one next position, so a move longer than a platform is thick can
+ * step right over it; the sweep never tunnels. Touching is not colliding in both, so running
+ * along a floor never catches on the seams between cells. The map's edge counts as solid.
+ *
+ * Try this: raise maxFall to 60 (more than two cells a frame), fall onto a thin platform in
+ * both ways; make the player wider than a cell, or draw your own level in the map below.
+ * Keys: LEFT / RIGHT run, UP or SPACE jumps (on the ground only), t the tutorial's way /
+ * Hitbox's, d shows the maths.
  */
 import hitbox.*;
 import hitbox.processing.*;
-import java.util.List;
 
-float tile = 24;
+float cellWidth = 24;
+float cellHeight = 24;
 String[] level = {
   ".........................",
   ".........................",
@@ -42,7 +50,7 @@ String[] level = {
   "............##...........",
   "#########################",
 };
-Grid grid = Grid.parse(join(level, "\n"), tile);
+Grid grid = Grid.parse(join(level, "\n"), cellWidth, cellHeight);  // Hitbox's copy of the map
 
 float gravity = 0.55;
 float jumpSpeed = 10.5;
@@ -56,14 +64,8 @@ boolean onGround = false;
 boolean leftDown = false;
 boolean rightDown = false;
 boolean jumpPressed = false;
-
-// What the last move looked at and ran into, for the maths overlay.
-Rect before = player;
-float movedX = 0;
-float movedY = 0;
-List<Rect> checked = new ArrayList<Rect>();
-Sweep.Move last;
-boolean showMaths = false;
+boolean tutorialWay = false;   // t: the tutorial's cells-at-the-next-position way
+Sweep.Move last;               // where the last move ended, and the sides it hit
 
 void setup() {
   size(600, 420);  // the 600 x 384 level, the key hint below
@@ -79,8 +81,9 @@ void draw() {
   if (showMaths) {
     drawMaths();
   }
-  Overlay.label(g, 8, 8, onGround ? "on the ground: UP or SPACE jumps" : "in the air");
-  Overlay.hint(g, "d: show the maths   LEFT / RIGHT: run   UP or SPACE: jump");
+  String way = tutorialWay ? "the tutorial's cells (t: grid.move)" : "grid.move (t: the tutorial's cells)";
+  Overlay.label(g, 8, 8, way + ",  " + (onGround ? "on the ground: UP or SPACE jumps" : "in the air"));
+  Overlay.hint(g, "t: tutorial's way / Hitbox's   d: show the maths   LEFT / RIGHT: run   UP or SPACE: jump");
 }
 
 void step() {
@@ -90,52 +93,76 @@ void step() {
   }
   jumpPressed = false;
   vy = min(vy + gravity, maxFall);
+  remember(player, vx, vy);   // for the maths (Maths.pde)
 
-  // The whole collision test: sweep the box through the grid's solid tiles.
-  before = player;
-  movedX = vx;
-  movedY = vy;
-  checked = grid.moveObstacles(player, vx, vy);
-  last = grid.move(player, vx, vy);
+  if (tutorialWay) {
+    last = tutorialMove(player, vx, vy);
+  } else {
+    // Hitbox: sweep the box through the grid's obstacle cells, in one call.
+    last = grid.move(player, vx, vy);
+  }
   player = new Rect(last.x(), last.y(), player.w(), player.h());
   vy = last.vy();  // 0 if it landed or bumped its head
   onGround = last.landed();
 }
 
-void drawLevel() {
-  noStroke();
-  for (int r = 0; r < grid.rows(); r++) {
-    for (int c = 0; c < grid.cols(); c++) {
-      if (grid.isSolid(c, r)) {
-        fill(Palette.OBSTACLE);
-        Draw.shape(g, grid.cellRect(c, r));
+// The section's point: the cell under a pixel. Divide by the cell's size and round down.
+int columnAt(float x) {
+  return floor(x / cellWidth);    // Hitbox: grid.colAt(x)
+}
+
+int rowAt(float y) {
+  return floor(y / cellHeight);   // Hitbox: grid.rowAt(y)
+}
+
+// Then a look in the grid: is that cell an obstacle? Outside the map counts as one.
+boolean obstacleAt(int column, int row) {
+  if (row < 0 || row >= level.length || column < 0 || column >= level[row].length()) {
+    return true;
+  }
+  return level[row].charAt(column) == '#';   // Hitbox: grid.isSolid(column, row)
+}
+
+// Is any cell under a box at (x, y) an obstacle? Every cell from its top-left corner's to
+// its bottom-right corner's; an edge exactly on a cell line does not reach into the next.
+boolean obstacleUnder(float x, float y, float w, float h) {
+  for (int row = rowAt(y); row < ceil((y + h) / cellHeight); row++) {
+    for (int column = columnAt(x); column < ceil((x + w) / cellWidth); column++) {
+      if (obstacleAt(column, row)) {
+        return true;
       }
     }
   }
+  return false;
 }
 
-void keyPressed() {
-  if (key == 'd') {
-    showMaths = !showMaths;
-  } else if (key == ' ') {
-    jumpPressed = true;
-  } else if (key == CODED) {
-    if (keyCode == LEFT) {
-      leftDown = true;
-    } else if (keyCode == RIGHT) {
-      rightDown = true;
-    } else if (keyCode == UP) {
-      jumpPressed = true;
+// The tutorial's way: look at the next position, across then down (section 6); if an
+// obstacle is there, snap to the edge of the cell it would enter (section 7).
+Sweep.Move tutorialMove(Rect p, float speedX, float speedY) {
+  float x = p.x();
+  float y = p.y();
+  int sides = 0;
+  if (obstacleUnder(x + speedX, y, p.w(), p.h())) {
+    if (speedX > 0) {
+      x = columnAt(x + p.w() + speedX) * cellWidth - p.w();   // against the cell's left side
+      sides |= Side.LEFT.bit();
+    } else {
+      x = (columnAt(x + speedX) + 1) * cellWidth;             // against its right side
+      sides |= Side.RIGHT.bit();
     }
+    speedX = 0;
   }
-}
-
-void keyReleased() {
-  if (key == CODED) {
-    if (keyCode == LEFT) {
-      leftDown = false;
-    } else if (keyCode == RIGHT) {
-      rightDown = false;
+  x += speedX;
+  if (obstacleUnder(x, y + speedY, p.w(), p.h())) {
+    if (speedY > 0) {
+      y = rowAt(y + p.h() + speedY) * cellHeight - p.h();     // on the cell's top: landed
+      sides |= Side.TOP.bit();
+    } else {
+      y = (rowAt(y + speedY) + 1) * cellHeight;               // head against its bottom
+      sides |= Side.BOTTOM.bit();
     }
+    speedY = 0;
   }
+  y += speedY;
+  return new Sweep.Move(x, y, speedX, speedY, sides);
 }

@@ -4,7 +4,7 @@ void drawMap() {
   noStroke();
   for (int r = 0; r < grid.rows(); r++) {
     for (int c = 0; c < grid.cols(); c++) {
-      int t = grid.get(c, r);
+      int t = terrain[r][c];
       fill(t == WATER ? waterColour : t == FOREST ? forestColour : grassColour);
       Draw.shape(g, grid.cellRect(c, r));
     }

@@ -7,7 +7,7 @@ void drawMaths() {
   fill(255, 150);
   for (int r = 0; r < grid.rows(); r++) {
     for (int c = 0; c < grid.cols(); c++) {
-      text(grid.get(c, r), grid.cellCenterX(c), grid.cellCenterY(r));
+      text(terrain[r][c], grid.cellCenterX(c), grid.cellCenterY(r));
     }
   }
   noFill();
@@ -18,8 +18,9 @@ void drawMaths() {
 
   int t = terrainUnderPlayer();
   String under = "under the player's centre: col " + playerCol() + ", row " + playerRow()
-      + "\ngrid.get = " + t + " (" + (t == FOREST ? "forest" : "grass") + "): speed " + Overlay.number(speed) + " px a frame";
-  Overlay.label(g, 8, grid.height() - 84, under + "\n\n" + costLine("shortest", shortest) + "\n" + costLine("cheapest", cheapest),
+      + "\nterrain[" + playerRow() + "][" + playerCol() + "] = " + t + " (" + (t == FOREST ? "forest" : "grass") + "): speed " + Overlay.number(speed) + " px a frame"
+      + "\ncoins looked at this frame: " + looked + " (in the cells under the player), of " + (placed - collected);
+  Overlay.label(g, 8, grid.height() - 100, under + "\n\n" + costLine("shortest", shortest) + "\n" + costLine("cheapest", cheapest),
       t == FOREST ? Overlay.HIT : Overlay.MISS);
 }
 
@@ -33,7 +34,7 @@ String costLine(String name, int[] route) {
   int diagonalSteps = 0;
   for (int i = 1; i < route.length; i++) {
     int c = route[i] % grid.cols();
-    if (grid.get(c, route[i] / grid.cols()) == FOREST) {
+    if (terrain[route[i] / grid.cols()][c] == FOREST) {
       forest++;
     } else {
       grass++;

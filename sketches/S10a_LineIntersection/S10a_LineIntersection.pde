@@ -4,8 +4,9 @@
  *
  * The tutorial stops at points, rectangles and circles: any other shape works too, it says,
  * once you find the right maths (search for "rectangle line intersection"). This is that
- * maths for lines. A line (a segment) runs from the start point to the mouse; three
- * segments, a rectangle and a circle turn red while it hits them. Two segments meet when
+ * maths for lines (the tutorial writes none, so there is no tutorial's version to switch
+ * to). A line (a segment) runs from the start point to the mouse; three segments, a
+ * rectangle and a circle turn red while it hits them. Two segments meet when
  * each one's ends lie on opposite sides of the other's line, or an end lies on it:
  * Collide.lineLine. The formula such a search usually finds solves for the crossing point
  * and divides by a number that is 0 for parallel lines; Hitbox only asks which side each end

@@ -1,20 +1,29 @@
 /**
- * Polygon/Point
+ * Polygon/Point, and a ball against the same polygon
  * Tutorial section 10: More advanced collision detection
  *
  * Is the mouse inside this concave polygon? The tutorial leaves shapes beyond points,
- * rectangles and circles to the maths you find; the rectangle video names this trick:
- * send a line from the point and count how many edges it crosses, odd means inside, even
- * outside. Here the line is a ray to the right, and Collide.rayCrossesEdge says whether it
- * crosses one edge; Collide.polygonPoint does the whole count. Hitbox counts an edge only
- * if one end is below the ray and the other at or above it, because a ray through a corner
- * would otherwise count that corner twice (once per edge): a corner the outline just
- * touches counts 0 or 2 times, one it passes through once. A point on the outline is not
- * inside. Yellow dots are the crossings; hollow rings are corners touched, not crossed.
+ * rectangles and circles to the maths you find; the rectangle video names this trick for
+ * concave polygons: project a line from the point and count how many edges it crosses, odd
+ * means inside, even outside. Here the line is a ray to the right, and crosses() below
+ * decides for one edge: the edge must reach the ray's level, one end below it and the other
+ * at or above it, and meet it right of the point. Only one end may count as "at", because a
+ * ray through a corner would otherwise count that corner twice (once per edge): a corner the
+ * outline just touches counts 0 or 2 times, one it passes through once. Collide.polygonPoint
+ * is the whole count in one call (Collide.rayCrossesEdge the rule for one edge). A point on
+ * the outline is not inside. Yellow dots are the crossings; hollow rings are corners touched,
+ * not crossed.
+ *
+ * Press b and the mouse carries a ball: a shape against the concave polygon, which the video
+ * says becomes more complex. They overlap when an edge of the crown cuts into the ball, or
+ * when the ball's centre is inside (the crossing count again), for a ball wholly inside
+ * touches no edge; crown.overlaps(ball) is the library's answer.
  *
  * Try this: put the mouse level with a corner of the crown (y = 140 or y = 70); put it in
- * the notch at the bottom; make your own polygon with Polygon.of(x0, y0, x1, y1, ...).
- * Keys: d shows the maths (each edge's number, which ones count and why).
+ * the notch at the bottom; with the ball, slide it into the notch until it touches both
+ * sides; make your own polygon with Polygon.of(x0, y0, x1, y1, ...).
+ * Keys: b a ball instead of a point, d shows the maths (each edge's number, which ones
+ * count and why).
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -28,6 +37,9 @@ float px, py;         // the point: the mouse
 int crossings;        // edges the ray to the right crosses: written out below the crown
 boolean inside;       // the crown is red while the point is inside
 boolean showMaths;    // d
+boolean ballMode;     // b: the mouse carries a ball
+float ballRadius = 28;
+boolean ballHits;     // the ball overlaps the crown
 
 void setup() {
   size(600, 400);
@@ -43,15 +55,25 @@ void draw() {
   crossings = 0;
   for (int i = 0; i < crown.edgeCount(); i++) {
     Segment e = crown.edge(i);
-    if (Collide.rayCrossesEdge(e.x1(), e.y1(), e.x2(), e.y2(), px, py)) {
+    if (crosses(e.x1(), e.y1(), e.x2(), e.y2())) {   // Collide.rayCrossesEdge(..., px, py)
       crossings++;
     }
   }
   // Collide.polygonPoint is that count in one call (a point on an edge is not inside).
   inside = Collide.polygonPoint(crown.coordinates(), px, py);
 
+  // The ball: an edge cutting into it, or its centre inside.
+  ballHits = false;
+  for (int i = 0; i < crown.edgeCount(); i++) {
+    Segment e = crown.edge(i);
+    if (Collide.lineCircle(e.x1(), e.y1(), e.x2(), e.y2(), px, py, ballRadius)) {
+      ballHits = true;
+    }
+  }
+  ballHits = ballHits || crossings % 2 == 1;   // crown.overlaps(new Circle(px, py, ballRadius))
+
   noStroke();
-  fill(inside ? Palette.HIT : Palette.MISS);
+  fill((ballMode ? ballHits : inside) ? Palette.HIT : Palette.MISS);
   Draw.shape(g, crown);
 
   // The ray, to the window's edge.
@@ -63,6 +85,11 @@ void draw() {
   if (showMaths) {
     drawMaths();
   }
+  if (ballMode) {
+    noStroke();
+    fill(Palette.PLAYER, 150);
+    circle(px, py, 2 * ballRadius);
+  }
   noStroke();
   fill(Palette.PLAYER);
   circle(px, py, 10);
@@ -70,12 +97,30 @@ void draw() {
 
   String verdict = onOutline ? "on the outline: not inside (touching does not count)"
       : crossings + (crossings == 1 ? " crossing: " : " crossings: ") + (crossings % 2 == 1 ? "odd, inside" : "even, outside");
-  Overlay.labelCentered(g, width / 2, py < 60 ? height - 40 : 22, verdict, inside ? Overlay.HIT : Overlay.MISS);
-  Overlay.hint(g, "move the mouse in and out of the crown     d: show the maths");
+  if (ballMode) {
+    verdict = "the ball: " + (ballHits ? "overlaps the crown" : "apart") + ";  its centre: " + verdict;
+  }
+  boolean red = ballMode ? ballHits : inside;
+  Overlay.labelCentered(g, width / 2, py < 60 ? height - 40 : 22, verdict, red ? Overlay.HIT : Overlay.MISS);
+  Overlay.hint(g, "move the mouse in and out of the crown   b: " + (ballMode ? "a point" : "a ball") + "   d: show the maths");
+}
+
+// Does the ray from the point (px, py) to the right cross the edge from (ax, ay) to (bx, by)?
+boolean crosses(float ax, float ay, float bx, float by) {
+  // The edge must reach the ray's level: one end below it, the other at or above (y grows down).
+  if ((ay > py) == (by > py)) {
+    return false;
+  }
+  // It meets that level at x = ax + (py - ay) / (by - ay) * (bx - ax); is that right of the
+  // point? The same question multiplied out, which stays exact for whole pixels:
+  float side = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+  return by > ay ? side > 0 : side < 0;
 }
 
 void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
+  } else if (key == 'b') {
+    ballMode = !ballMode;
   }
 }

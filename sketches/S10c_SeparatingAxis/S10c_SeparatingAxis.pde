@@ -7,9 +7,11 @@
  * apart exactly when a straight line fits between them. To find one, shine a light across
  * each edge and look at the two shadows on the axis along the edge's normal: if they do not
  * overlap on some axis, that axis separates the shapes; if they overlap on every axis, the
- * shapes overlap. The loop below looks for that gap; SeparatingAxis.axes(a, b) gives each
- * axis with both shadows (the panel on the right lists them), SeparatingAxis.overlaps(a, b)
- * the answer. The rectangle turns (Polygon.rotatedRect); the triangle follows the mouse. The
+ * shapes overlap. A shadow is a projection: each corner (x, y) lands on the axis (nx, ny) at
+ * the dot product x * nx + y * ny, and the shadow runs from the smallest to the largest
+ * (shadow() below). The loop looks for the gap; SeparatingAxis.axes(a, b) gives each axis
+ * with both shadows worked out the same way (the panel on the right lists and draws them),
+ * SeparatingAxis.overlaps(a, b) the answer. The rectangle turns (Polygon.rotatedRect); the triangle follows the mouse. The
  * axis drawn beside the shapes is the one with the widest gap, or, while they overlap, the
  * one with the least overlap: the shortest way out.
  *
@@ -53,11 +55,13 @@ void draw() {
 
   // The theorem as a loop: on each axis, the two shadows [minA, maxA] and [minB, maxB];
   // a gap between them on any one axis means apart (shadows that only touch count as a gap).
-  axes = SeparatingAxis.axes(box, mover);
+  axes = SeparatingAxis.axes(box, mover);   // every edge's normal, from both shapes
   separating = -1;
   for (int i = 0; i < axes.size(); i++) {
     SeparatingAxis.Axis a = axes.get(i);
-    boolean gap = a.maxA() <= a.minB() || a.maxB() <= a.minA();
+    float[] shadowA = shadow(box, a.nx(), a.ny());     // a.minA(), a.maxA()
+    float[] shadowB = shadow(mover, a.nx(), a.ny());   // a.minB(), a.maxB()
+    boolean gap = shadowA[1] <= shadowB[0] || shadowB[1] <= shadowA[0];
     if (gap && (separating < 0 || a.overlap() < axes.get(separating).overlap())) {
       separating = i;   // the widest gap so far
     }
@@ -83,6 +87,19 @@ void draw() {
   Overlay.labelCentered(g, panelX / 2, mouseY > height - 90 ? 18 : height - 36, verdict, overlapping ? Overlay.HIT : Overlay.MISS);
   Overlay.hint(g, "move the triangle     3-6: sides     space: " + (turning ? "stop" : "start")
       + " turning     d: show the maths");
+}
+
+// A shape's shadow on the axis (nx, ny): each corner projected onto it with the dot product,
+// from the smallest to the largest.
+float[] shadow(Polygon p, float nx, float ny) {
+  float min = MAX_FLOAT;
+  float max = -MAX_FLOAT;
+  for (int i = 0; i < p.size(); i++) {
+    float along = p.x(i) * nx + p.y(i) * ny;
+    min = min(min, along);
+    max = max(max, along);
+  }
+  return new float[] {min, max};
 }
 
 void keyPressed() {

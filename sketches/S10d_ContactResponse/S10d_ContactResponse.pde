@@ -14,9 +14,12 @@
  * 2 bounce: the ball flies on its own and bounces off everything (click to throw it at the mouse).
  * 3 slide: the ball chases the mouse and slides along whatever is in the way.
  *
- * Where Hitbox differs: neither source goes past yes-or-no and section 7's snap (the
- * tutorial points to physics libraries for more). Hitbox adds Contact and Response, because
- * a push, a bounce or a slide off any shape needs the normal and the depth, not just a yes.
+ * Where Hitbox differs: the tutorial's responses work along the window's axes only: sections
+ * 1, 6 and 8 bounce by flipping a speed (xSpeed *= -1, bouncingRectSpeedX *= -1), section 7
+ * snaps to an edge, and for more it points to physics libraries; the video stops at
+ * yes-or-no.
+ * Hitbox adds Contact and Response, because a push, a bounce or a slide off a circle or a
+ * slanted edge needs the normal and the depth, not just a yes.
  *
  * Try this: in push out, drag the ball deep into the rectangle and see which edge it leaves
  * by; in slide, put the mouse behind the pentagon; give bounce a restitution below 1.

@@ -1,6 +1,6 @@
 /**
  * Fast objects: tunnelling, and the swept test that stops it
- * Tutorial section 10: Fast objects
+ * Beyond the tutorial: fast objects (neither source goes into them)
  *
  * Two balls are shot at the same thin wall at the same speed. The top one is tested as the
  * tutorial's sections 1 and 7 test: move, then look at where the ball landed

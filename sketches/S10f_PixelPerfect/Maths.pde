@@ -25,9 +25,15 @@ void drawPair() {
     markPixel(starX + firstPixel.x(), starY + firstPixel.y());
   }
   drawStages(result, null);
-  Overlay.label(g, 8, height - 42, "checks so far: " + counter.total() + "   circles "
+  Overlay.label(g, 8, height - 57, "checks so far: " + counter.total() + "   circles "
       + counter.decidedBy(Hybrid.Stage.CIRCLES) + ", boxes " + counter.decidedBy(Hybrid.Stage.BOXES)
-      + ", pixels " + counter.decidedBy(Hybrid.Stage.PRECISE) + " (" + counter.overlapping() + " colliding)");
+      + ", pixels " + counter.decidedBy(Hybrid.Stage.PRECISE) + " (" + counter.overlapping() + " colliding)\n" + thisFrame());
+}
+
+// This frame's runs of each stage, and stage 3's time.
+String thisFrame() {
+  return "this frame the stages ran " + ran[0] + ", " + ran[1] + " and " + ran[2] + " times; stage 3 ("
+      + (plainLoop ? "pixel loop" : "PixelMask") + ") took " + nf(pixelNanos / 1e6, 0, 3) + " ms";
 }
 
 void drawCrowd() {
@@ -52,10 +58,10 @@ void drawCrowd() {
   }
   drawStages(null, crowdCounter);
   int precise = crowdCounter.decidedBy(Hybrid.Stage.PRECISE);
-  Overlay.label(g, 8, height - 57, "this frame: " + crowdCounter.total() + " checks   circles "
+  Overlay.label(g, 8, height - 72, "this frame: " + crowdCounter.total() + " checks   circles "
       + crowdCounter.decidedBy(Hybrid.Stage.CIRCLES) + ", boxes " + crowdCounter.decidedBy(Hybrid.Stage.BOXES)
       + ", pixels " + precise + " (" + crowdCounter.overlapping() + " colliding)\n"
-      + "the pixel test ran " + precise + " times instead of " + crowdCounter.total());
+      + "the pixel test ran " + precise + " times instead of " + crowdCounter.total() + "\n" + thisFrame());
 }
 
 // The colour of the stage that decided.
@@ -153,7 +159,7 @@ void drawPairMaths() {
       lines += "\n3 pixels solid in both: " + sharedPixels + (result.overlaps() ? "  -> colliding" : "  -> apart");
     }
   }
-  Overlay.label(g, 8, height - 62 - 15 * (lines.split("\n").length - 1), lines, Overlay.TEXT);
+  Overlay.label(g, 8, height - 77 - 15 * (lines.split("\n").length - 1), lines, Overlay.TEXT);
 }
 
 // The first pixel both sprites share (reading order): a cross on it and its coordinates.

@@ -3,21 +3,26 @@
  * Tutorial section 10: Pixel-perfect, and the hybrid approach
  *
  * Two sprites collide when some pixel is solid in both: exact, but slow if every pair is
- * tested pixel by pixel. So the tutorial suggests a hybrid: first a distance check, fast and
- * little code; if it says "close", hit boxes; if they overlap, pixel-perfect. Hybrid.check
- * runs exactly those three stages, cheapest first, and the first that can say "apart"
- * decides: 1) the circles around the sprites' boxes, 2) the boxes, 3) the pixels (PixelMask,
- * made from each sprite's alpha). Only stage 3 can say "colliding". The big star is coloured
- * by the stage that decided; the first pixel the two share is marked.
+ * tested pixel by pixel. So section 10 suggests a hybrid: "first do a distance-based check,
+ * which can be done very fast and with little code. If that check is true, then spend more
+ * time doing something like hit box detection. If that is true, then you can do more
+ * specific or even pixel-perfect collision detection." hybrid() below is those three stages,
+ * one after another, each counted as it runs: 1) the circles around the sprites' boxes,
+ * 2) the boxes, 3) the pixels (PixelMask, made from each sprite's alpha). The first stage
+ * that can say "apart" decides; only stage 3 can say "colliding". Hitbox's Hybrid.check
+ * runs the same three stages in one call, with the same answers. The big star is coloured by
+ * the stage that decided; the first pixel the two share is marked.
  *
- * The tutorial gives no code for these stages. Hitbox's pixel stage differs from a loop over
- * the pixels because that loop is what makes pixel-perfect slow: PixelMask keeps each row of
- * a sprite as bits, 64 pixels to a long, and compares 64 pixels in one step.
+ * The tutorial gives no code for these stages. Stage 3 can be a plain loop over the pixels
+ * (press p), and that loop is what makes pixel-perfect slow; Hitbox's PixelMask.overlaps
+ * keeps each row of a sprite as bits, 64 pixels to a long, and compares 64 pixels in one
+ * step. The time stage 3 took this frame is on screen for both.
  *
  * Try this: put the ring between two of the star's points (the boxes overlap, the pixels
  * do not); press c and sweep the ring through a crowd to see how rarely the pixel test has
  * to run; make the sprites from your own PNGs with loadImage.
- * Keys: c crowd of stars, d shows the maths (circles, boxes and the comparisons).
+ * Keys: c crowd of stars, p stage 3 as a plain pixel loop / PixelMask, d shows the maths
+ * (circles, boxes and the comparisons).
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -32,6 +37,10 @@ int ringX, ringY;
 
 Hybrid.Result result;                 // the big star against the ring, this frame
 Hybrid.Counter counter = new Hybrid.Counter();      // every check since the start
+
+int[] ran = new int[3];               // how many times each stage ran this frame
+long pixelNanos;                      // and how long stage 3 took, in nanoseconds
+boolean plainLoop = false;            // p: stage 3 as a plain loop over the pixels
 
 boolean crowdMode;                    // c: a crowd of small stars instead
 int[] crowdX = new int[48];
@@ -56,19 +65,62 @@ void draw() {
   background(Palette.BACKGROUND);
   ringX = mouseX - ring.width / 2;
   ringY = mouseY - ring.height / 2;
+  ran = new int[3];
+  pixelNanos = 0;
   if (crowdMode) {
     // One check per star in the crowd: most end at the first stage.
     crowdCounter.reset();
     for (int i = 0; i < crowdX.length; i++) {
-      crowdResults[i] = crowdCounter.add(Hybrid.check(smallMask, crowdX[i], crowdY[i], ringMask, ringX, ringY));
+      crowdResults[i] = crowdCounter.add(hybrid(smallMask, crowdX[i], crowdY[i], ringMask, ringX, ringY));
     }
     drawCrowd();   // Maths.pde
   } else {
-    // Distance, then hit boxes, then pixels: the stages the tutorial names, in its order.
-    result = counter.add(Hybrid.check(starMask, starX, starY, ringMask, ringX, ringY));
+    result = counter.add(hybrid(starMask, starX, starY, ringMask, ringX, ringY));
     drawPair();    // Maths.pde
   }
-  Overlay.hint(g, "move the ring     c: " + (crowdMode ? "one big star" : "a crowd of stars") + "     d: show the maths");
+  Overlay.hint(g, "move the ring   c: " + (crowdMode ? "one big star" : "a crowd of stars")
+      + "   p: stage 3 " + (plainLoop ? "as PixelMask" : "as a pixel loop") + "   d: show the maths");
+}
+
+// Distance, then hit boxes, then pixels: section 10's stages in its order, each run only if
+// the one before said "close". Hybrid.check(a, ax, ay, b, bx, by) does the same in one call.
+Hybrid.Result hybrid(PixelMask a, int ax, int ay, PixelMask b, int bx, int by) {
+  // Each sprite's box: the bounds of its solid pixels, where the sprite is placed.
+  Rect boxA = a.bounds().translated(ax, ay);
+  Rect boxB = b.bounds().translated(bx, by);
+
+  // 1. Distance: the circles around the boxes (radius half the diagonal). Are their centres
+  //    further apart than the two radii?
+  ran[0]++;
+  float centres = dist(boxA.centerX(), boxA.centerY(), boxB.centerX(), boxB.centerY());
+  float radii = dist(0, 0, boxA.w(), boxA.h()) / 2 + dist(0, 0, boxB.w(), boxB.h()) / 2;
+  if (centres > radii) {
+    return new Hybrid.Result(false, Hybrid.Stage.CIRCLES);
+  }
+  // 2. Hit boxes: section 5's rectangle/rectangle test.
+  ran[1]++;
+  if (!Collide.rectRect(boxA.x(), boxA.y(), boxA.w(), boxA.h(), boxB.x(), boxB.y(), boxB.w(), boxB.h())) {
+    return new Hybrid.Result(false, Hybrid.Stage.BOXES);
+  }
+  // 3. Pixels: is some pixel solid in both sprites?
+  ran[2]++;
+  long start = System.nanoTime();
+  boolean shared = plainLoop ? pixelLoop(a, ax, ay, b, bx, by) : a.overlaps(b, bx - ax, by - ay);
+  pixelNanos += System.nanoTime() - start;
+  return new Hybrid.Result(shared, Hybrid.Stage.PRECISE);
+}
+
+// Stage 3 as a plain loop: each of a's pixels, one at a time; is it solid, and is the pixel of
+// b on the same spot of the screen solid too?
+boolean pixelLoop(PixelMask a, int ax, int ay, PixelMask b, int bx, int by) {
+  for (int y = 0; y < a.height(); y++) {
+    for (int x = 0; x < a.width(); x++) {
+      if (a.contains(x, y) && b.contains(ax + x - bx, ay + y - by)) {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 void keyPressed() {
@@ -76,5 +128,7 @@ void keyPressed() {
     showMaths = !showMaths;
   } else if (key == 'c') {
     crowdMode = !crowdMode;
+  } else if (key == 'p') {
+    plainLoop = !plainLoop;
   }
 }

@@ -3,7 +3,7 @@
 void drawMaths() {
   long allPairs = (long) count * (count - 1) / 2;
   String text = count + " boxes: an all-pairs loop makes n(n-1)/2 = " + allPairs + " tests"
-      + "\nthe quadtree made " + pairChecks + " (" + percent(pairChecks, allPairs) + ") for "
+      + "\nthe " + (rTree ? "dynamic tree (an R-tree kind)" : "quadtree") + " made " + pairChecks + " (" + percent(pairChecks, allPairs) + ") for "
       + pairCount + " overlapping pairs"
       + "\nthe mouse's box: " + queryChecks + " tests, not " + count + ", found " + foundCount;
   Overlay.label(g, 8, 8, text);

@@ -1,10 +1,11 @@
 /**
- * Quadtrees: only test what is nearby
- * Tutorial section 10: Quadtrees
+ * Quadtrees (and an R-tree kind): only test what is nearby
+ * Tutorial section 10: Quadtrees and R-trees
  *
- * The tutorial ends by naming the next step for many objects: structures that know where
- * things are, like quadtrees, so the box on the left is never tested against the boxes on the
- * right. Here 150 boxes start in three crowds and drift apart, in a BroadPhase.quadtree().
+ * Section 10 names "location-based data structures like R-trees and Quadtrees" that cut down
+ * the collision checks: "if you know your player is on the left side of the screen, you
+ * probably don't need to check for collision against objects on the right side of the
+ * screen." Here 150 boxes start in three crowds and drift apart, in a BroadPhase.quadtree().
  * Each square of the tree (the grey lines) holds the boxes whose corner is in it; a square
  * holding more than 8 splits into four, so the squares are small where the boxes crowd and
  * large where they are few. Every frame the tree's pairs() finds each overlapping pair (red)
@@ -13,15 +14,23 @@
  * Both answer exactly as Collide.rectRect would for every pair: boxes that only touch are not
  * a pair.
  *
+ * Press r for the same boxes in BroadPhase.dynamicTree(), Hitbox's R-tree kind of structure:
+ * instead of cutting the window into squares, it groups nearby boxes under a box that holds
+ * them, those groups under bigger boxes, and so on up to one box round everything (the grey
+ * outlines); a search skips every group whose box it misses. (A textbook R-tree packs many
+ * boxes a node; this one packs two, as game engines' box trees do.)
+ *
  * Try this: move the mouse's box over a crowd; press + a few times and watch the squares
- * split, then - and watch them merge; compare the tests in the maths with n(n-1)/2.
- * Keys: + / - add or remove 25 boxes, d shows the maths (the tests the tree made this frame
- * against the n(n-1)/2 of an all-pairs loop).
+ * split, then - and watch them merge; compare the tests in the maths with n(n-1)/2, for the
+ * quadtree and the R-tree kind.
+ * Keys: + / - add or remove 25 boxes, r quadtree / dynamic tree (an R-tree kind), d shows the
+ * maths (the tests the tree made this frame against the n(n-1)/2 of an all-pairs loop).
  */
 import hitbox.*;
 import hitbox.processing.*;
 
 BroadPhase tree = BroadPhase.quadtree();
+boolean rTree = false;     // r: BroadPhase.dynamicTree() instead, an R-tree kind
 int count = 150;           // boxes 0 to count - 1 are in the tree
 int most = 1000;
 float[] x = new float[most];
@@ -90,7 +99,7 @@ void draw() {
   });
   queryChecks = tree.checks();
 
-  // The tree's squares, deeper ones a little brighter.
+  // The tree's squares (or the dynamic tree's boxes), deeper ones a little brighter.
   noFill();
   tree.cells((depth, cx, cy, cw, ch) -> {
     stroke(90 + 12 * min(depth, 8));
@@ -116,12 +125,16 @@ void draw() {
   if (showMaths) {
     drawMaths();
   }
-  Overlay.hint(g, "+ / -: more or fewer boxes   d: show the maths");
+  Overlay.hint(g, "+ / -: more or fewer boxes   r: " + (rTree ? "the quadtree" : "an R-tree kind (dynamic tree)") + "   d: show the maths");
 }
 
 void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
+  } else if (key == 'r') {
+    // A new, empty structure: draw() puts every box in it on the next frame.
+    rTree = !rTree;
+    tree = rTree ? BroadPhase.dynamicTree() : BroadPhase.quadtree();
   } else if (key == '+' || key == '=') {
     count = min(most, count + 25);
   } else if (key == '-') {

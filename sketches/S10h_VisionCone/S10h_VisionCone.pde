@@ -1,6 +1,6 @@
 /**
  * Vision cone: a guard's pie-slice view and a capsule player
- * Tutorial section 10: Arcs and capsules
+ * Beyond the tutorial: arcs and capsules (neither source has them)
  *
  * The guard sees what is inside the pie slice Processing draws with
  * arc(x, y, 2 * range, 2 * range, start, stop, PIE): Collide.arcPoint answers that for a point,

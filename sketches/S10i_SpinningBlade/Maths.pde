@@ -12,9 +12,9 @@ void drawMaths(Polygon startBlade) {
   arc(hubX, hubY, 2 * r, 2 * r, a0 + PI, a1 + PI, PIE);
   stroke(Overlay.TEXT);
   Draw.shape(g, startBlade);
-  String text = "turn this frame " + Overlay.number(lastTurn) + " rad: the tip moves " + Overlay.number(abs(lastTurn) * r) + " px";
+  String text = "turn this frame " + nf(lastTurn, 0, 2) + " rad: the tip moves " + Overlay.number(abs(lastTurn) * r) + " px";
   if (lastHit != null) {
-    text += "\nhit at t = " + Overlay.number(lastHit.t()) + ", normal (" + Overlay.number(lastHit.nx()) + ", " + Overlay.number(lastHit.ny()) + ")";
+    text += "\nhit at t = " + nf(lastHit.t(), 0, 2) + ", normal (" + Overlay.number(lastHit.nx()) + ", " + Overlay.number(lastHit.ny()) + ")";
   }
   Overlay.labelCentered(g, width / 2, 28, text, lastHit != null ? Overlay.HIT : Overlay.GUIDE);
 }

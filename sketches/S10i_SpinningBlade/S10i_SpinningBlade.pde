@@ -1,6 +1,6 @@
 /**
  * Spinning blade: a turning sweep against thin walls
- * Tutorial section 10: Fast objects, turning
+ * Beyond the tutorial: fast objects that turn (neither source goes into them)
  *
  * A blade turns fast about its hub: 0.45 radians a frame, so its tip jumps about 67 pixels,
  * far more than the thin posts are wide. Testing only where the blade is at the end of each
@@ -58,7 +58,7 @@ void draw() {
   if (lastHit != null) {
     angle += lastHit.t() * spin;  // stop where it touches, and bounce back
     spin = -spin;
-    flash[hitPost] = 12;
+    flash[hitPost] = 3;   // red for 3 frames
     hits++;
   } else {
     float before = angle;
@@ -68,7 +68,7 @@ void draw() {
       Hit h = Sweep.turningTimeOfImpact(blade, hubX, hubY, 0, 0, angle - before, posts[i]);
       if (h != null && !h.alreadyOverlapping() && !Polygon.rotatedRect(hubX, hubY, bladeLength, bladeWidth, angle).overlaps(posts[i])) {
         passedThrough++;
-        flash[i] = 12;
+        flash[i] = 3;
       }
     }
   }

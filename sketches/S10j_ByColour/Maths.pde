@@ -43,8 +43,8 @@ void drawMaths() {
   float cy = (wheels.y(0) + wheels.y(2)) / 2;
   for (int i = 0; i < 4; i++) {
     readPoint(wheels.x(i), wheels.y(i), under[i]);
-    float ox = wheels.x(i) + (wheels.x(i) - cx) * 0.7;
-    float oy = wheels.y(i) + (wheels.y(i) - cy) * 0.7;
+    float ox = wheels.x(i) + (wheels.x(i) - cx) * 1.5;   // well clear of the car
+    float oy = wheels.y(i) + (wheels.y(i) - cy) * 1.5;
     Overlay.labelCentered(g, ox, oy, "" + i, under[i] == GRASS || under[i] == WALL ? Overlay.HIT : Overlay.TEXT);
   }
 

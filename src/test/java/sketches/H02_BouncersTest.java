@@ -15,7 +15,11 @@ import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
-/** 100 bouncers among 100 obstacles: never inside one, a new colour on every hit, the same run every time. */
+/**
+ * 100 bouncers among 100 obstacles: never inside one, a new colour on every hit, the same run
+ * every time. With t, section 8's own loop (a flip inside the loop) lets bouncers into
+ * obstacles, which the header says it can.
+ */
 class H02_BouncersTest {
 
     @BeforeAll
@@ -140,4 +144,34 @@ class H02_BouncersTest {
     }
 
 
+
+    @Test
+    void tKey_sectionEightsLoop_flipsInsideTheLoop_andSomeBouncersEndUpInsideObstacles() {
+        int[] caughtFrames = new int[1];
+        int[] hits = new int[1];
+        float[][] before = new float[100][];
+        SketchRun.of(new H02_Bouncers()).script(new Script().frames(1500).key(1, 't')).everyFrame(s -> {
+            if (s.frameCount >= 2) {
+                assertTrue(s.tutorialLoop);
+                hits[0] += s.hitsThisFrame;
+                for (int i = 0; i < 100; i++) {
+                    H02_Bouncers.Bouncer b = s.bouncers.get(i);
+                    // The tutorial's loop always moves by the speed it ends with: no waiting.
+                    assertEquals(before[i][0] + b.vx, b.x, 1e-4f, "frame " + s.frameCount + ", bouncer " + i + " x");
+                    assertEquals(before[i][1] + b.vy, b.y, 1e-4f, "frame " + s.frameCount + ", bouncer " + i + " y");
+                }
+                boolean anyInside = false;
+                for (H02_Bouncers.Bouncer b : s.bouncers) {
+                    anyInside |= Hits.any(b.x, b.y, s.size, s.size, s.obstacles);
+                }
+                caughtFrames[0] += anyInside ? 1 : 0;
+            }
+            for (int i = 0; i < 100; i++) {
+                H02_Bouncers.Bouncer b = s.bouncers.get(i);
+                before[i] = new float[] {b.x, b.y};
+            }
+        }).run();
+        assertTrue(hits[0] > 100, "the bouncers bounce off obstacles: " + hits[0] + " hits");
+        assertTrue(caughtFrames[0] > 0, "some frame ends with a bouncer inside an obstacle: " + caughtFrames[0]);
+    }
 }

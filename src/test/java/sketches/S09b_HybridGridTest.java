@@ -21,7 +21,12 @@ import hitbox.processing.Overlay;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 
-/** A pixel player on a tile map, moved by Grid.move every frame: it lands, jumps, stops at walls, and is never inside a tile. */
+/**
+ * A pixel player on a tile map, moved by Grid.move every frame: it lands, jumps, stops at
+ * walls, and is never inside a tile. With t, the tutorial's way: the pixel turned into a cell
+ * by floor(x / cellWidth), the cells at the next position looked up, and a snap to the cell's
+ * edge; it keeps out of the tiles too, but steps over a thin platform when it falls fast.
+ */
 class S09b_HybridGridTest {
 
     @BeforeAll
@@ -116,5 +121,79 @@ class S09b_HybridGridTest {
         int y = (int) tile.bottom();  // its bottom edge: the top may be under the player's red landed line
         assertTrue(SketchPixels.count(on.lastFrame(), x, y - 1, x + 10, y + 1, Overlay.GUIDE) > 0, "a checked tile is outlined");
         assertEquals(0, SketchPixels.count(off.lastFrame(), x, y - 1, x + 10, y + 1, Overlay.GUIDE), "not without the overlay");
+    }
+
+    @Test
+    void pixelToCell_isFloorOfTheDivision_andTheLookAgreesWithTheGrid() {
+        S09b_HybridGrid s = SketchRun.of(new S09b_HybridGrid()).frames(1).run().sketch();
+        Random random = new Random(9);
+        for (int i = 0; i < 2000; i++) {
+            float x = -50 + random.nextFloat() * 700;
+            float y = -50 + random.nextFloat() * 500;
+            assertEquals(s.grid.colAt(x), s.columnAt(x), "column under x " + x);
+            assertEquals(s.grid.rowAt(y), s.rowAt(y), "row under y " + y);
+        }
+        assertEquals(2, s.columnAt(48), "a pixel on a cell line belongs to the cell right of it");
+        assertEquals(1, s.columnAt(47.9f));
+        for (int row = -1; row <= s.grid.rows(); row++) {
+            for (int col = -1; col <= s.grid.cols(); col++) {
+                assertEquals(s.grid.isSolid(col, row), s.obstacleAt(col, row), "cell " + col + ", " + row);
+            }
+        }
+    }
+
+    @Test
+    void tutorialWay_longRunWithJumps_landsOnRowLines_stopsAtWalls_andIsNeverInsideATile() {
+        Random random = new Random(6);
+        Script script = new Script().frames(4000).key(1, 't');
+        for (int f = 2; f < 3900; ) {
+            int length = 5 + random.nextInt(70);
+            script.hold(f, random.nextBoolean() ? "LEFT" : "RIGHT", length);
+            if (random.nextInt(3) > 0) {
+                script.hold(f + random.nextInt(length), random.nextBoolean() ? "UP" : "SPACE", 1);
+            }
+            f += length + 1 + random.nextInt(8);
+        }
+        Set<Integer> rowsStoodOn = new HashSet<>();
+        int[] walls = new int[1];
+        int[] heads = new int[1];
+        SketchRun.of(new S09b_HybridGrid()).script(script).everyFrame(s -> {
+            if (s.frameCount < 2) {
+                return;
+            }
+            assertTrue(s.tutorialWay);
+            Grid g = s.grid;
+            Rect p = s.player;
+            assertFalse(g.rectOverlapsSolid(p.x(), p.y(), p.w(), p.h()), "frame " + s.frameCount + ": inside a tile at " + p);
+            assertEquals(s.tutorialMove(s.before, s.movedX, s.movedY), s.last, "frame " + s.frameCount + ": the tutorial's move");
+            if (s.onGround) {
+                assertEquals(p.bottom(), g.cellY(g.rowAt(p.bottom())), "frame " + s.frameCount + ": snapped onto a row line");
+                rowsStoodOn.add(g.rowAt(p.bottom()));
+            }
+            walls[0] += s.last.hitWall() ? 1 : 0;
+            heads[0] += s.last.hitHead() ? 1 : 0;
+        }).run();
+        assertTrue(rowsStoodOn.size() >= 2, "stood on the floor and at least one platform: rows " + rowsStoodOn);
+        assertTrue(walls[0] > 0, "ran into a wall");
+        assertTrue(heads[0] > 0, "bumped its head");
+    }
+
+    @Test
+    void tutorialWay_fastFall_stepsOverAThinPlatform_butGridMoveLands() {
+        // 60 px a frame onto the one-cell-thick platform of row 8 (x 400): the next position
+        // the tutorial looks at is already below it.
+        S09b_HybridGrid tutorial = new S09b_HybridGrid();
+        tutorial.maxFall = 60;
+        tutorial.gravity = 60;
+        tutorial.player = new Rect(400, 8 * 24 - 28 - 1, 18, 28);
+        tutorial.tutorialWay = true;
+        SketchRun.of(tutorial).frames(1).run();
+        assertTrue(tutorial.player.y() > 9 * 24, "it went through row 8: " + tutorial.player);
+        S09b_HybridGrid sweep = new S09b_HybridGrid();
+        sweep.maxFall = 60;
+        sweep.gravity = 60;
+        sweep.player = new Rect(400, 8 * 24 - 28 - 1, 18, 28);
+        SketchRun.of(sweep).frames(1).run();
+        assertEquals(8 * 24f, sweep.player.bottom(), "grid.move stops on row 8's top");
     }
 }

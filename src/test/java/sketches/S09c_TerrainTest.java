@@ -20,7 +20,11 @@ import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
-/** Grass, water and forest: water stops the player, forest slows it, and the two routes are the shortest and the cheapest. */
+/**
+ * Grass, water and forest in an int[][]: water stops the player, forest slows it, and the two
+ * routes are the shortest and the cheapest. Coins lie in the cells' lists, several to a cell
+ * in places, and only the lists under the player are looked at.
+ */
 class S09c_TerrainTest {
 
     @BeforeAll
@@ -138,5 +142,77 @@ class S09c_TerrainTest {
         // The digit in a water cell far from the routes and labels: cell (12, 17).
         int x = (int) g.cellX(12), y = (int) g.cellY(17);
         assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame(), x, y, x + 20, y + 20) > 5, "the cell's number is written");
+    }
+
+    @Test
+    void terrain_isAnIntArray_ofTheSectionsNumbers_agreeingWithTheGrid() {
+        S09c_Terrain s = SketchRun.of(new S09c_Terrain()).frames(1).run().sketch();
+        assertEquals(20, s.terrain.length);
+        assertEquals(30, s.terrain[0].length);
+        for (int row = 0; row < 20; row++) {
+            for (int col = 0; col < 30; col++) {
+                assertEquals(s.map[row].charAt(col) - '0', s.terrain[row][col]);
+                assertEquals(s.grid.get(col, row), s.terrain[row][col], "cell " + col + ", " + row);
+            }
+        }
+        assertEquals(1, s.terrain[11][5], "water");
+        assertEquals(2, s.terrain[2][14], "forest");
+        assertEquals(0, s.terrain[7][3], "grass");
+    }
+
+    @Test
+    void coins_lieInTheirCellsLists_severalToACellInPlaces() {
+        S09c_Terrain s = SketchRun.of(new S09c_Terrain()).frames(1).run().sketch();
+        int total = 0;
+        int crowded = 0;
+        for (int row = 0; row < 20; row++) {
+            for (int col = 0; col < 30; col++) {
+                for (S09c_Terrain.Coin coin : s.coins[row][col]) {
+                    assertEquals(col, s.grid.colAt(coin.x), "a coin in its own cell's list, across");
+                    assertEquals(row, s.grid.rowAt(coin.y), "and down");
+                    assertTrue(s.terrain[row][col] != s.WATER, "not in the water");
+                }
+                total += s.coins[row][col].size();
+                crowded += s.coins[row][col].size() > 1 ? 1 : 0;
+            }
+        }
+        assertEquals(s.placed, total);
+        assertTrue(crowded >= 3, "several cells hold more than one coin: " + crowded);
+    }
+
+    @Test
+    void coins_arePickedUpOnTouch_lookingOnlyInTheCellsUnderThePlayer() {
+        // Two coins put in cell (5, 3), the only ones on row 3's first cells, ahead of the player walking right along row 3.
+        S09c_Terrain s = new S09c_Terrain();
+        int[] before = new int[1];
+        float[] touchedAt = new float[2];
+        SketchRun.of(s).script(new Script().frames(60).hold(2, "RIGHT", 57)).everyFrame(k -> {
+            if (k.frameCount == 1) {
+                for (int col = 0; col < 10; col++) {
+                    k.coins[3][col].clear();   // no placed coin on the way to these two
+                }
+                k.coins[3][5].add(k.new Coin(106, 70));
+                k.coins[3][5].add(k.new Coin(114, 68));
+                before[0] = k.collected;
+                return;
+            }
+            int under = 0;
+            for (int row = k.grid.rowAt(k.player.y()); row <= k.grid.rowAt(k.player.bottom()); row++) {
+                for (int col = k.grid.colAt(k.player.x()); col <= k.grid.colAt(k.player.right()); col++) {
+                    under += k.grid.inGrid(col, row) ? k.coins[row][col].size() : 0;
+                }
+            }
+            assertTrue(k.looked <= under + (k.collected - before[0]), "frame " + k.frameCount + ": looked only under the player");
+            assertTrue(k.looked < k.placed - k.collected, "never at every coin");
+            if (touchedAt[0] == 0 && k.collected - before[0] >= 1) {
+                touchedAt[0] = k.player.right();
+            }
+            if (touchedAt[1] == 0 && k.collected - before[0] >= 2) {
+                touchedAt[1] = k.player.right();
+            }
+        }).run();
+        assertEquals(0, s.coins[3][5].size(), "both coins in the cell were picked up");
+        assertTrue(touchedAt[0] > 106 - 3 && touchedAt[0] < 106 + 3 + 3, "the first when the box reached it: " + touchedAt[0]);
+        assertTrue(touchedAt[1] > touchedAt[0], "the second later, at " + touchedAt[1]);
     }
 }

@@ -96,4 +96,57 @@ class S10b_PointInPolygonTest {
         assertTrue(SketchPixels.differing(off, r.frame(6)) > 2000, "the overlay numbers the edges and writes out the rule");
         assertEquals(0, SketchPixels.differing(off, r.lastFrame()), "pressing d again hides the overlay");
     }
+
+    @Test
+    void writtenOutCrossingRule_isRayCrossesEdge_forEveryEdge_allOverTheWindow() {
+        S10b_PointInPolygon s = SketchRun.of(new S10b_PointInPolygon()).frames(1).run().sketch();
+        int counted = 0;
+        for (int y = 0; y <= 400; y += 5) {
+            for (int x = 0; x <= 600; x += 5) {
+                s.px = x;
+                s.py = y;
+                for (int i = 0; i < s.crown.edgeCount(); i++) {
+                    hitbox.Segment e = s.crown.edge(i);
+                    boolean expected = Collide.rayCrossesEdge(e.x1(), e.y1(), e.x2(), e.y2(), x, y);
+                    assertEquals(expected, s.crosses(e.x1(), e.y1(), e.x2(), e.y2()), "edge " + i + " from (" + x + ", " + y + ")");
+                    counted += expected ? 1 : 0;
+                }
+            }
+        }
+        assertTrue(counted > 1000, "many crossings were compared: " + counted);
+    }
+
+    @Test
+    void ball_overlapsTheCrown_exactlyAsTheLibrarySays_andColoursIt() {
+        int[] seen = new int[3];
+        Script script = new Script().frames(2 + 61 * 41).key(1, 'b');
+        int f = 2;
+        for (int y = 0; y <= 400; y += 10) {
+            for (int x = 0; x <= 600; x += 10) {
+                script.mouse(f++, x, y);
+            }
+        }
+        SketchRun.of(new S10b_PointInPolygon()).script(script).everyFrame(s -> {
+            if (s.frameCount < 3) {
+                return;
+            }
+            assertTrue(s.ballMode);
+            boolean expected = s.crown.overlaps(new hitbox.Circle(s.px, s.py, s.ballRadius));
+            assertEquals(expected, s.ballHits, "the ball at (" + s.px + ", " + s.py + ")");
+            if (expected && !s.inside) {
+                seen[0]++;   // overlapping with its centre outside: an edge cuts into it
+            } else if (expected) {
+                seen[1]++;
+            } else {
+                seen[2]++;
+            }
+        }).run();
+        assertTrue(seen[0] > 20 && seen[1] > 20 && seen[2] > 20, "centre outside but touching, inside, apart: "
+                + java.util.Arrays.toString(seen));
+        SketchRun.Result<S10b_PointInPolygon> r = SketchRun.of(new S10b_PointInPolygon())
+                .script(new Script().frames(4).key(1, 'b').mouse(1, 330, 255)).run();
+        assertFalse(r.sketch().inside, "the centre is in the notch, outside");
+        assertTrue(r.sketch().ballHits, "but the ball reaches the notch's point");
+        SketchPixels.assertColour(r.lastFrame(), 300, 200, Palette.HIT, "the crown is red");
+    }
 }

@@ -65,6 +65,15 @@ class S10c_SeparatingAxisTest {
             boolean anySeparates = s.axes.stream().anyMatch(SeparatingAxis.Axis::separates);
             assertEquals(!s.overlapping, anySeparates, "some axis separates exactly when apart");
             assertEquals(!s.overlapping, s.separating >= 0, "the highlighted axis");
+            // The first tab's projections are the shadows the library lists.
+            for (SeparatingAxis.Axis a : s.axes) {
+                float[] shadowA = s.shadow(s.box, a.nx(), a.ny());
+                float[] shadowB = s.shadow(s.mover, a.nx(), a.ny());
+                assertEquals(a.minA(), shadowA[0], 1e-3f, "box's shadow starts");
+                assertEquals(a.maxA(), shadowA[1], 1e-3f, "box's shadow ends");
+                assertEquals(a.minB(), shadowB[0], 1e-3f, "mover's shadow starts");
+                assertEquals(a.maxB(), shadowB[1], 1e-3f, "mover's shadow ends");
+            }
             if (s.separating >= 0) {
                 assertTrue(s.axes.get(s.separating).separates());
                 assertEquals(s.separating, s.shown);

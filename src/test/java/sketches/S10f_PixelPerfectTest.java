@@ -135,4 +135,44 @@ class S10f_PixelPerfectTest {
         }
     }
 
+
+    @Test
+    void writtenOutStages_agreeWithHybridCheck_everywhere_inBothPixelWays() {
+        S10f_PixelPerfect s = SketchRun.of(new S10f_PixelPerfect()).frames(1).run().sketch();
+        java.util.Random random = new java.util.Random(4);
+        int[] byStage = new int[3];
+        for (boolean loop : new boolean[] {false, true}) {
+            s.plainLoop = loop;
+            for (int i = 0; i < 3000; i++) {
+                int rx = 100 + random.nextInt(400);
+                int ry = 20 + random.nextInt(360);
+                int[] before = s.ran.clone();
+                Hybrid.Result expected = Hybrid.check(s.starMask, s.starX, s.starY, s.ringMask, rx, ry);
+                Hybrid.Result got = s.hybrid(s.starMask, s.starX, s.starY, s.ringMask, rx, ry);
+                assertEquals(expected, got, "ring at " + rx + ", " + ry + (loop ? ", pixel loop" : ""));
+                int stage = got.decidedBy().ordinal();
+                byStage[stage]++;
+                // Each stage ran up to the one that decided, and no further.
+                for (int k = 0; k < 3; k++) {
+                    assertEquals(before[k] + (k <= stage ? 1 : 0), s.ran[k], "stage " + (k + 1) + " ran");
+                }
+            }
+        }
+        assertTrue(byStage[0] > 0 && byStage[1] > 0 && byStage[2] > 0, "every stage decided some: "
+                + java.util.Arrays.toString(byStage));
+    }
+
+    @Test
+    void countsPerFrame_matchTheCrowdsStages_andPKeyTimesThePixelLoop() {
+        SketchRun.Result<S10f_PixelPerfect> r = SketchRun.of(new S10f_PixelPerfect())
+                .script(new Script().frames(5).mouse(1, 330, 200).key(1, 'c').key(2, 'p')).run();
+        S10f_PixelPerfect s = r.sketch();
+        assertTrue(s.plainLoop, "p: the plain loop");
+        Hybrid.Counter c = s.crowdCounter;
+        assertEquals(c.total(), s.ran[0], "stage 1 runs for every star");
+        assertEquals(c.total() - c.decidedBy(Stage.CIRCLES), s.ran[1], "stage 2 for those the circles did not dismiss");
+        assertEquals(c.decidedBy(Stage.PRECISE), s.ran[2], "stage 3 for those the boxes did not dismiss");
+        assertTrue(s.ran[2] >= 1 && s.pixelNanos > 0, "stage 3 ran and was timed");
+        assertTrue(s.thisFrame().contains("pixel loop"), s.thisFrame());
+    }
 }

@@ -29,10 +29,29 @@ class S10g_QuadtreeTest {
 
     @Test
     void everyFrame_pairsAndQuery_areTheAllPairsLoopsAnswers() {
+        checkAgainstAllPairs(new Script().frames(400).mouse(1, 300, 200).mouse(150, 140, 130).key(200, '+').key(300, '-'), false);
+    }
+
+    @Test
+    void rKey_theRTreeKind_dynamicTree_givesTheSameAnswers_andDrawsItsBoxes() {
+        S10g_Quadtree s = checkAgainstAllPairs(new Script().frames(400).key(1, 'r').mouse(1, 300, 200)
+                .mouse(150, 140, 130).key(200, '+').key(300, '-'), true);
+        assertTrue(s.rTree, "r: the dynamic tree");
+        assertTrue(s.tree.toString().toLowerCase().contains("tree") && !s.tree.toString().toLowerCase().contains("quad"),
+                "the structure is the dynamic tree: " + s.tree);
+        List<float[]> boxes = squares(s);
+        assertTrue(boxes.size() > s.count, "a box per leaf and the boxes that hold them: " + boxes.size());
+    }
+
+    private static S10g_Quadtree checkAgainstAllPairs(Script script, boolean rTree) {
         long[] tests = {0, 0};
-        SketchRun.of(new S10g_Quadtree())
-                .script(new Script().frames(400).mouse(1, 300, 200).mouse(150, 140, 130).key(200, '+').key(300, '-'))
+        S10g_Quadtree sketch = new S10g_Quadtree();
+        SketchRun.of(sketch)
+                .script(script)
                 .everyFrame(s -> {
+                    if (s.frameCount == 1 && rTree) {
+                        return;  // r came after the first frame's draw
+                    }
                     if (s.frameCount == 200 || s.frameCount == 300) {
                         return;  // + and - came after this frame's draw: the new count is drawn next frame
                     }
@@ -58,6 +77,7 @@ class S10g_QuadtreeTest {
                     tests[1] += (long) s.count * (s.count - 1) / 2;
                 }).run();
         assertTrue(tests[0] * 5 < tests[1], "the tree made " + tests[0] + " tests, an all-pairs loop " + tests[1]);
+        return sketch;
     }
 
     @Test

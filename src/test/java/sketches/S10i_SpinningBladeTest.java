@@ -31,4 +31,21 @@ class S10i_SpinningBladeTest {
                 .script(new Script().frames(120).key(1, 't')).run();
         assertTrue(r.sketch().passedThrough >= 5, "passed through: " + r.sketch().passedThrough);
     }
+
+    @Test
+    void onAHitFrame_onlyThePostHitIsRed() {
+        int[] hitFrames = new int[1];
+        SketchRun.of(new S10i_SpinningBlade()).script(new Script().frames(120)).everyFrame(s -> {
+            if (s.lastHit == null) {
+                return;
+            }
+            hitFrames[0]++;
+            int lit = 0;
+            for (int f : s.flash) {
+                lit += f > 0 ? 1 : 0;   // after drawing: the one just hit still has frames left
+            }
+            assertEquals(1, lit, "frame " + s.frameCount + ": one post red, the one hit");
+        }).run();
+        assertTrue(hitFrames[0] >= 5, "hit frames: " + hitFrames[0]);
+    }
 }
