@@ -32,10 +32,10 @@ class Bouncer {
     vx = Edges.bounceX(crossed, vx);
     vy = Edges.bounceY(crossed, vy);
     int still = Motion.rectBlocked(x, y, size, size, vx, vy, obstacles);
-    if (!Motion.has(still, Motion.X)) {
+    if (!Side.hasAny(still, Side.LEFT_RIGHT)) {
       x += vx;
     }
-    if (!Motion.has(still, Motion.Y)) {
+    if (!Side.hasAny(still, Side.TOP_BOTTOM)) {
       y += vy;
     }
   }

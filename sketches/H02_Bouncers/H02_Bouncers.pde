@@ -65,7 +65,8 @@ void draw() {
     // Section 8's loop for this bouncer: ask every obstacle, combine the answers.
     int blocked = Motion.NONE;
     for (int i = 0; i < obstacles.size(); i++) {
-      int answer = Motion.rectBlocked(b.x, b.y, size, size, b.vx, b.vy, obstacles.get(i));
+      Rect o = obstacles.get(i);
+      int answer = Motion.rectBlocked(b.x, b.y, size, size, b.vx, b.vy, o.x(), o.y(), o.w(), o.h());
       if (answer != Motion.NONE) {
         glow[i] = 10;
       }

@@ -39,7 +39,7 @@ void drawMaths() {
   nameObstacle(hitY);
   String text = "bouncer 0\nnext x: " + (hitX >= 0 ? "hits obstacle " + hitX : "free")
       + "\nnext y: " + (hitY >= 0 ? "hits obstacle " + hitY : "free");
-  if (next == Motion.BOTH && hitX < 0 && hitY < 0) {
+  if (next == Side.ALL_BITS && hitX < 0 && hitY < 0) {
     text += "\ncorner: hits obstacle " + Hits.first(b.x + b.vx, b.y + b.vy, size, size, obstacles);
   }
   float lx = b.x + 22 > width - 170 ? b.x - 180 : b.x + 22;

@@ -76,6 +76,6 @@ void drawMaths(int crossed) {
     rule = "an edge crossed: that speed = 0, and the ball put back\n"
         + "inside: x kept between r and width - r (Edges.circleClampX)";
   }
-  Overlay.label(g, 8, 30, "crossed: " + Edges.describe(crossed) + "\n" + rule,
+  Overlay.label(g, 8, 30, "crossed: " + Side.describe(crossed) + "\n" + rule,
       crossed == Edges.NONE ? Overlay.MISS : Overlay.HIT);
 }

@@ -53,15 +53,15 @@ void draw() {
   } else if (action.equals("game over")) {
     // Pong: bounce off the top and the bottom; past the left or the right, the game ends.
     ySpeed = Edges.bounceY(crossed, ySpeed);
-    if (Edges.has(crossed, Edges.LEFT) || Edges.has(crossed, Edges.RIGHT)) {
+    if (Side.hasAny(crossed, Side.LEFT_RIGHT)) {
       gameOver = true;
       xSpeed = 0;
       ySpeed = 0;
     }
   } else {
     // Stop: stay at the edge it reached (Edges.circleClampX puts it back just inside).
-    if (Edges.has(crossed, Edges.LEFT) || Edges.has(crossed, Edges.RIGHT)) xSpeed = 0;
-    if (Edges.has(crossed, Edges.TOP) || Edges.has(crossed, Edges.BOTTOM)) ySpeed = 0;
+    if (Side.hasAny(crossed, Side.LEFT_RIGHT)) xSpeed = 0;
+    if (Side.hasAny(crossed, Side.TOP_BOTTOM)) ySpeed = 0;
     x = Edges.circleClampX(x, r, width);
     y = Edges.circleClampY(y, r, height);
   }

@@ -42,15 +42,15 @@ void drawBounce() {
   }
   stroke(Palette.ACCENT, 255 - age * 10);
   strokeWeight(5);
-  if (Edges.has(lastCrossed, Edges.LEFT)) line(2, 0, 2, height);
-  if (Edges.has(lastCrossed, Edges.RIGHT)) line(width - 3, 0, width - 3, height);
-  if (Edges.has(lastCrossed, Edges.TOP)) line(0, 2, width, 2);
-  if (Edges.has(lastCrossed, Edges.BOTTOM)) line(0, height - 3, width, height - 3);
+  if (Side.has(lastCrossed, Side.LEFT)) line(2, 0, 2, height);
+  if (Side.has(lastCrossed, Side.RIGHT)) line(width - 3, 0, width - 3, height);
+  if (Side.has(lastCrossed, Side.TOP)) line(0, 2, width, 2);
+  if (Side.has(lastCrossed, Side.BOTTOM)) line(0, height - 3, width, height - 3);
   if (showMaths) {
     // Which edges the bounce crossed, as the library names them, written beside the ball on
     // the window's side of it.
-    float inX = Edges.has(lastCrossed, Edges.LEFT) ? 1 : (Edges.has(lastCrossed, Edges.RIGHT) ? -1 : 0);
-    float inY = Edges.has(lastCrossed, Edges.TOP) ? 1 : (Edges.has(lastCrossed, Edges.BOTTOM) ? -1 : 0);
-    Overlay.labelBeside(g, x + inX * (r + 6), y + inY * (r + 6), inX, inY, "crossed: " + Edges.describe(lastCrossed), Palette.ACCENT);
+    float inX = Side.has(lastCrossed, Side.LEFT) ? 1 : (Side.has(lastCrossed, Side.RIGHT) ? -1 : 0);
+    float inY = Side.has(lastCrossed, Side.TOP) ? 1 : (Side.has(lastCrossed, Side.BOTTOM) ? -1 : 0);
+    Overlay.labelBeside(g, x + inX * (r + 6), y + inY * (r + 6), inX, inY, "crossed: " + Side.describe(lastCrossed), Palette.ACCENT);
   }
 }

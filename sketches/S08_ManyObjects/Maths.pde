@@ -138,12 +138,12 @@ String hitboxPreview() {
     Obstacle o = obstacles.get(i);
     int answer = Motion.rectBlocked(x, y, w, h, vx, vy, o.x, o.y, o.w, o.h);
     if (answer != Motion.NONE) {
-      said += (said.isEmpty() ? "" : ", ") + i + " says " + Motion.describe(answer);
+      said += (said.isEmpty() ? "" : ", ") + i + " says " + Side.describe(answer);
     }
     blocked |= answer;
   }
   String text = "Hitbox's loop, this frame:\nMotion.rectBlocked: " + (said.isEmpty() ? "nobody blocks" : said)
-      + "\ncombined: " + Motion.describe(blocked);
+      + "\ncombined: " + Side.describe(blocked);
   if (blocked == Motion.NONE) {
     return text + ", so it moves";
   }
@@ -153,8 +153,8 @@ String hitboxPreview() {
   for (Obstacle o : obstacles) {
     still |= Motion.rectBlocked(x, y, w, h, sx, sy, o.x, o.y, o.w, o.h);
   }
-  return text + ", reversed once\nasked again: " + Motion.describe(still)
-      + (Motion.has(still, Motion.X) ? ", waits across" : "") + (Motion.has(still, Motion.Y) ? ", waits down" : "");
+  return text + ", reversed once\nasked again: " + Side.describe(still)
+      + (Side.hasAny(still, Side.LEFT_RIGHT) ? ", waits across" : "") + (Side.hasAny(still, Side.TOP_BOTTOM) ? ", waits down" : "");
 }
 
 // How wide Overlay.label draws this text: its longest line at size 12, and 8 pixels.

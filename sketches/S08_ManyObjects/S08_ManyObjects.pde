@@ -105,10 +105,10 @@ void hitboxStep() {
   vx = Motion.reverseX(blocked, vx);
   vy = Motion.reverseY(blocked, vy);
   int still = blockedByAny(vx, vy);   // squeezed: the reversed move is blocked too
-  if (!Motion.has(still, Motion.X)) {
+  if (!Side.hasAny(still, Side.LEFT_RIGHT)) {
     x += vx;
   }
-  if (!Motion.has(still, Motion.Y)) {
+  if (!Side.hasAny(still, Side.TOP_BOTTOM)) {
     y += vy;
   }
 }

@@ -69,6 +69,7 @@ class ContractTest {
     // ------------------------------------------------------------------ one Side, one bit scheme
 
     @Test
+    @SuppressWarnings("deprecation")  // the deprecated Edges and Motion aliases must stay Side's bits
     void sideBits_areOneScheme() {
         assertEquals(Side.LEFT.bit(), Edges.LEFT);
         assertEquals(Side.RIGHT.bit(), Edges.RIGHT);

@@ -15,6 +15,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
+// Exercises the deprecated aliases and overloads too: they are kept, and must keep answering, for one release.
+@SuppressWarnings("deprecation")
 class EdgesTest {
 
     private static final float W = 400;

@@ -24,6 +24,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.function.Executable;
 
+// Exercises the deprecated aliases and overloads too: they are kept, and must keep answering, for one release.
+@SuppressWarnings("deprecation")
 class HitsTest {
 
     /** Obstacles around the 10 x 10 box at the origin: which ones it hits is in the tables. */

@@ -24,6 +24,8 @@ import org.junit.jupiter.params.provider.CsvSource;
  * additions that close the overload holes ({@link Collide#rectCircle}, {@link Sweep#circleRect},
  * {@link Hits#firstShape}), and the named tolerances' one padding formula.
  */
+// Exercises the deprecated aliases and overloads too: they are kept, and must keep answering, for one release.
+@SuppressWarnings("deprecation")
 class VocabularyTest {
 
     // ---- one side type ------------------------------------------------------------------

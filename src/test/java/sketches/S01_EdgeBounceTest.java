@@ -9,6 +9,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
 import hitbox.Edges;
+import hitbox.Side;
 import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
@@ -49,7 +50,7 @@ class S01_EdgeBounceTest {
                     previous[0] = crossed;
                 })
                 .run();
-        assertEquals(Edges.LEFT | Edges.RIGHT | Edges.TOP | Edges.BOTTOM, edgesCrossed[0],
+        assertEquals(Side.ALL_BITS, edgesCrossed[0],
                 "in 5000 frames the ball reaches and bounces off all four edges");
     }
 

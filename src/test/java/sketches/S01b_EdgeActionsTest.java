@@ -9,6 +9,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
 import hitbox.Edges;
+import hitbox.Side;
 import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
@@ -81,7 +82,7 @@ class S01b_EdgeActionsTest {
         S01b_EdgeActions s = over.sketch();
         assertTrue(bouncedOffBottom[0], "bounced off the bottom wall");
         assertTrue(s.gameOver, "the ball went out at the right: game over");
-        assertTrue(Edges.has(Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height), Edges.RIGHT));
+        assertTrue(Side.has(Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height), Side.RIGHT));
         assertEquals(0f, s.xSpeed);
         assertEquals(0f, s.ySpeed);
         int banner = SketchPixels.count(over.lastFrame(), 150, 150, 450, 200, Palette.NEUTRAL);
