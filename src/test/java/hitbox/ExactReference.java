@@ -43,8 +43,8 @@ final class ExactReference {
 
     // ------------------------------------------------------------ the tutorial's shapes
 
-    /** The float's exact value ({@code new BigDecimal(double)} is exact, and a float widens exactly). */
-    static BigDecimal exact(float v) {
+    /** The value exactly ({@code new BigDecimal(double)} is exact, and a float widens exactly). */
+    static BigDecimal exact(double v) {
         return new BigDecimal(v);
     }
 
@@ -150,9 +150,14 @@ final class ExactReference {
 
         /** The exact value of a float (a float is a dyadic rational). */
         static Q of(float f) {
-            BigDecimal b = exact(f);
-            return b.scale() <= 0 ? new Q(b.toBigIntegerExact(), BigInteger.ONE)
-                    : new Q(b.unscaledValue(), BigInteger.TEN.pow(b.scale()));
+            // f = m 2^e with a whole m of 24 bits at most: its bits, read as they are.
+            if (f == 0) {
+                return ZERO;
+            }
+            int e = Math.getExponent(f) - 23;
+            long m = (long) Math.scalb(f, -e); // exact: f has 24 significant bits
+            return e >= 0 ? new Q(BigInteger.valueOf(m).shiftLeft(e), BigInteger.ONE)
+                    : new Q(BigInteger.valueOf(m), BigInteger.ONE.shiftLeft(-e));
         }
 
         Q plus(Q o) {
@@ -421,16 +426,17 @@ final class ExactReference {
 
     /**
      * The separating axis theorem written out for two convex vertex lists (either winding, or
-     * flat: a segment's two ends, a point's one): every edge normal m of both, every vertex
+     * flat: a segment's two ends, a point's one; in double, so that a rectangle's far side
+     * {@code x + w} is exact): every edge normal m of both, every vertex
      * projected, exactly. Null when some axis separates them (their shadows on it overlap by 0
      * or less: open shapes that touch do not overlap); else every push of b out of a, both
      * ways along each axis, as {@code {mx, my, overlap}}: b moved by {@code m overlap / |m|^2}
      * just touches a, a move of length {@code overlap / |m|}. For convex shapes the shortest of
      * these is the minimum translation.
      */
-    static List<BigDecimal[]> convexPushes(float[] a, float[] b) {
+    static List<BigDecimal[]> convexPushes(double[] a, double[] b) {
         List<BigDecimal[]> pushes = new ArrayList<>();
-        for (float[] owner : List.of(a, b)) {
+        for (double[] owner : List.of(a, b)) {
             int n = owner.length / 2;
             for (int i = 0; i < n; i++) {
                 int k = (i + 1) % n;
@@ -452,7 +458,7 @@ final class ExactReference {
     }
 
     /** The least and greatest of {@code p . m} over the vertices. */
-    private static BigDecimal[] shadow(float[] p, BigDecimal mx, BigDecimal my) {
+    private static BigDecimal[] shadow(double[] p, BigDecimal mx, BigDecimal my) {
         BigDecimal lo = null, hi = null;
         for (int k = 0; k < p.length; k += 2) {
             BigDecimal v = exact(p[k]).multiply(mx).add(exact(p[k + 1]).multiply(my));
