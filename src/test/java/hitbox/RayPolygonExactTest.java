@@ -81,7 +81,7 @@ class RayPolygonExactTest {
             List<Q[]> stretches = ExactReference.rayInside(p.coordinates(), o[0], o[1], dx, dy, ends ? Q.ONE : null);
             // The hit is the way into the first stretch inside, exactly; a miss, none.
             if (hit == null || stretches.isEmpty()) {
-                assertEquals(stretches.isEmpty(), hit == null, what + (hit == null ? ": misses, but goes in at "
+                assertEquals(stretches.isEmpty(), hit == null, () -> what + (hit == null ? ": misses, but goes in at "
                         + stretches.get(0)[0].toDouble() + " of the direction" : ": hits, but never goes in"));
                 continue;
             }
