@@ -343,8 +343,10 @@ final class ExactReference {
      * one stretch. A bounded polygon is behind the ray's last cut.
      */
     static List<Q[]> rayInside(float[] polygon, float ox, float oy, float dx, float dy, Q reach) {
-        Q[] p = toQ(polygon);
-        Q x = Q.of(ox), y = Q.of(oy), vx = Q.of(dx), vy = Q.of(dy);
+        return rayInside(toQ(polygon), Q.of(ox), Q.of(oy), Q.of(dx), Q.of(dy), reach);
+    }
+
+    private static List<Q[]> rayInside(Q[] p, Q x, Q y, Q vx, Q vy, Q reach) {
         Q vv = vx.times(vx).plus(vy.times(vy));
         TreeSet<Q> cuts = new TreeSet<>(List.of(Q.ZERO));
         int n = p.length / 2;
@@ -474,9 +476,8 @@ final class ExactReference {
     }
 
     /**
-     * A closed segment meets the open polygon: cut the segment wherever it crosses an edge's
-     * line or passes a vertex; between two cuts nothing changes, so testing every cut and
-     * every midpoint between cuts is a complete search.
+     * A closed segment meets the open polygon: some stretch of it is inside ({@link
+     * #rayInside} up to its far end), or, for a segment of length 0, its one point is.
      */
     static boolean segmentPolygon(float[] polygon, float x1, float y1, float x2, float y2) {
         Q[] p = toQ(polygon);
@@ -484,41 +485,7 @@ final class ExactReference {
         if (dx.signum() == 0 && dy.signum() == 0) {
             return locate(p, ax, ay) == Where.INSIDE;
         }
-        TreeSet<Q> cuts = new TreeSet<>(List.of(Q.ZERO, Q.ONE));
-        int n = p.length / 2;
-        Q len2 = dx.times(dx).plus(dy.times(dy));
-        for (int i = 0; i < n; i++) {
-            int k = (i + 1) % n;
-            Q ex = p[2 * k].minus(p[2 * i]), ey = p[2 * k + 1].minus(p[2 * i + 1]);
-            Q fx = p[2 * i].minus(ax), fy = p[2 * i + 1].minus(ay);
-            Q den = cross(dx, dy, ex, ey);
-            if (den.signum() != 0) {
-                addCut(cuts, cross(fx, fy, ex, ey).div(den));
-            }
-            if (cross(dx, dy, fx, fy).signum() == 0) {
-                addCut(cuts, fx.times(dx).plus(fy.times(dy)).div(len2)); // vertex on the line
-            }
-        }
-        List<Q> ts = new ArrayList<>(cuts);
-        for (int i = 0; i < ts.size(); i++) {
-            if (at(p, ax, ay, dx, dy, ts.get(i)) == Where.INSIDE) {
-                return true;
-            }
-            if (i + 1 < ts.size() && at(p, ax, ay, dx, dy, ts.get(i).mid(ts.get(i + 1))) == Where.INSIDE) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private static void addCut(TreeSet<Q> cuts, Q t) {
-        if (t.signum() > 0 && t.compareTo(Q.ONE) < 0) {
-            cuts.add(t);
-        }
-    }
-
-    private static Where at(Q[] p, Q ax, Q ay, Q dx, Q dy, Q t) {
-        return locate(p, ax.plus(t.times(dx)), ay.plus(t.times(dy)));
+        return !rayInside(p, ax, ay, dx, dy, Q.ONE).isEmpty();
     }
 
     /**
