@@ -577,6 +577,8 @@ final class ExactReference {
         return a.compareTo(b) <= 0 ? a : b;
     }
 
+    // ------------------------------------------------------------------- vertex lists
+
     /**
      * Is the vertex list a simple polygon? At least 3 vertices, no vertex equal to the next,
      * not all on one line, edges that are not neighbours never meet, and neighbours meet only
