@@ -521,9 +521,11 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
             for (int a = 0; a < along && !onEdge; a++) {
                 onEdge = alongFrom[a] <= s && to <= alongTo[a];
             }
+            // The middle in double, not rounded to float: a stretch that passes a hair from a
+            // corner has its middle a hair from the outline, where float rounding could cross it.
             double mid = (s + to) / 2;
-            if (!onEdge && p.contains((float) (ox + mid * dx), (float) (oy + mid * dy))) {
-                return hitPolygon(p, Polygons.winding(p.raw()), s, SAME_EVENT * scale);
+            if (!onEdge && Polygons.contains(p.raw(), ox + mid * dx, oy + mid * dy)) {
+                return hitPolygon(p, Polygons.winding(p.raw()), s + 0.0, SAME_EVENT * scale); // (not -0)
             }
             k = next - 1;
         }
@@ -625,8 +627,10 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
                 // The outward normal (edges of a Polygon have length). A plain square root, not
                 // Math.hypot (several times dearer): the squares of float differences neither
                 // overflow nor underflow in double.
+                // Facing the ray: ahead < 0, the sign of out . d without the unit normal's
+                // rounding, so an edge the ray runs along is not counted by a rounding error.
                 double len = Math.sqrt(ex * ex + ey * ey), outX = turn * ey / len, outY = -turn * ex / len;
-                if (outX * dx + outY * dy < 0) {
+                if (ahead < 0) {
                     sx += outX;
                     sy += outY;
                 }

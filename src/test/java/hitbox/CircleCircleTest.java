@@ -102,7 +102,7 @@ class CircleCircleTest {
     @CsvSource(textBlock = TUTORIAL + TOUCHING + CONTAINMENT + COINCIDENT + ZERO_SIZE + HUGE)
     void circleCircle_translatedBy1e6(String scenario, float x1, float y1, float r1, float x2, float y2, float r2,
                                       boolean expected) {
-        for (float[] d : Reference.WHOLE_OFFSETS) {
+        for (float[] d : ExactReference.WHOLE_OFFSETS) {
             assertCircleCircle(expected, x1 + d[0], y1 + d[1], r1, x2 + d[0], y2 + d[1], r2);
         }
     }
@@ -129,6 +129,6 @@ class CircleCircleTest {
                 () -> assertEquals(expected, Collide.circleCircle(x2, y2, r2, x1, y1, r1), "Collide(b, a)" + where),
                 () -> assertEquals(expected, a.overlaps(b), "a.overlaps(b)" + where),
                 () -> assertEquals(expected, b.overlaps(a), "b.overlaps(a)" + where),
-                () -> assertEquals(expected, Reference.circleCircle(x1, y1, r1, x2, y2, r2), "Reference" + where));
+                () -> assertEquals(expected, ExactReference.circleCircle(x1, y1, r1, x2, y2, r2), "Reference" + where));
     }
 }

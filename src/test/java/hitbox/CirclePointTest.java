@@ -87,7 +87,7 @@ class CirclePointTest {
     @CsvSource(textBlock = INSIDE + OUTSIDE + TOUCHING + ZERO_SIZE + HUGE)
     void circlePoint_translatedBy1e6(String scenario, float cx, float cy, float r, float px, float py,
                                      boolean expected) {
-        for (float[] d : Reference.WHOLE_OFFSETS) {
+        for (float[] d : ExactReference.WHOLE_OFFSETS) {
             assertCirclePoint(expected, cx + d[0], cy + d[1], r, px + d[0], py + d[1]);
         }
     }
@@ -122,6 +122,6 @@ class CirclePointTest {
                 () -> assertEquals(expected, pointCircle.overlaps(circle), "point circle.overlaps(circle)" + where),
                 () -> assertEquals(expected, circle.overlaps(pointRect), "circle.overlaps(0x0 rect)" + where),
                 () -> assertEquals(expected, pointRect.overlaps(circle), "0x0 rect.overlaps(circle)" + where),
-                () -> assertEquals(expected, Reference.circlePoint(cx, cy, r, px, py), "Reference" + where));
+                () -> assertEquals(expected, ExactReference.circlePoint(cx, cy, r, px, py), "Reference" + where));
     }
 }

@@ -106,7 +106,7 @@ class CircleRectTest {
     @CsvSource(textBlock = OVERLAP + TOUCHING + CONTAINMENT + ZERO_SIZE + HUGE)
     void circleRect_translatedBy1e6(String scenario, float cx, float cy, float r,
                                     float rx, float ry, float rw, float rh, boolean expected) {
-        for (float[] d : Reference.WHOLE_OFFSETS) {
+        for (float[] d : ExactReference.WHOLE_OFFSETS) {
             assertCircleRect(expected, cx + d[0], cy + d[1], r, rx + d[0], ry + d[1], rw, rh);
         }
     }
@@ -140,6 +140,6 @@ class CircleRectTest {
                 () -> assertEquals(expected, Collide.circleRect(cx, cy, r, rx, ry, rw, rh), "Collide" + where),
                 () -> assertEquals(expected, circle.overlaps(rect), "circle.overlaps(rect)" + where),
                 () -> assertEquals(expected, rect.overlaps(circle), "rect.overlaps(circle)" + where),
-                () -> assertEquals(expected, Reference.circleRect(cx, cy, r, rx, ry, rw, rh), "Reference" + where));
+                () -> assertEquals(expected, ExactReference.circleRect(cx, cy, r, rx, ry, rw, rh), "Reference" + where));
     }
 }

@@ -77,8 +77,8 @@ class ConvexFastPathTest {
                                              @ForAll @IntRange(min = -3, max = 3) int dx,
                                              @ForAll @IntRange(min = -3, max = 3) int dy,
                                              @ForAll boolean reverse) {
-        float[] moved = GeometryReference.translated(reverse ? GeometryReference.reversed(b) : b, dx, dy);
-        boolean expected = GeometryReference.polygonsMeet(a, moved);
+        float[] moved = ExactReference.translated(reverse ? ExactReference.reversed(b) : b, dx, dy);
+        boolean expected = ExactReference.polygonsMeet(a, moved);
         int wa = Polygons.convexWinding(a), wb = Polygons.convexWinding(moved);
         assertNotEquals(0, wa);
         assertNotEquals(0, wb);
@@ -123,9 +123,9 @@ class ConvexFastPathTest {
         float[] a = {x, 0, y, u, x, 10};
         float[] b = {x, 0, x, 10, -y, u};
         assertFalse(Collide.polygonPolygon(a, b));
-        assertEquals(GeometryReference.polygonsMeet(a, b), Collide.polygonPolygon(a, b));
+        assertEquals(ExactReference.polygonsMeet(a, b), Collide.polygonPolygon(a, b));
         float[] c = {Math.nextUp(x), 0, y, u, x, 10};
-        assertEquals(GeometryReference.polygonsMeet(c, b), Collide.polygonPolygon(c, b));
+        assertEquals(ExactReference.polygonsMeet(c, b), Collide.polygonPolygon(c, b));
     }
 
     @Test

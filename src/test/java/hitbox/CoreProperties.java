@@ -27,7 +27,7 @@ import net.jqwik.api.statistics.StatisticsReport.StatisticsReportMode;
  *       radius 0 and a rectangle of size 0, in either order.</li>
  *   <li><b>Translation invariance</b>: moving both shapes by the same whole-number offset, up
  *       to 1e6 each way, changes no answer, touching cases included.</li>
- *   <li><b>Agreement with {@link Reference}</b>, the exact slow version: on whole numbers
+ *   <li><b>Agreement with {@link ExactReference}</b>, the exact slow version: on whole numbers
  *       always (the library promises exactness there), and on fractional floats whenever the
  *       case is not within rounding distance of touching.</li>
  *   <li><b>Bounds are a safe first test</b>: when a circle overlaps something, so does its
@@ -295,12 +295,12 @@ class CoreProperties {
         }
 
         boolean reference() {
-            return Reference.circlePoint(c.x(), c.y(), c.r(), p.x(), p.y());
+            return ExactReference.circlePoint(c.x(), c.y(), c.r(), p.x(), p.y());
         }
 
         /** r^2 - d^2: positive inside, 0 on the outline. */
         BigDecimal margin() {
-            return square(Reference.exact(c.r())).subtract(Reference.distanceSquared(c.x(), c.y(), p.x(), p.y()));
+            return ExactReference.circleCircleMargin(c.x(), c.y(), c.r(), p.x(), p.y(), 0);
         }
 
         boolean touching() {
@@ -319,13 +319,12 @@ class CoreProperties {
         }
 
         boolean reference() {
-            return Reference.circleCircle(a.x(), a.y(), a.r(), b.x(), b.y(), b.r());
+            return ExactReference.circleCircle(a.x(), a.y(), a.r(), b.x(), b.y(), b.r());
         }
 
         /** (r1 + r2)^2 - d^2: positive when overlapping, 0 when touching. */
         BigDecimal margin() {
-            return square(Reference.exact(a.r()).add(Reference.exact(b.r())))
-                    .subtract(Reference.distanceSquared(a.x(), a.y(), b.x(), b.y()));
+            return ExactReference.circleCircleMargin(a.x(), a.y(), a.r(), b.x(), b.y(), b.r());
         }
 
         boolean touching() {
@@ -344,7 +343,7 @@ class CoreProperties {
         }
 
         boolean reference() {
-            return Reference.rectPoint(r.x(), r.y(), r.w(), r.h(), p.x(), p.y());
+            return ExactReference.rectPoint(r.x(), r.y(), r.w(), r.h(), p.x(), p.y());
         }
 
         /** How far the point is inside each edge (left, right, top, bottom); 0 is on it. */
@@ -369,7 +368,7 @@ class CoreProperties {
         }
 
         boolean reference() {
-            return Reference.rectRect(a.x(), a.y(), a.w(), a.h(), b.x(), b.y(), b.w(), b.h());
+            return ExactReference.rectRect(a.x(), a.y(), a.w(), a.h(), b.x(), b.y(), b.w(), b.h());
         }
 
         /** The four edge comparisons' margins, positive when that comparison says "overlap". */
@@ -399,16 +398,12 @@ class CoreProperties {
         }
 
         boolean reference() {
-            return Reference.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
+            return ExactReference.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
         }
 
         /** r^2 minus the squared distance from the centre to the closed rectangle. */
         BigDecimal margin() {
-            BigDecimal x = Reference.exact(c.x()).max(Reference.exact(r.x())).min(sum(r.x(), r.w()));
-            BigDecimal y = Reference.exact(c.y()).max(Reference.exact(r.y())).min(sum(r.y(), r.h()));
-            BigDecimal dx = Reference.exact(c.x()).subtract(x);
-            BigDecimal dy = Reference.exact(c.y()).subtract(y);
-            return square(Reference.exact(c.r())).subtract(square(dx).add(square(dy)));
+            return ExactReference.circleRectMargin(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
         }
 
         /** The circle's outline reaches the rectangle but the shapes do not collide. */
@@ -656,22 +651,18 @@ class CoreProperties {
         return Collide.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
     }
 
-    private static BigDecimal square(BigDecimal v) {
-        return v.multiply(v);
-    }
-
     private static BigDecimal sum(float a, float b) {
-        return Reference.exact(a).add(Reference.exact(b));
+        return ExactReference.exact(a).add(ExactReference.exact(b));
     }
 
     /** a - b, exactly. */
     private static BigDecimal diff(float a, float b) {
-        return Reference.exact(a).subtract(Reference.exact(b));
+        return ExactReference.exact(a).subtract(ExactReference.exact(b));
     }
 
     /** (start + length) - v, exactly. */
     private static BigDecimal diff(float start, float length, float v) {
-        return sum(start, length).subtract(Reference.exact(v));
+        return sum(start, length).subtract(ExactReference.exact(v));
     }
 
     /**
@@ -682,7 +673,7 @@ class CoreProperties {
     private static boolean farFrom(BigDecimal margin, int degree, float... inputs) {
         BigDecimal size = BigDecimal.ONE;
         for (float v : inputs) {
-            size = size.add(Reference.exact(v).abs());
+            size = size.add(ExactReference.exact(v).abs());
         }
         return margin.abs().compareTo(size.pow(degree).multiply(new BigDecimal("1e-9"))) > 0;
     }

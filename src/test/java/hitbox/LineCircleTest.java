@@ -81,7 +81,7 @@ class LineCircleTest {
     void lineCircle_nearTangentWithBigNumbers(float x1, float y1, float x2, float y2, float r, boolean expected) {
         assertEquals(expected, Collide.lineCircle(x1, y1, x2, y2, 0, 0, r));
         assertEquals(expected, Collide.lineCircle(x2, y2, x1, y1, 0, 0, r));
-        assertEquals(expected, GeometryReference.segmentCircle(x1, y1, x2, y2, 0, 0, r));
+        assertEquals(expected, ExactReference.segmentCircle(x1, y1, x2, y2, 0, 0, r));
     }
 
     @ParameterizedTest(name = "NaN as argument {0}")
@@ -97,7 +97,7 @@ class LineCircleTest {
                                              @ForAll @IntRange(min = -6, max = 6) int x2, @ForAll @IntRange(min = -6, max = 6) int y2,
                                              @ForAll @IntRange(min = -6, max = 6) int cx, @ForAll @IntRange(min = -6, max = 6) int cy,
                                              @ForAll @IntRange(min = 0, max = 6) int r) {
-        assertEquals(GeometryReference.segmentCircle(x1, y1, x2, y2, cx, cy, r), Collide.lineCircle(x1, y1, x2, y2, cx, cy, r));
+        assertEquals(ExactReference.segmentCircle(x1, y1, x2, y2, cx, cy, r), Collide.lineCircle(x1, y1, x2, y2, cx, cy, r));
     }
 
     /** Scaled by up to 200 000 and moved by up to a million, small cases keep their answer. */
@@ -108,7 +108,7 @@ class LineCircleTest {
                                             @ForAll @IntRange(min = 0, max = 6) int r, @ForAll @IntRange(min = 1, max = 200_000) int k,
                                             @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dx,
                                             @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dy) {
-        boolean expected = GeometryReference.segmentCircle(x1, y1, x2, y2, cx, cy, r);
+        boolean expected = ExactReference.segmentCircle(x1, y1, x2, y2, cx, cy, r);
         assertEquals(expected, Collide.lineCircle(k * x1, k * y1, k * x2, k * y2, k * cx, k * cy, k * r), "scaled");
         assertEquals(expected, Collide.lineCircle(x1 + dx, y1 + dy, x2 + dx, y2 + dy, cx + dx, cy + dy, r), "moved");
     }

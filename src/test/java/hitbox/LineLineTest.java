@@ -99,7 +99,7 @@ class LineLineTest {
                                            @ForAll @IntRange(min = -4, max = 4) int x2, @ForAll @IntRange(min = -4, max = 4) int y2,
                                            @ForAll @IntRange(min = -4, max = 4) int x3, @ForAll @IntRange(min = -4, max = 4) int y3,
                                            @ForAll @IntRange(min = -4, max = 4) int x4, @ForAll @IntRange(min = -4, max = 4) int y4) {
-        boolean expected = GeometryReference.segmentsMeet(x1, y1, x2, y2, x3, y3, x4, y4);
+        boolean expected = ExactReference.segmentsMeet(x1, y1, x2, y2, x3, y3, x4, y4);
         assertEquals(expected, Collide.lineLine(x1, y1, x2, y2, x3, y3, x4, y4));
     }
 
@@ -122,7 +122,7 @@ class LineLineTest {
                                     @ForAll @IntRange(min = -4, max = 4) int x3, @ForAll @IntRange(min = -4, max = 4) int y3,
                                     @ForAll @IntRange(min = -4, max = 4) int x4, @ForAll @IntRange(min = -4, max = 4) int y4,
                                     @ForAll @IntRange(min = 1, max = 250_000) int k) {
-        boolean expected = GeometryReference.segmentsMeet(x1, y1, x2, y2, x3, y3, x4, y4);
+        boolean expected = ExactReference.segmentsMeet(x1, y1, x2, y2, x3, y3, x4, y4);
         assertEquals(expected, Collide.lineLine(k * x1, k * y1, k * x2, k * y2, k * x3, k * y3, k * x4, k * y4));
     }
 }

@@ -79,7 +79,7 @@ class LineRectTest {
                                            @ForAll @IntRange(min = 0, max = 3) int rx, @ForAll @IntRange(min = 0, max = 3) int ry,
                                            @ForAll @IntRange(min = 0, max = 4) int rw, @ForAll @IntRange(min = 0, max = 4) int rh) {
         boolean expected = rw > 0 && rh > 0
-                && GeometryReference.segmentPolygon(GeometryReference.rectPolygon(rx, ry, rw, rh), x1, y1, x2, y2);
+                && ExactReference.segmentPolygon(ExactReference.rectPolygon(rx, ry, rw, rh), x1, y1, x2, y2);
         assertEquals(expected, Collide.lineRect(x1, y1, x2, y2, rx, ry, rw, rh));
     }
 

@@ -67,41 +67,41 @@ class OverlapsTableTest {
         return collide(b, a);
     }
 
-    /** The slow exact answer for any pair, from GeometryReference, by the touching rule. */
+    /** The slow exact answer for any pair, from ExactReference, by the touching rule. */
     static boolean reference(Shape a, Shape b) {
         if (a instanceof Circle c && b instanceof Circle d) {
-            GeometryReference.Q dx = GeometryReference.Q.of(d.x()).minus(GeometryReference.Q.of(c.x()));
-            GeometryReference.Q dy = GeometryReference.Q.of(d.y()).minus(GeometryReference.Q.of(c.y()));
-            GeometryReference.Q reach = GeometryReference.Q.of(c.r()).plus(GeometryReference.Q.of(d.r()));
+            ExactReference.Q dx = ExactReference.Q.of(d.x()).minus(ExactReference.Q.of(c.x()));
+            ExactReference.Q dy = ExactReference.Q.of(d.y()).minus(ExactReference.Q.of(c.y()));
+            ExactReference.Q reach = ExactReference.Q.of(c.r()).plus(ExactReference.Q.of(d.r()));
             return dx.times(dx).plus(dy.times(dy)).compareTo(reach.times(reach)) < 0;
         } else if (a instanceof Circle c && b instanceof Rect r) {
-            return hasArea(r) ? GeometryReference.polygonCircle(corners(r), c.x(), c.y(), c.r())
-                    : GeometryReference.segmentCircle(r.x(), r.y(), r.right(), r.bottom(), c.x(), c.y(), c.r());
+            return hasArea(r) ? ExactReference.polygonCircle(corners(r), c.x(), c.y(), c.r())
+                    : ExactReference.segmentCircle(r.x(), r.y(), r.right(), r.bottom(), c.x(), c.y(), c.r());
         } else if (a instanceof Circle c && b instanceof Segment s) {
-            return GeometryReference.segmentCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
+            return ExactReference.segmentCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
         } else if (a instanceof Circle c && b instanceof Polygon p) {
-            return GeometryReference.polygonCircle(p.coordinates(), c.x(), c.y(), c.r());
+            return ExactReference.polygonCircle(p.coordinates(), c.x(), c.y(), c.r());
         } else if (a instanceof Rect r && b instanceof Rect q) {
             if (!hasArea(r) && !hasArea(q)) {
                 // Neither has an inside: the tutorial's comparisons, axis by axis, exactly.
                 return openRangesMeet(r.x(), r.w(), q.x(), q.w()) && openRangesMeet(r.y(), r.h(), q.y(), q.h());
             }
             if (hasArea(r) && hasArea(q)) {
-                return GeometryReference.polygonsMeet(corners(r), corners(q));
+                return ExactReference.polygonsMeet(corners(r), corners(q));
             }
-            return hasArea(r) ? GeometryReference.segmentPolygon(corners(r), q.x(), q.y(), q.right(), q.bottom())
-                    : hasArea(q) && GeometryReference.segmentPolygon(corners(q), r.x(), r.y(), r.right(), r.bottom());
+            return hasArea(r) ? ExactReference.segmentPolygon(corners(r), q.x(), q.y(), q.right(), q.bottom())
+                    : hasArea(q) && ExactReference.segmentPolygon(corners(q), r.x(), r.y(), r.right(), r.bottom());
         } else if (a instanceof Rect r && b instanceof Segment s) {
-            return hasArea(r) && GeometryReference.segmentPolygon(corners(r), s.x1(), s.y1(), s.x2(), s.y2());
+            return hasArea(r) && ExactReference.segmentPolygon(corners(r), s.x1(), s.y1(), s.x2(), s.y2());
         } else if (a instanceof Rect r && b instanceof Polygon p) {
-            return hasArea(r) ? GeometryReference.polygonsMeet(p.coordinates(), corners(r))
-                    : GeometryReference.segmentPolygon(p.coordinates(), r.x(), r.y(), r.right(), r.bottom());
+            return hasArea(r) ? ExactReference.polygonsMeet(p.coordinates(), corners(r))
+                    : ExactReference.segmentPolygon(p.coordinates(), r.x(), r.y(), r.right(), r.bottom());
         } else if (a instanceof Segment s && b instanceof Segment t) {
-            return GeometryReference.segmentsMeet(s.x1(), s.y1(), s.x2(), s.y2(), t.x1(), t.y1(), t.x2(), t.y2());
+            return ExactReference.segmentsMeet(s.x1(), s.y1(), s.x2(), s.y2(), t.x1(), t.y1(), t.x2(), t.y2());
         } else if (a instanceof Segment s && b instanceof Polygon p) {
-            return GeometryReference.segmentPolygon(p.coordinates(), s.x1(), s.y1(), s.x2(), s.y2());
+            return ExactReference.segmentPolygon(p.coordinates(), s.x1(), s.y1(), s.x2(), s.y2());
         } else if (a instanceof Polygon p && b instanceof Polygon q) {
-            return GeometryReference.polygonsMeet(p.coordinates(), q.coordinates());
+            return ExactReference.polygonsMeet(p.coordinates(), q.coordinates());
         }
         return reference(b, a);
     }
@@ -111,7 +111,7 @@ class OverlapsTableTest {
     }
 
     private static float[] corners(Rect r) {
-        return GeometryReference.rectPolygon(r.x(), r.y(), r.w(), r.h());
+        return ExactReference.rectPolygon(r.x(), r.y(), r.w(), r.h());
     }
 
     static void assertOverlaps(boolean expected, Shape a, Shape b) {
@@ -198,10 +198,10 @@ class OverlapsTableTest {
 
     /** start1 < start2 + size2 and start2 < start1 + size1, in exact arithmetic. */
     private static boolean openRangesMeet(float start1, float size1, float start2, float size2) {
-        GeometryReference.Q a = GeometryReference.Q.of(start1);
-        GeometryReference.Q b = GeometryReference.Q.of(start2);
-        return a.compareTo(b.plus(GeometryReference.Q.of(size2))) < 0
-                && b.compareTo(a.plus(GeometryReference.Q.of(size1))) < 0;
+        ExactReference.Q a = ExactReference.Q.of(start1);
+        ExactReference.Q b = ExactReference.Q.of(start2);
+        return a.compareTo(b.plus(ExactReference.Q.of(size2))) < 0
+                && b.compareTo(a.plus(ExactReference.Q.of(size1))) < 0;
     }
 
     @Provide

@@ -20,19 +20,19 @@ class PolygonCircleTest {
     static void assertPolygonCircle(boolean expected, float[] xy, float cx, float cy, float r) {
         int n = xy.length / 2;
         for (float shift : new float[] {0, 1_000_000, -1_000_000}) {
-            float[] moved = GeometryReference.translated(xy, shift, -shift);
+            float[] moved = ExactReference.translated(xy, shift, -shift);
             float x = cx + shift, y = cy - shift;
             String where = " (shifted by " + shift + ")";
-            for (float[] wound : new float[][] {moved, GeometryReference.reversed(moved)}) {
+            for (float[] wound : new float[][] {moved, ExactReference.reversed(moved)}) {
                 for (int start = 0; start < n; start++) {
-                    assertEquals(expected, Collide.polygonCircle(GeometryReference.rotated(wound, start), x, y, r),
+                    assertEquals(expected, Collide.polygonCircle(ExactReference.rotated(wound, start), x, y, r),
                             "from vertex " + start + where);
                 }
             }
             assertEquals(expected, Polygon.of(moved).overlaps(new Circle(x, y, r)), "polygon first" + where);
             assertEquals(expected, new Circle(x, y, r).overlaps(Polygon.of(moved)), "circle first" + where);
         }
-        assertEquals(expected, GeometryReference.polygonCircle(xy, cx, cy, r), "the reference agrees");
+        assertEquals(expected, ExactReference.polygonCircle(xy, cx, cy, r), "the reference agrees");
     }
 
     @ParameterizedTest(name = "{0}: {1}")
@@ -103,7 +103,7 @@ class PolygonCircleTest {
     void polygonCircle_agreesWithExactReference(@ForAll("polygons") float[] xy,
                                                 @ForAll @IntRange(min = -3, max = 9) int cx, @ForAll @IntRange(min = -3, max = 9) int cy,
                                                 @ForAll @IntRange(min = 0, max = 5) int r) {
-        assertEquals(GeometryReference.polygonCircle(xy, cx, cy, r), Collide.polygonCircle(xy, cx, cy, r));
+        assertEquals(ExactReference.polygonCircle(xy, cx, cy, r), Collide.polygonCircle(xy, cx, cy, r));
     }
 
     /** An independent one-way check: a grid point inside both shapes proves they overlap. */
@@ -115,7 +115,7 @@ class PolygonCircleTest {
         for (int i = -20; i <= 48 && !shared; i++) {
             for (int j = -20; j <= 48 && !shared; j++) {
                 float x = i / 4f, y = j / 4f;
-                shared = Collide.circlePoint(cx, cy, r, x, y) && GeometryReference.polygonPoint(xy, x, y);
+                shared = Collide.circlePoint(cx, cy, r, x, y) && ExactReference.polygonPoint(xy, x, y);
             }
         }
         if (shared) {
@@ -130,8 +130,8 @@ class PolygonCircleTest {
                                                      @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dx,
                                                      @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dy) {
         boolean here = Collide.polygonCircle(xy, cx, cy, r);
-        assertEquals(here, Collide.polygonCircle(GeometryReference.reversed(xy), cx, cy, r), "other winding");
-        assertEquals(here, Collide.polygonCircle(GeometryReference.rotated(xy, start % (xy.length / 2)), cx, cy, r), "other start");
-        assertEquals(here, Collide.polygonCircle(GeometryReference.translated(xy, dx, dy), cx + dx, cy + dy, r), "moved");
+        assertEquals(here, Collide.polygonCircle(ExactReference.reversed(xy), cx, cy, r), "other winding");
+        assertEquals(here, Collide.polygonCircle(ExactReference.rotated(xy, start % (xy.length / 2)), cx, cy, r), "other start");
+        assertEquals(here, Collide.polygonCircle(ExactReference.translated(xy, dx, dy), cx + dx, cy + dy, r), "moved");
     }
 }

@@ -24,12 +24,12 @@ class PolygonLineTest {
     static void assertPolygonLine(boolean expected, float[] xy, float x1, float y1, float x2, float y2) {
         int n = xy.length / 2;
         for (float shift : new float[] {0, 1_000_000, -1_000_000}) {
-            float[] moved = GeometryReference.translated(xy, shift, shift);
+            float[] moved = ExactReference.translated(xy, shift, shift);
             float a = x1 + shift, b = y1 + shift, c = x2 + shift, d = y2 + shift;
             String where = " (shifted by " + shift + ")";
-            for (float[] wound : new float[][] {moved, GeometryReference.reversed(moved)}) {
+            for (float[] wound : new float[][] {moved, ExactReference.reversed(moved)}) {
                 for (int start = 0; start < n; start++) {
-                    float[] v = GeometryReference.rotated(wound, start);
+                    float[] v = ExactReference.rotated(wound, start);
                     assertEquals(expected, Collide.polygonLine(v, a, b, c, d), "from vertex " + start + where);
                     assertEquals(expected, Collide.polygonLine(v, c, d, a, b), "segment reversed, from vertex " + start + where);
                 }
@@ -37,7 +37,7 @@ class PolygonLineTest {
             assertEquals(expected, Polygon.of(moved).overlaps(new Segment(a, b, c, d)), "polygon first" + where);
             assertEquals(expected, new Segment(a, b, c, d).overlaps(Polygon.of(moved)), "segment first" + where);
         }
-        assertEquals(expected, GeometryReference.segmentPolygon(xy, x1, y1, x2, y2), "the reference agrees");
+        assertEquals(expected, ExactReference.segmentPolygon(xy, x1, y1, x2, y2), "the reference agrees");
     }
 
     @ParameterizedTest(name = "{0}: {1}")
@@ -147,7 +147,7 @@ class PolygonLineTest {
     void polygonLine_agreesWithExactReference(@ForAll("polygons") float[] xy,
                                               @ForAll @IntRange(min = -1, max = 7) int x1, @ForAll @IntRange(min = -1, max = 7) int y1,
                                               @ForAll @IntRange(min = -1, max = 7) int x2, @ForAll @IntRange(min = -1, max = 7) int y2) {
-        boolean expected = GeometryReference.segmentPolygon(xy, x1, y1, x2, y2);
+        boolean expected = ExactReference.segmentPolygon(xy, x1, y1, x2, y2);
         assertEquals(expected, Collide.polygonLine(xy, x1, y1, x2, y2));
         Statistics.collect(expected);
         Statistics.coverage(c -> {
@@ -165,7 +165,7 @@ class PolygonLineTest {
         float x1 = xy[2 * (i % n)], y1 = xy[2 * (i % n) + 1];
         // the far end is the other vertex, or beyond it on the same line
         float x2 = x1 + stretch * (xy[2 * (j % n)] - x1), y2 = y1 + stretch * (xy[2 * (j % n) + 1] - y1);
-        assertEquals(GeometryReference.segmentPolygon(xy, x1, y1, x2, y2), Collide.polygonLine(xy, x1, y1, x2, y2));
+        assertEquals(ExactReference.segmentPolygon(xy, x1, y1, x2, y2), Collide.polygonLine(xy, x1, y1, x2, y2));
     }
 
     @Property(tries = 1000)
@@ -177,8 +177,8 @@ class PolygonLineTest {
                                                    @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dy) {
         boolean here = Collide.polygonLine(xy, x1, y1, x2, y2);
         assertEquals(here, Collide.polygonLine(xy, x2, y2, x1, y1), "segment reversed");
-        assertEquals(here, Collide.polygonLine(GeometryReference.reversed(xy), x1, y1, x2, y2), "other winding");
-        assertEquals(here, Collide.polygonLine(GeometryReference.rotated(xy, start % (xy.length / 2)), x1, y1, x2, y2), "other start");
-        assertEquals(here, Collide.polygonLine(GeometryReference.translated(xy, dx, dy), x1 + dx, y1 + dy, x2 + dx, y2 + dy), "moved");
+        assertEquals(here, Collide.polygonLine(ExactReference.reversed(xy), x1, y1, x2, y2), "other winding");
+        assertEquals(here, Collide.polygonLine(ExactReference.rotated(xy, start % (xy.length / 2)), x1, y1, x2, y2), "other start");
+        assertEquals(here, Collide.polygonLine(ExactReference.translated(xy, dx, dy), x1 + dx, y1 + dy, x2 + dx, y2 + dy), "moved");
     }
 }

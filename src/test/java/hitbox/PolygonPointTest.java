@@ -19,17 +19,17 @@ class PolygonPointTest {
     static void assertPolygonPoint(boolean expected, float[] xy, float px, float py) {
         int n = xy.length / 2;
         for (float shift : new float[] {0, 1_000_000, -1_000_000}) {
-            float[] moved = GeometryReference.translated(xy, shift, -shift);
-            for (float[] wound : new float[][] {moved, GeometryReference.reversed(moved)}) {
+            float[] moved = ExactReference.translated(xy, shift, -shift);
+            for (float[] wound : new float[][] {moved, ExactReference.reversed(moved)}) {
                 for (int start = 0; start < n; start++) {
-                    float[] v = GeometryReference.rotated(wound, start);
+                    float[] v = ExactReference.rotated(wound, start);
                     assertEquals(expected, Collide.polygonPoint(v, px + shift, py - shift),
                             "from vertex " + start + " shifted by " + shift);
                 }
             }
             assertEquals(expected, Polygon.of(moved).contains(px + shift, py - shift), "shape, shifted by " + shift);
         }
-        assertEquals(expected, GeometryReference.polygonPoint(xy, px, py), "the reference agrees");
+        assertEquals(expected, ExactReference.polygonPoint(xy, px, py), "the reference agrees");
     }
 
     @ParameterizedTest(name = "{0} ({1}, {2})")
@@ -133,7 +133,7 @@ class PolygonPointTest {
                                               @ForAll @IntRange(min = -2, max = 14) int hx,
                                               @ForAll @IntRange(min = -2, max = 14) int hy) {
         float px = hx / 2f, py = hy / 2f;
-        assertEquals(GeometryReference.polygonPoint(xy, px, py), Collide.polygonPoint(xy, px, py));
+        assertEquals(ExactReference.polygonPoint(xy, px, py), Collide.polygonPoint(xy, px, py));
     }
 
     @Property(tries = 1000)
@@ -143,9 +143,9 @@ class PolygonPointTest {
                                                     @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dx,
                                                     @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dy) {
         boolean here = Collide.polygonPoint(xy, px, py);
-        assertEquals(here, Collide.polygonPoint(GeometryReference.reversed(xy), px, py), "reversed");
-        assertEquals(here, Collide.polygonPoint(GeometryReference.rotated(xy, start % (xy.length / 2)), px, py), "rotated");
-        assertEquals(here, Collide.polygonPoint(GeometryReference.translated(xy, dx, dy), px + dx, py + dy), "moved");
+        assertEquals(here, Collide.polygonPoint(ExactReference.reversed(xy), px, py), "reversed");
+        assertEquals(here, Collide.polygonPoint(ExactReference.rotated(xy, start % (xy.length / 2)), px, py), "rotated");
+        assertEquals(here, Collide.polygonPoint(ExactReference.translated(xy, dx, dy), px + dx, py + dy), "moved");
     }
 
     /** A rectangle's four corners as a polygon answer exactly as rectPoint, zero sizes included. */
@@ -154,8 +154,8 @@ class PolygonPointTest {
                                                     @ForAll @IntRange(min = 0, max = 5) int rw, @ForAll @IntRange(min = 0, max = 5) int rh,
                                                     @ForAll @IntRange(min = -7, max = 11) int px, @ForAll @IntRange(min = -7, max = 11) int py,
                                                     @ForAll boolean reverse) {
-        float[] corners = GeometryReference.rectPolygon(rx, ry, rw, rh);
-        float[] xy = reverse ? GeometryReference.reversed(corners) : corners;
+        float[] corners = ExactReference.rectPolygon(rx, ry, rw, rh);
+        float[] xy = reverse ? ExactReference.reversed(corners) : corners;
         assertEquals(Collide.rectPoint(rx, ry, rw, rh, px, py), Collide.polygonPoint(xy, px, py));
     }
 }

@@ -24,15 +24,15 @@ class PolygonPolygonTest {
      */
     static void assertPolygonPolygon(boolean expected, float[] a, float[] b) {
         for (float shift : new float[] {0, 1_000_000, -1_000_000}) {
-            float[] ma = GeometryReference.translated(a, shift, shift);
-            float[] mb = GeometryReference.translated(b, shift, shift);
+            float[] ma = ExactReference.translated(a, shift, shift);
+            float[] mb = ExactReference.translated(b, shift, shift);
             String where = " (shifted by " + shift + ")";
-            for (float[] wa : new float[][] {ma, GeometryReference.reversed(ma)}) {
-                for (float[] wb : new float[][] {mb, GeometryReference.reversed(mb)}) {
+            for (float[] wa : new float[][] {ma, ExactReference.reversed(ma)}) {
+                for (float[] wb : new float[][] {mb, ExactReference.reversed(mb)}) {
                     for (int i = 0; i < wa.length / 2; i++) {
                         for (int j = 0; j < wb.length / 2; j++) {
-                            float[] ra = GeometryReference.rotated(wa, i);
-                            float[] rb = GeometryReference.rotated(wb, j);
+                            float[] ra = ExactReference.rotated(wa, i);
+                            float[] rb = ExactReference.rotated(wb, j);
                             assertEquals(expected, Collide.polygonPolygon(ra, rb), "a from " + i + ", b from " + j + where);
                             assertEquals(expected, Collide.polygonPolygon(rb, ra), "swapped, a from " + i + ", b from " + j + where);
                         }
@@ -42,7 +42,7 @@ class PolygonPolygonTest {
             assertEquals(expected, Polygon.of(ma).overlaps(Polygon.of(mb)), "shapes" + where);
             assertEquals(expected, Polygon.of(mb).overlaps(Polygon.of(ma)), "shapes swapped" + where);
         }
-        assertEquals(expected, GeometryReference.polygonsMeet(a, b), "the reference agrees");
+        assertEquals(expected, ExactReference.polygonsMeet(a, b), "the reference agrees");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -108,8 +108,8 @@ class PolygonPolygonTest {
     void polygonPolygon_agreesWithExactReference(@ForAll("polygons") float[] a, @ForAll("polygons") float[] b,
                                                  @ForAll @IntRange(min = -4, max = 4) int dx,
                                                  @ForAll @IntRange(min = -4, max = 4) int dy) {
-        float[] moved = GeometryReference.translated(b, dx, dy);
-        boolean expected = GeometryReference.polygonsMeet(a, moved);
+        float[] moved = ExactReference.translated(b, dx, dy);
+        boolean expected = ExactReference.polygonsMeet(a, moved);
         assertEquals(expected, Collide.polygonPolygon(a, moved));
         Statistics.collect(expected);
         Statistics.coverage(c -> {
@@ -124,9 +124,9 @@ class PolygonPolygonTest {
                                                         @ForAll @IntRange(min = -3, max = 3) int dx,
                                                         @ForAll @IntRange(min = -3, max = 3) int dy,
                                                         @ForAll boolean reverse) {
-        float[] moved = GeometryReference.translated(a, dx, dy);
-        float[] b = reverse ? GeometryReference.reversed(moved) : moved;
-        assertEquals(GeometryReference.polygonsMeet(a, b), Collide.polygonPolygon(a, b));
+        float[] moved = ExactReference.translated(a, dx, dy);
+        float[] b = reverse ? ExactReference.reversed(moved) : moved;
+        assertEquals(ExactReference.polygonsMeet(a, b), Collide.polygonPolygon(a, b));
     }
 
     @Property(tries = 1000)
@@ -136,14 +136,14 @@ class PolygonPolygonTest {
                                                          @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dy) {
         boolean here = Collide.polygonPolygon(a, b);
         assertEquals(here, Collide.polygonPolygon(b, a), "swapped");
-        assertEquals(here, Collide.polygonPolygon(GeometryReference.reversed(a), b), "other winding");
-        assertEquals(here, Collide.polygonPolygon(a, GeometryReference.rotated(b, start % (b.length / 2))), "other start");
-        assertEquals(here, Collide.polygonPolygon(GeometryReference.translated(a, dx, dy), GeometryReference.translated(b, dx, dy)), "moved");
+        assertEquals(here, Collide.polygonPolygon(ExactReference.reversed(a), b), "other winding");
+        assertEquals(here, Collide.polygonPolygon(a, ExactReference.rotated(b, start % (b.length / 2))), "other start");
+        assertEquals(here, Collide.polygonPolygon(ExactReference.translated(a, dx, dy), ExactReference.translated(b, dx, dy)), "moved");
     }
 
     @Property(tries = 500)
     void polygonPolygon_overlapsItself(@ForAll("polygons") float[] a) {
         assertTrue(Collide.polygonPolygon(a, a));
-        assertTrue(Collide.polygonPolygon(a, GeometryReference.reversed(a)));
+        assertTrue(Collide.polygonPolygon(a, ExactReference.reversed(a)));
     }
 }

@@ -31,7 +31,7 @@ class PolygonRawArrayTest {
         float[] corner = {0, 0, 4, 0, 4, 4, 0, 4};
         assertTrue(Collide.polygonPolygon(CLOSED_SQUARE, corner));
         assertTrue(Collide.polygonPolygon(corner, CLOSED_SQUARE));
-        assertTrue(Collide.polygonPolygon(GeometryReference.reversed(CLOSED_SQUARE), corner));
+        assertTrue(Collide.polygonPolygon(ExactReference.reversed(CLOSED_SQUARE), corner));
         assertTrue(Collide.polygonRect(CLOSED_SQUARE, 0, 0, 4, 4));
         assertTrue(Collide.polygonRect(CLOSED_SQUARE, 0, 0, 10, 10));
         assertTrue(Collide.polygonLine(CLOSED_SQUARE, 0, 0, 4, 4));
@@ -70,7 +70,7 @@ class PolygonRawArrayTest {
         assertEquals(Collide.polygonLine(xy, x1, y1, x2, y2), Collide.polygonLine(rep, x1, y1, x2, y2), "line");
         assertEquals(Collide.polygonCircle(xy, x1, y1, size), Collide.polygonCircle(rep, x1, y1, size), "circle");
         assertEquals(Collide.polygonRect(xy, x1, y1, size, x2 % 4), Collide.polygonRect(rep, x1, y1, size, x2 % 4), "rect");
-        float[] moved = GeometryReference.translated(other, x2 - 3, y2 - 3);
+        float[] moved = ExactReference.translated(other, x2 - 3, y2 - 3);
         assertEquals(Collide.polygonPolygon(xy, moved), Collide.polygonPolygon(rep, moved), "polygon, repeats first");
         assertEquals(Collide.polygonPolygon(moved, xy), Collide.polygonPolygon(moved, rep), "polygon, repeats second");
     }

@@ -18,12 +18,12 @@ class PolygonRectTest {
     static void assertPolygonRect(boolean expected, float[] xy, float rx, float ry, float rw, float rh) {
         int n = xy.length / 2;
         for (float shift : new float[] {0, 1_000_000, -1_000_000}) {
-            float[] moved = GeometryReference.translated(xy, -shift, shift);
+            float[] moved = ExactReference.translated(xy, -shift, shift);
             float x = rx - shift, y = ry + shift;
             String where = " (shifted by " + shift + ")";
-            for (float[] wound : new float[][] {moved, GeometryReference.reversed(moved)}) {
+            for (float[] wound : new float[][] {moved, ExactReference.reversed(moved)}) {
                 for (int start = 0; start < n; start++) {
-                    assertEquals(expected, Collide.polygonRect(GeometryReference.rotated(wound, start), x, y, rw, rh),
+                    assertEquals(expected, Collide.polygonRect(ExactReference.rotated(wound, start), x, y, rw, rh),
                             "from vertex " + start + where);
                 }
             }
@@ -36,8 +36,8 @@ class PolygonRectTest {
     /** A rectangle with area is a polygon; one of size 0 is the segment between its corners. */
     static boolean reference(float[] xy, float rx, float ry, float rw, float rh) {
         return rw > 0 && rh > 0
-                ? GeometryReference.polygonsMeet(xy, GeometryReference.rectPolygon(rx, ry, rw, rh))
-                : GeometryReference.segmentPolygon(xy, rx, ry, rx + rw, ry + rh);
+                ? ExactReference.polygonsMeet(xy, ExactReference.rectPolygon(rx, ry, rw, rh))
+                : ExactReference.segmentPolygon(xy, rx, ry, rx + rw, ry + rh);
     }
 
     @ParameterizedTest(name = "{0}: {1}")
@@ -114,7 +114,7 @@ class PolygonRectTest {
     void polygonRect_agreesWithPolygonPolygonOnTheCorners(@ForAll("polygons") float[] xy,
                                                           @ForAll @IntRange(min = -1, max = 6) int rx, @ForAll @IntRange(min = -1, max = 6) int ry,
                                                           @ForAll @IntRange(min = 1, max = 4) int rw, @ForAll @IntRange(min = 1, max = 4) int rh) {
-        float[] rect = GeometryReference.rectPolygon(rx, ry, rw, rh);
+        float[] rect = ExactReference.rectPolygon(rx, ry, rw, rh);
         assertEquals(Collide.polygonPolygon(xy, rect), Collide.polygonRect(xy, rx, ry, rw, rh));
     }
 
@@ -126,8 +126,8 @@ class PolygonRectTest {
                                                    @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dx,
                                                    @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dy) {
         boolean here = Collide.polygonRect(xy, rx, ry, rw, rh);
-        assertEquals(here, Collide.polygonRect(GeometryReference.reversed(xy), rx, ry, rw, rh), "other winding");
-        assertEquals(here, Collide.polygonRect(GeometryReference.rotated(xy, start % (xy.length / 2)), rx, ry, rw, rh), "other start");
-        assertEquals(here, Collide.polygonRect(GeometryReference.translated(xy, dx, dy), rx + dx, ry + dy, rw, rh), "moved");
+        assertEquals(here, Collide.polygonRect(ExactReference.reversed(xy), rx, ry, rw, rh), "other winding");
+        assertEquals(here, Collide.polygonRect(ExactReference.rotated(xy, start % (xy.length / 2)), rx, ry, rw, rh), "other start");
+        assertEquals(here, Collide.polygonRect(ExactReference.translated(xy, dx, dy), rx + dx, ry + dy, rw, rh), "moved");
     }
 }

@@ -92,7 +92,7 @@ class RectPointTest {
     @CsvSource(textBlock = INSIDE + OUTSIDE + TOUCHING + ZERO_SIZE + HUGE)
     void rectPoint_translatedBy1e6(String scenario, float rx, float ry, float rw, float rh, float px, float py,
                                    boolean expected) {
-        for (float[] d : Reference.WHOLE_OFFSETS) {
+        for (float[] d : ExactReference.WHOLE_OFFSETS) {
             assertRectPoint(expected, rx + d[0], ry + d[1], rw, rh, px + d[0], py + d[1]);
         }
     }
@@ -128,6 +128,6 @@ class RectPointTest {
                 () -> assertEquals(expected, pointRect.overlaps(rect), "0x0 rect.overlaps(rect)" + where),
                 () -> assertEquals(expected, rect.overlaps(pointCircle), "rect.overlaps(radius 0)" + where),
                 () -> assertEquals(expected, pointCircle.overlaps(rect), "radius 0.overlaps(rect)" + where),
-                () -> assertEquals(expected, Reference.rectPoint(rx, ry, rw, rh, px, py), "Reference" + where));
+                () -> assertEquals(expected, ExactReference.rectPoint(rx, ry, rw, rh, px, py), "Reference" + where));
     }
 }

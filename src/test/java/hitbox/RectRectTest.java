@@ -116,7 +116,7 @@ class RectRectTest {
     @CsvSource(textBlock = OVERLAP + TOUCHING + CONTAINMENT + COINCIDENT + ZERO_SIZE + HUGE)
     void rectRect_translatedBy1e6(String scenario, float x1, float y1, float w1, float h1,
                                   float x2, float y2, float w2, float h2, boolean expected) {
-        for (float[] d : Reference.WHOLE_OFFSETS) {
+        for (float[] d : ExactReference.WHOLE_OFFSETS) {
             assertRectRect(expected, x1 + d[0], y1 + d[1], w1, h1, x2 + d[0], y2 + d[1], w2, h2);
         }
     }
@@ -145,6 +145,6 @@ class RectRectTest {
                 () -> assertEquals(expected, Collide.rectRect(x2, y2, w2, h2, x1, y1, w1, h1), "Collide(b, a)" + where),
                 () -> assertEquals(expected, a.overlaps(b), "a.overlaps(b)" + where),
                 () -> assertEquals(expected, b.overlaps(a), "b.overlaps(a)" + where),
-                () -> assertEquals(expected, Reference.rectRect(x1, y1, w1, h1, x2, y2, w2, h2), "Reference" + where));
+                () -> assertEquals(expected, ExactReference.rectRect(x1, y1, w1, h1, x2, y2, w2, h2), "Reference" + where));
     }
 }

@@ -70,10 +70,10 @@ final class TestShapes {
         Arbitrary<List<int[]>> points = point.list().ofMinSize(3).ofMaxSize(maxVertices);
         return Combinators.combine(points, Arbitraries.of(true, false), Arbitraries.integers().between(0, maxVertices))
                 .as((pts, reverse, start) -> {
-                    float[] xy = GeometryReference.starPolygon(pts, reverse);
-                    return xy.length < 6 ? xy : GeometryReference.rotated(xy, start % (xy.length / 2));
+                    float[] xy = ExactReference.starPolygon(pts, reverse);
+                    return xy.length < 6 ? xy : ExactReference.rotated(xy, start % (xy.length / 2));
                 })
-                .filter(GeometryReference::isSimple);
+                .filter(ExactReference::isSimple);
     }
 
     /**
@@ -102,6 +102,28 @@ final class TestShapes {
                 }
             } catch (IllegalArgumentException e) {
                 // corners rounded onto each other: draw again
+            }
+        }
+    }
+
+    /**
+     * A random star-shaped polygon, usually concave: {@code sides} corners at sorted random
+     * angles around (cx, cy), each at its own random distance, rounded to half pixels or not,
+     * in either turning direction. Drawn again when rounding makes it not simple.
+     */
+    static Polygon starRing(java.util.SplittableRandom rnd, int sides, double cx, double cy, boolean half) {
+        while (true) {
+            float[] xy = new float[2 * sides];
+            double[] angles = rnd.doubles(sides, 0, 2 * Math.PI).sorted().toArray();
+            for (int k = 0; k < sides; k++) {
+                double r = 4 + rnd.nextInt(40) + rnd.nextDouble();
+                double x = cx + r * Math.cos(angles[k]), y = cy + r * Math.sin(angles[k]);
+                xy[2 * k] = half ? Math.round(2 * x) / 2f : (float) x;
+                xy[2 * k + 1] = half ? Math.round(2 * y) / 2f : (float) y;
+            }
+            if (ExactReference.isSimple(xy)) {
+                Polygon p = Polygon.of(xy);
+                return rnd.nextBoolean() ? p : reversed(p);
             }
         }
     }

@@ -70,7 +70,7 @@ class TrianglePointTest {
         float[] xy = {x1, y1, x2, y2, x3, y3};
         boolean t = Collide.trianglePoint(x1, y1, x2, y2, x3, y3, px, py);
         assertEquals(Collide.polygonPoint(xy, px, py), t, "polygonPoint");
-        assertEquals(GeometryReference.polygonPoint(xy, px, py), t, "reference");
+        assertEquals(ExactReference.polygonPoint(xy, px, py), t, "reference");
     }
     /** Coordinates of mixed size: small whole numbers, fractions that do not add exactly, a million and more. */
     @Provide

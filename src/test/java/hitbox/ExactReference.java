@@ -1,23 +1,124 @@
 package hitbox;
 
+import java.math.BigDecimal;
 import java.math.BigInteger;
+import java.math.MathContext;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.TreeSet;
 
 /**
- * Slow, exact answers for the property tests, in rational arithmetic ({@link BigInteger}), and
- * written differently from the library on purpose: crossing points are computed (the library
- * never computes them), point in polygon is a winding number (the library counts crossings
- * even-odd), and open shapes are compared by sampling one point in every cell of the
- * arrangement of their edge lines (the library reasons about edges and corners).
+ * The slow, exact reference of the tests: each question written the most obvious way, in
+ * exact arithmetic, and differently from the library on purpose, so that a test can say "the
+ * library agrees with the maths" and not "the library agrees with itself".
  *
- * <p>Coordinates are whole numbers (small ones: the point is exactness, not speed).
+ * <p>Every float is a dyadic rational, and is taken without rounding: {@link #exact} as a
+ * {@link BigDecimal} (sums, differences and products of which are exact), {@link Q#of(float)}
+ * as a fraction of {@link BigInteger}s where a question needs division (crossing points).
+ * So every answer here is the true answer for the given floats, by the <a
+ * href="package-summary.html#touching">touching rule</a>: shapes with area are open, a
+ * zero-size shape has no inside and collides only by reaching into the inside of a shape that
+ * has one; segments and points are closed.
+ *
+ * <p>Written differently from the library: crossing points are computed (the library mostly
+ * compares orientations), point in polygon is a winding number (the library counts crossings
+ * even-odd), and two open polygons are compared by sampling one point in every cell of the
+ * arrangement of their edge lines (the library reasons about edges and corners). Nothing here
+ * is tuned for speed or shares code with the library. All arguments must be finite; sizes 0
+ * or more.
  */
-final class GeometryReference {
-    private GeometryReference() {
+final class ExactReference {
+    private ExactReference() {
     }
+
+    /**
+     * Whole-number offsets of up to 1e6, by which a test moves every shape of a case: the
+     * library promises the same answer, touching cases included, after any of them.
+     */
+    static final float[][] WHOLE_OFFSETS = {
+            {1_000_000, 1_000_000}, {-1_000_000, -1_000_000}, {1_000_000, -1_000_000},
+            {-999_999, 654_321}, {0, 1_000_000}, {-1_000_000, 0},
+    };
+
+    // ------------------------------------------------------------ the tutorial's shapes
+
+    /** The value exactly ({@code new BigDecimal(double)} is exact, and a float widens exactly). */
+    static BigDecimal exact(double v) {
+        return new BigDecimal(v);
+    }
+
+    /** The exact square of the distance between two points. */
+    private static BigDecimal distanceSquared(float x1, float y1, float x2, float y2) {
+        BigDecimal dx = exact(x2).subtract(exact(x1));
+        BigDecimal dy = exact(y2).subtract(exact(y1));
+        return dx.multiply(dx).add(dy.multiply(dy));
+    }
+
+    /** {@code (r1 + r2)^2 - d^2} for two circles: positive when they overlap, 0 when they touch. */
+    static BigDecimal circleCircleMargin(float x1, float y1, float r1, float x2, float y2, float r2) {
+        BigDecimal reach = exact(r1).add(exact(r2));
+        return reach.multiply(reach).subtract(distanceSquared(x1, y1, x2, y2));
+    }
+
+    /**
+     * Do the circles overlap: are the centres closer than the sum of the radii? With one radius
+     * 0 this is the other circle containing a point; with both 0 it is never true.
+     */
+    static boolean circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
+        return circleCircleMargin(x1, y1, r1, x2, y2, r2).signum() > 0;
+    }
+
+    /** Is the point strictly inside the circle: closer to the centre than the radius? */
+    static boolean circlePoint(float cx, float cy, float r, float px, float py) {
+        return circleCircle(cx, cy, r, px, py, 0);
+    }
+
+    /**
+     * Do the rectangles overlap? A rectangle with area is open; one of width or height 0 is a
+     * segment (without its ends) or a point that must reach into the other's inside. Two of
+     * them meet only when they cross like a plus sign, as the tutorial's comparisons say.
+     */
+    static boolean rectRect(float x1, float y1, float w1, float h1,
+                            float x2, float y2, float w2, float h2) {
+        // Boxes meet when they meet along each axis. An open interval (a, b) and a closed one
+        // [c, d] share a point when c < b and a < d; two open ones, likewise.
+        return openMeetsClosed(x1, w1, x2, w2) && openMeetsClosed(y1, h1, y2, h2);
+    }
+
+    /** Is the point strictly between the left and right edges, and the top and bottom edges? */
+    static boolean rectPoint(float rx, float ry, float rw, float rh, float px, float py) {
+        return rectRect(rx, ry, rw, rh, px, py, 0, 0);
+    }
+
+    /**
+     * {@code r^2} minus the squared distance from the circle's centre to the closed rectangle
+     * (its nearest point: the centre clamped into it): positive when the open disk reaches
+     * into the rectangle, 0 when the outline touches it.
+     */
+    static BigDecimal circleRectMargin(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
+        BigDecimal nearestX = exact(cx).max(exact(rx)).min(exact(rx).add(exact(rw)));
+        BigDecimal nearestY = exact(cy).max(exact(ry)).min(exact(ry).add(exact(rh)));
+        BigDecimal dx = exact(cx).subtract(nearestX);
+        BigDecimal dy = exact(cy).subtract(nearestY);
+        BigDecimal radius = exact(r);
+        return radius.multiply(radius).subtract(dx.multiply(dx).add(dy.multiply(dy)));
+    }
+
+    /**
+     * Does the circle overlap the rectangle? A circle of radius 0 is a point, which must be
+     * strictly inside; otherwise the open disk must reach the closed rectangle.
+     */
+    static boolean circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
+        return r == 0 ? rectPoint(rx, ry, rw, rh, cx, cy) : circleRectMargin(cx, cy, r, rx, ry, rw, rh).signum() > 0;
+    }
+
+    /** Do [s1, s1 + l1] and [s2, s2 + l2] share a point, with at least one of them open? */
+    private static boolean openMeetsClosed(float s1, float l1, float s2, float l2) {
+        return exact(s2).compareTo(exact(s1).add(exact(l1))) < 0 && exact(s1).compareTo(exact(s2).add(exact(l2))) < 0;
+    }
+
+    // ------------------------------------------------------- polygons, segments, rays
 
     /** A rational number, always reduced, with a positive denominator. */
     record Q(BigInteger num, BigInteger den) implements Comparable<Q> {
@@ -49,9 +150,14 @@ final class GeometryReference {
 
         /** The exact value of a float (a float is a dyadic rational). */
         static Q of(float f) {
-            java.math.BigDecimal b = new java.math.BigDecimal(f);
-            return b.scale() <= 0 ? new Q(b.toBigIntegerExact(), BigInteger.ONE)
-                    : new Q(b.unscaledValue(), BigInteger.TEN.pow(b.scale()));
+            // f = m 2^e with a whole m of 24 bits at most: its bits, read as they are.
+            if (f == 0) {
+                return ZERO;
+            }
+            int e = Math.getExponent(f) - 23;
+            long m = (long) Math.scalb(f, -e); // exact: f has 24 significant bits
+            return e >= 0 ? new Q(BigInteger.valueOf(m).shiftLeft(e), BigInteger.ONE)
+                    : new Q(BigInteger.valueOf(m), BigInteger.ONE.shiftLeft(-e));
         }
 
         Q plus(Q o) {
@@ -76,6 +182,11 @@ final class GeometryReference {
 
         int signum() {
             return num.signum();
+        }
+
+        /** The nearest double, near enough: correct to 34 digits before the last rounding. */
+        double toDouble() {
+            return new BigDecimal(num).divide(new BigDecimal(den), MathContext.DECIMAL128).doubleValue();
         }
 
         @Override
@@ -183,7 +294,7 @@ final class GeometryReference {
     }
 
     /** Squared distance from c to the closed segment ab, by the clamped projection. */
-    static Q distanceSquared(Q ax, Q ay, Q bx, Q by, Q cx, Q cy) {
+    static Q segmentDistanceSquared(Q ax, Q ay, Q bx, Q by, Q cx, Q cy) {
         Q dx = bx.minus(ax), dy = by.minus(ay);
         Q len2 = dx.times(dx).plus(dy.times(dy));
         Q t = Q.ZERO;
@@ -199,7 +310,7 @@ final class GeometryReference {
     /** A closed segment reaches the open disk: its closest point is nearer than r. */
     static boolean segmentCircle(float x1, float y1, float x2, float y2, float cx, float cy, float r) {
         Q rr = Q.of(r);
-        return r > 0 && distanceSquared(Q.of(x1), Q.of(y1), Q.of(x2), Q.of(y2), Q.of(cx), Q.of(cy))
+        return r > 0 && segmentDistanceSquared(Q.of(x1), Q.of(y1), Q.of(x2), Q.of(y2), Q.of(cx), Q.of(cy))
                 .compareTo(rr.times(rr)) < 0;
     }
 
@@ -215,11 +326,148 @@ final class GeometryReference {
         int n = p.length / 2;
         for (int i = 0; i < n; i++) {
             int k = (i + 1) % n;
-            if (distanceSquared(p[2 * i], p[2 * i + 1], p[2 * k], p[2 * k + 1], x, y).compareTo(rr) < 0) {
+            if (segmentDistanceSquared(p[2 * i], p[2 * i + 1], p[2 * k], p[2 * k + 1], x, y).compareTo(rr) < 0) {
                 return true;
             }
         }
         return false;
+    }
+
+    /**
+     * Where the ray {@code o + s d} ({@code s} from 0, up to {@code reach}, or without end when
+     * {@code reach} is null) is inside the open polygon (convex or not), exactly: the stretches
+     * {@code {in, out}} of s, in order. The ray is cut wherever it meets the outline (crossing an
+     * edge, passing a vertex, or running along an edge, whose ends are cuts); between two cuts
+     * nothing changes, so the winding number at each piece's middle tells the whole story.
+     * Pieces inside on both sides of a cut (a ray that grazes a reflex corner from inside) are
+     * one stretch. A bounded polygon is behind the ray's last cut.
+     */
+    static List<Q[]> rayInside(float[] polygon, float ox, float oy, float dx, float dy, Q reach) {
+        return rayInside(toQ(polygon), Q.of(ox), Q.of(oy), Q.of(dx), Q.of(dy), reach);
+    }
+
+    private static List<Q[]> rayInside(Q[] p, Q x, Q y, Q vx, Q vy, Q reach) {
+        Q vv = vx.times(vx).plus(vy.times(vy));
+        TreeSet<Q> cuts = new TreeSet<>(List.of(Q.ZERO));
+        int n = p.length / 2;
+        for (int i = 0; i < n; i++) {
+            int k = (i + 1) % n;
+            Q ex = p[2 * k].minus(p[2 * i]), ey = p[2 * k + 1].minus(p[2 * i + 1]);
+            Q fx = p[2 * i].minus(x), fy = p[2 * i + 1].minus(y);
+            Q den = cross(vx, vy, ex, ey);
+            if (den.signum() != 0) {
+                // o + s d = a + u e: s = (f x e) / (d x e), u = (f x d) / (d x e).
+                Q at = cross(fx, fy, ex, ey).div(den), u = cross(fx, fy, vx, vy).div(den);
+                if (at.signum() >= 0 && u.signum() >= 0 && u.compareTo(Q.ONE) <= 0) {
+                    cuts.add(at);
+                }
+            } else if (cross(fx, fy, vx, vy).signum() == 0) {
+                // Along the edge's line: both ends are cuts.
+                Q gx = p[2 * k].minus(x), gy = p[2 * k + 1].minus(y);
+                for (Q at : List.of(fx.times(vx).plus(fy.times(vy)).div(vv), gx.times(vx).plus(gy.times(vy)).div(vv))) {
+                    if (at.signum() >= 0) {
+                        cuts.add(at);
+                    }
+                }
+            }
+        }
+        if (reach != null) {
+            cuts.removeIf(c -> c.compareTo(reach) > 0);
+            cuts.add(reach);
+        } else {
+            cuts.add(cuts.last().plus(Q.ONE));
+        }
+        List<Q> cs = new ArrayList<>(cuts);
+        List<Q[]> inside = new ArrayList<>();
+        if (locate(p, x, y) == Where.INSIDE) {
+            inside.add(new Q[] {Q.ZERO, Q.ZERO});
+        }
+        for (int i = 0; i + 1 < cs.size(); i++) {
+            Q m = cs.get(i).mid(cs.get(i + 1));
+            if (locate(p, x.plus(m.times(vx)), y.plus(m.times(vy))) != Where.INSIDE) {
+                continue;
+            }
+            Q[] last = inside.isEmpty() ? null : inside.get(inside.size() - 1);
+            if (last != null && last[1].compareTo(cs.get(i)) == 0) {
+                last[1] = cs.get(i + 1);
+            } else {
+                inside.add(new Q[] {cs.get(i), cs.get(i + 1)});
+            }
+        }
+        return inside;
+    }
+
+    /**
+     * The outward normals (not of unit length) of the polygon's edges that hold the point
+     * {@code o + s d} and face the ray (the ray runs against them): one edge, two at a
+     * corner, none for a point off the outline.
+     */
+    static List<Q[]> facingNormalsAt(float[] polygon, float ox, float oy, float dx, float dy, Q s) {
+        Q[] p = toQ(polygon);
+        Q vx = Q.of(dx), vy = Q.of(dy);
+        Q px = Q.of(ox).plus(s.times(vx)), py = Q.of(oy).plus(s.times(vy));
+        int n = p.length / 2;
+        Q area = Q.ZERO;
+        for (int i = 0; i < n; i++) {
+            int k = (i + 1) % n;
+            area = area.plus(cross(p[2 * i], p[2 * i + 1], p[2 * k], p[2 * k + 1]));
+        }
+        Q turn = Q.of(area.signum());
+        List<Q[]> out = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            int k = (i + 1) % n;
+            // Outward: (e_y, -e_x) for a positive signed area (counter-clockwise with y up).
+            Q nx = turn.times(p[2 * k + 1].minus(p[2 * i + 1])), ny = turn.times(p[2 * i].minus(p[2 * k]));
+            if (onSegment(p[2 * i], p[2 * i + 1], p[2 * k], p[2 * k + 1], px, py)
+                    && nx.times(vx).plus(ny.times(vy)).signum() < 0) {
+                out.add(new Q[] {nx, ny});
+            }
+        }
+        return out;
+    }
+
+    /**
+     * The separating axis theorem written out for two convex vertex lists (either winding, or
+     * flat: a segment's two ends, a point's one; in double, so that a rectangle's far side
+     * {@code x + w} is exact): every edge normal m of both, every vertex
+     * projected, exactly. Null when some axis separates them (their shadows on it overlap by 0
+     * or less: open shapes that touch do not overlap); else every push of b out of a, both
+     * ways along each axis, as {@code {mx, my, overlap}}: b moved by {@code m overlap / |m|^2}
+     * just touches a, a move of length {@code overlap / |m|}. For convex shapes the shortest of
+     * these is the minimum translation.
+     */
+    static List<BigDecimal[]> convexPushes(double[] a, double[] b) {
+        List<BigDecimal[]> pushes = new ArrayList<>();
+        for (double[] owner : List.of(a, b)) {
+            int n = owner.length / 2;
+            for (int i = 0; i < n; i++) {
+                int k = (i + 1) % n;
+                BigDecimal mx = exact(owner[2 * i + 1]).subtract(exact(owner[2 * k + 1]));
+                BigDecimal my = exact(owner[2 * k]).subtract(exact(owner[2 * i]));
+                if (mx.signum() == 0 && my.signum() == 0) {
+                    continue;
+                }
+                BigDecimal[] sa = shadow(a, mx, my), sb = shadow(b, mx, my);
+                BigDecimal forward = sa[1].subtract(sb[0]), back = sb[1].subtract(sa[0]);
+                if (forward.signum() <= 0 || back.signum() <= 0) {
+                    return null;
+                }
+                pushes.add(new BigDecimal[] {mx, my, forward});
+                pushes.add(new BigDecimal[] {mx.negate(), my.negate(), back});
+            }
+        }
+        return pushes;
+    }
+
+    /** The least and greatest of {@code p . m} over the vertices. */
+    private static BigDecimal[] shadow(double[] p, BigDecimal mx, BigDecimal my) {
+        BigDecimal lo = null, hi = null;
+        for (int k = 0; k < p.length; k += 2) {
+            BigDecimal v = exact(p[k]).multiply(mx).add(exact(p[k + 1]).multiply(my));
+            lo = lo == null || v.compareTo(lo) < 0 ? v : lo;
+            hi = hi == null || v.compareTo(hi) > 0 ? v : hi;
+        }
+        return new BigDecimal[] {lo, hi};
     }
 
     /** The four corners of a rectangle, as a polygon. */
@@ -228,9 +476,8 @@ final class GeometryReference {
     }
 
     /**
-     * A closed segment meets the open polygon: cut the segment wherever it crosses an edge's
-     * line or passes a vertex; between two cuts nothing changes, so testing every cut and
-     * every midpoint between cuts is a complete search.
+     * A closed segment meets the open polygon: some stretch of it is inside ({@link
+     * #rayInside} up to its far end), or, for a segment of length 0, its one point is.
      */
     static boolean segmentPolygon(float[] polygon, float x1, float y1, float x2, float y2) {
         Q[] p = toQ(polygon);
@@ -238,41 +485,7 @@ final class GeometryReference {
         if (dx.signum() == 0 && dy.signum() == 0) {
             return locate(p, ax, ay) == Where.INSIDE;
         }
-        TreeSet<Q> cuts = new TreeSet<>(List.of(Q.ZERO, Q.ONE));
-        int n = p.length / 2;
-        Q len2 = dx.times(dx).plus(dy.times(dy));
-        for (int i = 0; i < n; i++) {
-            int k = (i + 1) % n;
-            Q ex = p[2 * k].minus(p[2 * i]), ey = p[2 * k + 1].minus(p[2 * i + 1]);
-            Q fx = p[2 * i].minus(ax), fy = p[2 * i + 1].minus(ay);
-            Q den = cross(dx, dy, ex, ey);
-            if (den.signum() != 0) {
-                addCut(cuts, cross(fx, fy, ex, ey).div(den));
-            }
-            if (cross(dx, dy, fx, fy).signum() == 0) {
-                addCut(cuts, fx.times(dx).plus(fy.times(dy)).div(len2)); // vertex on the line
-            }
-        }
-        List<Q> ts = new ArrayList<>(cuts);
-        for (int i = 0; i < ts.size(); i++) {
-            if (at(p, ax, ay, dx, dy, ts.get(i)) == Where.INSIDE) {
-                return true;
-            }
-            if (i + 1 < ts.size() && at(p, ax, ay, dx, dy, ts.get(i).mid(ts.get(i + 1))) == Where.INSIDE) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private static void addCut(TreeSet<Q> cuts, Q t) {
-        if (t.signum() > 0 && t.compareTo(Q.ONE) < 0) {
-            cuts.add(t);
-        }
-    }
-
-    private static Where at(Q[] p, Q ax, Q ay, Q dx, Q dy, Q t) {
-        return locate(p, ax.plus(t.times(dx)), ay.plus(t.times(dy)));
+        return !rayInside(p, ax, ay, dx, dy, Q.ONE).isEmpty();
     }
 
     /**
@@ -363,6 +576,8 @@ final class GeometryReference {
     private static Q min(Q a, Q b) {
         return a.compareTo(b) <= 0 ? a : b;
     }
+
+    // ------------------------------------------------------------------- vertex lists
 
     /**
      * Is the vertex list a simple polygon? At least 3 vertices, no vertex equal to the next,
