@@ -625,10 +625,16 @@ final class Polygons {
      * four corners that lie on a segment or at a point.
      */
     static double[] corners(Shape s) {
-        if (s instanceof Rect r) {
-            return corners(r, new double[8]);
-        }
-        return toDouble(((Polygon) s).raw());
+        return switch (ShapeKind.of(s)) {
+            case RECT -> corners((Rect) s, new double[8]);
+            case POLYGON -> toDouble(((Polygon) s).raw());
+            case ELLIPSE, CAPSULE, CIRCLE, SEGMENT -> throw notStraight(s);
+        };
+    }
+
+    /** The refusal of a shape that has no corners, for the library's own callers (a bug if it happens). */
+    static IllegalArgumentException notStraight(Shape s) {
+        return new IllegalArgumentException("a rectangle or a polygon was expected, not " + s);
     }
 
     /** A rectangle's corners as {@link #corners(Shape)} gives them, written into {@code into} (length 8). */

@@ -488,36 +488,29 @@ public final class Sweep {
      */
     public static Hit timeOfImpact(Shape mover, float vx, float vy, Shape obstacle) {
         checkArgs(mover, vx, vy, obstacle);
-        if (mover instanceof Rect a) {
-            if (obstacle instanceof Rect b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Circle b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Segment b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-        } else if (mover instanceof Circle a) {
-            if (obstacle instanceof Circle b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Rect b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Segment b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-        } else if (mover instanceof Segment a) {
-            if (obstacle instanceof Rect b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Circle b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-        }
-        // Everything else (polygons, ellipses, capsules, two segments): convex pieces.
-        return ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+        ShapeKind o = ShapeKind.of(obstacle);
+        // The exact pairs by their own methods; everything else (polygons, ellipses, capsules,
+        // two segments) by convex pieces.
+        return switch (ShapeKind.of(mover)) {
+            case RECT -> switch (o) {
+                case RECT -> timeOfImpact((Rect) mover, vx, vy, (Rect) obstacle);
+                case CIRCLE -> timeOfImpact((Rect) mover, vx, vy, (Circle) obstacle);
+                case SEGMENT -> timeOfImpact((Rect) mover, vx, vy, (Segment) obstacle);
+                case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+            };
+            case CIRCLE -> switch (o) {
+                case CIRCLE -> timeOfImpact((Circle) mover, vx, vy, (Circle) obstacle);
+                case RECT -> timeOfImpact((Circle) mover, vx, vy, (Rect) obstacle);
+                case SEGMENT -> timeOfImpact((Circle) mover, vx, vy, (Segment) obstacle);
+                case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+            };
+            case SEGMENT -> switch (o) {
+                case RECT -> timeOfImpact((Segment) mover, vx, vy, (Rect) obstacle);
+                case CIRCLE -> timeOfImpact((Segment) mover, vx, vy, (Circle) obstacle);
+                case SEGMENT, ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+            };
+            case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+        };
     }
 
     /**
