@@ -39,15 +39,18 @@ final class Supports {
                 Segment g = (Segment) s;
                 yield Math.max(g.x1() * nx + g.y1() * ny, g.x2() * nx + g.y2() * ny);
             }
-            case RECT, POLYGON -> {
-                double[] xy = Polygons.corners(s);
-                double best = Double.NEGATIVE_INFINITY;
-                for (int i = 0; i < xy.length; i += 2) {
-                    best = Math.max(best, xy[i] * nx + xy[i + 1] * ny);
-                }
-                yield best;
-            }
+            case RECT -> reach(Polygons.corners((Rect) s, new double[8]), nx, ny);
+            case POLYGON -> reach(((Polygon) s).corners(), nx, ny); // cached, only read
         };
+    }
+
+    /** The largest dot product of the vertices with (nx, ny). */
+    private static double reach(double[] xy, double nx, double ny) {
+        double best = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < xy.length; i += 2) {
+            best = Math.max(best, xy[i] * nx + xy[i + 1] * ny);
+        }
+        return best;
     }
 
     /**
