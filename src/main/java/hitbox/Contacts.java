@@ -119,55 +119,69 @@ final class Contacts {
      * {@link ShapeKind} to the code for it. A pair with a curved kind goes to the support
      * search (or the concave-polygon search); a circle with a rectangle or polygon is worked
      * from the circle's side and reported from a's; rectangles and polygons go to the
-     * separating-axis search.
+     * separating-axis search. One small method per first kind, as in {@link Overlaps}: one
+     * switch over both kinds was too large for the JIT to inline into a caller's loop (about
+     * 600 bytes of bytecode, over its 325), which cost a call on every contact.
      */
     static Contact between(Shape a, Shape b) {
-        ShapeKind ka = ShapeKind.of(a), kb = ShapeKind.of(b);
-        return switch (ka) {
+        ShapeKind kb = ShapeKind.of(b);
+        return switch (ShapeKind.of(a)) {
             case SEGMENT -> throw withoutArea("a", a);
-            case ELLIPSE, CAPSULE -> curved(a, ka, b, kb);
+            case ELLIPSE, CAPSULE -> curved(a, b, kb);
+            case CIRCLE -> circleFirst((Circle) a, b, kb);
+            case RECT -> rectFirst((Rect) a, b, kb);
+            case POLYGON -> polygonFirst((Polygon) a, b, kb);
+        };
+    }
+
+    /** A circle first, against a shape of kind kb. */
+    private static Contact circleFirst(Circle c, Shape b, ShapeKind kb) {
+        return switch (kb) {
+            case SEGMENT -> throw withoutArea("b", b);
+            case ELLIPSE, CAPSULE -> curved(c, b, kb);
             case CIRCLE -> {
-                Circle c = (Circle) a;
-                yield switch (kb) {
-                    case SEGMENT -> throw withoutArea("b", b);
-                    case ELLIPSE, CAPSULE -> curved(a, ka, b, kb);
-                    case CIRCLE -> {
-                        Circle d = (Circle) b;
-                        yield Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
-                    }
-                    case RECT -> {
-                        Rect r = (Rect) b;
-                        yield circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h(), false);
-                    }
-                    case POLYGON -> circlePolygon(c.x(), c.y(), c.r(), (Polygon) b, false);
-                };
+                Circle d = (Circle) b;
+                yield Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
             }
-            // Against a circle: computed from the circle's side, reported from a's (the tie
-            // rule sees a's normals).
-            case RECT -> switch (kb) {
-                case SEGMENT -> throw withoutArea("b", b);
-                case ELLIPSE, CAPSULE -> curved(a, ka, b, kb);
-                case CIRCLE -> {
-                    Circle c = (Circle) b;
-                    Rect r = (Rect) a;
-                    yield circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h(), true);
-                }
-                case RECT -> {
-                    Rect r = (Rect) a, q = (Rect) b;
-                    yield Contact.rectRect(r.x(), r.y(), r.w(), r.h(), q.x(), q.y(), q.w(), q.h());
-                }
-                case POLYGON -> polygonal(a, false, b, true);
-            };
-            case POLYGON -> switch (kb) {
-                case SEGMENT -> throw withoutArea("b", b);
-                case ELLIPSE, CAPSULE -> curved(a, ka, b, kb);
-                case CIRCLE -> {
-                    Circle c = (Circle) b;
-                    yield circlePolygon(c.x(), c.y(), c.r(), (Polygon) a, true);
-                }
-                case RECT -> polygonal(a, true, b, false);
-                case POLYGON -> polygonal(a, true, b, true);
-            };
+            case RECT -> {
+                Rect r = (Rect) b;
+                yield circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h(), false);
+            }
+            case POLYGON -> circlePolygon(c.x(), c.y(), c.r(), (Polygon) b, false);
+        };
+    }
+
+    /**
+     * A rectangle first, against a shape of kind kb. Against a circle: computed from the
+     * circle's side, reported from the rectangle's (the tie rule sees a's normals).
+     */
+    private static Contact rectFirst(Rect r, Shape b, ShapeKind kb) {
+        return switch (kb) {
+            case SEGMENT -> throw withoutArea("b", b);
+            case ELLIPSE, CAPSULE -> curved(r, b, kb);
+            case CIRCLE -> {
+                Circle c = (Circle) b;
+                yield circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h(), true);
+            }
+            case RECT -> {
+                Rect q = (Rect) b;
+                yield Contact.rectRect(r.x(), r.y(), r.w(), r.h(), q.x(), q.y(), q.w(), q.h());
+            }
+            case POLYGON -> polygonal(r, false, b, true);
+        };
+    }
+
+    /** A polygon first, against a shape of kind kb; against a circle, worked from the circle's side. */
+    private static Contact polygonFirst(Polygon p, Shape b, ShapeKind kb) {
+        return switch (kb) {
+            case SEGMENT -> throw withoutArea("b", b);
+            case ELLIPSE, CAPSULE -> curved(p, b, kb);
+            case CIRCLE -> {
+                Circle c = (Circle) b;
+                yield circlePolygon(c.x(), c.y(), c.r(), p, true);
+            }
+            case RECT -> polygonal(p, true, b, false);
+            case POLYGON -> polygonal(p, true, b, true);
         };
     }
 
@@ -184,14 +198,14 @@ final class Contacts {
      * polygon by {@link CurvedClearance} (the whole polygon, not its nearest piece), anything
      * else by {@link Supports}.
      */
-    private static Contact curved(Shape a, ShapeKind ka, Shape b, ShapeKind kb) {
+    private static Contact curved(Shape a, Shape b, ShapeKind kb) {
         if (!kb.hasArea()) {
             throw withoutArea("b", b);
         }
         if (!Overlaps.test(a, b)) {
             return null;
         }
-        if (concave(a, ka)) {
+        if (concave(a, ShapeKind.of(a))) {
             return CurvedClearance.contact(b, (Polygon) a, true);
         }
         if (concave(b, kb)) {
