@@ -2,11 +2,12 @@ package hitbox;
 
 /**
  * Bounding boxes: each shape's extent in {@code double}, read through {@link ShapeKind} from
- * the shape's own {@code minX()}, {@code minY()}, {@code maxX()} and {@code maxY()} (exact: the
- * sums of two floats that make a circle's or a rectangle's far edges are exact in double; a
- * polygon's are its cached box's, a turned ellipse's widened past its rounding), and the float
- * {@link Rect} that holds an extent, rounded outwards. {@link Shape#bounds()} and
- * {@link Hybrid} both read the same extents, so the two never disagree.
+ * the shape's own {@code minX()}, {@code minY()}, {@code maxX()} and {@code maxY()} (exact:
+ * the sums of two floats that make a circle's or a rectangle's far edges are exact in double;
+ * a turned ellipse's widened past its rounding), or a polygon's cached
+ * {@link Polygon#bounds() box}; and the float {@link Rect} that holds an extent, rounded
+ * outwards. {@link Shape#bounds()} and {@link Hybrid} both read the same extents, so the two
+ * never disagree.
  */
 final class Bounds {
     private Bounds() {
@@ -20,7 +21,7 @@ final class Bounds {
             case CIRCLE -> ((Circle) s).minX();
             case RECT -> ((Rect) s).minX();
             case SEGMENT -> ((Segment) s).minX();
-            case POLYGON -> ((Polygon) s).minX();
+            case POLYGON -> ((Polygon) s).bounds().x(); // its cached box
         };
     }
 
@@ -32,7 +33,7 @@ final class Bounds {
             case CIRCLE -> ((Circle) s).minY();
             case RECT -> ((Rect) s).minY();
             case SEGMENT -> ((Segment) s).minY();
-            case POLYGON -> ((Polygon) s).minY();
+            case POLYGON -> ((Polygon) s).bounds().y(); // its cached box
         };
     }
 
@@ -44,7 +45,7 @@ final class Bounds {
             case CIRCLE -> ((Circle) s).maxX();
             case RECT -> ((Rect) s).maxX();
             case SEGMENT -> ((Segment) s).maxX();
-            case POLYGON -> ((Polygon) s).maxX();
+            case POLYGON -> (double) ((Polygon) s).bounds().x() + ((Polygon) s).bounds().w(); // its cached box
         };
     }
 
@@ -56,7 +57,7 @@ final class Bounds {
             case CIRCLE -> ((Circle) s).maxY();
             case RECT -> ((Rect) s).maxY();
             case SEGMENT -> ((Segment) s).maxY();
-            case POLYGON -> ((Polygon) s).maxY();
+            case POLYGON -> (double) ((Polygon) s).bounds().y() + ((Polygon) s).bounds().h(); // its cached box
         };
     }
 

@@ -378,26 +378,6 @@ public final class Polygon implements Shape {
         return bounds;
     }
 
-    /** The smallest x, exactly: the cached box's left edge (the least vertex x, a float). */
-    double minX() {
-        return bounds.x();
-    }
-
-    /** The smallest y, exactly. */
-    double minY() {
-        return bounds.y();
-    }
-
-    /** The largest x, or a hair beyond: the cached box's right edge, {@code x + w} in double. */
-    double maxX() {
-        return (double) bounds.x() + bounds.w();
-    }
-
-    /** The largest y, or a hair beyond: the cached box's bottom edge. */
-    double maxY() {
-        return (double) bounds.y() + bounds.h();
-    }
-
     /**
      * {@inheritDoc}
      *
