@@ -56,7 +56,27 @@ public record Capsule(float x1, float y1, float x2, float y2, float r) implement
     /** {@inheritDoc} Rounded outwards, so the box holds the round ends even when x1 - r is not a float. */
     @Override
     public Rect bounds() {
-        return Bounds.enclosing(Bounds.left(this), Bounds.top(this), Bounds.right(this), Bounds.bottom(this));
+        return Bounds.enclosing(minX(), minY(), maxX(), maxY());
+    }
+
+    /** The shape's smallest x, exactly (the extent {@link #bounds()} rounds outwards). */
+    double minX() {
+        return Math.min(x1, x2) - (double) r;
+    }
+
+    /** The shape's smallest y, exactly. */
+    double minY() {
+        return Math.min(y1, y2) - (double) r;
+    }
+
+    /** The shape's largest x, exactly. */
+    double maxX() {
+        return Math.max(x1, x2) + (double) r;
+    }
+
+    /** The shape's largest y, exactly. */
+    double maxY() {
+        return Math.max(y1, y2) + (double) r;
     }
 
     /** {@inheritDoc} */

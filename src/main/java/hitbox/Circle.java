@@ -45,7 +45,27 @@ public record Circle(float x, float y, float r) implements Shape {
     /** {@inheritDoc} Rounded outwards, so the box holds the circle even when x - r is not a float. */
     @Override
     public Rect bounds() {
-        return Bounds.enclosing(Bounds.left(this), Bounds.top(this), Bounds.right(this), Bounds.bottom(this));
+        return Bounds.enclosing(minX(), minY(), maxX(), maxY());
+    }
+
+    /** The shape's smallest x, exactly (the extent {@link #bounds()} rounds outwards). */
+    double minX() {
+        return (double) x - r;
+    }
+
+    /** The shape's smallest y, exactly. */
+    double minY() {
+        return (double) y - r;
+    }
+
+    /** The shape's largest x, exactly. */
+    double maxX() {
+        return (double) x + r;
+    }
+
+    /** The shape's largest y, exactly. */
+    double maxY() {
+        return (double) y + r;
     }
 
     /** {@inheritDoc} */

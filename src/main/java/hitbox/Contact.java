@@ -35,9 +35,13 @@ import hitbox.internal.*;
  * rule can tell the two apart.
  *
  * <h2>Which pairs</h2>
- * Every pair of shapes with area: circles, rectangles (zero-size ones included) and
- * polygons, convex or concave, in either order. Convex pairs use the separating axis theorem
- * ({@link SeparatingAxis}); a circle against a convex polygon, its closest edge or corner.
+ * Every pair of shapes with area: circles, rectangles (zero-size ones included), polygons,
+ * convex or concave, ellipses, aligned or turned, and capsules, in either order. Convex pairs
+ * of straight-edged shapes use the separating axis theorem ({@link SeparatingAxis}); a circle
+ * against a convex polygon, its closest edge or corner. A pair with an ellipse or a capsule
+ * minimises the two shapes' support functions over the normal's angle (the depth to about
+ * 1e-12 of their size, the normal to about 1e-6 radians where the least is flat), and
+ * against a concave polygon finds the shortest push that clears every convex piece.
  * Concave polygons are cut into convex pieces and the shortest move that clears all of them
  * together is found, so the answer is the true minimum translation for them too (up to a
  * rounding tolerance of about 1e-9 of the shapes' size), not just a push out of the nearest

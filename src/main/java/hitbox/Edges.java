@@ -137,8 +137,9 @@ public final class Edges {
     }
 
     /**
-     * Which window edges has the shape crossed? A circle is tested as a circle; any other
-     * shape by its {@link Shape#bounds() bounds}, which reach exactly as far as the shape.
+     * Which window edges has the shape crossed? Every shape is tested by how far it reaches,
+     * in double, as {@link #circleCrossed} tests a circle: exactly as far as the shape (a
+     * polygon by its {@link Shape#bounds() bounds}, a turned ellipse a hair farther).
      *
      * <p>A NaN or negative window size answers {@link #NONE}
      * (the <a href="package-summary.html#bad-input">NaN rule</a>); a shape never holds NaN.
@@ -151,11 +152,8 @@ public final class Edges {
      * @throws IllegalArgumentException if {@code shape} is null
      */
     public static int crossed(Shape shape, float width, float height) {
-        if (Check.notNull("shape", shape) instanceof Circle c) {
-            return circleCrossed(c.x(), c.y(), c.r(), width, height);
-        }
-        Rect b = shape.bounds();
-        return rectCrossed(b.x(), b.y(), b.w(), b.h(), width, height);
+        Check.notNull("shape", shape);
+        return crossed(Bounds.left(shape), Bounds.right(shape), Bounds.top(shape), Bounds.bottom(shape), width, height);
     }
 
     /**

@@ -3,9 +3,11 @@ package hitbox;
 import hitbox.internal.*;
 
 /**
- * An axis-aligned ellipse: its centre and its two radii, Processing's
- * {@code ellipse(x, y, w, h)} (in the default {@code CENTER} mode) with {@code rx = w / 2} and
- * {@code ry = h / 2}. Draw it with {@code ellipse(x, y, 2 * rx, 2 * ry)}.
+ * An ellipse: its centre, its two radii and how far it is turned (0 by default, an
+ * axis-aligned ellipse, Processing's {@code ellipse(x, y, w, h)} in the default
+ * {@code CENTER} mode with {@code rx = w / 2} and {@code ry = h / 2}). Draw it with
+ * {@code ellipse(x, y, 2 * rx, 2 * ry)} when it is not turned, or with
+ * {@code hitbox.processing.Draw.shape} either way.
  *
  * <p>Open, like every shape with area: a point on the outline is not in it. An ellipse with
  * a radius of 0 is flat and has no inside: it behaves as its box, a rectangle of width or
@@ -92,7 +94,30 @@ public record Ellipse(float x, float y, float rx, float ry, float angle) impleme
      */
     @Override
     public Rect bounds() {
-        return Bounds.enclosing(Bounds.left(this), Bounds.top(this), Bounds.right(this), Bounds.bottom(this));
+        return Bounds.enclosing(minX(), minY(), maxX(), maxY());
+    }
+
+    /**
+     * The shape's smallest x (the extent {@link #bounds()} rounds outwards): exact when aligned,
+     * a turned ellipse's a hair beyond, widened past the rounding of its cos and sin.
+     */
+    double minX() {
+        return (double) x - TurnedEllipses.halfWidth(this);
+    }
+
+    /** The shape's smallest y, as {@link #minX()}. */
+    double minY() {
+        return (double) y - TurnedEllipses.halfHeight(this);
+    }
+
+    /** The shape's largest x, as {@link #minX()}. */
+    double maxX() {
+        return (double) x + TurnedEllipses.halfWidth(this);
+    }
+
+    /** The shape's largest y, as {@link #minX()}. */
+    double maxY() {
+        return (double) y + TurnedEllipses.halfHeight(this);
     }
 
     /** {@inheritDoc} The angle is kept. */

@@ -654,14 +654,22 @@ public final class Grid {
      * @throws IllegalArgumentException if {@code shape} is null
      */
     public boolean overlapsSolid(Shape shape) {
-        Check.notNull("shape", shape);
-        if (shape instanceof Circle c) {
-            return circleOverlapsSolid(c.x(), c.y(), c.r());
-        }
-        if (shape instanceof Rect r) {
-            return rectOverlapsSolid(r.x(), r.y(), r.w(), r.h());
-        }
-        // Any other shape reaches exactly as far as its bounds, so the outside test is theirs.
+        return switch (ShapeKind.of(Check.notNull("shape", shape))) {
+            case CIRCLE -> {
+                Circle c = (Circle) shape;
+                yield circleOverlapsSolid(c.x(), c.y(), c.r());
+            }
+            case RECT -> {
+                Rect r = (Rect) shape;
+                yield rectOverlapsSolid(r.x(), r.y(), r.w(), r.h());
+            }
+            case ELLIPSE, CAPSULE, SEGMENT, POLYGON -> cellsOverlap(shape);
+        };
+    }
+
+    /** Any shape, by {@link Shape#overlaps} against each solid cell under its bounds. */
+    private boolean cellsOverlap(Shape shape) {
+        // The shape reaches as far as its bounds, so the outside test is theirs.
         Rect b = shape.bounds();
         if (reachesOutside(b.x(), (double) b.x() + b.w(), b.y(), (double) b.y() + b.h())) {
             return true;

@@ -121,23 +121,15 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      */
     public RayHit cast(Shape shape) {
         Check.notNull("shape", shape);
-        if (shape instanceof Ellipse e) {
-            return castEllipse(e, RayCast.limit(dx, dy, maxDistance));
-        }
-        if (shape instanceof Capsule k) {
-            return castCapsule(k, RayCast.limit(dx, dy, maxDistance));
-        }
-        double limit = RayCast.limit(dx, dy, maxDistance);
-        if (shape instanceof Circle c) {
-            return castCircle(c, limit);
-        }
-        if (shape instanceof Rect r) {
-            return castRect(r, limit);
-        }
-        if (shape instanceof Segment g) {
-            return castSegment(g, limit);
-        }
-        return castPolygon((Polygon) shape, limit);
+        double limit = limit(dx, dy, maxDistance);
+        return switch (ShapeKind.of(shape)) {
+            case ELLIPSE -> castEllipse((Ellipse) shape, limit);
+            case CAPSULE -> castCapsule((Capsule) shape, limit);
+            case CIRCLE -> castCircle((Circle) shape, limit);
+            case RECT -> castRect((Rect) shape, limit);
+            case SEGMENT -> castSegment((Segment) shape, limit);
+            case POLYGON -> castPolygon((Polygon) shape, limit);
+        };
     }
 
     // ---------------------------------------------------------------- raw floats, no allocation

@@ -111,6 +111,26 @@ public record Rect(float x, float y, float w, float h) implements Shape {
         return this;
     }
 
+    /** The left edge, as {@link Shape}'s extents are read (see {@link Bounds}). */
+    double minX() {
+        return x;
+    }
+
+    /** The top edge. */
+    double minY() {
+        return y;
+    }
+
+    /** The right edge, exactly: {@code x + w} in double. */
+    double maxX() {
+        return (double) x + w;
+    }
+
+    /** The bottom edge, exactly: {@code y + h} in double. */
+    double maxY() {
+        return (double) y + h;
+    }
+
     /** {@inheritDoc} */
     @Override
     public Rect translated(float dx, float dy) {

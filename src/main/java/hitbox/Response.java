@@ -332,7 +332,7 @@ public final class Response {
      * smallest float steps more (doubling each time), until the exact test agrees.
      *
      * @param <S> the kind of shape
-     * @param a   the shape to move, with area (circle, rect, polygon, ellipse or capsule), not null
+     * @param a   the shape to move, with area (any shape but a segment), not null
      * @param b   the shape it must leave, with area, not null
      * @return a, moved out of b (or a itself if they do not overlap), never null
      * @throws IllegalArgumentException if a shape is null or a segment (see

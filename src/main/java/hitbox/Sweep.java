@@ -512,36 +512,44 @@ public final class Sweep {
      */
     public static Hit timeOfImpact(Shape mover, float vx, float vy, Shape obstacle) {
         checkArgs(mover, vx, vy, obstacle);
-        if (mover instanceof Rect a) {
-            if (obstacle instanceof Rect b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Circle b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Segment b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-        } else if (mover instanceof Circle a) {
-            if (obstacle instanceof Circle b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Rect b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Segment b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-        } else if (mover instanceof Segment a) {
-            if (obstacle instanceof Rect b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-            if (obstacle instanceof Circle b) {
-                return timeOfImpact(a, vx, vy, b);
-            }
-        }
-        // Everything else (polygons, ellipses, capsules, two segments): convex pieces.
-        return ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+        // The exact pairs by their own methods; everything else (polygons, ellipses, capsules,
+        // two segments) by convex pieces. One small method per mover kind, so that this one
+        // stays small enough for the JIT to inline into a caller's loop.
+        return switch (ShapeKind.of(mover)) {
+            case RECT -> rectInto((Rect) mover, vx, vy, obstacle);
+            case CIRCLE -> circleInto((Circle) mover, vx, vy, obstacle);
+            case SEGMENT -> segmentInto((Segment) mover, vx, vy, obstacle);
+            case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+        };
+    }
+
+    /** {@link #timeOfImpact(Shape, float, float, Shape)} for a rectangle mover, valid values. */
+    private static Hit rectInto(Rect mover, float vx, float vy, Shape obstacle) {
+        return switch (ShapeKind.of(obstacle)) {
+            case RECT -> timeOfImpact(mover, vx, vy, (Rect) obstacle);
+            case CIRCLE -> timeOfImpact(mover, vx, vy, (Circle) obstacle);
+            case SEGMENT -> timeOfImpact(mover, vx, vy, (Segment) obstacle);
+            case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+        };
+    }
+
+    /** {@link #timeOfImpact(Shape, float, float, Shape)} for a circle mover, valid values. */
+    private static Hit circleInto(Circle mover, float vx, float vy, Shape obstacle) {
+        return switch (ShapeKind.of(obstacle)) {
+            case CIRCLE -> timeOfImpact(mover, vx, vy, (Circle) obstacle);
+            case RECT -> timeOfImpact(mover, vx, vy, (Rect) obstacle);
+            case SEGMENT -> timeOfImpact(mover, vx, vy, (Segment) obstacle);
+            case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+        };
+    }
+
+    /** {@link #timeOfImpact(Shape, float, float, Shape)} for a segment mover, valid values. */
+    private static Hit segmentInto(Segment mover, float vx, float vy, Shape obstacle) {
+        return switch (ShapeKind.of(obstacle)) {
+            case RECT -> timeOfImpact(mover, vx, vy, (Rect) obstacle);
+            case CIRCLE -> timeOfImpact(mover, vx, vy, (Circle) obstacle);
+            case SEGMENT, ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+        };
     }
 
     /**

@@ -3,95 +3,64 @@ package hitbox.internal;
 import hitbox.*;
 
 /**
- * Bounding boxes, in one place: each shape's extent in {@code double} (exact: the sums of
- * two floats that make a circle's or a rectangle's far edges are exact in double), and the
- * float {@link Rect} that holds it, rounded outwards. {@link Shape#bounds()} and
- * {@link Hybrid} both read them here, so the two never disagree.
+ * Bounding boxes: each shape's extent in {@code double}, read through {@link ShapeKind} from
+ * the shape's own {@code minX()}, {@code minY()}, {@code maxX()} and {@code maxY()} (exact:
+ * the sums of two floats that make a circle's or a rectangle's far edges are exact in double;
+ * a turned ellipse's widened past its rounding), or a polygon's cached
+ * {@link Polygon#bounds() box}; and the float {@link Rect} that holds an extent, rounded
+ * outwards. {@link Shape#bounds()} and {@link Hybrid} both read the same extents, so the two
+ * never disagree.
  */
 public final class Bounds {
     private Bounds() {
     }
 
-    /** The shape's smallest x, exactly. */
-    public static double left(Shape s) {
-        if (s instanceof Circle c) {
-            return (double) c.x() - c.r();
-        }
-        if (s instanceof Rect r) {
-            return r.x();
-        }
-        if (s instanceof Segment g) {
-            return Math.min(g.x1(), g.x2());
-        }
-        if (s instanceof Ellipse e) {
-            return (double) e.x() - TurnedEllipses.halfWidth(e);
-        }
-        if (s instanceof Capsule k) {
-            return Math.min(k.x1(), k.x2()) - (double) k.r();
-        }
-        return ((Polygon) s).bounds().x();
+    /** The shape's smallest x. */
+    static double left(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE -> ((Ellipse) s).minX();
+            case CAPSULE -> ((Capsule) s).minX();
+            case CIRCLE -> ((Circle) s).minX();
+            case RECT -> ((Rect) s).minX();
+            case SEGMENT -> ((Segment) s).minX();
+            case POLYGON -> ((Polygon) s).bounds().x(); // its cached box
+        };
     }
 
-    /** The shape's smallest y, exactly. */
-    public static double top(Shape s) {
-        if (s instanceof Circle c) {
-            return (double) c.y() - c.r();
-        }
-        if (s instanceof Rect r) {
-            return r.y();
-        }
-        if (s instanceof Segment g) {
-            return Math.min(g.y1(), g.y2());
-        }
-        if (s instanceof Ellipse e) {
-            return (double) e.y() - TurnedEllipses.halfHeight(e);
-        }
-        if (s instanceof Capsule k) {
-            return Math.min(k.y1(), k.y2()) - (double) k.r();
-        }
-        return ((Polygon) s).bounds().y();
+    /** The shape's smallest y. */
+    static double top(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE -> ((Ellipse) s).minY();
+            case CAPSULE -> ((Capsule) s).minY();
+            case CIRCLE -> ((Circle) s).minY();
+            case RECT -> ((Rect) s).minY();
+            case SEGMENT -> ((Segment) s).minY();
+            case POLYGON -> ((Polygon) s).bounds().y(); // its cached box
+        };
     }
 
-    /** The shape's largest x: exact, or for a polygon a hair beyond (its cached box's edge). */
-    public static double right(Shape s) {
-        if (s instanceof Circle c) {
-            return (double) c.x() + c.r();
-        }
-        if (s instanceof Rect r) {
-            return (double) r.x() + r.w();
-        }
-        if (s instanceof Segment g) {
-            return Math.max(g.x1(), g.x2());
-        }
-        if (s instanceof Ellipse e) {
-            return (double) e.x() + TurnedEllipses.halfWidth(e);
-        }
-        if (s instanceof Capsule k) {
-            return Math.max(k.x1(), k.x2()) + (double) k.r();
-        }
-        Rect b = ((Polygon) s).bounds();
-        return (double) b.x() + b.w();
+    /** The shape's largest x (for a polygon a hair beyond: its cached box's edge). */
+    static double right(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE -> ((Ellipse) s).maxX();
+            case CAPSULE -> ((Capsule) s).maxX();
+            case CIRCLE -> ((Circle) s).maxX();
+            case RECT -> ((Rect) s).maxX();
+            case SEGMENT -> ((Segment) s).maxX();
+            case POLYGON -> (double) ((Polygon) s).bounds().x() + ((Polygon) s).bounds().w(); // its cached box
+        };
     }
 
-    /** The shape's largest y: exact, or for a polygon a hair beyond. */
-    public static double bottom(Shape s) {
-        if (s instanceof Circle c) {
-            return (double) c.y() + c.r();
-        }
-        if (s instanceof Rect r) {
-            return (double) r.y() + r.h();
-        }
-        if (s instanceof Segment g) {
-            return Math.max(g.y1(), g.y2());
-        }
-        if (s instanceof Ellipse e) {
-            return (double) e.y() + TurnedEllipses.halfHeight(e);
-        }
-        if (s instanceof Capsule k) {
-            return Math.max(k.y1(), k.y2()) + (double) k.r();
-        }
-        Rect b = ((Polygon) s).bounds();
-        return (double) b.y() + b.h();
+    /** The shape's largest y (for a polygon a hair beyond). */
+    static double bottom(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE -> ((Ellipse) s).maxY();
+            case CAPSULE -> ((Capsule) s).maxY();
+            case CIRCLE -> ((Circle) s).maxY();
+            case RECT -> ((Rect) s).maxY();
+            case SEGMENT -> ((Segment) s).maxY();
+            case POLYGON -> (double) ((Polygon) s).bounds().y() + ((Polygon) s).bounds().h(); // its cached box
+        };
     }
 
     /**

@@ -59,12 +59,22 @@ public final class Clearance {
      */
     public record Parts(List<double[]> pieces, List<double[]> cuts, boolean flat) {
 
-        public static Parts of(Shape s) {
-            double[] xy = Polygons.corners(s);
-            if (s instanceof Rect r) {
-                return new Parts(List.of(xy), List.of(), r.w() == 0 || r.h() == 0);
-            }
-            if (((Polygon) s).isConvex()) {
+        /** A rectangle's or polygon's parts. */
+        static Parts of(Shape s) {
+            return switch (ShapeKind.of(s)) {
+                case RECT -> {
+                    Rect r = (Rect) s;
+                    yield new Parts(List.of(Polygons.corners(r, new double[8])), List.of(), r.w() == 0 || r.h() == 0);
+                }
+                case POLYGON -> of((Polygon) s);
+                case ELLIPSE, CAPSULE, CIRCLE, SEGMENT -> throw Polygons.notStraight(s);
+            };
+        }
+
+        /** A polygon's parts: itself if convex, else its convex pieces and the cuts between them. */
+        static Parts of(Polygon s) {
+            double[] xy = s.corners().clone();
+            if (s.isConvex()) {
                 return new Parts(List.of(xy), List.of(), false);
             }
             List<int[]> cuts = new ArrayList<>();

@@ -116,48 +116,109 @@ public final class Contacts {
     /** The four axis directions. */
     private static final int[][] AXES = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
 
-    public static Contact between(Shape a, Shape b) {
-        if (a instanceof Segment || b instanceof Segment) {
-            String which = a instanceof Segment ? "a" : "b";
-            throw new IllegalArgumentException("contact needs two shapes with area, but " + which
-                    + " is a Segment, which has none: there is no inside to push out of. Use"
-                    + " overlaps(...) to test a segment for a hit, or a sweep or ray cast to find"
-                    + " where a moving shape first touches it");
-        }
-        if (a instanceof Ellipse || b instanceof Ellipse || a instanceof Capsule || b instanceof Capsule) {
-            if (!Overlaps.test(a, b)) {
-                return null;
-            }
-            if (a instanceof Polygon p && !p.isConvex()) {
-                return CurvedClearance.contact(b, p, true); // the whole polygon, not its nearest piece
-            }
-            if (b instanceof Polygon p && !p.isConvex()) {
-                return CurvedClearance.contact(a, p, false);
-            }
-            return Supports.contact(a, b);
-        }
-        if (a instanceof Circle c) {
-            if (b instanceof Circle d) {
-                return Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
-            }
-            return circleWith(c, b, false);
-        }
-        if (b instanceof Circle c) {
-            // Computed from the circle's side, reported from a's: the tie rule sees a's normals.
-            return circleWith(c, a, true);
-        }
-        if (a instanceof Rect r && b instanceof Rect s) {
-            return Contact.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
-        }
-        return polygonal(a, b);
+    /**
+     * The contact of any two shapes, normal from a to b: every pair of kinds routed through
+     * {@link ShapeKind} to the code for it. A pair with a curved kind goes to the support
+     * search (or the concave-polygon search); a circle with a rectangle or polygon is worked
+     * from the circle's side and reported from a's; rectangles and polygons go to the
+     * separating-axis search. One small method per first kind, as in {@link Overlaps}: one
+     * switch over both kinds was too large for the JIT to inline into a caller's loop (about
+     * 600 bytes of bytecode, over its 325), which cost a call on every contact.
+     */
+    static Contact between(Shape a, Shape b) {
+        ShapeKind kb = ShapeKind.of(b);
+        return switch (ShapeKind.of(a)) {
+            case SEGMENT -> throw withoutArea("a", a);
+            case ELLIPSE, CAPSULE -> curved(a, b, kb);
+            case CIRCLE -> circleFirst((Circle) a, b, kb);
+            case RECT -> rectFirst((Rect) a, b, kb);
+            case POLYGON -> polygonFirst((Polygon) a, b, kb);
+        };
     }
 
-    /** A circle against a rectangle or polygon, reported from the circle's side or (flip) the other's. */
-    private static Contact circleWith(Circle c, Shape other, boolean flip) {
-        if (other instanceof Rect r) {
-            return circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h(), flip);
+    /** A circle first, against a shape of kind kb. */
+    private static Contact circleFirst(Circle c, Shape b, ShapeKind kb) {
+        return switch (kb) {
+            case SEGMENT -> throw withoutArea("b", b);
+            case ELLIPSE, CAPSULE -> curved(c, b, kb);
+            case CIRCLE -> {
+                Circle d = (Circle) b;
+                yield Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
+            }
+            case RECT -> {
+                Rect r = (Rect) b;
+                yield circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h(), false);
+            }
+            case POLYGON -> circlePolygon(c.x(), c.y(), c.r(), (Polygon) b, false);
+        };
+    }
+
+    /**
+     * A rectangle first, against a shape of kind kb. Against a circle: computed from the
+     * circle's side, reported from the rectangle's (the tie rule sees a's normals).
+     */
+    private static Contact rectFirst(Rect r, Shape b, ShapeKind kb) {
+        return switch (kb) {
+            case SEGMENT -> throw withoutArea("b", b);
+            case ELLIPSE, CAPSULE -> curved(r, b, kb);
+            case CIRCLE -> {
+                Circle c = (Circle) b;
+                yield circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h(), true);
+            }
+            case RECT -> {
+                Rect q = (Rect) b;
+                yield Contact.rectRect(r.x(), r.y(), r.w(), r.h(), q.x(), q.y(), q.w(), q.h());
+            }
+            case POLYGON -> polygonal(r, false, b, true);
+        };
+    }
+
+    /** A polygon first, against a shape of kind kb; against a circle, worked from the circle's side. */
+    private static Contact polygonFirst(Polygon p, Shape b, ShapeKind kb) {
+        return switch (kb) {
+            case SEGMENT -> throw withoutArea("b", b);
+            case ELLIPSE, CAPSULE -> curved(p, b, kb);
+            case CIRCLE -> {
+                Circle c = (Circle) b;
+                yield circlePolygon(c.x(), c.y(), c.r(), p, true);
+            }
+            case RECT -> polygonal(p, true, b, false);
+            case POLYGON -> polygonal(p, true, b, true);
+        };
+    }
+
+    /** The refusal of a shape without area (a segment): there is no inside to push out of. */
+    private static IllegalArgumentException withoutArea(String which, Shape s) {
+        return new IllegalArgumentException("contact needs two shapes with area, but " + which
+                + " is a " + s.getClass().getSimpleName() + ", which has none: there is no inside to push out of. Use"
+                + " overlaps(...) to test a segment for a hit, or a sweep or ray cast to find"
+                + " where a moving shape first touches it");
+    }
+
+    /**
+     * A pair with a curved shape (an ellipse or a capsule) and any shape with area: a concave
+     * polygon by {@link CurvedClearance} (the whole polygon, not its nearest piece), anything
+     * else by {@link Supports}.
+     */
+    private static Contact curved(Shape a, Shape b, ShapeKind kb) {
+        if (!kb.hasArea()) {
+            throw withoutArea("b", b);
         }
-        return circlePolygon(c.x(), c.y(), c.r(), (Polygon) other, flip);
+        if (!Overlaps.test(a, b)) {
+            return null;
+        }
+        if (concave(a, ShapeKind.of(a))) {
+            return CurvedClearance.contact(b, (Polygon) a, true);
+        }
+        if (concave(b, kb)) {
+            return CurvedClearance.contact(a, (Polygon) b, false);
+        }
+        return Supports.contact(a, b);
+    }
+
+    /** Is the shape, of kind k, a concave polygon? */
+    private static boolean concave(Shape s, ShapeKind k) {
+        return k == ShapeKind.POLYGON && !((Polygon) s).isConvex();
     }
 
     /**
@@ -194,18 +255,17 @@ public final class Contacts {
      * A polygon's cached corners, or a rectangle's written into {@code scratch}, the same
      * values as {@link Polygons#corners}.
      */
-    private static double[] cornersOf(Shape s, double[] scratch) {
-        if (s instanceof Polygon p) {
-            return HiddenParts.corners(p);
-        }
-        Polygons.corners((Rect) s, scratch);
-        return scratch;
+    private static double[] cornersOf(Shape s, boolean polygon, double[] scratch) {
+        return polygon ? ((Polygon) s).corners() : Polygons.corners((Rect) s, scratch);
     }
 
-    /** Rectangles and polygons, at least one of them a polygon. */
-    private static Contact polygonal(Shape a, Shape b) {
-        boolean convexA = !(a instanceof Polygon p) || p.isConvex();
-        boolean convexB = !(b instanceof Polygon p) || p.isConvex();
+    /**
+     * Rectangles and polygons, at least one of them a polygon: each shape with whether it is
+     * the polygon (else the rectangle), as the caller's switch over the kinds found.
+     */
+    private static Contact polygonal(Shape a, boolean polygonA, Shape b, boolean polygonB) {
+        boolean convexA = !polygonA || ((Polygon) a).isConvex();
+        boolean convexB = !polygonB || ((Polygon) b).isConvex();
         if (convexA && convexB) {
             // Boxes that do not overlap are apart (touching ones too: the shapes are open).
             Rect r = a.bounds(), s = b.bounds();
@@ -215,8 +275,9 @@ public final class Contacts {
             // A polygon's cached corners, or a rectangle's written into this thread's scratch
             // array (two rectangles went to Contact.rectRect), so that nothing is allocated
             // but the answer. The search decides apart exactly and only reads them.
-            double[] scratch = a instanceof Rect || b instanceof Rect ? RECT_CORNERS.get() : null;
-            return FaceQuery.convexPolygons(cornersOf(a, scratch), windingOf(a), r, cornersOf(b, scratch), windingOf(b), s);
+            double[] scratch = polygonA && polygonB ? null : RECT_CORNERS.get();
+            return SeparatingAxis.contact(cornersOf(a, polygonA, scratch), windingOf(a, polygonA), r,
+                    cornersOf(b, polygonB, scratch), windingOf(b, polygonB), s);
         }
         return Clearance.polygons(Clearance.Parts.of(a), Clearance.Parts.of(b));
     }
@@ -226,8 +287,8 @@ public final class Contacts {
      * bottom-right, bottom-left, which with y growing down turns as +1 (a flat rectangle may
      * take either).
      */
-    private static int windingOf(Shape s) {
-        return s instanceof Polygon p ? HiddenParts.convexWinding(p) : 1;
+    private static int windingOf(Shape s, boolean polygon) {
+        return polygon ? ((Polygon) s).convexWinding() : 1;
     }
 
     /**

@@ -51,8 +51,8 @@ public final class ConvexSweep {
         if (vx == 0 && vy == 0) {
             return null;
         }
-        if (mover instanceof Polygon p && p.isConvex() && obstacle instanceof Polygon q && q.isConvex()) {
-            return ConvexPolygonSweep.timeOfImpact(p, vx, vy, q);
+        if (convexPolygon(mover) && convexPolygon(obstacle)) {
+            return ConvexPolygonSweep.timeOfImpact((Polygon) mover, vx, vy, (Polygon) obstacle);
         }
         return byPieces(mover, vx, vy, obstacle);
     }
@@ -114,19 +114,29 @@ public final class ConvexSweep {
         return left > or + slack || right < o.x() - slack || top > ob + slack || bottom < o.y() - slack;
     }
 
-    /** The shape's convex pieces: vertex lists (double[]), or the curved shape itself. */
-    public static List<Object> pieces(Shape s) {
-        List<Object> out = new ArrayList<>();
-        if (s instanceof Polygon p && !p.isConvex()) {
-            out.addAll(Clearance.Parts.of(s).pieces());
-        } else if (s instanceof Segment g) {
-            out.add(new double[] {g.x1(), g.y1(), g.x2(), g.y2()});
-        } else if (s instanceof Rect || s instanceof Polygon) {
-            out.add(Polygons.corners(s));
-        } else {
-            out.add(new Round(s));
-        }
-        return out;
+    /** Is the shape a convex polygon? */
+    private static boolean convexPolygon(Shape s) {
+        return ShapeKind.of(s) == ShapeKind.POLYGON && ((Polygon) s).isConvex();
+    }
+
+    /**
+     * The shape's convex pieces: vertex lists (double[]: a rectangle's or convex polygon's
+     * corners, a segment's two ends, a concave polygon's convex pieces), or the curved shape
+     * itself as a {@link Round}.
+     */
+    static List<Object> pieces(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE, CAPSULE, CIRCLE -> List.of(Round.of(s));
+            case RECT -> List.of(Polygons.corners(s));
+            case SEGMENT -> {
+                Segment g = (Segment) s;
+                yield List.of(new double[] {g.x1(), g.y1(), g.x2(), g.y2()});
+            }
+            case POLYGON -> {
+                Polygon p = (Polygon) s;
+                yield p.isConvex() ? List.of(Polygons.corners(p)) : new ArrayList<>(Clearance.Parts.of(p).pieces());
+            }
+        };
     }
 
     /**
@@ -139,36 +149,38 @@ public final class ConvexSweep {
         public final double x, y, a, b, c, s, x2, y2;
         public final boolean capsule;
 
-        public Round(Shape shape) {
+        private Round(Shape shape, boolean capsule, double x, double y, double x2, double y2,
+                      double a, double b, double c, double s) {
             this.shape = shape;
-            if (shape instanceof Capsule k) {
-                capsule = true;
-                x = k.x1();
-                y = k.y1();
-                x2 = k.x2();
-                y2 = k.y2();
-                a = b = k.r();
-                c = 1;
-                s = 0;
-            } else if (shape instanceof Ellipse e) {
-                capsule = false;
-                x = e.x();
-                y = e.y();
-                a = e.rx();
-                b = e.ry();
-                c = e.angle() == 0 ? 1 : Math.cos(e.angle());
-                s = e.angle() == 0 ? 0 : Math.sin(e.angle());
-                x2 = y2 = 0;
-            } else {
-                Circle o = (Circle) shape;
-                capsule = false;
-                x = o.x();
-                y = o.y();
-                a = b = o.r();
-                c = 1;
-                s = 0;
-                x2 = y2 = 0;
-            }
+            this.capsule = capsule;
+            this.x = x;
+            this.y = y;
+            this.x2 = x2;
+            this.y2 = y2;
+            this.a = a;
+            this.b = b;
+            this.c = c;
+            this.s = s;
+        }
+
+        /** The curved shape as a round piece. */
+        static Round of(Shape shape) {
+            return switch (ShapeKind.of(shape)) {
+                case ELLIPSE -> {
+                    Ellipse e = (Ellipse) shape;
+                    double c = e.angle() == 0 ? 1 : Math.cos(e.angle()), s = e.angle() == 0 ? 0 : Math.sin(e.angle());
+                    yield new Round(shape, false, e.x(), e.y(), 0, 0, e.rx(), e.ry(), c, s);
+                }
+                case CAPSULE -> {
+                    Capsule k = (Capsule) shape;
+                    yield new Round(shape, true, k.x1(), k.y1(), k.x2(), k.y2(), k.r(), k.r(), 1, 0);
+                }
+                case CIRCLE -> {
+                    Circle o = (Circle) shape;
+                    yield new Round(shape, false, o.x(), o.y(), 0, 0, o.r(), o.r(), 1, 0);
+                }
+                case RECT, SEGMENT, POLYGON -> throw new IllegalArgumentException("not a curved shape: " + shape);
+            };
         }
 
         /** How far it reaches along (nx, ny), as {@link Supports#support}. */

@@ -6,7 +6,7 @@ import hitbox.*;
  * The one table behind {@link Shape#overlaps}: every pair of shape kinds, in either order,
  * routed to the {@link Collide} method for that pair.
  *
- * <p>The kinds are taken in a fixed order (ellipse, capsule, circle, rectangle, segment, polygon): the pair is
+ * <p>The kinds are taken in {@link ShapeKind}'s order (ellipse, capsule, circle, rectangle, segment, polygon): the pair is
  * handed to the method of its earlier kind, with the arguments swapped if they came the
  * other way round, so each unordered pair has exactly one line of code and
  * {@code a.overlaps(b) == b.overlaps(a)} holds by construction.
@@ -21,6 +21,8 @@ import hitbox.*;
  * the same reason a swap never goes back through {@link #test}. At worst, when a kind's
  * {@code overlaps} is compiled on its own first with the {@code Collide} method inside it,
  * the loop makes the one call it would make to a {@code Collide} method compiled on its own.
+ * Each method is a switch expression over {@link ShapeKind#of} (its type checks), so a new
+ * kind does not compile until every kind's method has its case.
  *
  * <table>
  *   <caption>Which Collide method answers each pair</caption>
@@ -42,149 +44,137 @@ public final class Overlaps {
      * routes the second (and swaps the pair to the second's method if that kind comes
      * earlier). For the library's own callers, which hold two shapes of unknown kinds.
      */
-    public static boolean test(Shape a, Shape b) {
-        // The commonest kinds in a game first; the order here decides nothing, each kind's
-        // method does.
-        if (a instanceof Rect r) {
-            return rectWith(r, b);
-        }
-        if (a instanceof Circle c) {
-            return circleWith(c, b);
-        }
-        if (a instanceof Polygon p) {
-            return polygonWith(p, b);
-        }
-        if (a instanceof Segment s) {
-            return segmentWith(s, b);
-        }
-        if (a instanceof Ellipse e) {
-            return ellipseWith(e, b);
-        }
-        return capsuleWith((Capsule) a, b);
+    static boolean test(Shape a, Shape b) {
+        return switch (ShapeKind.of(a)) {
+            case ELLIPSE -> ellipseWith((Ellipse) a, b);
+            case CAPSULE -> capsuleWith((Capsule) a, b);
+            case CIRCLE -> circleWith((Circle) a, b);
+            case RECT -> rectWith((Rect) a, b);
+            case SEGMENT -> segmentWith((Segment) a, b);
+            case POLYGON -> polygonWith((Polygon) a, b);
+        };
     }
 
     /** An ellipse with anything: the first kind, so it answers every pair it is in. */
-    public static boolean ellipseWith(Ellipse e, Shape other) {
-        if (!TurnedEllipses.aligned(e) || other instanceof Ellipse f && !TurnedEllipses.aligned(f)) {
+    static boolean ellipseWith(Ellipse e, Shape other) {
+        ShapeKind k = ShapeKind.of(other);
+        if (!TurnedEllipses.aligned(e) || k == ShapeKind.ELLIPSE && !TurnedEllipses.aligned((Ellipse) other)) {
             return TurnedEllipses.turned(e, other); // a turned ellipse: the other shape in its frame
         }
         float x = e.x(), y = e.y(), a = e.rx(), b = e.ry();
-        if (other instanceof Ellipse f) {
-            return Collide.ellipseEllipse(x, y, a, b, f.x(), f.y(), f.rx(), f.ry());
-        }
-        if (other instanceof Capsule k) {
-            return Collide.ellipseCapsule(x, y, a, b, k.x1(), k.y1(), k.x2(), k.y2(), k.r());
-        }
-        if (other instanceof Circle c) {
-            return Collide.ellipseCircle(x, y, a, b, c.x(), c.y(), c.r());
-        }
-        if (other instanceof Rect r) {
-            return Collide.ellipseRect(x, y, a, b, r.x(), r.y(), r.w(), r.h());
-        }
-        if (other instanceof Segment s) {
-            return Collide.ellipseLine(x, y, a, b, s.x1(), s.y1(), s.x2(), s.y2());
-        }
-        return Collide.polygonEllipse(HiddenParts.raw((Polygon) other), x, y, a, b);
+        return switch (k) {
+            case ELLIPSE -> {
+                Ellipse f = (Ellipse) other;
+                yield Collide.ellipseEllipse(x, y, a, b, f.x(), f.y(), f.rx(), f.ry());
+            }
+            case CAPSULE -> {
+                Capsule c = (Capsule) other;
+                yield Collide.ellipseCapsule(x, y, a, b, c.x1(), c.y1(), c.x2(), c.y2(), c.r());
+            }
+            case CIRCLE -> {
+                Circle c = (Circle) other;
+                yield Collide.ellipseCircle(x, y, a, b, c.x(), c.y(), c.r());
+            }
+            case RECT -> {
+                Rect r = (Rect) other;
+                yield Collide.ellipseRect(x, y, a, b, r.x(), r.y(), r.w(), r.h());
+            }
+            case SEGMENT -> {
+                Segment s = (Segment) other;
+                yield Collide.ellipseLine(x, y, a, b, s.x1(), s.y1(), s.x2(), s.y2());
+            }
+            case POLYGON -> Collide.polygonEllipse(((Polygon) other).raw(), x, y, a, b);
+        };
     }
 
     /** A capsule with anything: an ellipse, the one earlier kind, takes the pair swapped. */
-    public static boolean capsuleWith(Capsule k, Shape other) {
-        if (other instanceof Ellipse e) {
-            return ellipseWith(e, k);
-        }
+    static boolean capsuleWith(Capsule k, Shape other) {
         float x1 = k.x1(), y1 = k.y1(), x2 = k.x2(), y2 = k.y2(), r = k.r();
-        if (other instanceof Capsule o) {
-            return Collide.capsuleCapsule(x1, y1, x2, y2, r, o.x1(), o.y1(), o.x2(), o.y2(), o.r());
-        }
-        if (other instanceof Circle c) {
-            return Collide.capsuleCircle(x1, y1, x2, y2, r, c.x(), c.y(), c.r());
-        }
-        if (other instanceof Rect q) {
-            return Collide.capsuleRect(x1, y1, x2, y2, r, q.x(), q.y(), q.w(), q.h());
-        }
-        if (other instanceof Segment s) {
-            return Collide.capsuleLine(x1, y1, x2, y2, r, s.x1(), s.y1(), s.x2(), s.y2());
-        }
-        return Collide.polygonCapsule(HiddenParts.raw((Polygon) other), x1, y1, x2, y2, r);
+        return switch (ShapeKind.of(other)) {
+            case ELLIPSE -> ellipseWith((Ellipse) other, k);
+            case CAPSULE -> {
+                Capsule o = (Capsule) other;
+                yield Collide.capsuleCapsule(x1, y1, x2, y2, r, o.x1(), o.y1(), o.x2(), o.y2(), o.r());
+            }
+            case CIRCLE -> {
+                Circle c = (Circle) other;
+                yield Collide.capsuleCircle(x1, y1, x2, y2, r, c.x(), c.y(), c.r());
+            }
+            case RECT -> {
+                Rect q = (Rect) other;
+                yield Collide.capsuleRect(x1, y1, x2, y2, r, q.x(), q.y(), q.w(), q.h());
+            }
+            case SEGMENT -> {
+                Segment s = (Segment) other;
+                yield Collide.capsuleLine(x1, y1, x2, y2, r, s.x1(), s.y1(), s.x2(), s.y2());
+            }
+            case POLYGON -> Collide.polygonCapsule(((Polygon) other).raw(), x1, y1, x2, y2, r);
+        };
     }
 
     /** A circle with anything: a capsule or an ellipse, the earlier kinds, takes the pair swapped. */
-    public static boolean circleWith(Circle c, Shape other) {
-        if (other instanceof Circle d) {
-            return Collide.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
-        }
-        if (other instanceof Rect r) {
-            return Collide.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
-        }
-        if (other instanceof Segment s) {
-            return Collide.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
-        }
-        if (other instanceof Polygon p) {
-            return Collide.polygonCircle(HiddenParts.raw(p), c.x(), c.y(), c.r());
-        }
-        if (other instanceof Capsule k) {
-            return capsuleWith(k, c);
-        }
-        return ellipseWith((Ellipse) other, c);
+    static boolean circleWith(Circle c, Shape other) {
+        return switch (ShapeKind.of(other)) {
+            case ELLIPSE -> ellipseWith((Ellipse) other, c);
+            case CAPSULE -> capsuleWith((Capsule) other, c);
+            case CIRCLE -> {
+                Circle d = (Circle) other;
+                yield Collide.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
+            }
+            case RECT -> {
+                Rect r = (Rect) other;
+                yield Collide.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
+            }
+            case SEGMENT -> {
+                Segment s = (Segment) other;
+                yield Collide.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
+            }
+            case POLYGON -> Collide.polygonCircle(((Polygon) other).raw(), c.x(), c.y(), c.r());
+        };
     }
 
     /** A rectangle with anything: a circle, a capsule or an ellipse takes the pair swapped. */
-    public static boolean rectWith(Rect r, Shape other) {
-        if (other instanceof Rect s) {
-            return Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
-        }
-        if (other instanceof Segment s) {
-            return Collide.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), r.x(), r.y(), r.w(), r.h());
-        }
-        if (other instanceof Polygon p) {
-            return Collide.polygonRect(HiddenParts.raw(p), r.x(), r.y(), r.w(), r.h());
-        }
-        if (other instanceof Circle c) {
-            return circleWith(c, r);
-        }
-        if (other instanceof Capsule k) {
-            return capsuleWith(k, r);
-        }
-        return ellipseWith((Ellipse) other, r);
+    static boolean rectWith(Rect r, Shape other) {
+        return switch (ShapeKind.of(other)) {
+            case ELLIPSE -> ellipseWith((Ellipse) other, r);
+            case CAPSULE -> capsuleWith((Capsule) other, r);
+            case CIRCLE -> circleWith((Circle) other, r);
+            case RECT -> {
+                Rect s = (Rect) other;
+                yield Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
+            }
+            case SEGMENT -> {
+                Segment s = (Segment) other;
+                yield Collide.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), r.x(), r.y(), r.w(), r.h());
+            }
+            case POLYGON -> Collide.polygonRect(((Polygon) other).raw(), r.x(), r.y(), r.w(), r.h());
+        };
     }
 
     /** A segment with anything: every kind but a polygon comes earlier and takes the pair swapped. */
-    public static boolean segmentWith(Segment s, Shape other) {
-        if (other instanceof Segment t) {
-            return Collide.lineLine(s.x1(), s.y1(), s.x2(), s.y2(), t.x1(), t.y1(), t.x2(), t.y2());
-        }
-        if (other instanceof Polygon p) {
-            return Collide.polygonLine(HiddenParts.raw(p), s.x1(), s.y1(), s.x2(), s.y2());
-        }
-        if (other instanceof Rect r) {
-            return rectWith(r, s);
-        }
-        if (other instanceof Circle c) {
-            return circleWith(c, s);
-        }
-        if (other instanceof Capsule k) {
-            return capsuleWith(k, s);
-        }
-        return ellipseWith((Ellipse) other, s);
+    static boolean segmentWith(Segment s, Shape other) {
+        return switch (ShapeKind.of(other)) {
+            case ELLIPSE -> ellipseWith((Ellipse) other, s);
+            case CAPSULE -> capsuleWith((Capsule) other, s);
+            case CIRCLE -> circleWith((Circle) other, s);
+            case RECT -> rectWith((Rect) other, s);
+            case SEGMENT -> {
+                Segment t = (Segment) other;
+                yield Collide.lineLine(s.x1(), s.y1(), s.x2(), s.y2(), t.x1(), t.y1(), t.x2(), t.y2());
+            }
+            case POLYGON -> Collide.polygonLine(((Polygon) other).raw(), s.x1(), s.y1(), s.x2(), s.y2());
+        };
     }
 
     /** A polygon with anything: the last kind, so every other kind takes the pair swapped. */
-    public static boolean polygonWith(Polygon p, Shape other) {
-        if (other instanceof Polygon q) {
-            return Polygons.overlap(p, q);
-        }
-        if (other instanceof Rect r) {
-            return rectWith(r, p);
-        }
-        if (other instanceof Circle c) {
-            return circleWith(c, p);
-        }
-        if (other instanceof Segment s) {
-            return segmentWith(s, p);
-        }
-        if (other instanceof Capsule k) {
-            return capsuleWith(k, p);
-        }
-        return ellipseWith((Ellipse) other, p);
+    static boolean polygonWith(Polygon p, Shape other) {
+        return switch (ShapeKind.of(other)) {
+            case ELLIPSE -> ellipseWith((Ellipse) other, p);
+            case CAPSULE -> capsuleWith((Capsule) other, p);
+            case CIRCLE -> circleWith((Circle) other, p);
+            case RECT -> rectWith((Rect) other, p);
+            case SEGMENT -> segmentWith((Segment) other, p);
+            case POLYGON -> Polygons.overlap(p, (Polygon) other);
+        };
     }
 }

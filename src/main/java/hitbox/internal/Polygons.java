@@ -626,11 +626,17 @@ public final class Polygons {
      * {@link Rect#right()} and {@link Rect#bottom()}); a rectangle of width or height 0 gives
      * four corners that lie on a segment or at a point.
      */
-    public static double[] corners(Shape s) {
-        if (s instanceof Rect r) {
-            return corners(r, new double[8]);
-        }
-        return toDouble(HiddenParts.raw((Polygon) s));
+    static double[] corners(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case RECT -> corners((Rect) s, new double[8]);
+            case POLYGON -> toDouble(((Polygon) s).raw());
+            case ELLIPSE, CAPSULE, CIRCLE, SEGMENT -> throw notStraight(s);
+        };
+    }
+
+    /** The refusal of a shape that has no corners, for the library's own callers (a bug if it happens). */
+    static IllegalArgumentException notStraight(Shape s) {
+        return new IllegalArgumentException("a rectangle or a polygon was expected, not " + s);
     }
 
     /** A rectangle's corners as {@link #corners(Shape)} gives them, written into {@code into} (length 8). */

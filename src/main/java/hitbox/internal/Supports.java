@@ -22,28 +22,57 @@ public final class Supports {
 
     private static final int STEPS = 72;
 
-    /** Is the shape convex (every shape but a concave polygon and a segment)? */
-    public static boolean convex(Shape s) {
-        return !(s instanceof Segment) && !(s instanceof Polygon p && !p.isConvex());
+    /**
+     * How far the shape reaches along (nx, ny): the largest dot product of its points with it
+     * (for a concave polygon, of its outline's, as for its convex hull).
+     */
+    static double support(Shape s, double nx, double ny) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE -> TurnedEllipses.support((Ellipse) s, nx, ny);
+            case CAPSULE -> {
+                Capsule k = (Capsule) s;
+                yield Math.max(k.x1() * nx + k.y1() * ny, k.x2() * nx + k.y2() * ny) + k.r();
+            }
+            case CIRCLE -> {
+                Circle c = (Circle) s;
+                yield c.x() * nx + c.y() * ny + c.r();
+            }
+            case SEGMENT -> {
+                Segment g = (Segment) s;
+                yield Math.max(g.x1() * nx + g.y1() * ny, g.x2() * nx + g.y2() * ny);
+            }
+            case RECT -> reach(Polygons.corners((Rect) s, new double[8]), nx, ny);
+            case POLYGON -> reach(((Polygon) s).corners(), nx, ny); // cached, only read
+        };
     }
 
-    /** How far the shape reaches along (nx, ny): the largest dot product of its points with it. */
-    public static double support(Shape s, double nx, double ny) {
-        if (s instanceof Circle c) {
-            return c.x() * nx + c.y() * ny + c.r();
-        }
-        if (s instanceof Ellipse e) {
-            return TurnedEllipses.support(e, nx, ny);
-        }
-        if (s instanceof Capsule k) {
-            return Math.max(k.x1() * nx + k.y1() * ny, k.x2() * nx + k.y2() * ny) + k.r();
-        }
-        double[] xy = Polygons.corners(s);
+    /** The largest dot product of the vertices with (nx, ny). */
+    private static double reach(double[] xy, double nx, double ny) {
         double best = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < xy.length; i += 2) {
             best = Math.max(best, xy[i] * nx + xy[i + 1] * ny);
         }
         return best;
+    }
+
+    /**
+     * The straight edges whose normals the search tries, as a closed outline of vertices:
+     * a rectangle's or polygon's corners, a capsule's segment (its two sides), none for a
+     * round shape; a segment, as a capsule's.
+     */
+    static double[] straightEdges(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE, CIRCLE -> new double[0];
+            case CAPSULE -> {
+                Capsule k = (Capsule) s;
+                yield new double[] {k.x1(), k.y1(), k.x2(), k.y2()};
+            }
+            case SEGMENT -> {
+                Segment g = (Segment) s;
+                yield new double[] {g.x1(), g.y1(), g.x2(), g.y2()};
+            }
+            case RECT, POLYGON -> Polygons.corners(s);
+        };
     }
 
     /** The push for direction angle t: how far b must move along (cos t, sin t) to clear a. */
@@ -67,8 +96,7 @@ public final class Supports {
             }
         }
         for (Shape s : new Shape[] {a, b}) {
-            double[] xy = s instanceof Capsule k ? new double[] {k.x1(), k.y1(), k.x2(), k.y2()}
-                    : s instanceof Rect || s instanceof Polygon ? Polygons.corners(s) : new double[0];
+            double[] xy = straightEdges(s);
             int n = xy.length / 2;
             for (int i = 0; i < n; i++) {
                 int j = (i + 1) % n;

@@ -81,19 +81,14 @@ public final class TurnedEllipses {
 
     /** Has the shape an inside (area)? */
     private static boolean hasArea(Shape s) {
-        if (s instanceof Circle c) {
-            return c.r() > 0;
-        }
-        if (s instanceof Rect r) {
-            return r.w() > 0 && r.h() > 0;
-        }
-        if (s instanceof Ellipse e) {
-            return e.rx() > 0 && e.ry() > 0;
-        }
-        if (s instanceof Capsule k) {
-            return k.r() > 0;
-        }
-        return s instanceof Polygon;
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE -> ((Ellipse) s).rx() > 0 && ((Ellipse) s).ry() > 0;
+            case CAPSULE -> ((Capsule) s).r() > 0;
+            case CIRCLE -> ((Circle) s).r() > 0;
+            case RECT -> ((Rect) s).w() > 0 && ((Rect) s).h() > 0;
+            case SEGMENT -> false;
+            case POLYGON -> true;
+        };
     }
 
     /**
@@ -108,52 +103,54 @@ public final class TurnedEllipses {
         if (e.rx() == 0 || e.ry() == 0) {
             return flat(flatSegment(e), other);
         }
-        if (other instanceof Ellipse f && f.rx() > 0 && f.ry() > 0) {
-            if (aligned(f) || before(f, e)) {
-                return ellipses(f, e);
-            }
-            return ellipses(e, f);
-        }
-        if (other instanceof Ellipse f && !aligned(f) && (f.rx() > 0 || f.ry() > 0)) {
-            return turned(e, flatSegment(f)); // a flat turned ellipse: its open segment
-        }
         Frame fr = new Frame(e);
         double a = e.rx(), b = e.ry();
-        if (other instanceof Circle c) {
-            double u = fr.u(c.x(), c.y()), v = fr.v(c.x(), c.y());
-            if (Ellipses.side(u, v, 0, 0, a, b) < 0) {
-                return true;
+        return switch (ShapeKind.of(other)) {
+            case ELLIPSE -> {
+                Ellipse f = (Ellipse) other;
+                if (f.rx() > 0 && f.ry() > 0) {
+                    yield aligned(f) || before(f, e) ? ellipses(f, e) : ellipses(e, f);
+                }
+                if (!aligned(f) && (f.rx() > 0 || f.ry() > 0)) {
+                    yield turned(e, flatSegment(f)); // a flat turned ellipse: its open segment
+                }
+                // An aligned flat ellipse is its flat box, as a rectangle below; both radii 0 is a point.
+                yield turned(e, new Rect(f.x() - f.rx(), f.y() - f.ry(), 2 * f.rx(), 2 * f.ry()));
             }
-            return c.r() > 0 && (Ellipses.side(u, v, 0, 0, a, b) == 0 || Ellipses.distance(a, b, u, v, null) < c.r());
-        }
-        if (other instanceof Segment g) {
-            return segmentIn(fr, a, b, g.x1(), g.y1(), g.x2(), g.y2(), false);
-        }
-        if (other instanceof Capsule k) {
-            if (segmentIn(fr, a, b, k.x1(), k.y1(), k.x2(), k.y2(), k.r() > 0)) {
-                return true;
+            case CAPSULE -> {
+                Capsule k = (Capsule) other;
+                if (segmentIn(fr, a, b, k.x1(), k.y1(), k.x2(), k.y2(), k.r() > 0)) {
+                    yield true;
+                }
+                yield k.r() > 0 && Ellipses.segmentDistance(a, b, fr.u(k.x1(), k.y1()), fr.v(k.x1(), k.y1()),
+                        fr.u(k.x2(), k.y2()), fr.v(k.x2(), k.y2())) < k.r();
             }
-            return k.r() > 0 && Ellipses.segmentDistance(a, b, fr.u(k.x1(), k.y1()), fr.v(k.x1(), k.y1()),
-                    fr.u(k.x2(), k.y2()), fr.v(k.x2(), k.y2())) < k.r();
-        }
-        if (other instanceof Ellipse f) {
-            // An aligned flat ellipse is its flat box, as below; both radii 0 is a point.
-            return turned(e, new Rect(f.x() - f.rx(), f.y() - f.ry(), 2 * f.rx(), 2 * f.ry()));
-        }
-        if (other instanceof Rect r) {
-            double right = (double) r.x() + r.w(), bottom = (double) r.y() + r.h();
-            if (r.w() == 0 || r.h() == 0) {
-                return segmentIn(fr, a, b, r.x(), r.y(), right, bottom, false);
+            case CIRCLE -> {
+                Circle c = (Circle) other;
+                double u = fr.u(c.x(), c.y()), v = fr.v(c.x(), c.y());
+                if (Ellipses.side(u, v, 0, 0, a, b) < 0) {
+                    yield true;
+                }
+                yield c.r() > 0 && (Ellipses.side(u, v, 0, 0, a, b) == 0 || Ellipses.distance(a, b, u, v, null) < c.r());
             }
-            double[] xy = {r.x(), r.y(), right, r.y(), right, bottom, r.x(), bottom};
-            return outlineIn(fr, a, b, xy) || Collide.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
-        }
-        float[] raw = HiddenParts.raw((Polygon) other);
-        double[] xy = new double[raw.length];
-        for (int i = 0; i < raw.length; i++) {
-            xy[i] = raw[i];
-        }
-        return outlineIn(fr, a, b, xy) || Polygons.contains(raw, e.x(), e.y());
+            case RECT -> {
+                Rect r = (Rect) other;
+                double right = (double) r.x() + r.w(), bottom = (double) r.y() + r.h();
+                if (r.w() == 0 || r.h() == 0) {
+                    yield segmentIn(fr, a, b, r.x(), r.y(), right, bottom, false);
+                }
+                double[] xy = {r.x(), r.y(), right, r.y(), right, bottom, r.x(), bottom};
+                yield outlineIn(fr, a, b, xy) || Collide.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
+            }
+            case SEGMENT -> {
+                Segment g = (Segment) other;
+                yield segmentIn(fr, a, b, g.x1(), g.y1(), g.x2(), g.y2(), false);
+            }
+            case POLYGON -> {
+                float[] raw = ((Polygon) other).raw();
+                yield outlineIn(fr, a, b, Polygons.toDouble(raw)) || Polygons.contains(raw, e.x(), e.y());
+            }
+        };
     }
 
     /** Does the segment (world coordinates) reach into the turned real ellipse (or its closed form)? */
@@ -182,15 +179,25 @@ public final class TurnedEllipses {
         if (hasArea(other)) {
             return Overlaps.test(s, other);
         }
-        Segment o;
-        if (other instanceof Segment g) {
-            o = g;
-        } else if (other instanceof Rect r && (r.w() > 0 || r.h() > 0)) {
-            o = new Segment(r.x(), r.y(), r.x() + r.w(), r.y() + r.h());
-        } else if (other instanceof Ellipse f && (f.rx() > 0 || f.ry() > 0)) {
-            o = aligned(f) ? new Segment(f.x() - f.rx(), f.y() - f.ry(), f.x() + f.rx(), f.y() + f.ry()) : flatSegment(f);
-        } else {
-            return false; // a point-like shape, or a capsule of radius 0: no inside, no crossing
+        Segment o = switch (ShapeKind.of(other)) {
+            case SEGMENT -> (Segment) other;
+            case RECT -> {
+                Rect r = (Rect) other;
+                yield r.w() > 0 || r.h() > 0 ? new Segment(r.x(), r.y(), r.x() + r.w(), r.y() + r.h()) : null;
+            }
+            case ELLIPSE -> {
+                Ellipse f = (Ellipse) other;
+                if (!(f.rx() > 0 || f.ry() > 0)) {
+                    yield null;
+                }
+                yield aligned(f) ? new Segment(f.x() - f.rx(), f.y() - f.ry(), f.x() + f.rx(), f.y() + f.ry()) : flatSegment(f);
+            }
+            // a point-like shape, or a capsule of radius 0: no inside, no crossing (shapes
+            // with area were answered above)
+            case CIRCLE, CAPSULE, POLYGON -> null;
+        };
+        if (o == null) {
+            return false;
         }
         return Lines.orient(s.x1(), s.y1(), s.x2(), s.y2(), o.x1(), o.y1())
                 * Lines.orient(s.x1(), s.y1(), s.x2(), s.y2(), o.x2(), o.y2()) < 0

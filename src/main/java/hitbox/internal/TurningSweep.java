@@ -257,16 +257,18 @@ public final class TurningSweep {
 
     /** The obstacle as convex vertex lists; circles, ellipses and capsules are one piece, kept as the shape. */
     private static List<double[]> pieces(Shape s) {
-        if (s instanceof Polygon p && !p.isConvex()) {
-            return Clearance.Parts.of(s).pieces();
-        }
-        if (s instanceof Segment g) {
-            return List.of(new double[] {g.x1(), g.y1(), g.x2(), g.y2()});
-        }
-        if (s instanceof Rect || s instanceof Polygon) {
-            return List.of(Polygons.corners(s));
-        }
-        return List.of(new double[0]);
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE, CAPSULE, CIRCLE -> List.of(new double[0]);
+            case RECT -> List.of(Polygons.corners(s));
+            case SEGMENT -> {
+                Segment g = (Segment) s;
+                yield List.of(new double[] {g.x1(), g.y1(), g.x2(), g.y2()});
+            }
+            case POLYGON -> {
+                Polygon p = (Polygon) s;
+                yield p.isConvex() ? List.of(Polygons.corners(p)) : Clearance.Parts.of(p).pieces();
+            }
+        };
     }
 
     /**

@@ -7,6 +7,7 @@ import hitbox.Polygon;
 import hitbox.Rect;
 import hitbox.Segment;
 import hitbox.Shape;
+import hitbox.ShapeKind;
 import processing.core.PConstants;
 import processing.core.PGraphics;
 
@@ -19,33 +20,70 @@ public final class Draw {
     }
 
     /**
-     * Draws any shape: a circle or an ellipse by its radii, a rect in CORNER mode, a segment as
-     * a line, a polygon as a closed shape, a capsule as its outline (two half circles joined).
+     * Draws any shape: a circle or an ellipse by its radii (a turned ellipse turned about its
+     * centre, as {@code rotate()} turns it), a rect in CORNER mode, a segment as a line, a
+     * polygon as a closed shape, a capsule as its outline (two half circles joined).
      *
      * @param g     where to draw, e.g. the sketch's {@code g}
      * @param shape the shape
+     * @throws IllegalArgumentException if {@code shape} is null
      */
     public static void shape(PGraphics g, Shape shape) {
-        if (shape instanceof Circle c) {
-            g.ellipseMode(PConstants.CENTER);
-            g.ellipse(c.x(), c.y(), 2 * c.r(), 2 * c.r());
-        } else if (shape instanceof Rect r) {
-            g.rectMode(PConstants.CORNER);
-            g.rect(r.x(), r.y(), r.w(), r.h());
-        } else if (shape instanceof Segment s) {
-            g.line(s.x1(), s.y1(), s.x2(), s.y2());
-        } else if (shape instanceof Ellipse e) {
-            g.ellipseMode(PConstants.CENTER);
-            g.ellipse(e.x(), e.y(), 2 * e.rx(), 2 * e.ry());
-        } else if (shape instanceof Capsule k) {
-            capsule(g, k);
-        } else if (shape instanceof Polygon p) {
-            g.beginShape();
-            for (int i = 0; i < p.size(); i++) {
-                g.vertex(p.x(i), p.y(i));
+        // A switch expression over the kinds, as every operation of the library: a new kind of
+        // shape does not compile until it can be drawn.
+        PGraphics drawn = switch (ShapeKind.of(shape)) {
+            case ELLIPSE -> ellipse(g, (Ellipse) shape);
+            case CAPSULE -> {
+                capsule(g, (Capsule) shape);
+                yield g;
             }
-            g.endShape(PConstants.CLOSE);
+            case CIRCLE -> circle(g, (Circle) shape);
+            case RECT -> rect(g, (Rect) shape);
+            case SEGMENT -> segment(g, (Segment) shape);
+            case POLYGON -> polygon(g, (Polygon) shape);
+        };
+        assert drawn == g;
+    }
+
+    private static PGraphics circle(PGraphics g, Circle c) {
+        g.ellipseMode(PConstants.CENTER);
+        g.ellipse(c.x(), c.y(), 2 * c.r(), 2 * c.r());
+        return g;
+    }
+
+    private static PGraphics rect(PGraphics g, Rect r) {
+        g.rectMode(PConstants.CORNER);
+        g.rect(r.x(), r.y(), r.w(), r.h());
+        return g;
+    }
+
+    private static PGraphics segment(PGraphics g, Segment s) {
+        g.line(s.x1(), s.y1(), s.x2(), s.y2());
+        return g;
+    }
+
+    /** An ellipse, turned about its centre by its angle (clockwise on screen, as {@code rotate()}). */
+    private static PGraphics ellipse(PGraphics g, Ellipse e) {
+        g.ellipseMode(PConstants.CENTER);
+        if (e.angle() == 0) {
+            g.ellipse(e.x(), e.y(), 2 * e.rx(), 2 * e.ry());
+            return g;
         }
+        g.pushMatrix();
+        g.translate(e.x(), e.y());
+        g.rotate(e.angle());
+        g.ellipse(0, 0, 2 * e.rx(), 2 * e.ry());
+        g.popMatrix();
+        return g;
+    }
+
+    private static PGraphics polygon(PGraphics g, Polygon p) {
+        g.beginShape();
+        for (int i = 0; i < p.size(); i++) {
+            g.vertex(p.x(i), p.y(i));
+        }
+        g.endShape(PConstants.CLOSE);
+        return g;
     }
 
     /**
