@@ -60,22 +60,26 @@ public record Capsule(float x1, float y1, float x2, float y2, float r) implement
     }
 
     /** The shape's smallest x, exactly (the extent {@link #bounds()} rounds outwards). */
-    double minX() {
+    @Override
+    public double minX() {
         return Math.min(x1, x2) - (double) r;
     }
 
     /** The shape's smallest y, exactly. */
-    double minY() {
+    @Override
+    public double minY() {
         return Math.min(y1, y2) - (double) r;
     }
 
     /** The shape's largest x, exactly. */
-    double maxX() {
+    @Override
+    public double maxX() {
         return Math.max(x1, x2) + (double) r;
     }
 
     /** The shape's largest y, exactly. */
-    double maxY() {
+    @Override
+    public double maxY() {
         return Math.max(y1, y2) + (double) r;
     }
 

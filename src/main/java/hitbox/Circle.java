@@ -49,22 +49,26 @@ public record Circle(float x, float y, float r) implements Shape {
     }
 
     /** The shape's smallest x, exactly (the extent {@link #bounds()} rounds outwards). */
-    double minX() {
+    @Override
+    public double minX() {
         return (double) x - r;
     }
 
     /** The shape's smallest y, exactly. */
-    double minY() {
+    @Override
+    public double minY() {
         return (double) y - r;
     }
 
     /** The shape's largest x, exactly. */
-    double maxX() {
+    @Override
+    public double maxX() {
         return (double) x + r;
     }
 
     /** The shape's largest y, exactly. */
-    double maxY() {
+    @Override
+    public double maxY() {
         return (double) y + r;
     }
 

@@ -101,22 +101,26 @@ public record Ellipse(float x, float y, float rx, float ry, float angle) impleme
      * The shape's smallest x (the extent {@link #bounds()} rounds outwards): exact when aligned,
      * a turned ellipse's a hair beyond, widened past the rounding of its cos and sin.
      */
-    double minX() {
+    @Override
+    public double minX() {
         return (double) x - TurnedEllipses.halfWidth(this);
     }
 
     /** The shape's smallest y, as {@link #minX()}. */
-    double minY() {
+    @Override
+    public double minY() {
         return (double) y - TurnedEllipses.halfHeight(this);
     }
 
     /** The shape's largest x, as {@link #minX()}. */
-    double maxX() {
+    @Override
+    public double maxX() {
         return (double) x + TurnedEllipses.halfWidth(this);
     }
 
     /** The shape's largest y, as {@link #minX()}. */
-    double maxY() {
+    @Override
+    public double maxY() {
         return (double) y + TurnedEllipses.halfHeight(this);
     }
 

@@ -288,6 +288,30 @@ public final class Polygon implements Shape {
         return new Segment(xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]);
     }
 
+    /** {@inheritDoc} The edge of the polygon's {@link #bounds()} box, which holds the outline. */
+    @Override
+    public double minX() {
+        return bounds.x();
+    }
+
+    /** {@inheritDoc} */
+    @Override
+    public double minY() {
+        return bounds.y();
+    }
+
+    /** {@inheritDoc} */
+    @Override
+    public double maxX() {
+        return (double) bounds.x() + bounds.w();
+    }
+
+    /** {@inheritDoc} */
+    @Override
+    public double maxY() {
+        return (double) bounds.y() + bounds.h();
+    }
+
     /** @return a copy of the coordinates, {@code x0, y0, x1, y1, ...}, never null */
     public float[] coordinates() {
         return xy.clone();

@@ -121,7 +121,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      */
     public RayHit cast(Shape shape) {
         Check.notNull("shape", shape);
-        double limit = limit(dx, dy, maxDistance);
+        double limit = RayCast.limit(dx, dy, maxDistance);
         return switch (ShapeKind.of(shape)) {
             case ELLIPSE -> castEllipse((Ellipse) shape, limit);
             case CAPSULE -> castCapsule((Capsule) shape, limit);

@@ -112,22 +112,26 @@ public record Rect(float x, float y, float w, float h) implements Shape {
     }
 
     /** The left edge, as {@link Shape}'s extents are read (see {@link Bounds}). */
-    double minX() {
+    @Override
+    public double minX() {
         return x;
     }
 
     /** The top edge. */
-    double minY() {
+    @Override
+    public double minY() {
         return y;
     }
 
     /** The right edge, exactly: {@code x + w} in double. */
-    double maxX() {
+    @Override
+    public double maxX() {
         return (double) x + w;
     }
 
     /** The bottom edge, exactly: {@code y + h} in double. */
-    double maxY() {
+    @Override
+    public double maxY() {
         return (double) y + h;
     }
 

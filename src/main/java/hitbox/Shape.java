@@ -69,4 +69,35 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * @throws IllegalArgumentException if the move gives a NaN or infinite coordinate
      */
     Shape translated(float dx, float dy);
+
+    /**
+     * The shape's smallest x, in double: exact for circles, rectangles, segments and capsules
+     * (a sum of two floats is exact in double), a hair outside for a turned ellipse (widened
+     * past its rounding) and a polygon (its {@link #bounds()} box's edge). {@link #bounds()}
+     * is these four extents rounded outwards to floats.
+     *
+     * @return the smallest x, at or below every point of the shape
+     */
+    double minX();
+
+    /**
+     * The shape's smallest y, as {@link #minX()}.
+     *
+     * @return the smallest y, at or below every point of the shape
+     */
+    double minY();
+
+    /**
+     * The shape's largest x, as {@link #minX()}.
+     *
+     * @return the largest x, at or above every point of the shape
+     */
+    double maxX();
+
+    /**
+     * The shape's largest y, as {@link #minX()}.
+     *
+     * @return the largest y, at or above every point of the shape
+     */
+    double maxY();
 }

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.*;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -121,7 +123,7 @@ class ShapeKindDispatchTest {
             }));
             tests.add(each(name, "ConvexSweep.pieces", s -> assertTrue(!ConvexSweep.pieces(s).isEmpty())));
             tests.add(each(name, "Edges.crossed", s -> {
-                assertEquals(Edges.LEFT | Edges.TOP, Edges.crossed(s, 200, 200), "it reaches past x = 0 and y = 0");
+                assertEquals(Side.LEFT.bit() | Side.TOP.bit(), Edges.crossed(s, 200, 200), "it reaches past x = 0 and y = 0");
                 assertEquals(Edges.NONE, Edges.crossed(s.translated(100, 100), 200, 200));
             }));
             tests.add(each(name, "Grid.overlapsSolid", s -> {

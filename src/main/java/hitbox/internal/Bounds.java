@@ -3,64 +3,34 @@ package hitbox.internal;
 import hitbox.*;
 
 /**
- * Bounding boxes: each shape's extent in {@code double}, read through {@link ShapeKind} from
- * the shape's own {@code minX()}, {@code minY()}, {@code maxX()} and {@code maxY()} (exact:
- * the sums of two floats that make a circle's or a rectangle's far edges are exact in double;
- * a turned ellipse's widened past its rounding), or a polygon's cached
- * {@link Polygon#bounds() box}; and the float {@link Rect} that holds an extent, rounded
- * outwards. {@link Shape#bounds()} and {@link Hybrid} both read the same extents, so the two
+ * Bounding boxes: each shape's extent in {@code double}, which each kind answers itself
+ * ({@link Shape#minX()} and its three companions: exact for the kinds whose edges are sums of
+ * two floats, a hair outside for a turned ellipse and a polygon), and the float {@link Rect}
+ * that holds an extent, rounded outwards. {@link Shape#bounds()} and {@link Hybrid} both read the same extents, so the two
  * never disagree.
  */
 public final class Bounds {
     private Bounds() {
     }
 
-    /** The shape's smallest x. */
-    static double left(Shape s) {
-        return switch (ShapeKind.of(s)) {
-            case ELLIPSE -> ((Ellipse) s).minX();
-            case CAPSULE -> ((Capsule) s).minX();
-            case CIRCLE -> ((Circle) s).minX();
-            case RECT -> ((Rect) s).minX();
-            case SEGMENT -> ((Segment) s).minX();
-            case POLYGON -> ((Polygon) s).bounds().x(); // its cached box
-        };
+    /** The shape's smallest x ({@link Shape#minX()}). */
+    public static double left(Shape s) {
+        return s.minX();
     }
 
-    /** The shape's smallest y. */
-    static double top(Shape s) {
-        return switch (ShapeKind.of(s)) {
-            case ELLIPSE -> ((Ellipse) s).minY();
-            case CAPSULE -> ((Capsule) s).minY();
-            case CIRCLE -> ((Circle) s).minY();
-            case RECT -> ((Rect) s).minY();
-            case SEGMENT -> ((Segment) s).minY();
-            case POLYGON -> ((Polygon) s).bounds().y(); // its cached box
-        };
+    /** The shape's smallest y ({@link Shape#minY()}). */
+    public static double top(Shape s) {
+        return s.minY();
     }
 
-    /** The shape's largest x (for a polygon a hair beyond: its cached box's edge). */
-    static double right(Shape s) {
-        return switch (ShapeKind.of(s)) {
-            case ELLIPSE -> ((Ellipse) s).maxX();
-            case CAPSULE -> ((Capsule) s).maxX();
-            case CIRCLE -> ((Circle) s).maxX();
-            case RECT -> ((Rect) s).maxX();
-            case SEGMENT -> ((Segment) s).maxX();
-            case POLYGON -> (double) ((Polygon) s).bounds().x() + ((Polygon) s).bounds().w(); // its cached box
-        };
+    /** The shape's largest x ({@link Shape#maxX()}). */
+    public static double right(Shape s) {
+        return s.maxX();
     }
 
-    /** The shape's largest y (for a polygon a hair beyond). */
-    static double bottom(Shape s) {
-        return switch (ShapeKind.of(s)) {
-            case ELLIPSE -> ((Ellipse) s).maxY();
-            case CAPSULE -> ((Capsule) s).maxY();
-            case CIRCLE -> ((Circle) s).maxY();
-            case RECT -> ((Rect) s).maxY();
-            case SEGMENT -> ((Segment) s).maxY();
-            case POLYGON -> (double) ((Polygon) s).bounds().y() + ((Polygon) s).bounds().h(); // its cached box
-        };
+    /** The shape's largest y ({@link Shape#maxY()}). */
+    public static double bottom(Shape s) {
+        return s.maxY();
     }
 
     /**

@@ -60,7 +60,7 @@ public final class Clearance {
     public record Parts(List<double[]> pieces, List<double[]> cuts, boolean flat) {
 
         /** A rectangle's or polygon's parts. */
-        static Parts of(Shape s) {
+        public static Parts of(Shape s) {
             return switch (ShapeKind.of(s)) {
                 case RECT -> {
                     Rect r = (Rect) s;
@@ -72,8 +72,8 @@ public final class Clearance {
         }
 
         /** A polygon's parts: itself if convex, else its convex pieces and the cuts between them. */
-        static Parts of(Polygon s) {
-            double[] xy = s.corners().clone();
+        public static Parts of(Polygon s) {
+            double[] xy = HiddenParts.corners(s).clone();
             if (s.isConvex()) {
                 return new Parts(List.of(xy), List.of(), false);
             }

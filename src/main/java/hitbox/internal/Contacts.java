@@ -125,7 +125,7 @@ public final class Contacts {
      * switch over both kinds was too large for the JIT to inline into a caller's loop (about
      * 600 bytes of bytecode, over its 325), which cost a call on every contact.
      */
-    static Contact between(Shape a, Shape b) {
+    public static Contact between(Shape a, Shape b) {
         ShapeKind kb = ShapeKind.of(b);
         return switch (ShapeKind.of(a)) {
             case SEGMENT -> throw withoutArea("a", a);
@@ -256,7 +256,7 @@ public final class Contacts {
      * values as {@link Polygons#corners}.
      */
     private static double[] cornersOf(Shape s, boolean polygon, double[] scratch) {
-        return polygon ? ((Polygon) s).corners() : Polygons.corners((Rect) s, scratch);
+        return polygon ? HiddenParts.corners((Polygon) s) : Polygons.corners((Rect) s, scratch);
     }
 
     /**
@@ -276,7 +276,7 @@ public final class Contacts {
             // array (two rectangles went to Contact.rectRect), so that nothing is allocated
             // but the answer. The search decides apart exactly and only reads them.
             double[] scratch = polygonA && polygonB ? null : RECT_CORNERS.get();
-            return SeparatingAxis.contact(cornersOf(a, polygonA, scratch), windingOf(a, polygonA), r,
+            return FaceQuery.convexPolygons(cornersOf(a, polygonA, scratch), windingOf(a, polygonA), r,
                     cornersOf(b, polygonB, scratch), windingOf(b, polygonB), s);
         }
         return Clearance.polygons(Clearance.Parts.of(a), Clearance.Parts.of(b));
@@ -288,7 +288,7 @@ public final class Contacts {
      * take either).
      */
     private static int windingOf(Shape s, boolean polygon) {
-        return polygon ? ((Polygon) s).convexWinding() : 1;
+        return polygon ? HiddenParts.convexWinding((Polygon) s) : 1;
     }
 
     /**

@@ -124,7 +124,7 @@ public final class ConvexSweep {
      * corners, a segment's two ends, a concave polygon's convex pieces), or the curved shape
      * itself as a {@link Round}.
      */
-    static List<Object> pieces(Shape s) {
+    public static List<Object> pieces(Shape s) {
         return switch (ShapeKind.of(s)) {
             case ELLIPSE, CAPSULE, CIRCLE -> List.of(Round.of(s));
             case RECT -> List.of(Polygons.corners(s));
@@ -164,7 +164,7 @@ public final class ConvexSweep {
         }
 
         /** The curved shape as a round piece. */
-        static Round of(Shape shape) {
+        public static Round of(Shape shape) {
             return switch (ShapeKind.of(shape)) {
                 case ELLIPSE -> {
                     Ellipse e = (Ellipse) shape;

@@ -44,7 +44,7 @@ public final class Overlaps {
      * routes the second (and swaps the pair to the second's method if that kind comes
      * earlier). For the library's own callers, which hold two shapes of unknown kinds.
      */
-    static boolean test(Shape a, Shape b) {
+    public static boolean test(Shape a, Shape b) {
         return switch (ShapeKind.of(a)) {
             case ELLIPSE -> ellipseWith((Ellipse) a, b);
             case CAPSULE -> capsuleWith((Capsule) a, b);
@@ -56,7 +56,7 @@ public final class Overlaps {
     }
 
     /** An ellipse with anything: the first kind, so it answers every pair it is in. */
-    static boolean ellipseWith(Ellipse e, Shape other) {
+    public static boolean ellipseWith(Ellipse e, Shape other) {
         ShapeKind k = ShapeKind.of(other);
         if (!TurnedEllipses.aligned(e) || k == ShapeKind.ELLIPSE && !TurnedEllipses.aligned((Ellipse) other)) {
             return TurnedEllipses.turned(e, other); // a turned ellipse: the other shape in its frame
@@ -83,12 +83,12 @@ public final class Overlaps {
                 Segment s = (Segment) other;
                 yield Collide.ellipseLine(x, y, a, b, s.x1(), s.y1(), s.x2(), s.y2());
             }
-            case POLYGON -> Collide.polygonEllipse(((Polygon) other).raw(), x, y, a, b);
+            case POLYGON -> Collide.polygonEllipse(HiddenParts.raw((Polygon) other), x, y, a, b);
         };
     }
 
     /** A capsule with anything: an ellipse, the one earlier kind, takes the pair swapped. */
-    static boolean capsuleWith(Capsule k, Shape other) {
+    public static boolean capsuleWith(Capsule k, Shape other) {
         float x1 = k.x1(), y1 = k.y1(), x2 = k.x2(), y2 = k.y2(), r = k.r();
         return switch (ShapeKind.of(other)) {
             case ELLIPSE -> ellipseWith((Ellipse) other, k);
@@ -108,12 +108,12 @@ public final class Overlaps {
                 Segment s = (Segment) other;
                 yield Collide.capsuleLine(x1, y1, x2, y2, r, s.x1(), s.y1(), s.x2(), s.y2());
             }
-            case POLYGON -> Collide.polygonCapsule(((Polygon) other).raw(), x1, y1, x2, y2, r);
+            case POLYGON -> Collide.polygonCapsule(HiddenParts.raw((Polygon) other), x1, y1, x2, y2, r);
         };
     }
 
     /** A circle with anything: a capsule or an ellipse, the earlier kinds, takes the pair swapped. */
-    static boolean circleWith(Circle c, Shape other) {
+    public static boolean circleWith(Circle c, Shape other) {
         return switch (ShapeKind.of(other)) {
             case ELLIPSE -> ellipseWith((Ellipse) other, c);
             case CAPSULE -> capsuleWith((Capsule) other, c);
@@ -129,12 +129,12 @@ public final class Overlaps {
                 Segment s = (Segment) other;
                 yield Collide.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
             }
-            case POLYGON -> Collide.polygonCircle(((Polygon) other).raw(), c.x(), c.y(), c.r());
+            case POLYGON -> Collide.polygonCircle(HiddenParts.raw((Polygon) other), c.x(), c.y(), c.r());
         };
     }
 
     /** A rectangle with anything: a circle, a capsule or an ellipse takes the pair swapped. */
-    static boolean rectWith(Rect r, Shape other) {
+    public static boolean rectWith(Rect r, Shape other) {
         return switch (ShapeKind.of(other)) {
             case ELLIPSE -> ellipseWith((Ellipse) other, r);
             case CAPSULE -> capsuleWith((Capsule) other, r);
@@ -147,12 +147,12 @@ public final class Overlaps {
                 Segment s = (Segment) other;
                 yield Collide.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), r.x(), r.y(), r.w(), r.h());
             }
-            case POLYGON -> Collide.polygonRect(((Polygon) other).raw(), r.x(), r.y(), r.w(), r.h());
+            case POLYGON -> Collide.polygonRect(HiddenParts.raw((Polygon) other), r.x(), r.y(), r.w(), r.h());
         };
     }
 
     /** A segment with anything: every kind but a polygon comes earlier and takes the pair swapped. */
-    static boolean segmentWith(Segment s, Shape other) {
+    public static boolean segmentWith(Segment s, Shape other) {
         return switch (ShapeKind.of(other)) {
             case ELLIPSE -> ellipseWith((Ellipse) other, s);
             case CAPSULE -> capsuleWith((Capsule) other, s);
@@ -162,12 +162,12 @@ public final class Overlaps {
                 Segment t = (Segment) other;
                 yield Collide.lineLine(s.x1(), s.y1(), s.x2(), s.y2(), t.x1(), t.y1(), t.x2(), t.y2());
             }
-            case POLYGON -> Collide.polygonLine(((Polygon) other).raw(), s.x1(), s.y1(), s.x2(), s.y2());
+            case POLYGON -> Collide.polygonLine(HiddenParts.raw((Polygon) other), s.x1(), s.y1(), s.x2(), s.y2());
         };
     }
 
     /** A polygon with anything: the last kind, so every other kind takes the pair swapped. */
-    static boolean polygonWith(Polygon p, Shape other) {
+    public static boolean polygonWith(Polygon p, Shape other) {
         return switch (ShapeKind.of(other)) {
             case ELLIPSE -> ellipseWith((Ellipse) other, p);
             case CAPSULE -> capsuleWith((Capsule) other, p);

@@ -626,16 +626,16 @@ public final class Polygons {
      * {@link Rect#right()} and {@link Rect#bottom()}); a rectangle of width or height 0 gives
      * four corners that lie on a segment or at a point.
      */
-    static double[] corners(Shape s) {
+    public static double[] corners(Shape s) {
         return switch (ShapeKind.of(s)) {
             case RECT -> corners((Rect) s, new double[8]);
-            case POLYGON -> toDouble(((Polygon) s).raw());
+            case POLYGON -> toDouble(HiddenParts.raw((Polygon) s));
             case ELLIPSE, CAPSULE, CIRCLE, SEGMENT -> throw notStraight(s);
         };
     }
 
     /** The refusal of a shape that has no corners, for the library's own callers (a bug if it happens). */
-    static IllegalArgumentException notStraight(Shape s) {
+    public static IllegalArgumentException notStraight(Shape s) {
         return new IllegalArgumentException("a rectangle or a polygon was expected, not " + s);
     }
 

@@ -26,7 +26,7 @@ public final class Supports {
      * How far the shape reaches along (nx, ny): the largest dot product of its points with it
      * (for a concave polygon, of its outline's, as for its convex hull).
      */
-    static double support(Shape s, double nx, double ny) {
+    public static double support(Shape s, double nx, double ny) {
         return switch (ShapeKind.of(s)) {
             case ELLIPSE -> TurnedEllipses.support((Ellipse) s, nx, ny);
             case CAPSULE -> {
@@ -42,7 +42,7 @@ public final class Supports {
                 yield Math.max(g.x1() * nx + g.y1() * ny, g.x2() * nx + g.y2() * ny);
             }
             case RECT -> reach(Polygons.corners((Rect) s, new double[8]), nx, ny);
-            case POLYGON -> reach(((Polygon) s).corners(), nx, ny); // cached, only read
+            case POLYGON -> reach(HiddenParts.corners((Polygon) s), nx, ny); // cached, only read
         };
     }
 
@@ -60,7 +60,7 @@ public final class Supports {
      * a rectangle's or polygon's corners, a capsule's segment (its two sides), none for a
      * round shape; a segment, as a capsule's.
      */
-    static double[] straightEdges(Shape s) {
+    public static double[] straightEdges(Shape s) {
         return switch (ShapeKind.of(s)) {
             case ELLIPSE, CIRCLE -> new double[0];
             case CAPSULE -> {

@@ -147,7 +147,7 @@ public final class TurnedEllipses {
                 yield segmentIn(fr, a, b, g.x1(), g.y1(), g.x2(), g.y2(), false);
             }
             case POLYGON -> {
-                float[] raw = ((Polygon) other).raw();
+                float[] raw = HiddenParts.raw((Polygon) other);
                 yield outlineIn(fr, a, b, Polygons.toDouble(raw)) || Polygons.contains(raw, e.x(), e.y());
             }
         };

@@ -7,7 +7,7 @@ import hitbox.Polygon;
 import hitbox.Rect;
 import hitbox.Segment;
 import hitbox.Shape;
-import hitbox.ShapeKind;
+import hitbox.internal.ShapeKind;
 import processing.core.PConstants;
 import processing.core.PGraphics;
 

@@ -11,7 +11,7 @@ import hitbox.Polygon;
 import hitbox.Rect;
 import hitbox.Segment;
 import hitbox.Shape;
-import hitbox.ShapeKind;
+import hitbox.internal.ShapeKind;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;

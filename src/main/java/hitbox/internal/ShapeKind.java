@@ -1,10 +1,11 @@
-package hitbox;
+package hitbox.internal;
+
+import hitbox.*;
 
 /**
- * The kinds of {@link Shape}, and the one place that tells them apart. <b>Internal</b>: not
- * part of the API, and not for sketches; it is public only so that {@code hitbox.processing}
- * draws through the same dispatch as the library, and it will move to a package of
- * internals.
+ * The kinds of {@link Shape}, and the one place that tells them apart. Internal, like the
+ * rest of this package: public so that the API and {@code hitbox.processing}'s drawing go
+ * through the same dispatch as the kernels.
  *
  * <p>{@link #of} is the only {@code instanceof} over the shape kinds in the library. Every
  * operation that needs a kind's own code (overlaps, contact, rays, sweeps, bounding boxes,
