@@ -1,6 +1,6 @@
 /**
  * Contact and response: push out, bounce, slide
- * Beyond the tutorial: contact data and response (the sources stop at yes-or-no and axis-aligned moves)
+ * Beyond the tutorial: contact data and response
  *
  * Knowing that two shapes overlap is not enough to make them behave: you need to know which
  * way, and how far, to move them apart. Section 7 snaps a rectangle out along one axis; a

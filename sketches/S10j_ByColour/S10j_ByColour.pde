@@ -1,6 +1,6 @@
 /**
  * Collision by colour: a car on a drawn track
- * Tutorial section 10: More advanced collision detection (collision by colour, from the video)
+ * Tutorial section 10: Collision by colour (named by the video)
  *
  * Among the tricks the video on rectangle collision names for shapes too complex for simple
  * tests is "detecting collision by colour". A racing game can read its track that way, and
