@@ -171,30 +171,11 @@ public final class Catalog {
     public record SketchInfo(String name, File folder, String title, String section, ClassLoader classes) {
 
         static SketchInfo read(File folder, File mainTab, ClassLoader classes) {
-            List<String> lines;
-            try {
-                lines = Files.readAllLines(mainTab.toPath(), StandardCharsets.UTF_8);
-            } catch (IOException e) {
-                throw new UncheckedIOException("cannot read " + mainTab, e);
-            }
             String title = folder.getName();
             String section = "";
-            boolean inHeader = false;
             boolean titleSeen = false;
-            for (String raw : lines) {
-                String line = raw.trim();
-                if (!inHeader) {
-                    if (line.startsWith("/**") || line.startsWith("/*")) {
-                        inHeader = true;
-                    } else if (!line.isEmpty()) {
-                        break;  // the header comment must come first
-                    }
-                    continue;
-                }
-                if (line.startsWith("*/")) {
-                    break;
-                }
-                String text = line.replaceFirst("^\\*\\s?", "").trim();
+            for (String line : header(mainTab)) {
+                String text = line.trim();
                 if (text.isEmpty()) {
                     continue;
                 }
@@ -208,6 +189,49 @@ public final class Catalog {
                 }
             }
             return new SketchInfo(folder.getName(), folder, title, section, classes);
+        }
+
+        /**
+         * The header comment of a main tab, the comment that must come first in it: its lines
+         * between the opening and the closing line, each without the comment's margin
+         * ({@code " * "}), blank lines kept, and indentation after the margin kept.
+         */
+        private static List<String> header(File mainTab) {
+            List<String> lines;
+            try {
+                lines = Files.readAllLines(mainTab.toPath(), StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                throw new UncheckedIOException("cannot read " + mainTab, e);
+            }
+            List<String> header = new ArrayList<>();
+            boolean inHeader = false;
+            for (String raw : lines) {
+                String line = raw.trim();
+                if (!inHeader) {
+                    if (line.startsWith("/**") || line.startsWith("/*")) {
+                        inHeader = true;
+                    } else if (!line.isEmpty()) {
+                        break;  // the header comment must come first
+                    }
+                    continue;
+                }
+                if (line.startsWith("*/")) {
+                    break;
+                }
+                header.add(line.replaceFirst("^\\* ?", "").stripTrailing());
+            }
+            return List.copyOf(header);
+        }
+
+        /**
+         * Its header comment as written, for pages made from it (the title and section lines
+         * first, then the prose).
+         *
+         * @return the header's lines without the comment's margin ({@code " * "}), blank lines
+         *         and indentation after the margin kept; empty when the main tab has no header
+         */
+        public List<String> header() {
+            return header(new File(folder, name + ".pde"));
         }
 
         /** @return the group its header's second line names, {@link Group#OTHER} for none */
