@@ -2,6 +2,7 @@ package hitbox.internal;
 
 import hitbox.*;
 
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -255,20 +256,16 @@ public final class TurningSweep {
         }
     }
 
-    /** The obstacle as convex vertex lists; circles, ellipses and capsules are one piece, kept as the shape. */
+    /**
+     * The obstacle as convex vertex lists: {@link ConvexSweep#pieces}, with each round piece
+     * (a circle, ellipse or capsule, kept whole) standing as an empty list for the shape itself.
+     */
     private static List<double[]> pieces(Shape s) {
-        return switch (ShapeKind.of(s)) {
-            case ELLIPSE, CAPSULE, CIRCLE -> List.of(new double[0]);
-            case RECT -> List.of(Polygons.corners(s));
-            case SEGMENT -> {
-                Segment g = (Segment) s;
-                yield List.of(new double[] {g.x1(), g.y1(), g.x2(), g.y2()});
-            }
-            case POLYGON -> {
-                Polygon p = (Polygon) s;
-                yield p.isConvex() ? List.of(Polygons.corners(p)) : Clearance.Parts.of(p).pieces();
-            }
-        };
+        List<double[]> out = new ArrayList<>();
+        for (Object piece : ConvexSweep.pieces(s)) {
+            out.add(piece instanceof double[] xy ? xy : new double[0]);
+        }
+        return out;
     }
 
     /**
