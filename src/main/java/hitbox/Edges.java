@@ -153,7 +153,7 @@ public final class Edges {
      */
     public static int crossed(Shape shape, float width, float height) {
         Check.notNull("shape", shape);
-        return crossed(Bounds.left(shape), Bounds.right(shape), Bounds.top(shape), Bounds.bottom(shape), width, height);
+        return crossed(shape.minX(), shape.maxX(), shape.minY(), shape.maxY(), width, height);
     }
 
     /**

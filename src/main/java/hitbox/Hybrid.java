@@ -102,8 +102,8 @@ public final class Hybrid {
         Check.notNull("b", b);
         // Each shape's bounding box in double, the same extents Shape.bounds() rounds
         // outwards, read without making a Rect.
-        return stages(Bounds.left(a), Bounds.top(a), Bounds.right(a), Bounds.bottom(a),
-                Bounds.left(b), Bounds.top(b), Bounds.right(b), Bounds.bottom(b), a, b);
+        return stages(a.minX(), a.minY(), a.maxX(), a.maxY(),
+                b.minX(), b.minY(), b.maxX(), b.maxY(), a, b);
     }
 
     private static Result stages(double al, double at, double ar, double ab,

@@ -101,8 +101,8 @@ class ShapeKindDispatchTest {
             tests.add(each(name, "bounds and Bounds' extents", s -> {
                 Rect b = s.bounds();
                 assertTrue(b.x() <= -2 && b.y() <= -2 && b.right() >= 2 && b.bottom() >= 2 || !ShapeKind.of(s).hasArea(), b.toString());
-                assertTrue(b.x() <= Bounds.left(s) && Bounds.left(s) <= Bounds.right(s) && Bounds.right(s) <= (double) b.x() + b.w());
-                assertTrue(b.y() <= Bounds.top(s) && Bounds.top(s) <= Bounds.bottom(s) && Bounds.bottom(s) <= (double) b.y() + b.h());
+                assertTrue(b.x() <= s.minX() && s.minX() <= s.maxX() && s.maxX() <= (double) b.x() + b.w());
+                assertTrue(b.y() <= s.minY() && s.minY() <= s.maxY() && s.maxY() <= (double) b.y() + b.h());
             }));
             tests.add(each(name, "translated", s -> {
                 Shape moved = s.translated(100, -50);
@@ -118,8 +118,8 @@ class ShapeKindDispatchTest {
             }));
             tests.add(each(name, "Supports.support", s -> {
                 Rect b = s.bounds();
-                assertEquals(Bounds.right(s), Supports.support(s, 1, 0), 1e-3 * Math.max(1, b.w()));
-                assertEquals(-Bounds.top(s), Supports.support(s, 0, -1), 1e-3 * Math.max(1, b.h()));
+                assertEquals(s.maxX(), Supports.support(s, 1, 0), 1e-3 * Math.max(1, b.w()));
+                assertEquals(-s.minY(), Supports.support(s, 0, -1), 1e-3 * Math.max(1, b.h()));
             }));
             tests.add(each(name, "ConvexSweep.pieces", s -> assertTrue(!ConvexSweep.pieces(s).isEmpty())));
             tests.add(each(name, "Edges.crossed", s -> {

@@ -3,34 +3,13 @@ package hitbox.internal;
 import hitbox.*;
 
 /**
- * Bounding boxes: each shape's extent in {@code double}, which each kind answers itself
- * ({@link Shape#minX()} and its three companions: exact for the kinds whose edges are sums of
- * two floats, a hair outside for a turned ellipse and a polygon), and the float {@link Rect}
- * that holds an extent, rounded outwards. {@link Shape#bounds()} and {@link Hybrid} both read the same extents, so the two
+ * Bounding boxes: the float {@link Rect} that holds a shape's extent in {@code double}
+ * ({@link Shape#minX()} and its three companions, which each kind answers itself), rounded
+ * outwards. {@link Shape#bounds()} and {@link Hybrid} both read those extents, so the two
  * never disagree.
  */
 public final class Bounds {
     private Bounds() {
-    }
-
-    /** The shape's smallest x ({@link Shape#minX()}). */
-    public static double left(Shape s) {
-        return s.minX();
-    }
-
-    /** The shape's smallest y ({@link Shape#minY()}). */
-    public static double top(Shape s) {
-        return s.minY();
-    }
-
-    /** The shape's largest x ({@link Shape#maxX()}). */
-    public static double right(Shape s) {
-        return s.maxX();
-    }
-
-    /** The shape's largest y ({@link Shape#maxY()}). */
-    public static double bottom(Shape s) {
-        return s.maxY();
     }
 
     /**
