@@ -40,6 +40,9 @@ public final class SketchRun<S extends PApplet> {
     /** How long a sketch may go without finishing a frame before the run fails. */
     private static final long STALL_MILLIS = 30_000;
 
+    /** The name Processing gives the thread that runs setup(), draw() and the event methods. */
+    private static final String ANIMATION_THREAD = "Animation Thread";
+
     private final S sketch;
     private Script script = new Script();
     private int frames = -1;
@@ -182,11 +185,17 @@ public final class SketchRun<S extends PApplet> {
         String name = sketch.getClass().getSimpleName();
         PApplet.runSketch(new String[] {PApplet.ARGS_LOCATION + "=40,40",
                 PApplet.ARGS_SKETCH_FOLDER + "=" + (folder != null ? folder : sketchFolder(sketch)).getAbsolutePath(), name}, sketch);
-        // Processing's own handler only prints; this one also ends the wait. Only this run's
-        // animation thread counts (before its first frame, any thread: setup() may throw).
+        // runSketch() installs Processing's own handler, which only prints; this one replaces
+        // it and also ends the wait. Only this run's animation thread counts: it runs setup(),
+        // draw() and the sketch's event methods. Before its first frame it is known by
+        // Processing's name for it. The AWT event thread runs no sketch code, only
+        // Processing's repaints, which can race the animation thread for the window's buffer
+        // while it opens (an NPE in java.awt.Component$FlipBufferStrategy); Processing prints
+        // those and the sketch goes on, so they are printed here too, not failed.
         Thread.setDefaultUncaughtExceptionHandler((t, e) -> {
             Thread mine = hooks.thread;
-            if (mine == null || mine == t) {
+            boolean sketchThread = mine != null ? mine == t : ANIMATION_THREAD.equals(t.getName());
+            if (sketchThread) {
                 hooks.fail(e);
             } else {
                 e.printStackTrace();
