@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.lang.module.ModuleDescriptor;
 import java.lang.module.ModuleFinder;
@@ -20,13 +19,16 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
-import java.util.jar.Manifest;
 import java.util.stream.Collectors;
+
+import javax.tools.JavaCompiler;
+import javax.tools.ToolProvider;
 
 import javax.xml.parsers.DocumentBuilderFactory;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.w3c.dom.Document;
 import org.w3c.dom.Element;
 import org.w3c.dom.Node;
@@ -108,18 +110,43 @@ class MavenReleaseTest {
     }
 
     @Test
-    void mainJar_namesItsAutomaticModule_afterItsPackages() throws IOException {
-        Manifest manifest = new Manifest(new ByteArrayInputStream(main.get("META-INF/MANIFEST.MF")));
-        String name = manifest.getMainAttributes().getValue("Automatic-Module-Name");
-        assertTrue(name != null && !name.isBlank(), "Automatic-Module-Name");
+    void aModuleRequiringHitbox_seesTheApi_andIsRefusedTheInternals(@TempDir Path dir) throws IOException {
+        Path app = Files.createDirectories(dir.resolve("app"));
+        Files.writeString(app.resolve("module-info.java"), "module app { requires hitbox; }");
+        Path pkg = Files.createDirectories(app.resolve("app"));
+        Files.writeString(pkg.resolve("Api.java"),
+                "package app; class Api { boolean hit = new hitbox.Circle(0, 0, 5).contains(1, 1); }");
+        assertEquals(0, javac(dir, app, pkg.resolve("Api.java")), "the API compiles from a module requiring hitbox");
+        Files.writeString(pkg.resolve("Internal.java"), "package app; class Internal { hitbox.internal.Tolerance t; }");
+        assertEquals(1, javac(dir, app, pkg.resolve("Api.java"), pkg.resolve("Internal.java")),
+                "hitbox.internal is not exported, so a module cannot use it");
+    }
+
+    private int javac(Path dir, Path app, Path... sources) {
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        List<String> args = new ArrayList<>(List.of("-d", dir.resolve("out").toString(),
+                "--module-path", mainJar.toString(), "-Xlint:none", app.resolve("module-info.java").toString()));
+        for (Path source : sources) {
+            args.add(source.toString());
+        }
+        return javac.run(null, null, new java.io.ByteArrayOutputStream(), args.toArray(new String[0]));
+    }
+
+    @Test
+    void mainJar_isTheModuleHitbox_exportingTheApiOnly() {
         Set<ModuleReference> found = ModuleFinder.of(mainJar).findAll();
         assertEquals(1, found.size());
         ModuleDescriptor module = found.iterator().next().descriptor();
-        assertEquals(name, module.name());
-        assertTrue(module.isAutomatic());
+        assertEquals("hitbox", module.name());
+        assertFalse(module.isAutomatic(), "a module-info, not a manifest name: an automatic module exports everything");
+        assertEquals(Set.of("hitbox"), module.exports().stream().map(ModuleDescriptor.Exports::source).collect(Collectors.toSet()),
+                "exported packages");
+        assertTrue(module.packages().contains("hitbox.internal"), "the internals are in the jar, unexported");
         for (String pkg : module.packages()) {
-            assertTrue(pkg.equals(name) || pkg.startsWith(name + "."), "package " + pkg + " outside module " + name);
+            assertTrue(pkg.equals("hitbox") || pkg.startsWith("hitbox."), "package " + pkg + " outside module hitbox");
         }
+        assertEquals(Set.of("java.base"), module.requires().stream().map(ModuleDescriptor.Requires::name).collect(Collectors.toSet()),
+                "pure Java: the module needs java.base only");
     }
 
     @Test
@@ -141,7 +168,7 @@ class MavenReleaseTest {
         List<String> undocumented = new ArrayList<>();
         try (URLClassLoader jar = new URLClassLoader(new URL[] {mainJar.toUri().toURL()}, null)) {
             for (String entry : main.keySet()) {
-                if (!entry.endsWith(".class") || entry.endsWith("package-info.class")) {
+                if (!entry.endsWith(".class") || entry.endsWith("package-info.class") || entry.equals("module-info.class")) {
                     continue;
                 }
                 String name = entry.substring(0, entry.length() - ".class".length()).replace('/', '.');
