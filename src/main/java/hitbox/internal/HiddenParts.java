@@ -42,6 +42,17 @@ public final class HiddenParts {
          * @return its first vertex where the outline bends inwards, or -1 if convex
          */
         int concaveVertex(Polygon p);
+
+        /**
+         * @param p        the polygon
+         * @param xy       its vertices' images under an affine map, rounded to float (taken, not copied)
+         * @param scaleMin the map's smallest stretch (its smaller singular value), or less
+         * @param delta    how far rounding may have moved a vertex from its exact image, or more
+         * @param verb     what was done, for a message ("moving by dx = 1.5, dy = 0")
+         * @return the polygon of {@code xy}, checked only as far as the rounding could have changed it
+         * @throws IllegalArgumentException if the rounded outline is not a valid polygon
+         */
+        Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb);
     }
 
     /** A grid's cells, granted by {@link Grid}. */
@@ -115,6 +126,15 @@ public final class HiddenParts {
     /** @param p the polygon @return its first concave vertex, or -1 */
     public static int concaveVertex(Polygon p) {
         return Granted.POLYGONS.concaveVertex(p);
+    }
+
+    /**
+     * @param p the polygon @param xy its vertices' images @param scaleMin the map's smallest stretch
+     * @param delta the rounding's reach @param verb what was done
+     * @return the new polygon (see {@link PolygonAccess#image})
+     */
+    public static Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb) {
+        return Granted.POLYGONS.image(p, xy, scaleMin, delta, verb);
     }
 
     /** @param g the grid @return its cells without a copy */
