@@ -120,7 +120,7 @@ public record Capsule(float x1, float y1, float x2, float y2, float r) implement
      */
     @Override
     public Capsule rotated(float angle, float pivotX, float pivotY) {
-        return transformed(Transform.rotation(angle, pivotX, pivotY));
+        return (Capsule) Transform.turn(this, angle, pivotX, pivotY);
     }
 
     /** @return the segment between the capsule's two round ends, never null */

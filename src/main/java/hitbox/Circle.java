@@ -105,6 +105,6 @@ public record Circle(float x, float y, float r) implements Shape {
      */
     @Override
     public Circle rotated(float angle, float pivotX, float pivotY) {
-        return (Circle) transformed(Transform.rotation(angle, pivotX, pivotY));
+        return (Circle) Transform.turn(this, angle, pivotX, pivotY);
     }
 }

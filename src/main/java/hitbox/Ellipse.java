@@ -158,6 +158,6 @@ public record Ellipse(float x, float y, float rx, float ry, float angle) impleme
      */
     @Override
     public Ellipse rotated(float angle, float pivotX, float pivotY) {
-        return transformed(Transform.rotation(angle, pivotX, pivotY));
+        return (Ellipse) Transform.turn(this, angle, pivotX, pivotY);
     }
 }

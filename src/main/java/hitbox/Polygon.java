@@ -527,7 +527,7 @@ public final class Polygon implements Shape {
      */
     @Override
     public Polygon rotated(float angle, float pivotX, float pivotY) {
-        return transformed(Transform.rotation(angle, pivotX, pivotY));
+        return (Polygon) Transform.turn(this, angle, pivotX, pivotY);
     }
 
     /**

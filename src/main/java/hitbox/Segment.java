@@ -108,7 +108,7 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
      */
     @Override
     public Segment rotated(float angle, float pivotX, float pivotY) {
-        return transformed(Transform.rotation(angle, pivotX, pivotY));
+        return (Segment) Transform.turn(this, angle, pivotX, pivotY);
     }
 
     /**

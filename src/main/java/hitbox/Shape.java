@@ -118,7 +118,7 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      *                                  beyond the float range
      */
     default Shape rotated(float angle, float pivotX, float pivotY) {
-        return transformed(Transform.rotation(angle, pivotX, pivotY));
+        return Transform.turn(this, angle, pivotX, pivotY);
     }
 
     /**

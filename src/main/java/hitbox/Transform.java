@@ -34,6 +34,10 @@ import hitbox.internal.*;
  * and so does {@link #then} when the combined entries overflow.
  */
 public final class Transform {
+    // First of the static initialisers: the kernels read the entries in double through this.
+    static {
+        HiddenParts.grantTransforms(t -> t.affine);
+    }
 
     /** The transform that changes nothing. */
     public static final Transform IDENTITY = new Transform(1, 0, 0, 0, 1, 0);
@@ -139,7 +143,22 @@ public final class Transform {
         double[] cs = cosSin(angle);
         double c = cs[0], s = cs[1];
         // p' = pivot + R (p - pivot): the move is pivot - R pivot
-        return new Transform(c, -s, pivotX - (c * pivotX - s * pivotY), s, c, pivotY - (s * pivotX + c * pivotY));
+        return checked("a turn by angle = " + angle + " about pivotX = " + pivotX + ", pivotY = " + pivotY,
+                c, -s, pivotX - (c * pivotX - s * pivotY), s, c, pivotY - (s * pivotX + c * pivotY));
+    }
+
+    /**
+     * The shape turned about the pivot, for {@link Shape#rotated}: a refusal names the turn's
+     * arguments.
+     */
+    static Shape turn(Shape shape, float angle, float pivotX, float pivotY) {
+        Transform r = rotation(angle, pivotX, pivotY);
+        try {
+            return shape.transformed(r);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("turning by angle = " + angle + " about pivotX = " + pivotX
+                    + ", pivotY = " + pivotY + ": " + e.getMessage(), e);
+        }
     }
 
     /**
@@ -268,7 +287,12 @@ public final class Transform {
     public Vec apply(float x, float y) {
         Check.finite("x", x);
         Check.finite("y", y);
-        return new Vec(Check.finite("the transformed x", applyX(x, y)), Check.finite("the transformed y", applyY(x, y)));
+        float px = applyX(x, y), py = applyY(x, y);
+        if (!Float.isFinite(px) || !Float.isFinite(py)) {
+            throw new IllegalArgumentException("transforming the point x = " + x + ", y = " + y + " gives (" + px + ", "
+                    + py + "), beyond the float range");
+        }
+        return new Vec(px, py);
     }
 
     /** @return the entry m00 (how much x' takes from x), rounded to float */

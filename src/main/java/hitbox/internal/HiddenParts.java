@@ -2,6 +2,7 @@ package hitbox.internal;
 
 import hitbox.Grid;
 import hitbox.Polygon;
+import hitbox.Transform;
 
 /**
  * What the kernels read of a {@link Polygon} and a {@link Grid} that the API does not hand
@@ -55,6 +56,15 @@ public final class HiddenParts {
         Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb);
     }
 
+    /** A transform's entries in double, granted by {@link Transform}. */
+    public interface TransformAccess {
+        /**
+         * @param t the transform
+         * @return its entries in double, as kept
+         */
+        Affine affine(Transform t);
+    }
+
     /** A grid's cells, granted by {@link Grid}. */
     public interface GridAccess {
         /**
@@ -66,6 +76,7 @@ public final class HiddenParts {
 
     private static PolygonAccess polygons;
     private static GridAccess grids;
+    private static TransformAccess transforms;
 
     /**
      * Called once, by {@link Polygon}'s static initialiser.
@@ -93,10 +104,24 @@ public final class HiddenParts {
         grids = access;
     }
 
+    /**
+     * Called once, by {@link Transform}'s static initialiser.
+     *
+     * @param access the access, not null
+     * @throws IllegalStateException if it was granted already
+     */
+    public static synchronized void grantTransforms(TransformAccess access) {
+        if (transforms != null) {
+            throw new IllegalStateException("transform access granted already");
+        }
+        transforms = access;
+    }
+
     /** The granted accesses as constants; loading this first initialises Polygon and Grid. */
     private static final class Granted {
         public static final PolygonAccess POLYGONS = initialised(Polygon.class) ? polygons : null;
         public static final GridAccess GRIDS = initialised(Grid.class) ? grids : null;
+        public static final TransformAccess TRANSFORMS = initialised(Transform.class) ? transforms : null;
 
         private static boolean initialised(Class<?> type) {
             try {
@@ -135,6 +160,11 @@ public final class HiddenParts {
      */
     public static Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb) {
         return Granted.POLYGONS.image(p, xy, scaleMin, delta, verb);
+    }
+
+    /** @param t the transform @return its entries in double */
+    public static Affine affine(Transform t) {
+        return Granted.TRANSFORMS.affine(t);
     }
 
     /** @param g the grid @return its cells without a copy */

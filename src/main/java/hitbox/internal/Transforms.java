@@ -42,6 +42,29 @@ public final class Transforms {
         };
     }
 
+    /**
+     * The shape's image under a transform, by its kind: {@link #apply(Shape, Affine)} with the
+     * transform's entries.
+     *
+     * @param s the shape, not null
+     * @param t the transform, not null
+     * @return the image, never null
+     * @throws IllegalArgumentException as the kind's {@code transformed} documents, or if
+     *                                  {@code t} is null
+     */
+    public static Shape apply(Shape s, Transform t) {
+        return apply(s, affine(t));
+    }
+
+    /**
+     * @param t the transform, not null
+     * @return its entries in double, as it keeps them
+     * @throws IllegalArgumentException if {@code t} is null
+     */
+    public static Affine affine(Transform t) {
+        return HiddenParts.affine(Check.notNull("t", t));
+    }
+
     /** A transformed coordinate rounded to float, refused if it leaves the float range. */
     private static float coordinate(String name, double v) {
         float f = (float) v;
