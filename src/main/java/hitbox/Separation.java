@@ -33,6 +33,9 @@ import hitbox.internal.*;
  * shapes overlap (the distance between two sets that meet): {@link Collide} tells overlapping
  * from touching.
  *
+ * <p>This class is longer than most (about 480 lines): the record and the raw-float forms of
+ * the tutorial's pairs, each a few lines with its full javadoc, as {@link Collide} is.
+ *
  * <p>Made by hand, a separation checks only its own values: NaN or infinite values, or a
  * negative distance, throw an {@link IllegalArgumentException}; it does not check that the
  * distance is the points' distance.

@@ -216,52 +216,42 @@ public final class Distances {
                                   double cx, double cy, double dx, double dy, double[] q) {
         double[] f = new double[2];
         double best = pointSegment(ax, ay, cx, cy, dx, dy, f);
-        q[0] = ax;
-        q[1] = ay;
-        q[2] = f[0];
-        q[3] = f[1];
+        put(q, ax, ay, f[0], f[1]);
         double d = pointSegment(bx, by, cx, cy, dx, dy, f);
         if (d < best) {
-            best = d;
-            q[0] = bx;
-            q[1] = by;
-            q[2] = f[0];
-            q[3] = f[1];
+            best = put(q, bx, by, f[0], f[1]) + d;
         }
         d = pointSegment(cx, cy, ax, ay, bx, by, f);
         if (d < best) {
-            best = d;
-            q[0] = f[0];
-            q[1] = f[1];
-            q[2] = cx;
-            q[3] = cy;
+            best = put(q, f[0], f[1], cx, cy) + d;
         }
         d = pointSegment(dx, dy, ax, ay, bx, by, f);
         if (d < best) {
-            best = d;
-            q[0] = f[0];
-            q[1] = f[1];
-            q[2] = dx;
-            q[3] = dy;
+            best = put(q, f[0], f[1], dx, dy) + d;
         }
         if (best > 0 && Lines.segmentsMeet(ax, ay, bx, by, cx, cy, dx, dy)) {
             // They cross (no end lies on the other, or rounding hid it): at the crossing.
             double o1 = Lines.orient(cx, cy, dx, dy, ax, ay), o2 = Lines.orient(cx, cy, dx, dy, bx, by);
             double s = o1 == o2 ? 0 : o1 / (o1 - o2);
             double x = ax + s * (bx - ax), y = ay + s * (by - ay);
-            q[0] = x;
-            q[1] = y;
-            q[2] = x;
-            q[3] = y;
-            return 0;
+            return put(q, x, y, x, y);
         }
         return best;
     }
 
+    /** Writes the two points into q; returns 0, for a caller to add its distance to. */
+    private static double put(double[] q, double x1, double y1, double x2, double y2) {
+        q[0] = x1;
+        q[1] = y1;
+        q[2] = x2;
+        q[3] = y2;
+        return 0;
+    }
+
     /**
      * The distance from point P to the closed segment AB (a point if A = B), and the
-     * segment's closest point in {@code foot}. In the segment's interior, the cross product
-     * over the length: exact for an axis-aligned edge with whole-number coordinates.
+     * segment's closest point in {@code foot}. In the segment's interior, the gap across an
+     * axis-aligned edge (exact), else the cross product over the length.
      */
     public static double pointSegment(double px, double py, double ax, double ay, double bx, double by, double[] foot) {
         double ex = bx - ax, ey = by - ay, fx = px - ax, fy = py - ay;
@@ -278,9 +268,20 @@ public final class Distances {
             double gx = px - bx, gy = py - by;
             return Math.sqrt(gx * gx + gy * gy);
         }
+        // An axis-aligned edge: the gap across it, exact whatever the sizes.
+        if (ex == 0) {
+            foot[0] = ax;
+            foot[1] = py;
+            return Math.abs(fx);
+        }
+        if (ey == 0) {
+            foot[0] = px;
+            foot[1] = ay;
+            return Math.abs(fy);
+        }
         double s = dot / len2;
-        foot[0] = ex == 0 ? ax : ax + s * ex;
-        foot[1] = ey == 0 ? ay : ay + s * ey;
+        foot[0] = ax + s * ex;
+        foot[1] = ay + s * ey;
         return Math.abs(ex * fy - ey * fx) / Math.sqrt(len2);
     }
 
@@ -368,11 +369,7 @@ public final class Distances {
         }
         double px = s == 0 ? ax : s == 1 ? bx : ax + s * ex, py = s == 0 ? ay : s == 1 ? by : ay + s * ey;
         double d = ellipsePoint(e, px, py, near);
-        q[0] = near[0];
-        q[1] = near[1];
-        q[2] = px;
-        q[3] = py;
-        return d;
+        return put(q, near[0], near[1], px, py) + d;
     }
 
     /** The sign of the distance's slope along (dx, dy) at (px, py), outside the ellipse. */
@@ -431,11 +428,7 @@ public final class Distances {
                 onOutline(f, c, p);
                 double d = ellipsePoint(e, p[0], p[1], near);
                 if (d < best) {
-                    best = d;
-                    q[0] = near[0];
-                    q[1] = near[1];
-                    q[2] = p[0];
-                    q[3] = p[1];
+                    best = put(q, near[0], near[1], p[0], p[1]) + d;
                 }
             }
         }

@@ -1,0 +1,425 @@
+package hitbox;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import hitbox.ExactReference.Q;
+import java.math.BigInteger;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
+import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Geometry;
+import org.locationtech.jts.geom.GeometryFactory;
+import org.locationtech.jts.operation.distance.DistanceOp;
+
+/**
+ * {@link Separation} against oracles that share no code with it: JTS's {@code DistanceOp}
+ * (LocationTech's Java Topology Suite 1.20) for the straight and round kinds, exact rational
+ * arithmetic ({@link ExactReference.Q}) for whole-number cases, and dense sampling of the
+ * outline for ellipses. Every pair is checked in both orders, with the closest points on the
+ * outlines and as far apart as the distance says.
+ *
+ * <p>A shape is a core (a point, a segment, an outline) and a radius, as JTS sees it: a circle
+ * is its centre, a capsule its segment, a rectangle or polygon its polygon. For shapes that do
+ * not overlap, the distance is JTS's distance between the cores less the radii, held at 0.
+ */
+class SeparationOracleTest {
+
+    private static final GeometryFactory GF = new GeometryFactory();
+
+    // ---------------------------------------------------------------- random shapes
+
+    /** A random shape of kind k (0 circle, 1 rect, 2 segment, 3 convex polygon, 4 concave polygon, 5 capsule, 6 ellipse) near (cx, cy). */
+    static Shape random(SplittableRandom rnd, int k, double cx, double cy, boolean whole) {
+        java.util.function.DoubleUnaryOperator f = v -> whole ? Math.round(v) : (float) v;
+        float x = (float) f.applyAsDouble(cx + rnd.nextDouble(-20, 20)), y = (float) f.applyAsDouble(cy + rnd.nextDouble(-20, 20));
+        float s = (float) f.applyAsDouble(rnd.nextDouble(0, 30)), t = (float) f.applyAsDouble(rnd.nextDouble(0, 30));
+        if (rnd.nextInt(12) == 0) {
+            s = 0; // zero-size now and then
+        }
+        return switch (k) {
+            case 0 -> new Circle(x, y, s);
+            case 1 -> new Rect(x, y, s, t);
+            case 2 -> new Segment(x, y, (float) f.applyAsDouble(x + rnd.nextDouble(-30, 30)), (float) f.applyAsDouble(y + rnd.nextDouble(-30, 30)));
+            case 3 -> TestShapes.convexRing(rnd, 3 + rnd.nextInt(6), x, y, whole);
+            case 4 -> TestShapes.starRing(rnd, 4 + rnd.nextInt(8), x, y, whole);
+            case 5 -> new Capsule(x, y, (float) f.applyAsDouble(x + rnd.nextDouble(-30, 30)), (float) f.applyAsDouble(y + rnd.nextDouble(-30, 30)),
+                    (float) f.applyAsDouble(rnd.nextDouble(0, 10)));
+            default -> new Ellipse(x, y, (float) rnd.nextDouble(1, 30), (float) rnd.nextDouble(1, 30),
+                    rnd.nextBoolean() ? 0 : (float) rnd.nextDouble(-3, 3));
+        };
+    }
+
+    // ---------------------------------------------------------------- JTS's view
+
+    private static Geometry segment(double x1, double y1, double x2, double y2) {
+        if (x1 == x2 && y1 == y2) {
+            return GF.createPoint(new Coordinate(x1, y1));
+        }
+        return GF.createLineString(new Coordinate[] {new Coordinate(x1, y1), new Coordinate(x2, y2)});
+    }
+
+    /** The shape's core as JTS geometry (a circle as its centre, a capsule as its segment). */
+    static Geometry core(Shape s) {
+        if (s instanceof Circle c) {
+            return GF.createPoint(new Coordinate(c.x(), c.y()));
+        }
+        if (s instanceof Capsule k) {
+            return segment(k.x1(), k.y1(), k.x2(), k.y2());
+        }
+        if (s instanceof Segment g) {
+            return segment(g.x1(), g.y1(), g.x2(), g.y2());
+        }
+        if (s instanceof Rect r) {
+            double x = r.x(), y = r.y(), x2 = x + (double) r.w(), y2 = y + (double) r.h();
+            if (r.w() == 0 || r.h() == 0) {
+                return segment(x, y, x2, y2);
+            }
+            return GF.createPolygon(new Coordinate[] {new Coordinate(x, y), new Coordinate(x2, y),
+                    new Coordinate(x2, y2), new Coordinate(x, y2), new Coordinate(x, y)});
+        }
+        Polygon p = (Polygon) s;
+        Coordinate[] c = new Coordinate[p.size() + 1];
+        for (int i = 0; i < p.size(); i++) {
+            c[i] = new Coordinate(p.x(i), p.y(i));
+        }
+        c[p.size()] = c[0];
+        return GF.createPolygon(c);
+    }
+
+    static double radius(Shape s) {
+        return s instanceof Circle c ? c.r() : s instanceof Capsule k ? k.r() : 0;
+    }
+
+    // ---------------------------------------------------------------- on the outline
+
+    /** The distance from (px, py) to the shape's outline (a segment: to the segment), by the test's own sums. */
+    static double toOutline(Shape s, double px, double py) {
+        if (s instanceof Circle c) {
+            return Math.abs(Math.hypot(px - c.x(), py - c.y()) - c.r());
+        }
+        if (s instanceof Capsule k) {
+            return Math.abs(toSegment(px, py, k.x1(), k.y1(), k.x2(), k.y2()) - k.r());
+        }
+        if (s instanceof Segment g) {
+            return toSegment(px, py, g.x1(), g.y1(), g.x2(), g.y2());
+        }
+        if (s instanceof Ellipse e) {
+            double c = Math.cos(e.angle()), sn = Math.sin(e.angle());
+            double dx = px - e.x(), dy = py - e.y(), u = dx * c + dy * sn, v = -dx * sn + dy * c;
+            if (e.rx() == e.ry()) {
+                return Math.abs(Math.hypot(dx, dy) - e.rx());
+            }
+            if (e.rx() == 0 || e.ry() == 0) {
+                double hx = e.rx() * c - e.ry() * sn, hy = e.rx() * sn + e.ry() * c;
+                return toSegment(px, py, e.x() - hx, e.y() - hy, e.x() + hx, e.y() + hy);
+            }
+            // The implicit function's value over its gradient: the distance to first order.
+            double g = u * u / (e.rx() * (double) e.rx()) + v * v / (e.ry() * (double) e.ry()) - 1;
+            double gu = 2 * u / (e.rx() * (double) e.rx()), gv = 2 * v / (e.ry() * (double) e.ry());
+            return Math.abs(g) / Math.max(1e-300, Math.hypot(gu, gv));
+        }
+        float[] xy = s instanceof Rect r ? ExactReference.rectPolygon(r.x(), r.y(), r.w(), r.h()) : ((Polygon) s).coordinates();
+        int n = xy.length / 2;
+        double best = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < n; i++) {
+            int j = (i + 1) % n;
+            best = Math.min(best, toSegment(px, py, xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1]));
+        }
+        return best;
+    }
+
+    static double toSegment(double px, double py, double ax, double ay, double bx, double by) {
+        double ex = bx - ax, ey = by - ay, len2 = ex * ex + ey * ey;
+        double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((px - ax) * ex + (py - ay) * ey) / len2));
+        return Math.hypot(px - (ax + t * ex), py - (ay + t * ey));
+    }
+
+    /** The size of the pair: the largest extent from the origin, for relative tolerances. */
+    static double scale(Shape a, Shape b) {
+        double m = 1;
+        for (Shape s : new Shape[] {a, b}) {
+            m = Math.max(m, Math.max(Math.max(Math.abs(s.minX()), Math.abs(s.maxX())), Math.max(Math.abs(s.minY()), Math.abs(s.maxY()))));
+        }
+        return m;
+    }
+
+    /**
+     * The checks every separation passes whatever the oracle: null exactly when the shapes
+     * overlap, the same distance both ways round with the points swapped, each point on its
+     * shape's outline and the two as far apart as the distance, within {@code tol}.
+     */
+    static void checkShape(Shape a, Shape b, double tol) {
+        Separation s = Separation.between(a, b), back = Separation.between(b, a);
+        if (a.overlaps(b)) {
+            assertNull(s, a + " " + b);
+            assertNull(back, b + " " + a);
+            return;
+        }
+        assertNotNull(s, a + " " + b);
+        assertNotNull(back, b + " " + a);
+        String what = a + " and " + b + ": " + s + ", back " + back;
+        assertTrue(s.distance() >= 0);
+        assertEquals(s.distance(), back.distance(), tol, "both ways round, " + what);
+        for (Separation t : new Separation[] {s, back.flipped()}) {
+            assertTrue(toOutline(a, t.ax(), t.ay()) <= tol, "a's point off its outline by " + toOutline(a, t.ax(), t.ay()) + ", " + what);
+            assertTrue(toOutline(b, t.bx(), t.by()) <= tol, "b's point off its outline by " + toOutline(b, t.bx(), t.by()) + ", " + what);
+            assertEquals(t.distance(), Math.hypot((double) t.bx() - t.ax(), (double) t.by() - t.ay()), tol, "|b - a|, " + what);
+        }
+    }
+
+    // ---------------------------------------------------------------- JTS
+
+    @Test
+    void straightAndRoundKinds_agreeWithJtsDistanceOp_bothOrders() {
+        SplittableRandom rnd = new SplittableRandom(23);
+        int pairs = 0, apart = 0, agreed = 0, exactlyEqual = 0;
+        double worstUlps = 0;
+        List<String> wrong = new ArrayList<>();
+        for (int n = 0; n < 3000; n++) {
+            int ka = rnd.nextInt(6), kb = rnd.nextInt(6);
+            double gap = rnd.nextDouble(0, 60);
+            Shape a = random(rnd, ka, 0, 0, false), b = random(rnd, kb, gap, rnd.nextDouble(-30, 30), false);
+            pairs++;
+            double oracle = Math.max(0, DistanceOp.distance(core(a), core(b)) - radius(a) - radius(b));
+            double tol = Math.ulp((float) oracle) + 1e-12 * scale(a, b);
+            checkShape(a, b, 1e-5 * scale(a, b));
+            for (Separation s : new Separation[] {Separation.between(a, b), Separation.between(b, a)}) {
+                if (s == null) {
+                    if (oracle > 1e-9 * scale(a, b)) {
+                        wrong.add("null, but JTS says apart by " + oracle + ": " + a + " " + b);
+                    }
+                    continue;
+                }
+                apart++;
+                double err = Math.abs(s.distance() - oracle);
+                worstUlps = Math.max(worstUlps, err / Math.ulp((float) Math.max(oracle, Float.MIN_NORMAL)));
+                if (err <= tol) {
+                    agreed++;
+                } else {
+                    wrong.add(s.distance() + " vs JTS " + oracle + ": " + a + " " + b);
+                }
+                if (s.distance() == (float) oracle) {
+                    exactlyEqual++;
+                }
+            }
+        }
+        System.out.println("Separation vs JTS DistanceOp: " + pairs + " random pairs, " + apart + " answers (both orders) apart, "
+                + agreed + " within a float's rounding, " + exactlyEqual + " equal to JTS rounded to float; worst "
+                + worstUlps + " ulps");
+        assertTrue(wrong.isEmpty(), wrong.size() + " disagree, first: " + (wrong.isEmpty() ? "" : wrong.get(0)));
+        assertTrue(apart > 2000, "enough pairs apart: " + apart);
+    }
+
+    // ---------------------------------------------------------------- exact
+
+    private static Q exactSquaredDistance(Shape a, Shape b) {
+        float[] p = corners(a), q = corners(b);
+        Q best = null;
+        for (float[][] pair : new float[][][] {{p, q}, {q, p}}) {
+            float[] from = pair[0], to = pair[1];
+            int n = to.length / 2;
+            int edges = n == 1 ? 1 : n == 2 ? 1 : n;
+            for (int i = 0; i < from.length / 2; i++) {
+                for (int e = 0; e < edges; e++) {
+                    int f = (e + 1) % n;
+                    Q d = ExactReference.segmentDistanceSquared(Q.of(to[2 * e]), Q.of(to[2 * e + 1]), Q.of(to[2 * f]),
+                            Q.of(to[2 * f + 1]), Q.of(from[2 * i]), Q.of(from[2 * i + 1]));
+                    best = best == null || d.compareTo(best) < 0 ? d : best;
+                }
+            }
+        }
+        return best;
+    }
+
+    private static float[] corners(Shape s) {
+        if (s instanceof Circle c) {
+            return new float[] {c.x(), c.y()};
+        }
+        if (s instanceof Segment g) {
+            return new float[] {g.x1(), g.y1(), g.x2(), g.y2()};
+        }
+        if (s instanceof Capsule k) {
+            return new float[] {k.x1(), k.y1(), k.x2(), k.y2()};
+        }
+        return s instanceof Rect r ? ExactReference.rectPolygon(r.x(), r.y(), r.w(), r.h()) : ((Polygon) s).coordinates();
+    }
+
+    /** The square root of q when it is a rational square, else null. */
+    private static Q root(Q q) {
+        BigInteger n = q.num().sqrt(), d = q.den().sqrt();
+        return n.multiply(n).equals(q.num()) && d.multiply(d).equals(q.den()) ? new Q(n, d) : null;
+    }
+
+    @Test
+    void wholeNumbers_exactWhereTheDistanceIsAFloat() {
+        SplittableRandom rnd = new SplittableRandom(2323);
+        int rational = 0, apart = 0;
+        for (int n = 0; n < 4000; n++) {
+            Shape a = random(rnd, rnd.nextInt(6), 0, 0, true), b = random(rnd, rnd.nextInt(6), rnd.nextInt(60), rnd.nextInt(-20, 20), true);
+            Separation s = Separation.between(a, b);
+            if (s == null) {
+                continue;
+            }
+            apart++;
+            // Segments crossing: no end is closest, and the distance is 0.
+            Q root = coresMeet(a, b) ? Q.ZERO : root(exactSquaredDistance(a, b));
+            if (root == null) {
+                continue;
+            }
+            Q exact = root.minus(Q.of((float) radius(a))).minus(Q.of((float) radius(b)));
+            if (exact.signum() < 0) {
+                exact = Q.ZERO;
+            }
+            float f = (float) exact.toDouble();
+            if (Q.of(f).compareTo(exact) != 0) {
+                continue;
+            }
+            rational++;
+            assertEquals(f, s.distance(), a + " " + b);
+            assertEquals(f, Separation.between(b, a).distance(), b + " " + a);
+        }
+        System.out.println("Separation on whole numbers: " + apart + " pairs apart, " + rational + " with a distance a float holds, all exact");
+        assertTrue(rational > 300, "enough exact cases: " + rational);
+    }
+
+    /** Do the cores of two straight shapes meet (then their distance is 0, not an end's)? */
+    private static boolean coresMeet(Shape a, Shape b) {
+        return core(a).intersects(core(b)) || core(a).distance(core(b)) == 0;
+    }
+
+    // ---------------------------------------------------------------- ellipses
+
+    /** The distance from a point to the other shape's core (without its radius): the test's own sums, JTS's for a polygon. */
+    private static double pointTo(Shape s, double px, double py) {
+        if (s instanceof Ellipse e) {
+            throw new IllegalArgumentException("sampled separately: " + e);
+        }
+        if (s instanceof Rect || s instanceof Polygon) {
+            Geometry g = core(s);
+            return g.distance(GF.createPoint(new Coordinate(px, py)));
+        }
+        if (s instanceof Circle c) {
+            return Math.hypot(px - c.x(), py - c.y());
+        }
+        if (s instanceof Capsule k) {
+            return toSegment(px, py, k.x1(), k.y1(), k.x2(), k.y2());
+        }
+        Segment g = (Segment) s;
+        return toSegment(px, py, g.x1(), g.y1(), g.x2(), g.y2());
+    }
+
+    /** A point of the ellipse's outline at eccentric angle t. */
+    private static double[] on(Ellipse e, double t) {
+        double c = Math.cos(e.angle()), sn = Math.sin(e.angle());
+        double u = e.rx() * Math.cos(t), v = e.ry() * Math.sin(t);
+        return new double[] {e.x() + u * c - v * sn, e.y() + u * sn + v * c};
+    }
+
+    /** Golden-section search: where in [lo, hi] f is least, and the value there. */
+    private static double[] least(java.util.function.DoubleUnaryOperator f, double lo, double hi) {
+        double g = (Math.sqrt(5) - 1) / 2;
+        for (int k = 0; k < 70; k++) {
+            double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+            if (f.applyAsDouble(m1) < f.applyAsDouble(m2)) {
+                hi = m2;
+            } else {
+                lo = m1;
+            }
+        }
+        double t = (lo + hi) / 2;
+        return new double[] {t, f.applyAsDouble(t)};
+    }
+
+    /**
+     * The ellipse's distance from the other shape's core by sampling: 4096 points of its
+     * outline, the least refined by golden section around it with the test's own point
+     * distance; for two ellipses, 256 points of each, the closest pair refined by golden
+     * section over one outline's angle, each value itself a golden section over the other's.
+     * A reference that shares nothing with Distances but Math.
+     */
+    private static double sampled(Ellipse e, Shape other) {
+        if (other instanceof Ellipse f) {
+            int m = 256;
+            double step = 2 * Math.PI / m;
+            double best = Double.POSITIVE_INFINITY, te = 0, tf = 0;
+            for (int i = 0; i < m; i++) {
+                double[] p = on(e, i * step);
+                for (int j = 0; j < m; j++) {
+                    double[] q = on(f, j * step);
+                    double d = Math.hypot(p[0] - q[0], p[1] - q[1]);
+                    if (d < best) {
+                        best = d;
+                        te = i * step;
+                        tf = j * step;
+                    }
+                }
+            }
+            double e0 = te;
+            double[] r = least(t -> {
+                double[] q = on(f, t);
+                return least(u -> {
+                    double[] p = on(e, u);
+                    return Math.hypot(p[0] - q[0], p[1] - q[1]);
+                }, e0 - 4 * step, e0 + 4 * step)[1];
+            }, tf - 2 * step, tf + 2 * step);
+            return Math.min(best, r[1]);
+        }
+        int m = 4096;
+        double best = Double.POSITIVE_INFINITY, at = 0;
+        for (int i = 0; i < m; i++) {
+            double[] p = on(e, 2 * Math.PI * i / m);
+            double d = pointTo(other, p[0], p[1]);
+            if (d < best) {
+                best = d;
+                at = 2 * Math.PI * i / m;
+            }
+        }
+        double[] r = least(t -> {
+            double[] p = on(e, t);
+            return pointTo(other, p[0], p[1]);
+        }, at - 2 * Math.PI / m, at + 2 * Math.PI / m);
+        return Math.min(best, r[1]);
+    }
+
+    @Test
+    void ellipses_againstDenseSampling_bothOrders() {
+        SplittableRandom rnd = new SplittableRandom(2300);
+        int apart = 0, cases = 0;
+        double worst = 0, worstEllipses = 0;
+        for (int n = 0; n < 700; n++) {
+            int kb = n % 7;
+            Ellipse e = (Ellipse) random(rnd, 6, 0, 0, false);
+            Shape b = random(rnd, kb, rnd.nextDouble(10, 80), rnd.nextDouble(-40, 40), false);
+            cases++;
+            double size = scale(e, b);
+            checkShape(e, b, 1e-6 * size);
+            Separation s = Separation.between(e, b);
+            if (s == null) {
+                continue;
+            }
+            apart++;
+            double reference = Math.max(0, sampled(e, b) - radius(b));
+            // The answer's points are on the outlines and as far apart as it says (checkShape),
+            // so it is never below the true distance by more than that check allows; never
+            // above the refined sampling by more than its rounding and the stated tolerance
+            // (a missed least would show here).
+            double tol = Math.ulp(s.distance()) + hitbox.internal.Tolerance.SEPARATION_CURVED * size;
+            assertTrue(s.distance() <= reference + tol, s.distance() + " > sampled " + reference + ": " + e + " " + b);
+            double diff = Math.abs(reference - s.distance()) - Math.ulp(s.distance());
+            if (b instanceof Ellipse) {
+                worstEllipses = Math.max(worstEllipses, diff / size);
+            } else {
+                worst = Math.max(worst, diff / size);
+            }
+        }
+        System.out.println("Separation of ellipses vs dense sampling: " + cases + " pairs, " + apart
+                + " apart; beyond the float rounding of the answer, within " + Math.max(0, worst)
+                + " of the size of the refined sampling (other kinds), " + Math.max(0, worstEllipses) + " (two ellipses)");
+        assertTrue(apart > 400, "enough apart: " + apart);
+    }
+}
