@@ -19,8 +19,8 @@ import org.locationtech.jts.operation.distance.DistanceOp;
 /**
  * {@link Separation} against oracles that share no code with it: JTS's {@code DistanceOp}
  * (LocationTech's Java Topology Suite 1.20) for the straight and round kinds, exact rational
- * arithmetic ({@link ExactReference.Q}) for whole-number cases, and dense sampling of the
- * outline for ellipses. Every pair is checked in both orders, with the closest points on the
+ * arithmetic ({@link ExactReference.Q}) for whole-number cases, and for ellipses JTS's
+ * distances of polygons inside and around them (a bracket) and dense sampling of the outline. Every pair is checked in both orders, with the closest points on the
  * outlines and as far apart as the distance says.
  *
  * <p>A shape is a core (a point, a segment, an outline) and a radius, as JTS sees it: a circle
@@ -49,7 +49,9 @@ class SeparationOracleTest {
             case 4 -> TestShapes.starRing(rnd, 4 + rnd.nextInt(8), x, y, whole);
             case 5 -> new Capsule(x, y, (float) f.applyAsDouble(x + rnd.nextDouble(-30, 30)), (float) f.applyAsDouble(y + rnd.nextDouble(-30, 30)),
                     (float) f.applyAsDouble(rnd.nextDouble(0, 10)));
-            default -> new Ellipse(x, y, (float) rnd.nextDouble(1, 30), (float) rnd.nextDouble(1, 30),
+            // radii from 0.5 to 100, so that some are long and thin (several local least
+            // distances around the outline)
+            default -> new Ellipse(x, y, (float) Math.exp(rnd.nextDouble(-0.7, 4.6)), (float) Math.exp(rnd.nextDouble(-0.7, 4.6)),
                     rnd.nextBoolean() ? 0 : (float) rnd.nextDouble(-3, 3));
         };
     }
@@ -320,6 +322,33 @@ class SeparationOracleTest {
         return new double[] {e.x() + u * c - v * sn, e.y() + u * sn + v * c};
     }
 
+    /**
+     * The ellipse as a JTS polygon of n corners on its outline (inscribed), or, grown by
+     * 1 / cos(pi / n) about its centre, around it (circumscribed: the affine image of a
+     * circle's circumscribed polygon): the true distance lies between the two polygons'.
+     */
+    private static Geometry polygonOf(Ellipse e, int n, boolean around) {
+        double grow = around ? 1 / Math.cos(Math.PI / n) : 1;
+        Coordinate[] c = new Coordinate[n + 1];
+        for (int i = 0; i < n; i++) {
+            double[] p = on(e, 2 * Math.PI * i / n);
+            c[i] = new Coordinate(e.x() + grow * (p[0] - e.x()), e.y() + grow * (p[1] - e.y()));
+        }
+        c[n] = c[0];
+        return GF.createPolygon(c);
+    }
+
+    /** JTS's bracket of the distance between an ellipse and another shape: {lower, upper}. */
+    private static double[] bracket(Ellipse e, Shape other) {
+        int n = 2048;
+        Geometry in = polygonOf(e, n, false), out = polygonOf(e, n, true);
+        Geometry o = other instanceof Ellipse f ? null : core(other);
+        double lower = o == null ? out.distance(polygonOf((Ellipse) other, n, true)) : out.distance(o);
+        double upper = o == null ? in.distance(polygonOf((Ellipse) other, n, false)) : in.distance(o);
+        double r = radius(other);
+        return new double[] {Math.max(0, lower - r), Math.max(0, upper - r)};
+    }
+
     /** Golden-section search: where in [lo, hi] f is least, and the value there. */
     private static double[] least(java.util.function.DoubleUnaryOperator f, double lo, double hi) {
         double g = (Math.sqrt(5) - 1) / 2;
@@ -338,37 +367,10 @@ class SeparationOracleTest {
     /**
      * The ellipse's distance from the other shape's core by sampling: 4096 points of its
      * outline, the least refined by golden section around it with the test's own point
-     * distance; for two ellipses, 256 points of each, the closest pair refined by golden
-     * section over one outline's angle, each value itself a golden section over the other's.
-     * A reference that shares nothing with Distances but Math.
+     * distance (not for a second ellipse). A reference that shares nothing with Distances
+     * but Math.
      */
     private static double sampled(Ellipse e, Shape other) {
-        if (other instanceof Ellipse f) {
-            int m = 256;
-            double step = 2 * Math.PI / m;
-            double best = Double.POSITIVE_INFINITY, te = 0, tf = 0;
-            for (int i = 0; i < m; i++) {
-                double[] p = on(e, i * step);
-                for (int j = 0; j < m; j++) {
-                    double[] q = on(f, j * step);
-                    double d = Math.hypot(p[0] - q[0], p[1] - q[1]);
-                    if (d < best) {
-                        best = d;
-                        te = i * step;
-                        tf = j * step;
-                    }
-                }
-            }
-            double e0 = te;
-            double[] r = least(t -> {
-                double[] q = on(f, t);
-                return least(u -> {
-                    double[] p = on(e, u);
-                    return Math.hypot(p[0] - q[0], p[1] - q[1]);
-                }, e0 - 4 * step, e0 + 4 * step)[1];
-            }, tf - 2 * step, tf + 2 * step);
-            return Math.min(best, r[1]);
-        }
         int m = 4096;
         double best = Double.POSITIVE_INFINITY, at = 0;
         for (int i = 0; i < m; i++) {
@@ -387,14 +389,22 @@ class SeparationOracleTest {
     }
 
     @Test
-    void ellipses_againstDenseSampling_bothOrders() {
+    void ellipses_againstJtsBracketAndDenseSampling_bothOrders() {
         SplittableRandom rnd = new SplittableRandom(2300);
         int apart = 0, cases = 0;
-        double worst = 0, worstEllipses = 0;
-        for (int n = 0; n < 700; n++) {
+        double worst = 0, widest = 0;
+        // Long thin ellipses beside small ones: the distance around the long one's outline has
+        // a second, larger least on its far side (and near its tips), which a search must not take.
+        Ellipse thin = new Ellipse(0, 0, 100, 1), turned = new Ellipse(0, 0, 100, 1, 0.4f);
+        Shape[][] fixed = {{thin, new Ellipse(30, 3, 2, 1)}, {thin, new Ellipse(30, -3, 2, 1)},
+            {thin, new Ellipse(103, 1.5f, 1, 2)}, {thin, new Ellipse(-99, -2.5f, 3, 0.5f, 1)},
+            {turned, new Ellipse(0, 5, 3, 1)}, {turned, new Ellipse(90, 40, 1, 3, -0.2f)},
+            {new Ellipse(0, 0, 1, 100), new Ellipse(4, 60, 1, 100)}, {thin, new Circle(50, 3, 1)},
+            {thin, new Capsule(-80, 2, 80, 3, 0.5f)}, {thin, Polygon.of(-50, 5, 50, 5, 0, 2.5f)}};
+        for (int n = 0; n < 700 + fixed.length; n++) {
             int kb = n % 7;
-            Ellipse e = (Ellipse) random(rnd, 6, 0, 0, false);
-            Shape b = random(rnd, kb, rnd.nextDouble(10, 80), rnd.nextDouble(-40, 40), false);
+            Ellipse e = n < fixed.length ? (Ellipse) fixed[n][0] : (Ellipse) random(rnd, 6, 0, 0, false);
+            Shape b = n < fixed.length ? fixed[n][1] : random(rnd, kb, rnd.nextDouble(10, 80), rnd.nextDouble(-40, 40), false);
             cases++;
             double size = scale(e, b);
             checkShape(e, b, 1e-6 * size);
@@ -403,23 +413,23 @@ class SeparationOracleTest {
                 continue;
             }
             apart++;
-            double reference = Math.max(0, sampled(e, b) - radius(b));
-            // The answer's points are on the outlines and as far apart as it says (checkShape),
-            // so it is never below the true distance by more than that check allows; never
-            // above the refined sampling by more than its rounding and the stated tolerance
-            // (a missed least would show here).
             double tol = Math.ulp(s.distance()) + hitbox.internal.Tolerance.SEPARATION_CURVED * size;
-            assertTrue(s.distance() <= reference + tol, s.distance() + " > sampled " + reference + ": " + e + " " + b);
-            double diff = Math.abs(reference - s.distance()) - Math.ulp(s.distance());
-            if (b instanceof Ellipse) {
-                worstEllipses = Math.max(worstEllipses, diff / size);
-            } else {
-                worst = Math.max(worst, diff / size);
+            // Between JTS's distances of the polygons inside and around the ellipse(s): a missed
+            // least distance shows as an answer above the upper bound.
+            double[] br = bracket(e, b);
+            widest = Math.max(widest, (br[1] - br[0]) / size);
+            assertTrue(s.distance() >= br[0] - tol && s.distance() <= br[1] + tol,
+                    s.distance() + " outside JTS's [" + br[0] + ", " + br[1] + "]: " + e + " " + b);
+            if (!(b instanceof Ellipse)) {
+                // Refined sampling, accurate to double rounding: the answer is within its own float rounding.
+                double reference = Math.max(0, sampled(e, b) - radius(b));
+                assertTrue(s.distance() <= reference + tol, s.distance() + " > sampled " + reference + ": " + e + " " + b);
+                worst = Math.max(worst, (Math.abs(reference - s.distance()) - Math.ulp(s.distance())) / size);
             }
         }
-        System.out.println("Separation of ellipses vs dense sampling: " + cases + " pairs, " + apart
-                + " apart; beyond the float rounding of the answer, within " + Math.max(0, worst)
-                + " of the size of the refined sampling (other kinds), " + Math.max(0, worstEllipses) + " (two ellipses)");
+        System.out.println("Separation of ellipses: " + cases + " pairs, " + apart + " apart, all inside JTS's bracket"
+                + " (inscribed and circumscribed 2048-gons, at most " + widest + " of the size wide); against refined"
+                + " sampling (one ellipse), within the answer's float rounding + " + Math.max(0, worst) + " of the size");
         assertTrue(apart > 400, "enough apart: " + apart);
     }
 }
