@@ -217,6 +217,27 @@ class SeparationOracleTest {
         assertTrue(apart > 2000, "enough pairs apart: " + apart);
     }
 
+    @Test
+    void manySidedPolygons_agreeWithJts_bothOrders() {
+        // Enough edge pairs for Distances.chains to take them in order and stop early.
+        SplittableRandom rnd = new SplittableRandom(230);
+        int apart = 0;
+        for (int n = 0; n < 80; n++) {
+            Shape a = TestShapes.starRing(rnd, 20 + rnd.nextInt(150), 0, 0, rnd.nextBoolean());
+            Shape b = n % 3 == 0 ? TestShapes.starRing(rnd, 20 + rnd.nextInt(150), rnd.nextDouble(-120, 120), rnd.nextDouble(-120, 120), false)
+                    : random(rnd, rnd.nextInt(6), rnd.nextDouble(-120, 120), rnd.nextDouble(-120, 120), false);
+            double oracle = Math.max(0, DistanceOp.distance(core(a), core(b)) - radius(a) - radius(b));
+            checkShape(a, b, 1e-5 * scale(a, b));
+            for (Separation s : new Separation[] {Separation.between(a, b), Separation.between(b, a)}) {
+                if (s != null) {
+                    apart++;
+                    assertEquals(oracle, s.distance(), Math.ulp((float) oracle) + 1e-12 * scale(a, b), a + " " + b);
+                }
+            }
+        }
+        assertTrue(apart > 60, "enough apart: " + apart);
+    }
+
     // ---------------------------------------------------------------- exact
 
     private static Q exactSquaredDistance(Shape a, Shape b) {
