@@ -37,6 +37,20 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
     }
 
     /**
+     * How far this shape is from {@code other}, and the closest point on each, or null when
+     * they overlap (then use {@link #contact}). Same as
+     * {@link Separation#between Separation.between(this, other)}: every pair of shapes,
+     * segments too; touching shapes give distance 0.
+     *
+     * @param other the other shape, not null
+     * @return the separation (this shape's point first), or null when the shapes overlap
+     * @throws IllegalArgumentException if {@code other} is null
+     */
+    default Separation separation(Shape other) {
+        return Separation.between(this, Check.notNull("other", other));
+    }
+
+    /**
      * Is the point in this shape? For shapes with area the outline does not count; for a
      * segment, a point on it counts.
      *

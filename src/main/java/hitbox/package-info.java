@@ -88,7 +88,8 @@
  *       ({@link hitbox.Hit}, {@link hitbox.RayHit}, {@link hitbox.Contact},
  *       {@link hitbox.Snap.Push}).</li>
  *   <li><b>No result.</b> An answer that is an object is {@code null} when there is none (no
- *       contact, no hit, no ray hit, no bounds for an empty mask); a {@code float} time or
+ *       contact, no hit, no ray hit, no {@link hitbox.Separation} for shapes that overlap, no
+ *       bounds for an empty mask); a {@code float} time or
  *       distance is {@link java.lang.Float#POSITIVE_INFINITY}, so {@code t <= 1} reads "hits
  *       this frame"; an index is -1, as in {@link java.util.List#indexOf}; a boolean is
  *       false; a set of sides is 0 ({@code NONE}); an array of answers is empty, never
@@ -144,7 +145,8 @@
  *   <li>Paddings of a broad phase's query box (1e-9 of the coordinates): a candidate too
  *       many, which the exact test drops, never one too few.</li>
  *   <li>Stopping rules of the searches behind curved and turning shapes: contacts of
- *       ellipses and capsules, and {@link hitbox.Sweep#turningTimeOfImpact} and the curved
+ *       ellipses and capsules, the {@link hitbox.Separation} of an ellipse (to about 1e-9 of
+ *       the shapes' size), and {@link hitbox.Sweep#turningTimeOfImpact} and the curved
  *       sweeps, answer to within those rules (each method's documentation says how
  *       closely).</li>
  * </ul>
@@ -168,7 +170,9 @@
  * {@code x, y, w, h}, or {@code rectX, rectY, rectW, rectH} beside another shape's
  * coordinates; an ellipse's {@code rx} and {@code ry} are its radii. The verb says what comes
  * back: {@code overlaps}, {@code contains} and the {@code Collide} tests a boolean,
- * {@code contact} a {@link hitbox.Contact} or null, {@code timeOfImpact} a
+ * {@code contact} a {@link hitbox.Contact} or null, {@code separation} a
+ * {@link hitbox.Separation} (how far apart, and the closest points) or null when the shapes
+ * overlap, {@code timeOfImpact} a
  * {@link hitbox.Hit} or null (its time in [0, 1]), {@code distance...} a length or
  * {@code +Infinity}; {@link hitbox.Hits#first} an index, {@link hitbox.Hits#firstShape} the
  * shape.

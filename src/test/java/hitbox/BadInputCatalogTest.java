@@ -264,7 +264,8 @@ class BadInputCatalogTest {
             assertEquals(false, result, what);
         } else if (type == float.class) {
             // Times and distances: +Infinity; other floats (positions) may be NaN.
-            if (e.getName().startsWith("distanceTo") || e.getDeclaringClass() == Sweep.class) {
+            if (e.getName().startsWith("distanceTo") || e.getDeclaringClass() == Sweep.class
+                    || e.getDeclaringClass() == Separation.class) {
                 assertEquals(Float.POSITIVE_INFINITY, result, what);
             }
         } else if (type == int.class) {
@@ -274,7 +275,7 @@ class BadInputCatalogTest {
             assertEquals(0, ((int[]) result).length, what);
         } else if (type == Snap.Push.class) {
             assertEquals(Side.NONE, ((Snap.Push) result).side(), what);
-        } else if (type == Hit.class || type == Contact.class || type == RayHit.class) {
+        } else if (type == Hit.class || type == Contact.class || type == RayHit.class || type == Separation.class) {
             assertEquals(null, result, what);
         }
     }

@@ -421,9 +421,9 @@ class JavadocContractTest {
             case "boolean" -> Pattern.compile("\\bfalse\\b");
             case "int" -> method.equals("first") ? MINUS_ONE : Pattern.compile("\\b0\\b|NONE");
             case "int[]" -> Pattern.compile("\\bempty\\b");
-            case "float" -> method.startsWith("distanceTo") || owner.equals("Sweep") ? INFINITY : null;
+            case "float" -> method.startsWith("distanceTo") || owner.equals("Sweep") || owner.equals("Separation") ? INFINITY : null;
             case "Push", "Snap.Push" -> NONE;
-            case "Hit", "Contact", "RayHit" -> NULL;
+            case "Hit", "Contact", "RayHit", "Separation" -> NULL;
             default -> null;
         };
     }

@@ -219,6 +219,20 @@ class ShapeKindDispatchTest {
                     assertEquals(c.depth(), back.depth(), 1e-3 * c.depth());
                     assertNull(a.contact(b.translated(500, 0)), "far apart");
                 }));
+                tests.add(pair(first, second, name, "separation", (a, b) -> {
+                    assertNull(a.separation(b), "overlapping shapes have no separation");
+                    assertNull(Separation.between(b, a));
+                    Shape far = b.translated(500, 0);
+                    Separation s = a.separation(far), back = far.separation(a);
+                    assertNotNull(s, "far apart");
+                    assertNotNull(back, "far apart, the other way round");
+                    double gap = far.minX() - a.maxX();
+                    assertTrue(s.distance() >= gap - 1e-3 && s.distance() < 500, "distance " + s.distance() + ", boxes " + gap + " apart");
+                    assertEquals(s.distance(), back.distance(), 1e-4 * s.distance());
+                    assertEquals(s.distance(), Math.hypot(s.bx() - s.ax(), s.by() - s.ay()), 1e-3);
+                    assertTrue(SeparationOracleTest.toOutline(a, s.ax(), s.ay()) < 1e-3, "a's point on a: " + s);
+                    assertTrue(SeparationOracleTest.toOutline(far, s.bx(), s.by()) < 1e-3, "b's point on b: " + s);
+                }));
                 tests.add(pair(first, second, name, "Sweep.timeOfImpact", (a, b) -> {
                     assertTrue(Sweep.timeOfImpact(a, 10, 0, b).alreadyOverlapping(), "overlapping at the start");
                     // Two copies of one segment, one moved along the other, would meet only at

@@ -141,6 +141,17 @@ public final class Tolerance {
     public static final double AXIS_SNAP = 1e-15;
 
     /**
+     * How close {@link Separation}'s distance is for a pair with an ellipse (two different
+     * radii), relative to the shapes' size: the searches behind it ({@link Distances}) stop
+     * at a double's resolution of the slope of the distance (Eberly's bisection for a point,
+     * a bisection along an edge or around a second ellipse), so the distance, which is flat
+     * at its least, is right to far better than this; the closest points, along the outline,
+     * to about its square root. Not used to decide anything: the stated accuracy, which the
+     * tests hold the answers to.
+     */
+    public static final double SEPARATION_CURVED = 1e-9;
+
+    /**
      * Where {@link ConvexSweep}'s search for the best separating direction stops, in radians:
      * any direction gives a safe step, so this only buys a longer one.
      */

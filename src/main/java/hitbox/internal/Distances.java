@@ -1,0 +1,518 @@
+package hitbox.internal;
+
+import hitbox.*;
+
+/**
+ * The distance between two shapes that do not overlap, and the closest points: the kernel
+ * behind {@link Separation}.
+ *
+ * <p>When two shapes do not overlap (by the touching rule, decided exactly by
+ * {@link Overlaps}), neither reaches into the other's inside, so the distance between them
+ * is the distance between their outlines (for a segment, the segment itself; for a shape of
+ * size 0, what is left of it). Every shape is reduced to its <em>core</em> and a radius: a
+ * circle is its centre and r, a capsule its segment and r, an ellipse with equal radii a
+ * circle and a flat one its segment, a rectangle or polygon its closed outline (convex or
+ * concave alike), a segment itself; only an ellipse with two different radii stays curved.
+ * The distance is the cores' distance less the two radii (held at 0), and each closest point
+ * is its core's closest point moved by its radius towards the other. So every ordered pair of
+ * the six kinds is answered by one of three kernels, each written once:
+ *
+ * <table>
+ *   <caption>Which kernel answers each pair</caption>
+ *   <tr><th></th><th>Circle, Capsule, Rect, Segment, Polygon; a flat or round Ellipse</th><th>an Ellipse</th></tr>
+ *   <tr><th>Circle, Capsule, Rect, Segment, Polygon; a flat or round Ellipse</th><td>{@link #chains}</td><td>{@link #ellipseChain}</td></tr>
+ *   <tr><th>an Ellipse</th><td>{@link #ellipseChain}, swapped</td><td>{@link #ellipses}</td></tr>
+ * </table>
+ *
+ * <p><b>Straight cores</b> ({@link #chains}): the least distance over every pair of edges,
+ * each pair closest-point by exact orientation signs ({@link Lines#segmentsMeet}: edges that
+ * meet are 0 apart), else the least of the four end-to-edge distances, worked in double from
+ * differences of the floats. For whole-number coordinates of modest size this is exact
+ * wherever the distance is a rational number that a float holds: an axis-aligned gap (the
+ * cross product over the edge's length, both exact), a corner-to-corner distance that is a
+ * whole number (a square root of an exact sum of squares is correctly rounded).
+ *
+ * <p><b>Ellipses</b> ({@link #ellipseChain}, {@link #ellipses}): the distance from a point to
+ * the ellipse is Eberly's ({@link Ellipses#distance}, to double precision). Along an edge the
+ * distance to the ellipse is a convex function, whose least is found by bisection on the
+ * sign of its slope; around a second ellipse's outline it may have several local least
+ * values, so {@value #ELLIPSE_SAMPLES} points are sampled and each local least is refined the
+ * same way. The distance is then right to about {@link Tolerance#SEPARATION_CURVED} of the
+ * shapes' size (the searches stop at a double's resolution of the slope; see there).
+ *
+ * <p>This class is longer than most (about 510 lines): the three kernels, the pruning that
+ * keeps two polygons of many sides fast, and their small helpers, kept in one place.
+ */
+public final class Distances {
+    private Distances() {
+    }
+
+    /** How many points of a second ellipse's outline are sampled before refining (see the class doc). */
+    static final int ELLIPSE_SAMPLES = 128;
+
+    /** Steps of the slope bisections: more than a double's 53 bits of a parameter. */
+    private static final int BISECTIONS = 100;
+
+    /**
+     * A shape's core: a chain of straight edges (one vertex for a point, two for a segment,
+     * a closed outline for a rectangle or polygon) or an ellipse with two different radii,
+     * and the radius around it.
+     *
+     * @param xy      the chain's vertices, x0, y0, x1, y1, ...; null for an ellipse (only read)
+     * @param closed  does the chain close back to its first vertex (an outline)?
+     * @param ellipse the ellipse, or null for a chain
+     * @param r       the radius around the core, 0 or more
+     */
+    public record Core(double[] xy, boolean closed, Ellipse ellipse, double r) {
+    }
+
+    /** The shape's core: the one switch over the kinds here. */
+    public static Core core(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE -> ellipseCore((Ellipse) s);
+            case CAPSULE -> {
+                Capsule k = (Capsule) s;
+                yield new Core(new double[] {k.x1(), k.y1(), k.x2(), k.y2()}, false, null, k.r());
+            }
+            case CIRCLE -> {
+                Circle c = (Circle) s;
+                yield new Core(new double[] {c.x(), c.y()}, false, null, c.r());
+            }
+            case RECT -> new Core(Polygons.corners((Rect) s, new double[8]), true, null, 0);
+            case SEGMENT -> {
+                Segment g = (Segment) s;
+                yield new Core(new double[] {g.x1(), g.y1(), g.x2(), g.y2()}, false, null, 0);
+            }
+            case POLYGON -> new Core(HiddenParts.corners((Polygon) s), true, null, 0); // cached, only read
+        };
+    }
+
+    /**
+     * An ellipse's core: a circle's (its centre and radius) when its radii are equal, its
+     * segment when it is flat (as {@link TurnedEllipses#flatSegment} when turned, as the
+     * overlap test reads it), else the ellipse itself.
+     */
+    private static Core ellipseCore(Ellipse e) {
+        if (e.rx() == e.ry()) {
+            return new Core(new double[] {e.x(), e.y()}, false, null, e.rx());
+        }
+        if (e.rx() == 0 || e.ry() == 0) {
+            if (e.angle() == 0) {
+                return new Core(new double[] {(double) e.x() - e.rx(), (double) e.y() - e.ry(),
+                        (double) e.x() + e.rx(), (double) e.y() + e.ry()}, false, null, 0);
+            }
+            Segment g = TurnedEllipses.flatSegment(e);
+            return new Core(new double[] {g.x1(), g.y1(), g.x2(), g.y2()}, false, null, 0);
+        }
+        return new Core(null, false, e, 0);
+    }
+
+    /**
+     * The separation of two shapes, or null when they overlap.
+     *
+     * @param a the first shape, not null
+     * @param b the second shape, not null
+     * @return the separation, points on a then b, or null when they overlap
+     */
+    public static Separation between(Shape a, Shape b) {
+        if (Overlaps.test(a, b)) {
+            return null;
+        }
+        double[] q = new double[4];
+        double gap = apart(core(a), core(b), q);
+        return new Separation(Check.held(gap), Check.held(q[0]), Check.held(q[1]), Check.held(q[2]), Check.held(q[3]));
+    }
+
+    /**
+     * The distance between two cores with their radii, held at 0, and the closest points
+     * (moved out by the radii) in {@code q}: a's x, y, then b's.
+     */
+    public static double apart(Core a, Core b, double[] q) {
+        double d = cores(a, b, q);
+        double ra = a.r(), rb = b.r();
+        if (ra == 0 && rb == 0) {
+            return d;
+        }
+        double gap = d - (ra + rb);
+        if (d > 0) {
+            double ux = (q[2] - q[0]) / d, uy = (q[3] - q[1]) / d;
+            q[0] += ra * ux;
+            q[1] += ra * uy;
+            q[2] -= rb * ux;
+            q[3] -= rb * uy;
+        }
+        if (!(gap > 0)) {
+            // Touching: one point, on both outlines. The one on a core without a radius is
+            // exactly on its outline; else a's, moved out by its radius.
+            if (rb == 0) {
+                q[0] = q[2];
+                q[1] = q[3];
+            } else {
+                q[2] = q[0];
+                q[3] = q[1];
+            }
+            return 0;
+        }
+        return gap;
+    }
+
+    /** The distance between two cores (without their radii), closest points in q. */
+    private static double cores(Core a, Core b, double[] q) {
+        if (a.ellipse() == null && b.ellipse() == null) {
+            return chains(a.xy(), a.closed(), b.xy(), b.closed(), q);
+        }
+        if (a.ellipse() != null && b.ellipse() != null) {
+            return ellipses(a.ellipse(), b.ellipse(), q);
+        }
+        if (a.ellipse() != null) {
+            return ellipseChain(a.ellipse(), b.xy(), b.closed(), q, false);
+        }
+        return ellipseChain(b.ellipse(), a.xy(), a.closed(), q, true);
+    }
+
+    // ---------------------------------------------------------------- straight cores
+
+    /** How many edges a chain of n vertices has: a point counts as one edge of length 0. */
+    private static int edges(int n, boolean closed) {
+        return n <= 1 ? 1 : closed ? n : n - 1;
+    }
+
+    /**
+     * Above how many edge pairs {@link #chains} takes them in order of their reach towards
+     * each other, which lets it stop early: below, the plain double loop is cheaper.
+     */
+    private static final int SORT_ABOVE = 64;
+
+    /**
+     * The least distance between two chains of straight edges (a point, a segment, or a
+     * closed outline), and the closest points in q: a's, then b's. Edge pairs whose boxes
+     * are further apart than the best so far are skipped. For many pairs (two polygons of
+     * many sides) the edges are taken in order of their reach along the direction from a's
+     * box centre to b's: a's from the furthest-reaching, b's from the least, and a loop
+     * stops once the gap along that direction (a lower bound of the distance, as a
+     * projection) exceeds the best so far, with a slack of 1e-12 of the coordinates over
+     * its rounding. The least is the same; only pairs that cannot beat it are skipped.
+     */
+    public static double chains(double[] a, boolean closedA, double[] b, boolean closedB, double[] q) {
+        int na = a.length / 2, nb = b.length / 2;
+        int ea = edges(na, closedA), eb = edges(nb, closedB);
+        boolean sorted = (long) ea * eb > SORT_ABOVE;
+        double[] hiA = null, loB = null;
+        int[] oa = null, ob = null;
+        double slack = 0;
+        if (sorted) {
+            double[] ba = box(a), bb = box(b);
+            double ux = (bb[0] + bb[2]) / 2 - (ba[0] + ba[2]) / 2, uy = (bb[1] + bb[3]) / 2 - (ba[1] + ba[3]) / 2;
+            double len = Math.hypot(ux, uy);
+            ux = len > 0 ? ux / len : 1;
+            uy = len > 0 ? uy / len : 0;
+            hiA = reach(a, na, ea, ux, uy, true);
+            loB = reach(b, nb, eb, ux, uy, false);
+            oa = order(hiA, true);
+            ob = order(loB, false);
+            for (double v : ba) {
+                slack = Math.max(slack, Math.abs(v));
+            }
+            for (double v : bb) {
+                slack = Math.max(slack, Math.abs(v));
+            }
+            slack *= 1e-12;
+        }
+        double best = Double.POSITIVE_INFINITY;
+        double[] t = new double[4];
+        for (int k = 0; k < ea; k++) {
+            int i = sorted ? oa[k] : k;
+            if (sorted && loB[ob[0]] - hiA[i] > best + slack) {
+                break;
+            }
+            int i2 = na <= 1 ? i : (i + 1) % na;
+            double ax1 = a[2 * i], ay1 = a[2 * i + 1], ax2 = a[2 * i2], ay2 = a[2 * i2 + 1];
+            for (int m = 0; m < eb; m++) {
+                int j = sorted ? ob[m] : m;
+                if (sorted && loB[j] - hiA[i] > best + slack) {
+                    break;
+                }
+                int j2 = nb <= 1 ? j : (j + 1) % nb;
+                double bx1 = b[2 * j], by1 = b[2 * j + 1], bx2 = b[2 * j2], by2 = b[2 * j2 + 1];
+                double gx = Math.max(0, Math.max(Math.min(bx1, bx2) - Math.max(ax1, ax2), Math.min(ax1, ax2) - Math.max(bx1, bx2)));
+                double gy = Math.max(0, Math.max(Math.min(by1, by2) - Math.max(ay1, ay2), Math.min(ay1, ay2) - Math.max(by1, by2)));
+                if (gx > best || gy > best) {
+                    continue;
+                }
+                double d = segments(ax1, ay1, ax2, ay2, bx1, by1, bx2, by2, t);
+                if (d < best) {
+                    best = d;
+                    System.arraycopy(t, 0, q, 0, 4);
+                    if (d == 0) {
+                        return 0;
+                    }
+                }
+            }
+        }
+        return best;
+    }
+
+    /** The chain's box: min x, min y, max x, max y. */
+    private static double[] box(double[] xy) {
+        double[] r = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int i = 0; i < xy.length - 1; i += 2) {
+            r[0] = Math.min(r[0], xy[i]);
+            r[1] = Math.min(r[1], xy[i + 1]);
+            r[2] = Math.max(r[2], xy[i]);
+            r[3] = Math.max(r[3], xy[i + 1]);
+        }
+        return r;
+    }
+
+    /** Each edge's reach along (ux, uy): the larger of its ends' if {@code high}, else the smaller. */
+    private static double[] reach(double[] xy, int n, int edges, double ux, double uy, boolean high) {
+        double[] r = new double[edges];
+        for (int i = 0; i < edges; i++) {
+            int i2 = n <= 1 ? i : (i + 1) % n;
+            double p = ux * xy[2 * i] + uy * xy[2 * i + 1], p2 = ux * xy[2 * i2] + uy * xy[2 * i2 + 1];
+            r[i] = high ? Math.max(p, p2) : Math.min(p, p2);
+        }
+        return r;
+    }
+
+    /** The indices of the keys, in descending order of key if {@code descending}, else ascending. */
+    private static int[] order(double[] keys, boolean descending) {
+        Integer[] idx = new Integer[keys.length];
+        for (int i = 0; i < idx.length; i++) {
+            idx[i] = i;
+        }
+        java.util.Arrays.sort(idx, (x, y) -> descending ? Double.compare(keys[y], keys[x]) : Double.compare(keys[x], keys[y]));
+        int[] out = new int[idx.length];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = idx[i];
+        }
+        return out;
+    }
+
+    /**
+     * The distance between closed segments AB and CD (either may be a point), closest points
+     * in q (on AB, then on CD): 0 where they meet, by exact orientation signs.
+     */
+    public static double segments(double ax, double ay, double bx, double by,
+                                  double cx, double cy, double dx, double dy, double[] q) {
+        double[] f = new double[2];
+        double best = pointSegment(ax, ay, cx, cy, dx, dy, f);
+        put(q, ax, ay, f[0], f[1]);
+        double d = pointSegment(bx, by, cx, cy, dx, dy, f);
+        if (d < best) {
+            best = put(q, bx, by, f[0], f[1]) + d;
+        }
+        d = pointSegment(cx, cy, ax, ay, bx, by, f);
+        if (d < best) {
+            best = put(q, f[0], f[1], cx, cy) + d;
+        }
+        d = pointSegment(dx, dy, ax, ay, bx, by, f);
+        if (d < best) {
+            best = put(q, f[0], f[1], dx, dy) + d;
+        }
+        if (best > 0 && Lines.segmentsMeet(ax, ay, bx, by, cx, cy, dx, dy)) {
+            // They cross (no end lies on the other, or rounding hid it): at the crossing.
+            double o1 = Lines.orient(cx, cy, dx, dy, ax, ay), o2 = Lines.orient(cx, cy, dx, dy, bx, by);
+            double s = o1 == o2 ? 0 : o1 / (o1 - o2);
+            double x = ax + s * (bx - ax), y = ay + s * (by - ay);
+            return put(q, x, y, x, y);
+        }
+        return best;
+    }
+
+    /** Writes the two points into q; returns 0, for a caller to add its distance to. */
+    private static double put(double[] q, double x1, double y1, double x2, double y2) {
+        q[0] = x1;
+        q[1] = y1;
+        q[2] = x2;
+        q[3] = y2;
+        return 0;
+    }
+
+    /**
+     * The distance from point P to the closed segment AB (a point if A = B), and the
+     * segment's closest point in {@code foot}. In the segment's interior, the gap across an
+     * axis-aligned edge (exact), else the cross product over the length.
+     */
+    public static double pointSegment(double px, double py, double ax, double ay, double bx, double by, double[] foot) {
+        double ex = bx - ax, ey = by - ay, fx = px - ax, fy = py - ay;
+        double len2 = ex * ex + ey * ey;
+        double dot = fx * ex + fy * ey;
+        if (len2 == 0 || dot <= 0) {
+            foot[0] = ax;
+            foot[1] = ay;
+            return Math.sqrt(fx * fx + fy * fy);
+        }
+        if (dot >= len2) {
+            foot[0] = bx;
+            foot[1] = by;
+            double gx = px - bx, gy = py - by;
+            return Math.sqrt(gx * gx + gy * gy);
+        }
+        // An axis-aligned edge: the gap across it, exact whatever the sizes.
+        if (ex == 0) {
+            foot[0] = ax;
+            foot[1] = py;
+            return Math.abs(fx);
+        }
+        if (ey == 0) {
+            foot[0] = px;
+            foot[1] = ay;
+            return Math.abs(fy);
+        }
+        double s = dot / len2;
+        foot[0] = ax + s * ex;
+        foot[1] = ay + s * ey;
+        return Math.abs(ex * fy - ey * fx) / Math.sqrt(len2);
+    }
+
+    // ---------------------------------------------------------------- ellipses
+
+    /**
+     * The distance from a point to an ellipse's outline (two different radii, both above 0;
+     * the point not inside), and the outline's closest point in {@code near}: the point taken
+     * into the ellipse's frame, Eberly's closest point there, and back.
+     */
+    public static double ellipsePoint(Ellipse e, double px, double py, double[] near) {
+        double c = e.angle() == 0 ? 1 : Math.cos(e.angle()), s = e.angle() == 0 ? 0 : Math.sin(e.angle());
+        double dx = px - e.x(), dy = py - e.y();
+        double u = dx * c + dy * s, v = -dx * s + dy * c;
+        double d = Ellipses.distance(e.rx(), e.ry(), u, v, near);
+        double nu = near[0], nv = near[1];
+        near[0] = e.x() + (nu * c - nv * s);
+        near[1] = e.y() + (nu * s + nv * c);
+        return d;
+    }
+
+    /**
+     * The distance from an ellipse to a chain of straight edges, closest points in q: the
+     * ellipse's first, or the chain's first if {@code chainFirst}.
+     */
+    public static double ellipseChain(Ellipse e, double[] xy, boolean closed, double[] q, boolean chainFirst) {
+        int n = xy.length / 2, edges = edges(n, closed);
+        double best = Double.POSITIVE_INFINITY;
+        double[] t = new double[4];
+        for (int i = 0; i < edges; i++) {
+            int i2 = n <= 1 ? i : (i + 1) % n;
+            double d = ellipseSegment(e, xy[2 * i], xy[2 * i + 1], xy[2 * i2], xy[2 * i2 + 1], t);
+            if (d < best) {
+                best = d;
+                System.arraycopy(t, 0, q, 0, 4);
+            }
+        }
+        if (chainFirst) {
+            swap(q);
+        }
+        return best;
+    }
+
+    /** Exchanges the two points of q. */
+    private static void swap(double[] q) {
+        double x = q[0], y = q[1];
+        q[0] = q[2];
+        q[1] = q[3];
+        q[2] = x;
+        q[3] = y;
+    }
+
+    /**
+     * The distance from an ellipse to the closed segment AB outside it, closest points in q
+     * (the ellipse's, then the segment's). The distance to a convex set is convex along the
+     * segment, so its least is where its slope, {@code (P - near) . (B - A)}, changes sign:
+     * found by bisection.
+     */
+    public static double ellipseSegment(Ellipse e, double ax, double ay, double bx, double by, double[] q) {
+        double[] near = new double[2];
+        double ex = bx - ax, ey = by - ay;
+        double s;
+        if (ex == 0 && ey == 0 || slope(e, ax, ay, ex, ey, near) >= 0) {
+            s = 0;
+        } else if (slope(e, bx, by, ex, ey, near) <= 0) {
+            s = 1;
+        } else {
+            double lo = 0, hi = 1;
+            s = 0.5;
+            for (int i = 0; i < BISECTIONS; i++) {
+                s = (lo + hi) / 2;
+                if (s == lo || s == hi) {
+                    break;
+                }
+                double m = slope(e, ax + s * ex, ay + s * ey, ex, ey, near);
+                if (m == 0) {
+                    break;
+                }
+                if (m < 0) {
+                    lo = s;
+                } else {
+                    hi = s;
+                }
+            }
+        }
+        double px = s == 0 ? ax : s == 1 ? bx : ax + s * ex, py = s == 0 ? ay : s == 1 ? by : ay + s * ey;
+        double d = ellipsePoint(e, px, py, near);
+        return put(q, near[0], near[1], px, py) + d;
+    }
+
+    /** The sign of the distance's slope along (dx, dy) at (px, py), outside the ellipse. */
+    private static double slope(Ellipse e, double px, double py, double dx, double dy, double[] near) {
+        ellipsePoint(e, px, py, near);
+        return (px - near[0]) * dx + (py - near[1]) * dy;
+    }
+
+    /** A point of ellipse f's outline, at eccentric angle t, into {@code p}; its tangent into p[2], p[3]. */
+    private static void onOutline(Ellipse f, double t, double[] p) {
+        double c = f.angle() == 0 ? 1 : Math.cos(f.angle()), s = f.angle() == 0 ? 0 : Math.sin(f.angle());
+        double u = f.rx() * Math.cos(t), v = f.ry() * Math.sin(t);
+        double du = -f.rx() * Math.sin(t), dv = f.ry() * Math.cos(t);
+        p[0] = f.x() + (u * c - v * s);
+        p[1] = f.y() + (u * s + v * c);
+        p[2] = du * c - dv * s;
+        p[3] = du * s + dv * c;
+    }
+
+    /**
+     * The distance between two ellipses that do not overlap, closest points in q (e's, then
+     * f's): f's outline sampled at {@value #ELLIPSE_SAMPLES} eccentric angles, the distance
+     * of each point to e by {@link #ellipsePoint}, and each local least refined by bisection
+     * on the sign of the slope along f's outline.
+     */
+    public static double ellipses(Ellipse e, Ellipse f, double[] q) {
+        int n = ELLIPSE_SAMPLES;
+        double[] g = new double[n];
+        double[] p = new double[4], near = new double[2];
+        for (int i = 0; i < n; i++) {
+            onOutline(f, 2 * Math.PI * i / n, p);
+            g[i] = ellipsePoint(e, p[0], p[1], near);
+        }
+        double best = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < n; i++) {
+            if (!(g[i] <= g[(i + n - 1) % n] && g[i] <= g[(i + 1) % n])) {
+                continue;
+            }
+            double lo = 2 * Math.PI * (i - 1) / n, hi = 2 * Math.PI * (i + 1) / n;
+            for (int k = 0; k < BISECTIONS; k++) {
+                double m = (lo + hi) / 2;
+                if (m == lo || m == hi) {
+                    break;
+                }
+                onOutline(f, m, p);
+                ellipsePoint(e, p[0], p[1], near);
+                double sl = (p[0] - near[0]) * p[2] + (p[1] - near[1]) * p[3];
+                if (sl < 0) {
+                    lo = m;
+                } else {
+                    hi = m;
+                }
+            }
+            // The refined point, and the sampled one in case the bracket held no change of sign.
+            for (double c : new double[] {2 * Math.PI * i / n, (lo + hi) / 2}) {
+                onOutline(f, c, p);
+                double d = ellipsePoint(e, p[0], p[1], near);
+                if (d < best) {
+                    best = put(q, near[0], near[1], p[0], p[1]) + d;
+                }
+            }
+        }
+        return best;
+    }
+}
