@@ -388,8 +388,8 @@ public final class Edges {
      */
     private static boolean atMost(float p, float a, float b) {
         double s = (double) a + b;
-        if (Math.abs(p - s) > 2 * Math.ulp(s)) {
-            return p < s;
+        if (!Double.isFinite(s) || Math.abs(p - s) > 2 * Math.ulp(s)) {
+            return p < s || p == s;  // an infinite or NaN sum decides as it is (NaN: false)
         }
         return new java.math.BigDecimal(p).compareTo(new java.math.BigDecimal(a).add(new java.math.BigDecimal(b))) <= 0;
     }

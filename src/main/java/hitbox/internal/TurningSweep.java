@@ -22,6 +22,10 @@ import java.util.List;
  *
  * <p>The gap between convex pieces is {@code -(h_A(n) + h_B(-n))} maximised over the
  * direction n, as in {@link Supports}; a concave polygon obstacle is its convex pieces.
+ *
+ * <p>This class is longer than most (about 470 lines) because it holds both forms, a mover against a
+ * standing shape and two bodies that both move and turn, which share the gap searches and
+ * the advancement's stopping rule; split apart, each would need the other's private gap code.
  */
 public final class TurningSweep {
     private TurningSweep() {
