@@ -27,7 +27,11 @@ import hitbox.internal.*;
  * between opposite directions to the one that pushes a up (normal (0, 1), a lands on b's
  * top): a platformer character standing exactly inside a block is lifted onto it, not sunk
  * into it. In full: the larger {@code |ny|} wins, then the larger {@code nx * ny}, then the
- * larger {@code ny}, then the larger {@code nx}. For the axis-aligned pairs this is the order
+ * larger {@code ny}, then the larger {@code nx}; each of these keys is read from computed
+ * normals, so keys within {@link #TIE} of each other are equal too (within 1e-6 for the pairs
+ * found by a search, with an ellipse, a capsule or a concave polygon, whose normals are that
+ * precise), and mirror images such as (0.866, 0.5) and (0.866, -0.5) go by the rule, never by
+ * an ulp of rounding. For the axis-aligned pairs this is the order
  * (0, 1), (0, -1), (1, 0), (-1, 0). So circles with the same centre get the normal (0, 1)
  * and depth {@code r1 + r2}; a circle whose centre is exactly in the middle of a square is
  * pushed out through the square's top. When the two shapes are placed symmetrically (the

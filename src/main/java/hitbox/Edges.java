@@ -356,8 +356,15 @@ public final class Edges {
         }
         double end = (double) pos + after;
         double loop = (double) window + before + after;
-        if (end >= 0 && end <= loop || !(loop > 0)) {
+        // Already in [-after, window + before]: decided exactly, not on the rounded end and
+        // loop, which for a size far above the window (1e17 against 1) round to the same
+        // double and kept a position outside the promised range.
+        if (pos >= -after && atMost(pos, window, before)) {
             return pos;
+        }
+        if (!(loop > 0)) {
+            // A NaN window or size: unchanged. A point in a window of width 0: the range is 0.
+            return loop == 0 ? 0 : pos;
         }
         double wrapped = end - Math.floor(end / loop) * loop;
         // Rounding, in the remainder for far-away positions and in the final float, can land
@@ -373,6 +380,18 @@ public final class Edges {
         }
         result = Math.min(Math.max(result, -after), hi);
         return result;
+    }
+
+    /**
+     * Is {@code p <= a + b}, exactly? The sum in double, trusted when p is more than its
+     * rounding away from it; within that, compared in {@link java.math.BigDecimal}.
+     */
+    private static boolean atMost(float p, float a, float b) {
+        double s = (double) a + b;
+        if (!Double.isFinite(s) || Math.abs(p - s) > 2 * Math.ulp(s)) {
+            return p < s || p == s;  // an infinite or NaN sum decides as it is (NaN: false)
+        }
+        return new java.math.BigDecimal(p).compareTo(new java.math.BigDecimal(a).add(new java.math.BigDecimal(b))) <= 0;
     }
 
     /**

@@ -23,7 +23,9 @@ import hitbox.internal.*;
  * impact to report: {@code t} is 0, the normal is {@code (0, 0)} and the side is
  * {@link Side#NONE} (see {@link #alreadyOverlapping()}); push them apart with a contact
  * test instead. A mover that only touches the obstacle at the start and moves into it gets
- * {@code t = 0} with a real normal and side.
+ * {@code t = 0} exactly, with a real normal and side (the one exception to the largest float
+ * t of {@link Sweep}: there the float position has not moved for a hair above 0, but the
+ * exact entry is 0).
  *
  * @param t    the fraction of the motion done at impact, from 0 to 1
  * @param nx   the normal from the mover into the obstacle, x part (unit length, or 0)

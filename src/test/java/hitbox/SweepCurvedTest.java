@@ -59,7 +59,15 @@ class SweepCurvedTest {
         }
         assertTrue(t >= 0 && t <= 1, where);
         assertFalse(moved(mover, t, vx, vy).overlaps(obstacle), "overlaps at the hit, " + where);
-        assertTrue(t < 1 && moved(mover, Math.nextUp(t), vx, vy).overlaps(obstacle), "clear just after the hit, " + where);
+        if (t == 0) {
+            // Touching at the start and moving in (Hit's promise: t = 0): the mover overlaps
+            // once it has moved by a float step of its largest coordinate.
+            float m = (float) Math.max(Math.max(Math.abs(mover.minX()), Math.abs(mover.maxX())), Math.max(Math.abs(mover.minY()), Math.abs(mover.maxY())));
+            float step = 2 * Math.ulp(m) / Math.max(Math.abs(vx), Math.abs(vy));
+            assertTrue(moved(mover, step, vx, vy).overlaps(obstacle), "t = 0, but not touching and moving in, " + where);
+        } else {
+            assertTrue(t < 1 && moved(mover, Math.nextUp(t), vx, vy).overlaps(obstacle), "clear just after the hit, " + where);
+        }
         assertTrue(hit.nx() * vx + hit.ny() * vy > 0, "the normal points along the motion into the obstacle, " + where);
         assertEquals(1, Math.hypot(hit.nx(), hit.ny()), 1e-5, where);
         return true;

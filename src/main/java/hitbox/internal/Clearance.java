@@ -2,6 +2,8 @@ package hitbox.internal;
 
 import hitbox.*;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -120,7 +122,8 @@ public final class Clearance {
          * The open interval of parameters t in which the point e0 + t (e1 - e0) of segment e
          * (its first four values) is inside this region by more than tol, or null. Each edge
          * of the region gives one linear condition on t; for whole numbers the conditions at
-         * t = 0 and t = 1 are decided exactly.
+         * t = 0 and t = 1 are decided exactly. The answer is {lo, hi, the region's edge that
+         * set lo, the edge that set hi} (an edge -1 where none did).
          */
         public double[] span(double[] e, double tol) {
             if (Math.max(e[0], e[2]) <= minX || Math.min(e[0], e[2]) >= maxX
@@ -128,6 +131,7 @@ public final class Clearance {
                 return null;
             }
             double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
+            int loEdge = -1, hiEdge = -1;
             int n = m.length / 2;
             for (int i = 0; i < n; i++) {
                 int j = (i + 1) % n;
@@ -143,12 +147,16 @@ public final class Clearance {
                 }
                 double t = s0 / (s0 - s1);
                 if (s1 > s0) {
-                    lo = Math.max(lo, t);
-                } else {
-                    hi = Math.min(hi, t);
+                    if (t > lo) {
+                        lo = t;
+                        loEdge = i;
+                    }
+                } else if (t < hi) {
+                    hi = t;
+                    hiEdge = i;
                 }
             }
-            return lo < hi && hi > 0 && lo < 1 ? new double[] {lo, hi} : null;
+            return lo < hi && hi > 0 && lo < 1 ? new double[] {lo, hi, loEdge, hiEdge} : null;
         }
     }
 
@@ -220,7 +228,7 @@ public final class Clearance {
                 if (k != (int) e[5]) {
                     double[] span = regions.get(k).span(e, tol);
                     if (span != null) {
-                        inside.add(span);
+                        inside.add(new double[] {span[0], span[1], span[2], span[3], k});
                         // Most edges lie wholly inside another region: nothing to find there.
                         buried = span[0] < 0 && span[1] > 1;
                     }
@@ -241,17 +249,22 @@ public final class Clearance {
             double ex = e[2] - e[0], ey = e[3] - e[1];
             double foot = -(e[0] * ex + e[1] * ey) / (ex * ex + ey * ey);
             double from = 0;
+            double[] fromSpan = null;
             for (double[] span : inside) {
                 if (span[0] >= from) {
-                    offerGap(best, e, from, Math.min(span[0], 1), foot, lines, tol);
+                    offerGap(best, e, from, Math.min(span[0], 1), foot, lines, tol,
+                            crossingAt(regions, fromSpan, 1), span[0] <= 1 ? crossingAt(regions, span, 0) : null);
                 }
-                from = Math.max(from, span[1]);
+                if (span[1] > from) {
+                    from = span[1];
+                    fromSpan = span;
+                }
                 if (from > 1) {
                     break;
                 }
             }
             if (from <= 1) {
-                offerGap(best, e, from, 1, foot, lines, tol);
+                offerGap(best, e, from, 1, foot, lines, tol, crossingAt(regions, fromSpan, 1), null);
             }
         }
         return best.contact();
@@ -268,7 +281,7 @@ public final class Clearance {
      * regions of the two pieces the cut separates, so nothing nearer is lost.
      */
     private static void offerGap(Contacts.Shortest best, double[] e, double lo, double hi, double foot,
-                                 List<double[]> lines, double tol) {
+                                 List<double[]> lines, double tol, double[] loCrossing, double[] hiCrossing) {
         double ex = e[2] - e[0], ey = e[3] - e[1];
         double t = Math.max(lo, Math.min(hi, foot));
         if (!lines.isEmpty() && onLine(lines, e[0] + t * ex, e[1] + t * ey, tol)) {
@@ -289,9 +302,55 @@ public final class Clearance {
         double px = t == 0 ? e[0] : t == 1 ? e[2] : e[0] + t * ex;
         double py = t == 0 ? e[1] : t == 1 ? e[3] : e[1] + t * ey;
         double d = length(px, py);
+        // An end of the gap where another region's edge crosses this one: that crossing
+        // was found on the region's edge moved in by the tolerance, so the point is off the
+        // true corner of the outline by about tol, in a direction the tie rule would read as
+        // a different normal (an exact fit's (-1, 0) came out as (-1, -3e-8), and moving
+        // along it never cleared). Where the point can still win, the crossing of the two
+        // edges themselves is worked out exactly and rounded once.
+        double[] crossing = t == lo && t > 0 ? loCrossing : t == hi && t < 1 ? hiCrossing : null;
+        if (crossing != null && !best.beyond(d)) {
+            double[] c = crossing(e, crossing);
+            if (c != null) {
+                px = c[0];
+                py = c[1];
+                d = length(px, py);
+            }
+        }
         if (d > 0) {
             best.offer(px / d, py / d, d);
         }
+    }
+
+    /**
+     * The region edge that ends a span on one side (0: its low end, 1: its high end), as the
+     * edge's two ends, or null when no region edge does (a line's span, or none).
+     */
+    private static double[] crossingAt(List<Region> regions, double[] span, int end) {
+        if (span == null || span.length < 5 || span[2 + end] < 0) {
+            return null;
+        }
+        double[] m = regions.get((int) span[4]).m();
+        int i = (int) span[2 + end], j = (i + 1) % (m.length / 2);
+        return new double[] {m[2 * i], m[2 * i + 1], m[2 * j], m[2 * j + 1]};
+    }
+
+    /**
+     * Where the line of segment e meets the line of segment f (first four values each),
+     * exactly, rounded once to double; null when they are parallel. With s0 and s1 the
+     * orientations of e's ends seen from f, the point is (s0 e1 - s1 e0) / (s0 - s1).
+     */
+    private static double[] crossing(double[] e, double[] f) {
+        BigDecimal s0 = Lines.exactOrient(f[0], f[1], f[2], f[3], e[0], e[1]);
+        BigDecimal s1 = Lines.exactOrient(f[0], f[1], f[2], f[3], e[2], e[3]);
+        BigDecimal den = s0.subtract(s1);
+        if (den.signum() == 0) {
+            return null;
+        }
+        BigDecimal x = s0.multiply(new BigDecimal(e[2])).subtract(s1.multiply(new BigDecimal(e[0])));
+        BigDecimal y = s0.multiply(new BigDecimal(e[3])).subtract(s1.multiply(new BigDecimal(e[1])));
+        return new double[] {x.divide(den, MathContext.DECIMAL128).doubleValue(),
+                y.divide(den, MathContext.DECIMAL128).doubleValue()};
     }
 
     /** Is (px, py) within 2 tol of a line of moves, away from the line's open ends? */

@@ -71,8 +71,17 @@ public final class Contacts {
         public static boolean beats(double nx, double ny, double depth, double bx, double by, double best,
                              double tolerance, boolean flip) {
             double slack = Math.max(Contact.TIE * Math.min(depth, best), tolerance);
+            if (depth < best - slack) {
+                return true;
+            }
+            if (!(depth <= best + slack)) {
+                return false;
+            }
             double f = flip ? -1 : 1;
-            return depth < best - slack || (depth <= best + slack && preferred(f * nx, f * ny, f * bx, f * by));
+            // The keys are read from computed unit normals, so they carry the rounding of the
+            // arithmetic behind them, or a search's own tolerance: keys that close are equal.
+            double keyTie = tolerance > 0 ? Tolerance.SEARCH_KEY_TIE : Contact.TIE;
+            return preferred(f * nx, f * ny, f * bx, f * by, keyTie);
         }
 
         /**
@@ -99,18 +108,31 @@ public final class Contacts {
         }
     }
 
-    /** Is normal (nx, ny) preferred to (ox, oy) when both push equally far? */
-    public static boolean preferred(double nx, double ny, double ox, double oy) {
-        if (Math.abs(ny) != Math.abs(oy)) {
-            return Math.abs(ny) > Math.abs(oy);
+    /**
+     * Is unit normal (nx, ny) preferred to (ox, oy) when both push equally far? Each key of
+     * the rule (|ny|, then nx * ny, then ny, then nx) decides only when the two differ by
+     * more than {@code keyTie}; closer than that they are equal, and the next key decides.
+     * A key is a unit normal's component or a product of two, so the computed normals'
+     * rounding (about 1e-16) or a search's angle tolerance is what {@code keyTie} must
+     * cover: the rule, not that rounding, then picks between mirror images such as
+     * (0.866, 0.5) and (0.866, -0.5), whose |ny| are equal but for an ulp. Normals equal in
+     * every key are the same direction to within {@code keyTie}: the first one stays.
+     */
+    public static boolean preferred(double nx, double ny, double ox, double oy, double keyTie) {
+        double key = Math.abs(ny) - Math.abs(oy);
+        if (Math.abs(key) > keyTie) {
+            return key > 0;
         }
-        if (nx * ny != ox * oy) {
-            return nx * ny > ox * oy;
+        key = nx * ny - ox * oy;
+        if (Math.abs(key) > keyTie) {
+            return key > 0;
         }
-        if (ny != oy) {
-            return ny > oy;
+        key = ny - oy;
+        if (Math.abs(key) > keyTie) {
+            return key > 0;
         }
-        return nx > ox;
+        key = nx - ox;
+        return key > keyTie;
     }
 
     /** The four axis directions. */

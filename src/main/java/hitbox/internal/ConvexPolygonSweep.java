@@ -47,7 +47,7 @@ public final class ConvexPolygonSweep {
         double te = clip.firstTime(1);
         float[] moved = scratch.moved(HiddenParts.raw(mover).length);
         boolean keeps = keepsConvex(mover, Math.max(Math.abs(vx), Math.abs(vy)));
-        SweptPairs.Search s = new SweptPairs.Search(te);
+        SweptPairs.Search s = new SweptPairs.Search(te, true);
         while (s.searching()) {
             float t = s.t();
             s.answer(movedOverlaps(mover, t * vx, t * vy, obstacle, moved, keeps, moverFace));

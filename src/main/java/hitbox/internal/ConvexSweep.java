@@ -73,6 +73,14 @@ public final class ConvexSweep {
                     continue;
                 }
                 float t = SweptPairs.lastClear(te, overlapAt);
+                if (te == 0 && t > 0 && t < 1 && withinRounding(mover, t * vx, t * vy)) {
+                    // Within TOUCH of the obstacle at the start and closing in, and the last
+                    // clear float moves the mover by less than the rounding of its coordinates:
+                    // it touched at the start (to within that rounding) and moves in, which Hit
+                    // answers with t = 0, not with the hair at which its float position has
+                    // barely moved. (This entry is only a bound, so it cannot say it exactly.)
+                    t = 0;
+                }
                 if (t < best && (t < 1 || overlapAt.at(1))) {
                     best = t;
                     bx = normal[0];
@@ -81,6 +89,12 @@ public final class ConvexSweep {
             }
         }
         return best <= 1 ? SweptPairs.hit(best, bx, by) : null;
+    }
+
+    /** Is a move by (dx, dy) no longer than a float step of the shape's largest coordinate? */
+    private static boolean withinRounding(Shape s, float dx, float dy) {
+        float m = (float) Math.max(Math.max(Math.abs(s.minX()), Math.abs(s.maxX())), Math.max(Math.abs(s.minY()), Math.abs(s.maxY())));
+        return Math.max(Math.abs(dx), Math.abs(dy)) <= Math.ulp(m);
     }
 
     /**

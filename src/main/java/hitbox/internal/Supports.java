@@ -84,17 +84,7 @@ public final class Supports {
     /** The contact of two overlapping convex shapes, normal from a to b. */
     public static Contact contact(Shape a, Shape b) {
         Contacts.Shortest best = new Contacts.Shortest(Tolerance.SUPPORT_TIE * scale(a, b));
-        double[] f = new double[STEPS];
-        for (int i = 0; i < STEPS; i++) {
-            f[i] = push(a, b, 2 * Math.PI * i / STEPS);
-        }
-        for (int i = 0; i < STEPS; i++) {
-            double prev = f[(i + STEPS - 1) % STEPS], next = f[(i + 1) % STEPS];
-            if (f[i] <= prev && f[i] <= next) {
-                double t = refine(a, b, 2 * Math.PI * (i - 1) / STEPS, 2 * Math.PI * (i + 1) / STEPS);
-                offer(best, a, b, t);
-            }
-        }
+        // The straight edges' normals first, exact where the least is flat.
         for (Shape s : new Shape[] {a, b}) {
             double[] xy = straightEdges(s);
             int n = xy.length / 2;
@@ -105,6 +95,27 @@ public final class Supports {
                     offer(best, a, b, Math.atan2(ex, -ey));
                     offer(best, a, b, Math.atan2(-ex, ey));
                 }
+            }
+        }
+        // Then the four axis directions, exact. Where the least is flat (an ellipse's flat
+        // top against a circle) the search stops about 1e-8 radians off the axis, and where
+        // a whole cone of directions is equally short (a circle centred on a corner) it stops
+        // anywhere in it; the tie rule's pick from such a cone is one of its ends (an edge
+        // normal, offered above) or an axis inside it, and a refined direction that ties with
+        // one of these then leaves it in place.
+        offerDirection(best, a, b, 0, 1);
+        offerDirection(best, a, b, 0, -1);
+        offerDirection(best, a, b, 1, 0);
+        offerDirection(best, a, b, -1, 0);
+        double[] f = new double[STEPS];
+        for (int i = 0; i < STEPS; i++) {
+            f[i] = push(a, b, 2 * Math.PI * i / STEPS);
+        }
+        for (int i = 0; i < STEPS; i++) {
+            double prev = f[(i + STEPS - 1) % STEPS], next = f[(i + 1) % STEPS];
+            if (f[i] <= prev && f[i] <= next) {
+                double t = refine(a, b, 2 * Math.PI * (i - 1) / STEPS, 2 * Math.PI * (i + 1) / STEPS);
+                offer(best, a, b, t);
             }
         }
         return best.contact();
@@ -120,6 +131,10 @@ public final class Supports {
             ny = 0;
             nx = Math.signum(nx);
         }
+        offerDirection(best, a, b, nx, ny);
+    }
+
+    private static void offerDirection(Contacts.Shortest best, Shape a, Shape b, double nx, double ny) {
         best.offer(nx, ny, support(a, nx, ny) + support(b, -nx, -ny));
     }
 

@@ -148,6 +148,17 @@ public final class SweptPairs {
         return e;
     }
 
+    /**
+     * Is a box at (mx, my), moving by (vx, vy), past the obstacle box: beyond it on an axis
+     * it moves along, by the sums {@link Collide#rectRect} makes? Then it does not overlap
+     * it, and no later float position does (see {@link Search#answer(boolean, boolean)}).
+     */
+    public static boolean rectPast(float mx, float my, float w, float h, float vx, float vy,
+                                   float ox, float oy, float ow, float oh) {
+        return vx > 0 && !(mx < (double) ox + ow) || vx < 0 && !((double) mx + w > ox)
+                || vy > 0 && !(my < (double) oy + oh) || vy < 0 && !((double) my + h > oy);
+    }
+
     // ---------------------------------------------------------------- from entry to answer
 
     /** Does the mover, moved by {@code t} times its motion in float, overlap the obstacle? */
@@ -169,7 +180,7 @@ public final class SweptPairs {
      * callers whose overlap test is not worth writing out as the search's loop.
      */
     public static float lastClear(double te, OverlapAt overlapAt) {
-        Search s = new Search(te);
+        Search s = new Search(te, false);
         while (s.searching()) {
             s.answer(overlapAt.at(s.t()));
         }
@@ -201,27 +212,38 @@ public final class SweptPairs {
         private final float start;
         /** How far from the start the next step down or up goes. */
         private double d;
-        /** The latest float known clear and the earliest known to overlap, as the walk finds them. */
+        /**
+         * The latest float known clear (and not past the obstacle), and the earliest known to
+         * overlap or to be past it, as the walk finds them.
+         */
         private float clear;
         private float hit;
+        /** Was {@link #hit} found past the obstacle rather than overlapping it? */
+        private boolean hitPast;
         private int phase;
         /** The float to ask about next; once done, the answer. */
         private float t;
 
         /**
-         * A search from the exact entry te (clamped to [0, 1]); none for te = +infinity (no
-         * entry: the answer is +infinity) or -infinity (inside at the start: the answer is 0).
+         * A search from the entry te (clamped to [0, 1]); none for te = +infinity (no entry:
+         * the answer is +infinity) or -infinity (inside at the start: the answer is 0). With
+         * {@code exactEntry} (te from exact slabs and discs, where 0 means touching at the
+         * start and moving in), none for te = 0 either: the answer is 0, decided here, not the
+         * hair above 0 that the walk would find while the float positions have not yet moved
+         * ({@link Hit}'s promise). A search from an entry only bounded (conservative
+         * advancement) walks from 0 as from any entry; its caller turns a t at which the
+         * mover has not moved into 0 itself.
          */
-        public Search(double te) {
+        public Search(double te, boolean exactEntry) {
             start = (float) Math.min(Math.max(te, 0), 1);
             d = Math.ulp(start);
-            t = te == Slabs.INF ? Float.POSITIVE_INFINITY : start;  // -infinity gave 0
-            phase = te == Slabs.INF || te == Double.NEGATIVE_INFINITY ? DONE : START;
+            t = te == Slabs.INF ? Float.POSITIVE_INFINITY : start;  // -infinity (and an exact 0) gave 0
+            phase = te == Slabs.INF || te == Double.NEGATIVE_INFINITY || exactEntry && te == 0 ? DONE : START;
         }
 
-        /** A search from entry e (see {@link #Search(double)}), for {@link #hit}. */
+        /** A search from exact entry e (see {@link #Search(double, boolean)}), for {@link #hit}. */
         public Search(Earliest e) {
-            this(!e.found() ? Slabs.INF : e.inside ? Double.NEGATIVE_INFINITY : e.t);
+            this(!e.found() ? Slabs.INF : e.inside ? Double.NEGATIVE_INFINITY : e.t, true);
         }
 
         /**
@@ -260,14 +282,31 @@ public final class SweptPairs {
          * escape, and every sweep allocate it.
          */
         public void answer(boolean overlaps) {
-            if (overlaps) {
+            answer(overlaps, false);
+        }
+
+        /**
+         * {@link #answer(boolean)} with more to go on: is the mover at {@link #t()}, if it does
+         * not overlap, already <em>past</em> the obstacle (beyond it along an axis it moves
+         * on, so that no later float position overlaps either)? A pair whose overlap is a
+         * set of monotone conditions on the float positions (two boxes) overlaps on one
+         * interval of floats, with "clear and not past" below it and "past" above it: the
+         * walk then stops at a past position as at an overlapping one, and cannot jump over
+         * an overlap that rounding of the positions has made much shorter than the exact one
+         * (a box far from the origin, whose y moves in steps of 1/16). A search that ends
+         * between a clear float and a past one found no overlapping float: a graze, 1.
+         */
+        public void answer(boolean overlaps, boolean past) {
+            boolean above = overlaps || past;
+            if (above) {
                 hit = t;
+                hitPast = !overlaps;
             } else {
                 clear = t;
             }
             if (phase == START) {
-                phase = overlaps ? DOWN : UP;  // the first answer picks the walk's way
-            } else if (phase == DOWN && overlaps || phase == UP && !overlaps) {
+                phase = above ? DOWN : UP;  // the first answer picks the walk's way
+            } else if (phase == DOWN && above || phase == UP && !above) {
                 d *= 2;  // the walk goes on, twice as far from the start
             } else {
                 phase = HALVE;  // a clear t and an overlapping one: halve between them
@@ -295,7 +334,7 @@ public final class SweptPairs {
                     t = Float.intBitsToFloat((lo + hi) >>> 1);
                 } else {
                     phase = DONE;
-                    t = clear;
+                    t = hitPast ? 1 : clear;
                 }
             }
         }

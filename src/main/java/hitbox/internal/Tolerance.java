@@ -152,6 +152,15 @@ public final class Tolerance {
     public static final double SEPARATION_CURVED = 1e-9;
 
     /**
+     * How close two keys of the tie rule ({@link Contacts#preferred}) must be to count as
+     * equal when the candidates come from a search ({@link Supports}, {@link Clearance},
+     * {@link CircleClearance}): their normals are only placed to about 1e-6 radians where the
+     * least is flat, so mirror images must not be told apart by less. The exact pairs use
+     * {@link Contact#TIE}.
+     */
+    public static final double SEARCH_KEY_TIE = 1e-6;
+
+    /**
      * Where {@link ConvexSweep}'s search for the best separating direction stops, in radians:
      * any direction gives a safe step, so this only buys a longer one.
      */
