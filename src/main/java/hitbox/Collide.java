@@ -26,7 +26,7 @@ import hitbox.internal.*;
  * {@link Ray} included, Hitbox says segment. {@link #lineSide} alone reads the whole line
  * through the two points.
  *
- * <p>This class is longer than most (about 1,070 lines): it is the whole table of tests, one
+ * <p>This class is longer than most (about 1,200 lines): it is the whole table of tests, one
  * public method per pair with its full javadoc (the ellipses and capsules included); the
  * polygon, ellipse and capsule maths is in package-private helpers ({@code Polygons},
  * {@code Ellipses}, {@code Capsules}).

@@ -35,6 +35,11 @@ import java.math.BigDecimal;
  *       of its edges lies in the closed polygon ({@link #segmentInside}), decided by exact
  *       orientation signs.</li>
  * </ul>
+ *
+ * <p>The class is longer than most: containment is not symmetric, so the table has all 36
+ * ordered pairs rather than 21, and it keeps with them its two exact comparisons (sums of
+ * floats, distances against a difference of radii) and the outline search for the curved
+ * pairs, which nothing else in the library needs.
  */
 public final class Containment {
     private Containment() {
