@@ -391,7 +391,11 @@ class ContainmentTest {
             if (!(curved(a) || curved(b))) {
                 continue;
             }
-            for (Shape[] pair : new Shape[][] {{a, b}, {b, a}}) {
+            // and b moved to a's centre (to half pixels), where holding is common
+            Rect ab = a.bounds(), bb = b.bounds();
+            Shape centred = b.translated(Math.round(ab.x() + ab.w() / 2 - bb.x() - bb.w() / 2),
+                    Math.round(ab.y() + ab.h() / 2 - bb.y() - bb.h() / 2));
+            for (Shape[] pair : new Shape[][] {{a, b}, {b, a}, {a, centred}}) {
                 cases++;
                 double excess = excess(pair[0], pair[1]);
                 double band = 1e-3 * (1 + size(pair[0]));
@@ -416,18 +420,40 @@ class ContainmentTest {
 
     @Test
     void curvedKinds_touchingFromInside_byConstruction() {
-        // b made to touch a's outline from inside: scaled-down copies sharing a point of the outline
+        // Pairs whose outlines meet, made so: held as they are, not when the inner one grows
+        // by a relative 1e-5 (far outside the 1e-9 tolerance, far inside a float's reach).
         SplittableRandom rnd = new SplittableRandom(5);
         int n = 0;
-        for (int i = 0; i < 2000; i++) {
-            Shape a = any(rnd, true);
-            if (!curved(a) || a.bounds().w() == 0 || a.bounds().h() == 0) {
-                continue;
+        for (int i = 0; i < 400; i++) {
+            float x = half(rnd, -50, 50), y = half(rnd, -50, 50);
+            float a = 1 + rnd.nextInt(40), b = 1 + rnd.nextInt(40), angle = rnd.nextBoolean() ? 0 : (float) rnd.nextDouble(-4, 4);
+            float lo = Math.min(a, b), hi = Math.max(a, b), grow = 1 + 1e-5f;
+            Ellipse e = new Ellipse(x, y, a, b, angle);
+            // the circle on the minor axis's ends, and the one through the major axis's ends
+            n += held(e, new Circle(x, y, lo), new Circle(x, y, lo * grow));
+            n += held(new Circle(x, y, hi), e, new Ellipse(x, y, a * grow, b * grow, angle));
+            // an ellipse with one radius shorter: they touch at the other axis's ends
+            if (a > 1) {
+                n += held(e, new Ellipse(x, y, a - 1, b, angle), new Ellipse(x, y, a - 1, b * grow, angle));
             }
-            assertTrue(a.contains(a), "itself: " + a);
-            n++;
+            // the ellipse through a horizontal capsule's ends and sides
+            float d = 1 + rnd.nextInt(20), r = 1 + rnd.nextInt(20);
+            n += held(new Capsule(x - d, y, x + d, y, r), new Ellipse(x, y, d + r, r), new Ellipse(x, y, d + r, r * grow));
+            // a capsule inside a circle, its ends' discs touching it
+            n += held(new Circle(x, y, d + r), new Capsule(x - d, y, x + d, y, r), new Capsule(x - d, y, x + d, y, r * grow));
+            // a circle in a capsule's end
+            n += held(new Capsule(x - d, y, x + d, y, r), new Circle(x + d, y, r), new Circle(x + d, y, r * grow));
+            // every curved shape holds itself
+            n += e.contains(e) ? 1 : 0;
         }
-        assertTrue(n > 500);
+        assertTrue(n > 400 * 6, "pairs checked: " + n);
+    }
+
+    /** a holds b and not the grown b; 1 when so (asserted). */
+    private static int held(Shape a, Shape b, Shape grown) {
+        assertTrue(a.contains(b), a + " must hold " + b);
+        assertFalse(a.contains(grown), a + " must not hold " + grown);
+        return 1;
     }
 
     /** The largest signed distance outside a (negative inside) over points of b's outline. */
