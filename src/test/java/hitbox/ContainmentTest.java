@@ -248,7 +248,7 @@ class ContainmentTest {
         SplittableRandom rnd = new SplittableRandom(2023);
         int cases = 0, held = 0, concaveCases = 0;
         List<String> wrong = new ArrayList<>();
-        for (int i = 0; i < 4000; i++) {
+        for (int i = 0; i < 2000; i++) {
             Shape a = polygonal(rnd, true);
             List<Shape> bs = new ArrayList<>();
             for (int k = 0; k < 4; k++) {
@@ -385,7 +385,7 @@ class ContainmentTest {
         SplittableRandom rnd = new SplittableRandom(77);
         int cases = 0, judged = 0, held = 0, ambiguous = 0;
         List<String> wrong = new ArrayList<>();
-        for (int i = 0; i < 2500; i++) {
+        for (int i = 0; i < 1500; i++) {
             Shape a = any(rnd, true);
             Shape b = any(rnd, false);
             if (!(curved(a) || curved(b))) {
@@ -454,6 +454,53 @@ class ContainmentTest {
         assertTrue(a.contains(b), a + " must hold " + b);
         assertFalse(a.contains(grown), a + " must not hold " + grown);
         return 1;
+    }
+
+    @Test
+    void chains_areTransitive_andNestTheirBoxes() {
+        // a big shape, a smaller one moved to its centre, a smaller one moved to that one's
+        // centre: chains a > b > c are common, and a must then hold c (every kind, ellipses
+        // included: the tolerance is far below these half-pixel gaps)
+        SplittableRandom rnd = new SplittableRandom(31);
+        int chains = 0;
+        for (int i = 0; i < 6000; i++) {
+            Shape a = any(rnd, true);
+            Shape b = centredOn(a, any(rnd, false));
+            Shape c = centredOn(b, scaledDown(any(rnd, false)));
+            if (a.contains(b) && b.contains(c)) {
+                chains++;
+                assertTrue(a.contains(c), a + " > " + b + " > " + c);
+            }
+        }
+        System.out.println("containment chains a > b > c checked for a > c: " + chains);
+        assertTrue(chains > 500, "chains: " + chains);
+    }
+
+    /** b moved by whole pixels so that its box's centre is near a's. */
+    private static Shape centredOn(Shape a, Shape b) {
+        Rect ab = a.bounds(), bb = b.bounds();
+        return b.translated(Math.round(ab.x() + ab.w() / 2 - bb.x() - bb.w() / 2),
+                Math.round(ab.y() + ab.h() / 2 - bb.y() - bb.h() / 2));
+    }
+
+    /** A smaller shape of the same kind (sizes a quarter, corners drawn in about the first). */
+    private static Shape scaledDown(Shape s) {
+        if (s instanceof Circle c) {
+            return new Circle(c.x(), c.y(), c.r() / 4);
+        }
+        if (s instanceof Rect r) {
+            return new Rect(r.x(), r.y(), r.w() / 4, r.h() / 4);
+        }
+        if (s instanceof Ellipse e) {
+            return new Ellipse(e.x(), e.y(), e.rx() / 4, e.ry() / 4, e.angle());
+        }
+        if (s instanceof Capsule k) {
+            return new Capsule(k.x1(), k.y1(), k.x1() + (k.x2() - k.x1()) / 4, k.y1() + (k.y2() - k.y1()) / 4, k.r() / 4);
+        }
+        if (s instanceof Segment g) {
+            return new Segment(g.x1(), g.y1(), g.x1() + (g.x2() - g.x1()) / 4, g.y1() + (g.y2() - g.y1()) / 4);
+        }
+        return s;
     }
 
     /** The largest signed distance outside a (negative inside) over points of b's outline. */
