@@ -538,17 +538,19 @@ public final class Containment {
         if (!box(box.x(), 0, box.w(), box.y(), 0, box.h(), b.bounds())) {
             return false;
         }
-        int w = Polygons.winding(xy);
+        int convex = HiddenParts.convexWinding(p);
+        int w = convex != 0 ? convex : Polygons.winding(xy);
+        boolean quick = convex != 0;
         return switch (ShapeKind.of(b)) {
             case ELLIPSE -> {
                 Ellipse e = (Ellipse) b;
                 if (e.rx() == 0 || e.ry() == 0) {
                     if (TurnedEllipses.aligned(e)) {
-                        yield segmentInside(xy, w, (double) e.x() - e.rx(), (double) e.y() - e.ry(),
+                        yield segmentInside(xy, w, quick, (double) e.x() - e.rx(), (double) e.y() - e.ry(),
                                 (double) e.x() + e.rx(), (double) e.y() + e.ry());
                     }
                     Segment s = TurnedEllipses.flatSegment(e);
-                    yield segmentInside(xy, w, s.x1(), s.y1(), s.x2(), s.y2());
+                    yield segmentInside(xy, w, quick, s.x1(), s.y1(), s.x2(), s.y2());
                 }
                 // With area: no edge reaches into it, and its centre is inside.
                 if (!Polygons.contains(xy, e.x(), e.y())) {
@@ -569,7 +571,7 @@ public final class Containment {
             case CAPSULE -> {
                 Capsule k = (Capsule) b;
                 if (k.r() == 0) {
-                    yield segmentInside(xy, w, k.x1(), k.y1(), k.x2(), k.y2());
+                    yield segmentInside(xy, w, quick, k.x1(), k.y1(), k.x2(), k.y2());
                 }
                 if (!Polygons.contains(xy, k.x1(), k.y1())) {
                     yield false;
@@ -598,20 +600,20 @@ public final class Containment {
                 }
                 yield true;
             }
-            case RECT -> outlineInside(xy, w, Polygons.corners((Rect) b, new double[8]));
+            case RECT -> outlineInside(xy, w, quick, Polygons.corners((Rect) b, new double[8]));
             case SEGMENT -> {
                 Segment s = (Segment) b;
-                yield segmentInside(xy, w, s.x1(), s.y1(), s.x2(), s.y2());
+                yield segmentInside(xy, w, quick, s.x1(), s.y1(), s.x2(), s.y2());
             }
-            case POLYGON -> outlineInside(xy, w, HiddenParts.corners((Polygon) b));
+            case POLYGON -> outlineInside(xy, w, quick, HiddenParts.corners((Polygon) b));
         };
     }
 
     /** Does every edge of the closed outline (x0, y0, x1, y1, ...) lie in the closed polygon? */
-    private static boolean outlineInside(float[] xy, int w, double[] outline) {
+    private static boolean outlineInside(float[] xy, int w, boolean convex, double[] outline) {
         int n = outline.length / 2;
         for (int i = 0, h = n - 1; i < n; h = i++) {
-            if (!segmentInside(xy, w, outline[2 * h], outline[2 * h + 1], outline[2 * i], outline[2 * i + 1])) {
+            if (!segmentInside(xy, w, convex, outline[2 * h], outline[2 * h + 1], outline[2 * i], outline[2 * i + 1])) {
                 return false;
             }
         }
@@ -646,7 +648,11 @@ public final class Containment {
      * polygon whose notch PQ jumps (both ends inside, an edge leaving) fails at the notch's
      * vertices or crossings.
      */
-    static boolean segmentInside(float[] xy, int w, double px, double py, double qx, double qy) {
+    static boolean segmentInside(float[] xy, int w, boolean convex, double px, double py, double qx, double qy) {
+        if (convex) {
+            // A convex polygon holds the segment when it holds both ends.
+            return onInnerSide(xy, w, px, py) && onInnerSide(xy, w, qx, qy);
+        }
         if (!closedContains(xy, px, py) || !closedContains(xy, qx, qy)) {
             return false;
         }
@@ -672,6 +678,17 @@ public final class Containment {
             // P inside edge ab (not at a vertex): the step must go to the inside side or along.
             if (o1 == 0 && Lines.inBox(ax, ay, bx, by, px, py) && !(px == ax && py == ay) && !(px == bx && py == by)
                     && w * o2 < 0) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Is the point on the inner side of every edge of the convex polygon (winding w), or on it? Exact. */
+    private static boolean onInnerSide(float[] xy, int w, double px, double py) {
+        int n = xy.length / 2;
+        for (int i = 0, h = n - 1; i < n; h = i++) {
+            if (w * Lines.orient(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], px, py) < 0) {
                 return false;
             }
         }
