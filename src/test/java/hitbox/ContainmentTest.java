@@ -449,6 +449,71 @@ class ContainmentTest {
         assertTrue(n > 400 * 6, "pairs checked: " + n);
     }
 
+    @Test
+    void curvedSearch_nearTies_flipWithinAHundredThousandth() {
+        // A curved shape inside a curved container, scaled about its centre until the sampled
+        // oracle says it touches (bisection on the scale); then 1e-5 smaller must be held and
+        // 1e-5 larger must not: the search is checked at the tie, where sampling alone judges
+        // nothing.
+        SplittableRandom rnd = new SplittableRandom(11);
+        int checked = 0;
+        for (int i = 0; i < 120; i++) {
+            Shape a = curvedOnly(rnd, 20);
+            Rect box = a.bounds();
+            float cx = box.x() + box.w() / 2 + (float) rnd.nextDouble(-2, 2), cy = box.y() + box.h() / 2 + (float) rnd.nextDouble(-2, 2);
+            Shape unit = curvedOnly(rnd, 6);
+            double lo = 0, hi = 1;
+            while (excess(a, scaled(unit, cx, cy, hi)) < 0 && hi < 1e4) {
+                hi *= 2;
+            }
+            if (excess(a, scaled(unit, cx, cy, 1e-6)) >= 0) {
+                continue; // the centre is not inside
+            }
+            for (int k = 0; k < 60; k++) {
+                double mid = (lo + hi) / 2;
+                if (excess(a, scaled(unit, cx, cy, mid)) < 0) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            Shape inner = scaled(unit, cx, cy, lo * (1 - 1e-5)), outer = scaled(unit, cx, cy, lo * (1 + 1e-5));
+            assertTrue(a.contains(inner), a + " must hold " + inner);
+            assertFalse(a.contains(outer), a + " must not hold " + outer);
+            checked++;
+        }
+        System.out.println("containment near ties (curved, 1e-5 either side): " + checked + " pairs");
+        assertTrue(checked > 60, "checked " + checked);
+    }
+
+    /** A circle, ellipse (aligned or turned) or capsule with area, about the origin. */
+    private static Shape curvedOnly(SplittableRandom rnd, int size) {
+        float r1 = 1 + rnd.nextInt(size), r2 = 1 + rnd.nextInt(size);
+        return switch (rnd.nextInt(4)) {
+            case 0 -> new Circle(0, 0, r1);
+            case 1 -> new Ellipse(0, 0, r1, r2);
+            case 2 -> new Ellipse(0, 0, r1, r2, (float) rnd.nextDouble(-4, 4));
+            default -> {
+                double t = rnd.nextDouble(0, 2 * Math.PI);
+                yield new Capsule((float) (-r2 * Math.cos(t)), (float) (-r2 * Math.sin(t)), (float) (r2 * Math.cos(t)),
+                        (float) (r2 * Math.sin(t)), r1 / 2);
+            }
+        };
+    }
+
+    /** The shape (about the origin) scaled by f and moved to (x, y). */
+    private static Shape scaled(Shape s, float x, float y, double f) {
+        if (s instanceof Circle c) {
+            return new Circle(x, y, (float) (c.r() * f));
+        }
+        if (s instanceof Ellipse e) {
+            return new Ellipse(x, y, (float) (e.rx() * f), (float) (e.ry() * f), e.angle());
+        }
+        Capsule k = (Capsule) s;
+        return new Capsule((float) (x + k.x1() * f), (float) (y + k.y1() * f), (float) (x + k.x2() * f), (float) (y + k.y2() * f),
+                (float) (k.r() * f));
+    }
+
     /** a holds b and not the grown b; 1 when so (asserted). */
     private static int held(Shape a, Shape b, Shape grown) {
         assertTrue(a.contains(b), a + " must hold " + b);
