@@ -107,7 +107,7 @@ class ContainmentTest {
         assertFalse(new Ellipse(0, 0, 5, 3).contains(new Segment(-5, 0.001f, 5, 0.001f)));
         assertTrue(new Ellipse(0, 0, 10, 5).contains(new Rect(-8, -3, 16, 6)), "corners on the outline (4/5, 3/5)");
         assertFalse(new Ellipse(0, 0, 10, 5).contains(new Rect(-8, -3, 16, 6.000001f)));
-        assertTrue(new Ellipse(0, 0, 10, 5, 0.5f).contains(new Rect(-8, -3, 16, 6).translated(0, 0)) == false);
+        assertFalse(new Ellipse(0, 0, 10, 5, 0.5f).contains(new Rect(-8, -3, 16, 6).translated(0, 0)));
         assertTrue(new Ellipse(0, 0, 5, 3).contains(new Capsule(-2, 0, 2, 0, 1)));
         assertTrue(new Capsule(0, 0, 10, 0, 5).contains(new Circle(10, 0, 5)), "its end disc");
         assertTrue(new Capsule(0, 0, 10, 0, 5).contains(new Capsule(2, 0, 8, 0, 5)));
@@ -119,7 +119,7 @@ class ContainmentTest {
         assertTrue(square.contains(new Circle(5, 5, 5)), "inscribed circle");
         assertFalse(square.contains(new Circle(5, 5, 5.0001f)));
         assertTrue(square.contains(new Ellipse(5, 5, 5, 2)));
-        assertTrue(square.contains(new Capsule(5, 3, 5, 7, 5)) == false);
+        assertFalse(square.contains(new Capsule(5, 3, 5, 7, 5)));
         assertTrue(square.contains(new Capsule(3, 5, 7, 5, 3)));
         assertTrue(square.contains(new Capsule(5, 5, 5, 5, 5)), "a capsule that is a circle");
         assertTrue(Polygon.of(0, 0, 8, 0, 0, 6).contains(new Circle(2, 2, 2)), "3-4-5 triangle's incircle");
@@ -137,7 +137,7 @@ class ContainmentTest {
         assertFalse(cup.contains(Polygon.of(1, 1, 9, 1, 5, 11)), "a triangle over the notch");
         assertTrue(cup.contains(Polygon.of(0, 0, 4, 0, 4, 8, 0, 8)), "the left arm, edges shared");
         assertTrue(cup.contains(new Segment(4, 0, 4, 8)), "along the notch's side");
-        assertTrue(cup.contains(new Segment(0, 0, 10, 12)) == false);
+        assertFalse(cup.contains(new Segment(0, 0, 10, 12)));
         assertFalse(cup.contains(new Circle(5, 10, 2.5f)), "a disc reaching up into the notch");
         assertTrue(cup.contains(new Circle(5, 10, 2)), "touching the notch's bottom");
         assertFalse(cup.contains(new Capsule(1, 10, 9, 10, 2.5f)));
