@@ -53,6 +53,12 @@ public record Capsule(float x1, float y1, float x2, float y2, float r) implement
         return Collide.capsulePoint(x1, y1, x2, y2, r, px, py);
     }
 
+    /** {@inheritDoc} */
+    @Override
+    public boolean contains(Shape other) {
+        return Containment.capsuleContains(this, Check.notNull("other", other));
+    }
+
     /** {@inheritDoc} Rounded outwards, so the box holds the round ends even when x1 - r is not a float. */
     @Override
     public Rect bounds() {

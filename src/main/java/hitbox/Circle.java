@@ -42,6 +42,12 @@ public record Circle(float x, float y, float r) implements Shape {
         return Collide.circlePoint(x, y, r, px, py);
     }
 
+    /** {@inheritDoc} */
+    @Override
+    public boolean contains(Shape other) {
+        return Containment.circleContains(this, Check.notNull("other", other));
+    }
+
     /** {@inheritDoc} Rounded outwards, so the box holds the circle even when x - r is not a float. */
     @Override
     public Rect bounds() {

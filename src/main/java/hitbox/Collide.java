@@ -26,7 +26,7 @@ import hitbox.internal.*;
  * {@link Ray} included, Hitbox says segment. {@link #lineSide} alone reads the whole line
  * through the two points.
  *
- * <p>This class is longer than most (about 1,070 lines): it is the whole table of tests, one
+ * <p>This class is longer than most (about 1,200 lines): it is the whole table of tests, one
  * public method per pair with its full javadoc (the ellipses and capsules included); the
  * polygon, ellipse and capsule maths is in package-private helpers ({@code Polygons},
  * {@code Ellipses}, {@code Capsules}).
@@ -199,6 +199,113 @@ public final class Collide {
      */
     public static boolean rectCircle(float x, float y, float w, float h, float cx, float cy, float r) {
         return circleRect(cx, cy, r, x, y, w, h);
+    }
+
+    /**
+     * Does the first rectangle hold the second: is no point of the second outside the first?
+     * Edges may lie on each other, so a rectangle contains itself.
+     *
+     * <p>{@code x2 >= x1 && x2 + w2 <= x1 + w1 && y2 >= y1 && y2 + h2 <= y1 + h1}: libGDX's
+     * {@code Rectangle.contains(Rectangle)} with its strict comparisons made non-strict, since
+     * by the <a href="package-summary.html#touching">touching rule</a> the outline belongs to
+     * neither shape and "inside" means the closures (see {@link Shape#contains(Shape)}). Exact
+     * for every float: each side is a sum of two floats, compared exactly. A rectangle of
+     * width or height 0 is its segment, ends included.
+     *
+     * <p>A NaN or infinite value in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
+     * @param x1 the outer rectangle's left edge
+     * @param y1 the outer rectangle's top edge
+     * @param w1 the outer rectangle's width
+     * @param h1 the outer rectangle's height
+     * @param x2 the inner rectangle's left edge
+     * @param y2 the inner rectangle's top edge
+     * @param w2 the inner rectangle's width
+     * @param h2 the inner rectangle's height
+     * @return true if the second rectangle, edges included, lies in the first, edges included
+     */
+    public static boolean rectContainsRect(float x1, float y1, float w1, float h1,
+                                           float x2, float y2, float w2, float h2) {
+        return Containment.finite(x1, y1, w1, h1) && Containment.finite(x2, y2, w2, h2) && w1 >= 0 && h1 >= 0
+                && w2 >= 0 && h2 >= 0 && Containment.rectRect(x1, y1, w1, h1, x2, y2, w2, h2);
+    }
+
+    /**
+     * Does the first circle hold the second: is the distance between the centres plus the
+     * second radius at most the first radius? Touching from inside counts, so a circle
+     * contains itself.
+     *
+     * <p>The tutorial's distance, {@code dist(x1, y1, x2, y2) <= r1 - r2}, compared squared and
+     * exactly for every float; libGDX's {@code Circle.contains(Circle)} gives the same for
+     * circles with area. A circle of radius 0 is its centre: it contains only itself (a circle
+     * of radius 0 at the same place), and a circle contains it when the centre is in the
+     * circle or on its outline.
+     *
+     * <p>A NaN or infinite value in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
+     * @param x1 the outer circle's centre x
+     * @param y1 the outer circle's centre y
+     * @param r1 the outer circle's radius
+     * @param x2 the inner circle's centre x
+     * @param y2 the inner circle's centre y
+     * @param r2 the inner circle's radius
+     * @return true if the second circle, outline included, lies in the first
+     */
+    public static boolean circleContainsCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
+        return Containment.finite(x1, y1, r1, x2) && Containment.finite(y2, r2, 0, 0) && r1 >= 0 && r2 >= 0
+                && Containment.circleCircle(x1, y1, r1, x2, y2, r2);
+    }
+
+    /**
+     * Does the circle hold the rectangle: are its four corners in the circle or on its
+     * outline? (A circle is convex, so the corners decide.)
+     *
+     * <p>Each corner's distance is compared squared, exactly for whole-number coordinates of
+     * modest size. A rectangle of width or height 0 is its segment, ends included.
+     *
+     * <p>A NaN or infinite value in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param r  the circle's radius
+     * @param rectX the rectangle's left edge
+     * @param rectY the rectangle's top edge
+     * @param rectW the rectangle's width
+     * @param rectH the rectangle's height
+     * @return true if the rectangle, edges included, lies in the circle, outline included
+     */
+    public static boolean circleContainsRect(float cx, float cy, float r, float rectX, float rectY, float rectW, float rectH) {
+        return Containment.finite(cx, cy, r, rectX) && Containment.finite(rectY, rectW, rectH, 0) && r >= 0
+                && rectW >= 0 && rectH >= 0 && Containment.circleRect(cx, cy, r, rectX, rectY, rectW, rectH);
+    }
+
+    /**
+     * Does the rectangle hold the circle: is the circle's box, {@code cx - r} to
+     * {@code cx + r} and {@code cy - r} to {@code cy + r}, within the rectangle's edges?
+     * Touching an edge from inside counts.
+     *
+     * <p>Exact for every float: each side is a sum of two floats, compared exactly. A circle
+     * of radius 0 is its centre, held when the centre is inside or on an edge (where
+     * {@link #rectPoint}, which asks about the open inside, is false).
+     *
+     * <p>A NaN or infinite value in any argument answers false, and so does a negative size
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
+     * @param x  the rectangle's left edge
+     * @param y  the rectangle's top edge
+     * @param w  the rectangle's width
+     * @param h  the rectangle's height
+     * @param cx the circle's centre x
+     * @param cy the circle's centre y
+     * @param r  the circle's radius
+     * @return true if the circle, outline included, lies in the rectangle, edges included
+     */
+    public static boolean rectContainsCircle(float x, float y, float w, float h, float cx, float cy, float r) {
+        return Containment.finite(x, y, w, h) && Containment.finite(cx, cy, r, 0) && w >= 0 && h >= 0 && r >= 0
+                && Containment.rectCircle(x, y, w, h, cx, cy, r);
     }
 
     /**

@@ -87,6 +87,12 @@ public record Ellipse(float x, float y, float rx, float ry, float angle) impleme
         return TurnedEllipses.aligned(this) ? Collide.ellipsePoint(x, y, rx, ry, px, py) : TurnedEllipses.turnedPoint(this, px, py);
     }
 
+    /** {@inheritDoc} */
+    @Override
+    public boolean contains(Shape other) {
+        return Containment.ellipseContains(this, Check.notNull("other", other));
+    }
+
     /**
      * {@inheritDoc} Rounded outwards, so the box holds the ellipse even when x - rx is not a
      * float; a turned ellipse's box is its exact extent, {@code hypot(rx cos, ry sin)} either

@@ -442,6 +442,12 @@ public final class Polygon implements Shape {
 
     /** {@inheritDoc} */
     @Override
+    public boolean contains(Shape other) {
+        return Containment.polygonContains(this, Check.notNull("other", other));
+    }
+
+    /** {@inheritDoc} */
+    @Override
     public Rect bounds() {
         return bounds;
     }

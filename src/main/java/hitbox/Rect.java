@@ -86,6 +86,12 @@ public record Rect(float x, float y, float w, float h) implements Shape {
         return Collide.rectPoint(x, y, w, h, px, py);
     }
 
+    /** {@inheritDoc} */
+    @Override
+    public boolean contains(Shape other) {
+        return Containment.rectContains(this, Check.notNull("other", other));
+    }
+
     /**
      * The region inside both rectangles: what a platformer draws as "the overlap", and the
      * sizes {@link Snap#pushOut} compares.

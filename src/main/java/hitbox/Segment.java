@@ -49,6 +49,12 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
         return Lines.segmentPoint(x1, y1, x2, y2, px, py);
     }
 
+    /** {@inheritDoc} */
+    @Override
+    public boolean contains(Shape other) {
+        return Containment.segmentContains(this, Check.notNull("other", other));
+    }
+
     /** {@inheritDoc} Rounded outwards, so the box holds both ends even when their distance is not a float. */
     @Override
     public Rect bounds() {

@@ -64,6 +64,39 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
     boolean contains(float x, float y);
 
     /**
+     * Does this shape hold {@code other}: is no point of the other shape outside this one?
+     * Touching this shape's outline from inside counts, so every shape contains itself (and
+     * {@code a.contains(b) && b.contains(a)} means the two cover the same points).
+     *
+     * <p>With the <a href="package-summary.html#touching">touching rule</a>'s open shapes,
+     * this is about closures: the other shape with its outline lies in this shape with its
+     * outline. So {@code new Rect(0, 0, 10, 10)} contains {@code new Rect(0, 0, 5, 5)} (two
+     * edges shared), {@code new Circle(0, 0, 10)} contains {@code new Circle(5, 0, 5)} (touching
+     * inside at (10, 0)) and {@code new Segment(0, 0, 10, 0)} (an end on the outline), but not
+     * {@code new Circle(5, 0, 5.5f)}. A zero-size shape is the set it behaves as, ends
+     * included: a circle of radius 0 is its centre, so the rectangle above contains
+     * {@code new Circle(0, 5, 0)} although {@code contains(0, 5)}, which asks about the open
+     * inside, is false. A segment, a shape without area, contains only segments and zero-size
+     * shapes that lie on it; a concave polygon does not contain a shape whose corners are all
+     * inside it while an edge crosses its notch.
+     *
+     * <p>Exact, with no tolerance, for whole-number coordinates of modest size wherever the
+     * answer is a polynomial sign: every pair of circles, rectangles, segments, polygons and
+     * capsules, and points or straight shapes in an axis-aligned ellipse (rectangles and
+     * circles against any float, as {@link Collide#rectContainsRect} and
+     * {@link Collide#circleContainsCircle}). The curved pairs that are not (an ellipse
+     * holding a circle, capsule or ellipse, an ellipse inside a circle or capsule, and
+     * anything in or around a turned ellipse) are searched in double and count as held when
+     * within a relative 1e-9 of the container's size of touching from inside; a polygon
+     * holding a turned ellipse is decided as {@link #overlaps} decides that pair.
+     *
+     * @param other the shape that may be inside, not null
+     * @return true if every point of {@code other} is in this shape or on its outline
+     * @throws IllegalArgumentException if {@code other} is null
+     */
+    boolean contains(Shape other);
+
+    /**
      * The smallest axis-aligned float rectangle that holds this shape: its hit box for a
      * cheap first test. Rounded outwards: its far edges, {@code x + w} and {@code y + h}
      * added in double as {@link Collide} adds them, are at or beyond the shape's, even when

@@ -132,7 +132,9 @@
  * </ul>
  *
  * <h2 id="tolerances">Tolerances</h2>
- * No yes-or-no answer depends on a tolerance. The ones Hitbox has are named, and each says
+ * One yes-or-no answer depends on a tolerance, and only for curved pairs whose exact answer
+ * is a root of a quartic: {@link hitbox.Shape#contains(hitbox.Shape)} (see the stopping rules
+ * below); no other does. The ones Hitbox has are named, and each says
  * why in the source:
  * <ul>
  *   <li>Public: {@link hitbox.Contact#UNIT_TOLERANCE} (how far from 1 a hand-made contact's
@@ -148,7 +150,10 @@
  *       ellipses and capsules, the {@link hitbox.Separation} of an ellipse (to about 1e-9 of
  *       the shapes' size), and {@link hitbox.Sweep#turningTimeOfImpact} and the curved
  *       sweeps, answer to within those rules (each method's documentation says how
- *       closely).</li>
+ *       closely); so does {@link hitbox.Shape#contains(hitbox.Shape)} for the curved pairs
+ *       it searches (an ellipse holding a circle, capsule or ellipse, an ellipse in a circle
+ *       or capsule, anything and a turned ellipse): held within 1e-9 of the container's size
+ *       of touching from inside.</li>
  * </ul>
  *
  * <h2 id="push-out">Which push-out to use</h2>

@@ -199,6 +199,18 @@ class ShapeKindDispatchTest {
                     Shape far = b.translated(500, 0);
                     assertTrue(!a.overlaps(far) && !far.overlaps(a), "far apart");
                 }));
+                tests.add(pair(first, second, name, "contains(Shape)", (a, b) -> {
+                    assertEquals(a.contains(b), Containment.test(a, b), "the library's own route");
+                    assertTrue(!a.contains(b.translated(500, 0)), "far apart");
+                    assertTrue(!ShapeKind.of(a).hasArea() || a.contains(tiny(b)), "a small one of its kind about (0.5, 0.25)");
+                    if (!ShapeKind.of(a).hasArea()) {
+                        assertTrue(a.contains(new Segment(0, 0.5f, 9, 4)) && !a.contains(tiny(new Circle(0, 0, 1))),
+                                "a segment holds a piece of itself, nothing with area");
+                    }
+                    if (a.getClass() == b.getClass()) {
+                        assertTrue(a.contains(a) && b.contains(b), "itself");
+                    }
+                }));
                 tests.add(pair(first, second, name, "Hybrid.check", (a, b) -> {
                     assertTrue(Hybrid.check(a, b).overlaps());
                     Hybrid.Result apart = Hybrid.check(a, b.translated(0, 40));
@@ -254,6 +266,18 @@ class ShapeKindDispatchTest {
             }
         }
         return tests.stream();
+    }
+
+    /** A small shape of b's kind about (0.5, 0.25), inside every sample with area. */
+    private static Shape tiny(Shape b) {
+        return switch (ShapeKind.of(b)) {
+            case ELLIPSE -> new Ellipse(0.5f, 0.25f, 0.2f, 0.1f, ((Ellipse) b).angle());
+            case CAPSULE -> new Capsule(0.4f, 0.25f, 0.6f, 0.25f, 0.05f);
+            case CIRCLE -> new Circle(0.5f, 0.25f, 0.1f);
+            case RECT -> new Rect(0.4f, 0.2f, 0.2f, 0.1f);
+            case SEGMENT -> new Segment(0.4f, 0.2f, 0.6f, 0.3f);
+            case POLYGON -> Polygon.of(0.4f, 0.2f, 0.6f, 0.2f, 0.5f, 0.3f);
+        };
     }
 
     private interface PairCheck {

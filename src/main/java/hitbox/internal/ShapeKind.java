@@ -8,12 +8,12 @@ import hitbox.*;
  * through the same dispatch as the kernels.
  *
  * <p>{@link #of} is the only {@code instanceof} over the shape kinds in the library. Every
- * operation that needs a kind's own code (overlaps, contact, rays, sweeps, bounding boxes,
+ * operation that needs a kind's own code (overlaps, contact, containment, rays, sweeps, bounding boxes,
  * support functions and convex pieces, drawing) switches on the kind with a switch
  * <em>expression</em> that names every constant and has no {@code default}: javac refuses a
  * switch expression that misses a constant, so a new kind of shape does not compile until
- * every operation has a case for it. Operations a shape answers itself ({@code contains},
- * {@code bounds}, {@code translated}) stay in the shape's own class and need no switch;
+ * every operation has a case for it. Operations a shape answers itself ({@code contains} of a
+ * point, {@code bounds}, {@code translated}) stay in the shape's own class and need no switch;
  * {@code transformed} and {@code rotated} call their kind's case of {@link Transforms}
  * directly, and {@link Transforms#apply(Shape, Affine)} switches here for a caller that
  * holds a {@link Shape}.

@@ -4,7 +4,10 @@ package hitbox.internal;
  * Every tolerance Hitbox uses, each with its reason: the one place to look before asking
  * "is there an epsilon in this answer?".
  *
- * <p>None of them decides a touching case. They are of four kinds:
+ * <p>None of them decides a touching case but {@code Containment.CONTAINMENT}, for the curved
+ * pairs of {@link Shape#contains(Shape)} whose exact answer is a quartic's root (an ellipse
+ * against a circle, a capsule or an ellipse): there a pair within it of touching from
+ * inside counts as held. They are of four kinds:
  * <ul>
  *   <li><b>Guard bands</b> around a double comparison whose rounding is bounded: outside the
  *       band the double answer is sure; inside it an exact (or slower, exact-enough) test
@@ -22,7 +25,9 @@ package hitbox.internal;
  * (1e-9, how close a search's point must be to the overlap set), {@code ConvexSweep.TOUCH}
  * (1e-6 pixels, where conservative advancement stops), {@code TurningSweep.TOUCH} (1e-3
  * pixels, the same for a turning mover), {@code Ray.SAME_EVENT} (1e-12 of the ray, events
- * on a polygon's outline that are one), and the public ones above; and two proven error
+ * on a polygon's outline that are one), {@code Containment.CONTAINMENT} (1e-9 of the
+ * container's size, how far a curved pair that is searched rather than decided may poke out
+ * and still count as held), and the public ones above; and two proven error
  * bounds of floating-point sums, {@code Lines.ORIENT_ERROR} and {@code Ellipses.SUM_ERROR}
  * (multiples of 2^-53 with their derivation beside them). The rest are here.
  *
