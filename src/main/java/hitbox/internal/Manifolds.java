@@ -38,7 +38,7 @@ public final class Manifolds {
     private static final double SAME = 1e-9;
 
     /** Relative slack for "equally along the normal" when the reference face is chosen. */
-    private static final double FACE_TIE = 1e-9;
+    private static final double FACE_TIE = 1e-6;
 
     /**
      * The manifold of two shapes with area, normal from a to b, or null when they do not
@@ -49,11 +49,37 @@ public final class Manifolds {
         if (c == null) {
             return null;
         }
-        double nx = c.nx(), ny = c.ny(), d = c.depth();
+        // The points are worked out with the pair in one order, whichever came first, as the
+        // pair tables do: so both orders give the same points, to the last bit, wherever the
+        // contact is the same one flipped.
+        if (later(a, b)) {
+            return points(b, a, c.flipped()).flipped();
+        }
+        return points(a, b, c);
+    }
+
+    /** Does a come after b in the order the points are worked out in: by kind, then by place? */
+    private static boolean later(Shape a, Shape b) {
+        int ka = ShapeKind.of(a).ordinal(), kb = ShapeKind.of(b).ordinal();
+        if (ka != kb) {
+            return ka > kb;
+        }
+        double[] p = {a.minX(), a.minY(), a.maxX(), a.maxY()}, q = {b.minX(), b.minY(), b.maxX(), b.maxY()};
+        for (int i = 0; i < 4; i++) {
+            if (p[i] != q[i]) {
+                return p[i] > q[i];
+            }
+        }
+        return a.toString().compareTo(b.toString()) > 0;
+    }
+
+    /** The manifold of overlapping a and b with their contact c. */
+    private static Manifold points(Shape a, Shape b, Contact c) {
+        double nx = c.nx(), ny = c.ny();
         double scale = scale(a, b);
         List<Piece> pa = pieces(a), pb = pieces(b);
         if (pa == null || pb == null) {
-            return onePoint(a, pa == null, b, pb == null, c, scale);
+            return onePoint(a, pa, b, pb, c, scale);
         }
         List<double[]> points = new ArrayList<>();
         for (Piece p : pa) {
@@ -74,7 +100,7 @@ public final class Manifolds {
                 }
             }
             if (points.isEmpty()) {
-                return onePoint(a, false, b, false, c, scale);
+                return onePoint(a, pa, b, pb, c, scale);
             }
             keepDeepest(points, scale);
         }
@@ -251,8 +277,7 @@ public final class Manifolds {
         if (inc.seg) {
             e = new double[] {inc.xy[0] - inc.r * ux, inc.xy[1] - inc.r * uy, inc.xy[2] - inc.r * ux, inc.xy[3] - inc.r * uy};
         } else {
-            int g = bestFace(inc, -ux, -uy);
-            e = new double[] {inc.faces[g + 2], inc.faces[g + 3], inc.faces[g + 4], inc.faces[g + 5]};
+            e = incidentEdge(inc, ux, uy);
         }
         // Clipped to the reference piece (all its half-planes but the face's own) and the
         // face's side lines.
@@ -286,6 +311,42 @@ public final class Manifolds {
         }
     }
 
+    /**
+     * The incident edge of a polygon piece against the reference face's normal (ux, uy): its
+     * face most nearly against it. Two faces as far against it (to {@link #FACE_TIE}) that
+     * meet at a corner turned straight at the reference face give that corner alone, so that a
+     * shape placed symmetrically gives symmetric points; two in line give their union.
+     */
+    private static double[] incidentEdge(Piece inc, double ux, double uy) {
+        int g = bestFace(inc, -ux, -uy);
+        double[] f = inc.faces;
+        double most = -(f[g] * ux + f[g + 1] * uy);
+        for (int k = 0; k < f.length; k += 6) {
+            if (k == g || -(f[k] * ux + f[k + 1] * uy) < most - FACE_TIE) {
+                continue;
+            }
+            if (f[k] * f[g] + f[k + 1] * f[g + 1] >= 1 - FACE_TIE) {
+                // In line: from the nearer end to the farther, along the first face.
+                double tx = f[g + 4] - f[g + 2], ty = f[g + 5] - f[g + 3];
+                double[] ends = {f[g + 2], f[g + 3], f[g + 4], f[g + 5], f[k + 2], f[k + 3], f[k + 4], f[k + 5]};
+                int lo = 0, hi = 0;
+                for (int i = 2; i < 8; i += 2) {
+                    double t = ends[i] * tx + ends[i + 1] * ty;
+                    lo = t < ends[lo] * tx + ends[lo + 1] * ty ? i : lo;
+                    hi = t > ends[hi] * tx + ends[hi + 1] * ty ? i : hi;
+                }
+                return new double[] {ends[lo], ends[lo + 1], ends[hi], ends[hi + 1]};
+            }
+            if (f[g + 4] == f[k + 2] && f[g + 5] == f[k + 3]) {
+                return new double[] {f[g + 4], f[g + 5], f[g + 4], f[g + 5]};
+            }
+            if (f[k + 4] == f[g + 2] && f[k + 5] == f[g + 3]) {
+                return new double[] {f[g + 2], f[g + 3], f[g + 2], f[g + 3]};
+            }
+        }
+        return new double[] {f[g + 2], f[g + 3], f[g + 4], f[g + 5]};
+    }
+
     /** The face of the piece most nearly along (ux, uy), as an index into its faces; -1 if none. */
     private static int bestFace(Piece p, double ux, double uy) {
         int best = -1;
@@ -316,13 +377,14 @@ public final class Manifolds {
 
     /**
      * The overlap of two pieces (q clipped to p's half-planes, a rounded segment as its
-     * rectangle), its corners with their depths into {@code out}.
+     * inscribed polygon), its corners with their depths into {@code out}.
      */
     private static void overlapCorners(Piece p, Piece q, double nx, double ny, List<Piece> pa, List<Piece> pb,
                                        double scale, List<double[]> out) {
         double[] poly = outline(q);
-        for (int k = 0; k < p.planes.length && poly.length > 0; k += 3) {
-            poly = clipPolygon(poly, p.planes[k], p.planes[k + 1], p.planes[k + 2]);
+        double[] planes = p.seg && p.r > 0 ? straight(List.of(outline(p))).get(0).planes : p.planes;
+        for (int k = 0; k < planes.length && poly.length > 0; k += 3) {
+            poly = clipPolygon(poly, planes[k], planes[k + 1], planes[k + 2]);
         }
         for (int i = 0; i + 1 < poly.length; i += 2) {
             double depth = depth(poly[i], poly[i + 1], nx, ny, pa, pb, scale);
@@ -332,15 +394,19 @@ public final class Manifolds {
         }
     }
 
-    /** A piece's outline as a polygon: its vertices, or a rounded segment's rectangle. */
+    /** A piece's outline as a polygon: its vertices, or a rounded segment's inscribed polygon. */
     private static double[] outline(Piece q) {
-        if (!q.seg) {
+        if (!q.seg || q.r == 0) {
             return q.xy;
         }
-        double px = q.planes[0], py = q.planes[1], r = q.r;
-        double[] s = q.xy;
-        return new double[] {s[0] + r * px, s[1] + r * py, s[2] + r * px, s[3] + r * py,
-            s[2] - r * px, s[3] - r * py, s[0] - r * px, s[1] - r * py};
+        double[] xy = new double[2 * INSCRIBED];
+        for (int i = 0; i < INSCRIBED; i++) {
+            double t = 2 * Math.PI * i / INSCRIBED, ux = Math.cos(t), uy = Math.sin(t);
+            int end = q.xy[0] * ux + q.xy[1] * uy >= q.xy[2] * ux + q.xy[3] * uy ? 0 : 2;
+            xy[2 * i] = q.xy[end] + q.r * ux;
+            xy[2 * i + 1] = q.xy[end + 1] + q.r * uy;
+        }
+        return xy;
     }
 
     /** Sutherland-Hodgman: the polygon clipped to {@code px * x + py * y <= c}. */
@@ -515,7 +581,8 @@ public final class Manifolds {
      * the middle of the overlap when both deepest points lie in the other shape. Its depth is
      * the contact's.
      */
-    private static Manifold onePoint(Shape a, boolean roundA, Shape b, boolean roundB, Contact c, double scale) {
+    private static Manifold onePoint(Shape a, List<Piece> piecesA, Shape b, List<Piece> piecesB, Contact c, double scale) {
+        boolean roundA = piecesA == null, roundB = piecesB == null;
         double nx = c.nx(), ny = c.ny(), d = c.depth();
         double[] pa, pb;
         if (roundA && !roundB) {
@@ -529,8 +596,21 @@ public final class Manifolds {
             pb = support(b, -nx, -ny);
         }
         double tol = Manifold.TOLERANCE * scale;
-        boolean aInB = outside(b, pa[0], pa[1]) <= tol, bInA = outside(a, pb[0], pb[1]) <= tol;
+        // In both: a witness worked out from the other's (pa = pb + d n) need not be on its own
+        // shape's outline (a concave polygon's contact is not its hull's).
+        boolean aInB = outside(b, pa[0], pa[1]) <= tol && outside(a, pa[0], pa[1]) <= tol;
+        boolean bInA = outside(a, pb[0], pb[1]) <= tol && outside(b, pb[0], pb[1]) <= tol;
         double[] p;
+        if (!aInB && !bInA) {
+            // Neither deepest point lies in the other shape (a round shape in a concave
+            // polygon's notch, say): the deepest corner of the overlap, a round shape taken
+            // as its inscribed polygon.
+            Manifold m = deepestCorner(piecesA != null ? piecesA : inscribed(a), piecesB != null ? piecesB : inscribed(b),
+                    c, scale);
+            if (m != null) {
+                return m;
+            }
+        }
         if (roundA != roundB) {
             double[] round = roundA ? pa : pb, other = roundA ? pb : pa;
             boolean roundIn = roundA ? aInB : bInA, otherIn = roundA ? bInA : aInB;
@@ -541,6 +621,43 @@ public final class Manifolds {
             p = aInB ? pa : pb;
         }
         return one(c, p[0], p[1], d);
+    }
+
+    /** The deepest corner of the overlap of the two shapes' pieces, as one point; null if none. */
+    private static Manifold deepestCorner(List<Piece> pa, List<Piece> pb, Contact c, double scale) {
+        if (pa == null || pb == null) {
+            return null;
+        }
+        List<double[]> points = new ArrayList<>();
+        for (Piece p : pa) {
+            for (Piece q : pb) {
+                if (boxesMeet(p, q, scale)) {
+                    overlapCorners(p, q, c.nx(), c.ny(), pa, pb, scale, points);
+                }
+            }
+        }
+        double[] best = null;
+        for (double[] p : points) {
+            if (best == null || p[2] > best[2] || p[2] == best[2] && (p[0] < best[0] || p[0] == best[0] && p[1] < best[1])) {
+                best = p;
+            }
+        }
+        return best == null ? null : one(c, best[0], best[1], best[2]);
+    }
+
+    /** The number of corners of a round shape's inscribed polygon. */
+    private static final int INSCRIBED = 64;
+
+    /** A round shape as its inscribed polygon, one piece; null for a shape of no extent. */
+    private static List<Piece> inscribed(Shape s) {
+        double[] xy = new double[2 * INSCRIBED];
+        for (int i = 0; i < INSCRIBED; i++) {
+            double t = 2 * Math.PI * i / INSCRIBED;
+            double[] p = support(s, Math.cos(t), Math.sin(t));
+            xy[2 * i] = p[0];
+            xy[2 * i + 1] = p[1];
+        }
+        return straight(List.of(xy));
     }
 
     /** The shape's point farthest along unit (ux, uy); the middle of a flat side that is farthest. */
