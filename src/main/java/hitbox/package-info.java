@@ -88,7 +88,7 @@
  *       ({@link hitbox.Hit}, {@link hitbox.RayHit}, {@link hitbox.Contact},
  *       {@link hitbox.Snap.Push}).</li>
  *   <li><b>No result.</b> An answer that is an object is {@code null} when there is none (no
- *       contact, no hit, no ray hit, no bounds for an empty mask); a {@code float} time or
+ *       contact or manifold, no hit, no ray hit, no bounds for an empty mask); a {@code float} time or
  *       distance is {@link java.lang.Float#POSITIVE_INFINITY}, so {@code t <= 1} reads "hits
  *       this frame"; an index is -1, as in {@link java.util.List#indexOf}; a boolean is
  *       false; a set of sides is 0 ({@code NONE}); an array of answers is empty, never
@@ -121,7 +121,9 @@
  *       of its range) is an {@link java.lang.IllegalArgumentException}; an index that must
  *       name an existing element and does not (a grid cell outside the grid, given to
  *       {@link hitbox.Grid#get}, {@link hitbox.Grid#set}, {@link hitbox.Grid#path} or
- *       {@link hitbox.Grid#fillRandom(float, long, int, int)}) is an
+ *       {@link hitbox.Grid#fillRandom(float, long, int, int)}, or a contact point that a
+ *       {@link hitbox.Manifold} does not have, given to {@link hitbox.Manifold#x(int)} and
+ *       its kin) is an
  *       {@link java.lang.IndexOutOfBoundsException}, like a list's, its message naming the
  *       cell or the parameter; changing a {@link hitbox.BroadPhase} from inside its own
  *       callback is an {@link java.lang.IllegalStateException}. Nothing throws anything else
