@@ -29,22 +29,31 @@ import hitbox.internal.*;
  *       (the end of its radius along the normal), or, where that lies beyond the other shape
  *       (a small shape deep inside a big round one), the other shape's deepest point into
  *       it. Two round shapes: the middle of the overlap along the normal, halfway between
- *       the two deepest points.</li>
+ *       the two deepest points. Where neither deepest point lies in both shapes (a round
+ *       shape in a concave polygon's notch), the overlap's deepest corners, as below.</li>
  *   <li>Concave polygons: through their convex pieces, with the one normal of the contact;
  *       the points may then lie on a cut between pieces, inside the polygon. Of more than two
  *       candidates the two farthest apart along the surface are kept.</li>
- *   <li>Two shapes crossing deeply (a plus sign), where no incident edge lies inside the
- *       reference shape: the overlap's points deepest behind the reference face.</li>
+ *   <li>Two shapes crossing deeply (a plus sign), or one wholly inside the other, where no
+ *       incident edge lies inside the reference shape: the deepest corners of the overlap
+ *       (worked out with a round shape or a capsule's ends as an inscribed 64-gon), one, or
+ *       the two farthest apart along the surface.</li>
  * </ul>
+ * Depths and places that differ only by the rounding of the shapes' float coordinates (a
+ * regular polygon's corners, say) count as equal, so that a pair placed symmetrically about
+ * a line gets symmetric points.
  * Swapping the shapes gives the same points, in the same order (by x, then y), and the
  * contact {@link Contact#flipped() flipped}, wherever {@link Contact#between} gives the
  * flipped contact.
  *
  * <h2>The depths</h2>
- * A point's depth is how far b must move along the normal (or a against it) for that point
- * to leave the other shape, greater than 0 and at most the contact's depth; the deepest
- * point of a shape standing on a corner has the contact's depth, and so does the one point
- * of a round pair. The contact's normal and depth are exactly {@link Contact#between}'s.
+ * A point's depth is how far b must move along the normal for that point, as a point of b,
+ * to leave a, plus how far a must move against it for the point, as a point of a, to leave
+ * b: for a point on b's outline inside a (the usual case) the first alone, Box2D's
+ * separation from the reference face. It is greater than 0 and at most the contact's depth
+ * (held there where rounding would pass it); the corner of a shape standing on it has the
+ * contact's depth, and so does the one point of a round pair. The contact's normal and
+ * depth are exactly {@link Contact#between}'s.
  *
  * @param contact    the contact: normal from a to b, and depth
  * @param pointCount how many contact points, 1 or 2

@@ -220,8 +220,11 @@ class ManifoldTest {
     @Property
     void symmetricAboutAVerticalLine_symmetricPoints(@ForAll("mirrored") Shape a, @ForAll("mirrored") Shape b) {
         Manifold m = Contact.manifold(a, b);
-        if (m == null || m.nx() != 0) {
-            return;   // a tie between two mirrored normals picks one: nothing to mirror
+        if (m == null || m.nx() != 0 || m.depth() < 1e-5 * scale(a, b)) {
+            // A tie between two mirrored normals picks one: nothing to mirror. And a hair's
+            // overlap is decided by the rounding of a regular polygon's float corners, which
+            // are symmetric only to rounding: one corner touches, its mirror image does not.
+            return;
         }
         // Every shape here is symmetric about x = 0: the points are too.
         double tol = 10 * Manifold.TOLERANCE * scale(a, b);

@@ -26,6 +26,9 @@ import java.util.List;
  * second term is 0, and the first is Box2D's separation from the reference face when the
  * face is across the normal.
  *
+ * <p>At about 780 lines this class is longer than most: the clipping, the depths, the
+ * fallbacks and the one-point rule all read the same pieces, and only make sense together.
+ *
  * <p>Reference: E. Catto, Box2D's {@code b2ClipPolygons} and {@code b2ClipSegments}; W.
  * Bittle, dyn4j's {@code ClippingManifoldSolver}; C. Ericson, <i>Real-Time Collision
  * Detection</i> (2005), 8.3.4 (Sutherland-Hodgman clipping).
@@ -36,6 +39,9 @@ public final class Manifolds {
 
     /** Relative size (of the pair's scale) below which two points are one, and a depth none. */
     private static final double SAME = 1e-9;
+
+    /** Below this cosine a side is nearly along a ray (about 0.06 degrees off). */
+    private static final double ALONG = 1e-3;
 
     /** Relative slack for "equally along the normal" when the reference face is chosen. */
     private static final double FACE_TIE = 1e-6;
@@ -399,12 +405,19 @@ public final class Manifolds {
         if (!q.seg || q.r == 0) {
             return q.xy;
         }
-        double[] xy = new double[2 * INSCRIBED];
-        for (int i = 0; i < INSCRIBED; i++) {
-            double t = 2 * Math.PI * i / INSCRIBED, ux = Math.cos(t), uy = Math.sin(t);
-            int end = q.xy[0] * ux + q.xy[1] * uy >= q.xy[2] * ux + q.xy[3] * uy ? 0 : 2;
-            xy[2 * i] = q.xy[end] + q.r * ux;
-            xy[2 * i + 1] = q.xy[end + 1] + q.r * uy;
+        // Two half circles, each from one side's corner to the other's, the corners exact.
+        int half = INSCRIBED / 2;
+        double[] xy = new double[4 * (half + 1)];
+        double dx = q.planes[6], dy = q.planes[7], px = q.planes[0], py = q.planes[1];
+        int k = 0;
+        for (int end = 2; end >= 0; end -= 2) {
+            double sign = end == 2 ? 1 : -1;
+            for (int i = 0; i <= half; i++) {
+                double t = -Math.PI / 2 + Math.PI * i / half;
+                double c = i == 0 || i == half ? 0 : Math.cos(t), sn = i == 0 ? -1 : i == half ? 1 : Math.sin(t);
+                xy[k++] = q.xy[end] + sign * q.r * (c * dx + sn * px);
+                xy[k++] = q.xy[end + 1] + sign * q.r * (c * dy + sn * py);
+            }
         }
         return xy;
     }
@@ -490,12 +503,16 @@ public final class Manifolds {
      * it misses them.
      */
     private static double[] slab(double[] planes, double px, double py, double ux, double uy, double tol) {
+        double reach = tol / SAME;
         double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
         for (int k = 0; k < planes.length; k += 3) {
             double along = planes[k] * ux + planes[k + 1] * uy;
             double gap = planes[k + 2] - (planes[k] * px + planes[k + 1] * py);
             if (along > 0) {
-                hi = Math.min(hi, gap / along);
+                // A side the ray runs nearly along (a float polygon's upright edge, turned by
+                // rounding) lets it go the way it would go along the side itself: the region
+                // widened by a float's rounding there, so the side's rounding does not decide.
+                hi = Math.min(hi, (along < ALONG ? gap + AS_DEEP * reach : gap) / along);
             } else if (along < 0) {
                 lo = Math.max(lo, gap / along);
             } else if (gap < -tol) {
@@ -507,13 +524,20 @@ public final class Manifolds {
 
     // ---------------------------------------------------------------- choosing the points
 
-    /** Keeps the deepest of the overlap's corners (and those as deep, to rounding). */
+    /**
+     * How close (relative to the pair's scale) two depths are the same for the deepest
+     * corners: a little above a float's rounding of the coordinates, so that a shape placed
+     * symmetrically, whose float corners are symmetric only to rounding, keeps both.
+     */
+    private static final double AS_DEEP = 1e-6;
+
+    /** Keeps the deepest of the overlap's corners (and those as deep, to the rounding of floats). */
     private static void keepDeepest(List<double[]> points, double scale) {
         double most = 0;
         for (double[] p : points) {
             most = Math.max(most, p[2]);
         }
-        double cut = most - SAME * scale;
+        double cut = most - AS_DEEP * scale;
         points.removeIf(p -> p[2] < cut);
     }
 
@@ -550,16 +574,20 @@ public final class Manifolds {
                 (float) second[0], (float) second[1], depthOf(second[2], c));
     }
 
-    /** Is p before q along (tx, ty): less far along it, or as far and deeper, or then by x and y? */
+    /**
+     * Is p before q along (tx, ty): less far along it, or as far (to the rounding of floats)
+     * and deeper (to the same rounding), or then by y and x? (By y first, so that points placed symmetrically about a
+     * vertical line are chosen symmetrically.)
+     */
     private static boolean before(double[] p, double[] q, double tx, double ty, double scale) {
         double dp = p[0] * tx + p[1] * ty, dq = q[0] * tx + q[1] * ty;
-        if (Math.abs(dp - dq) > SAME * scale) {
+        if (Math.abs(dp - dq) > AS_DEEP * scale) {
             return dp < dq;
         }
-        if (p[2] != q[2]) {
+        if (Math.abs(p[2] - q[2]) > AS_DEEP * scale) {
             return p[2] > q[2];
         }
-        return p[0] < q[0] || p[0] == q[0] && p[1] < q[1];
+        return p[1] < q[1] || p[1] == q[1] && p[0] < q[0];
     }
 
     private static Manifold one(Contact c, double x, double y, double depth) {
@@ -623,7 +651,7 @@ public final class Manifolds {
         return one(c, p[0], p[1], d);
     }
 
-    /** The deepest corner of the overlap of the two shapes' pieces, as one point; null if none. */
+    /** The deepest corners of the overlap of the two shapes' pieces, one or two; null if none. */
     private static Manifold deepestCorner(List<Piece> pa, List<Piece> pb, Contact c, double scale) {
         if (pa == null || pb == null) {
             return null;
@@ -636,13 +664,11 @@ public final class Manifolds {
                 }
             }
         }
-        double[] best = null;
-        for (double[] p : points) {
-            if (best == null || p[2] > best[2] || p[2] == best[2] && (p[0] < best[0] || p[0] == best[0] && p[1] < best[1])) {
-                best = p;
-            }
+        if (points.isEmpty()) {
+            return null;
         }
-        return best == null ? null : one(c, best[0], best[1], best[2]);
+        keepDeepest(points, scale);
+        return reduce(points, c, scale);
     }
 
     /** The number of corners of a round shape's inscribed polygon. */
