@@ -156,8 +156,8 @@ public final class Manifolds {
                     px, py, xy[0] + r * px, xy[1] + r * py, xy[2] + r * px, xy[3] + r * py,
                     -px, -py, xy[2] - r * px, xy[3] - r * py, xy[0] - r * px, xy[1] - r * py};
             } else {
-                int n = xy.length / 2;
-                List<Double> pl = new ArrayList<>(), fa = new ArrayList<>();
+                int n = xy.length / 2, m = 0;
+                double[] pl = new double[3 * n], fa = new double[6 * n];
                 for (int i = 0; i < n; i++) {
                     int j = (i + 1) % n;
                     double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = Math.hypot(ex, ey);
@@ -165,11 +165,19 @@ public final class Manifolds {
                         continue;
                     }
                     double ux = ey / len, uy = -ex / len;
-                    pl.addAll(List.of(ux, uy, ux * xy[2 * i] + uy * xy[2 * i + 1]));
-                    fa.addAll(List.of(ux, uy, xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1]));
+                    pl[3 * m] = ux;
+                    pl[3 * m + 1] = uy;
+                    pl[3 * m + 2] = ux * xy[2 * i] + uy * xy[2 * i + 1];
+                    fa[6 * m] = ux;
+                    fa[6 * m + 1] = uy;
+                    fa[6 * m + 2] = xy[2 * i];
+                    fa[6 * m + 3] = xy[2 * i + 1];
+                    fa[6 * m + 4] = xy[2 * j];
+                    fa[6 * m + 5] = xy[2 * j + 1];
+                    m++;
                 }
-                planes = pl.stream().mapToDouble(Double::doubleValue).toArray();
-                faces = fa.stream().mapToDouble(Double::doubleValue).toArray();
+                planes = java.util.Arrays.copyOf(pl, 3 * m);
+                faces = java.util.Arrays.copyOf(fa, 6 * m);
             }
         }
     }
