@@ -170,7 +170,8 @@
  * {@code x, y, w, h}, or {@code rectX, rectY, rectW, rectH} beside another shape's
  * coordinates; an ellipse's {@code rx} and {@code ry} are its radii. The verb says what comes
  * back: {@code overlaps}, {@code contains} and the {@code Collide} tests a boolean,
- * {@code contact} a {@link hitbox.Contact} or null, {@code timeOfImpact} a
+ * {@code contact} a {@link hitbox.Contact} or null, {@code manifold} a
+ * {@link hitbox.Manifold} (the contact with its one or two points) or null, {@code timeOfImpact} a
  * {@link hitbox.Hit} or null (its time in [0, 1]), {@code distance...} a length or
  * {@code +Infinity}; {@link hitbox.Hits#first} an index, {@link hitbox.Hits#firstShape} the
  * shape.
