@@ -111,8 +111,20 @@ void drawContact() {
   if (!showMaths) {
     return;
   }
+  // Where they met, before the push: Contact.manifold's point, the ball's deepest point in
+  // the shape (a ball meets anything at one point; a box lying on a face would give two).
+  Manifold touch = shown.touch;
+  stroke(Palette.BACKGROUND);
+  strokeWeight(2);
+  fill(Overlay.TEXT);
+  Draw.manifold(g, touch, 11);
+  float across = sx > 0 || (sx == 0 && sy > 0) ? 1 : -1;   // the label to the right of it
+  Overlay.labelBeside(g, touch.x(0) + across * sx * 10, touch.y(0) + across * sy * 10, across * sx, across * sy,
+      "manifold point", Overlay.TEXT);
   String text = "Contact.between(ball, " + name + "): normal (" + Overlay.number(nx) + ", "
       + Overlay.number(ny) + "), depth " + Overlay.number(c.depth());
+  text += "\nContact.manifold: " + touch.pointCount() + " point, (" + Overlay.number(touch.x(0)) + ", "
+      + Overlay.number(touch.y(0)) + "), the ball's deepest point in the " + name;
   if (mode == PUSH) {
     // The push, as a dimension line beside the ball: from where the mouse put it, back
     // against the normal by the depth.

@@ -90,6 +90,7 @@ void move() {
       if (c == null) {
         continue;
       }
+      Manifold touch = Contact.manifold(ball, s);   // the same contact, and where they meet
       Vec v0 = new Vec(vx, vy);
       Vec v = mode == BOUNCE ? Response.bounce(vx, vy, c) : mode == SLIDE ? Response.slide(vx, vy, c) : v0;
       vx = v.x();
@@ -98,7 +99,7 @@ void move() {
       Circle out = Response.separate(ball, s);
       x = out.x();
       y = out.y();
-      answered(new Answer(i, c, ghostX, ghostY, x, y, v0, v));
+      answered(new Answer(i, c, touch, ghostX, ghostY, x, y, v0, v));
     }
     if (answers.size() == before) {
       break;

@@ -116,6 +116,22 @@ public record Contact(float nx, float ny, float depth) {
     }
 
     /**
+     * The contact between two shapes with its one or two contact points, or null when they do
+     * not overlap (touching is not overlapping): see {@link Manifold} for where the points
+     * are. Its contact is exactly {@link #between between(a, b)}, and swapping the shapes
+     * gives the same points with that contact flipped.
+     *
+     * @param a the first shape, not null
+     * @param b the second shape, not null
+     * @return the manifold, its normal pointing from a to b, or null when apart
+     * @throws IllegalArgumentException if a shape is null or is a {@link Segment}, which has
+     *                                  no area to push out of (as {@link #between})
+     */
+    public static Manifold manifold(Shape a, Shape b) {
+        return Manifolds.between(Check.notNull("a", a), Check.notNull("b", b));
+    }
+
+    /**
      * The contact between two circles, or null when they do not overlap.
      *
      * <p>The normal points from the first centre to the second; the depth is

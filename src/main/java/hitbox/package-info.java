@@ -88,7 +88,7 @@
  *       ({@link hitbox.Hit}, {@link hitbox.RayHit}, {@link hitbox.Contact},
  *       {@link hitbox.Snap.Push}).</li>
  *   <li><b>No result.</b> An answer that is an object is {@code null} when there is none (no
- *       contact, no hit, no ray hit, no {@link hitbox.Separation} for shapes that overlap, no
+ *       contact or manifold, no hit, no ray hit, no {@link hitbox.Separation} for shapes that overlap, no
  *       bounds for an empty mask); a {@code float} time or
  *       distance is {@link java.lang.Float#POSITIVE_INFINITY}, so {@code t <= 1} reads "hits
  *       this frame"; an index is -1, as in {@link java.util.List#indexOf}; a boolean is
@@ -122,7 +122,9 @@
  *       of its range) is an {@link java.lang.IllegalArgumentException}; an index that must
  *       name an existing element and does not (a grid cell outside the grid, given to
  *       {@link hitbox.Grid#get}, {@link hitbox.Grid#set}, {@link hitbox.Grid#path} or
- *       {@link hitbox.Grid#fillRandom(float, long, int, int)}) is an
+ *       {@link hitbox.Grid#fillRandom(float, long, int, int)}, or a contact point that a
+ *       {@link hitbox.Manifold} does not have, given to {@link hitbox.Manifold#x(int)} and
+ *       its kin) is an
  *       {@link java.lang.IndexOutOfBoundsException}, like a list's, its message naming the
  *       cell or the parameter; changing a {@link hitbox.BroadPhase} from inside its own
  *       callback is an {@link java.lang.IllegalStateException}. Nothing throws anything else
@@ -175,7 +177,8 @@
  * {@code x, y, w, h}, or {@code rectX, rectY, rectW, rectH} beside another shape's
  * coordinates; an ellipse's {@code rx} and {@code ry} are its radii. The verb says what comes
  * back: {@code overlaps}, {@code contains} and the {@code Collide} tests a boolean,
- * {@code contact} a {@link hitbox.Contact} or null, {@code separation} a
+ * {@code contact} a {@link hitbox.Contact} or null, {@code manifold} a
+ * {@link hitbox.Manifold} (the contact with its one or two points) or null, {@code separation} a
  * {@link hitbox.Separation} (how far apart, and the closest points) or null when the shapes
  * overlap, {@code timeOfImpact} a
  * {@link hitbox.Hit} or null (its time in [0, 1]), {@code distance...} a length or

@@ -231,7 +231,8 @@ class BadInputCatalogTest {
             }
             return;
         } catch (IndexOutOfBoundsException ex) {
-            assertTrue(e.getDeclaringClass() == Grid.class, key + ": " + ex);
+            // A grid cell, or a manifold's point, that must name an existing one.
+            assertTrue(e.getDeclaringClass() == Grid.class || e.getDeclaringClass() == Manifold.class, key + ": " + ex);
             return;
         } catch (Throwable ex) {
             throw new AssertionError(key + "(" + param.getName() + " = " + bad.name() + ") threw " + ex, ex);
@@ -289,7 +290,8 @@ class BadInputCatalogTest {
             assertEquals(0, ((int[]) result).length, what);
         } else if (type == Snap.Push.class) {
             assertEquals(Side.NONE, ((Snap.Push) result).side(), what);
-        } else if (type == Hit.class || type == Contact.class || type == RayHit.class || type == Separation.class) {
+        } else if (type == Hit.class || type == Contact.class || type == RayHit.class || type == Separation.class
+                || type == Manifold.class) {
             assertEquals(null, result, what);
         }
     }
@@ -429,6 +431,9 @@ class BadInputCatalogTest {
         if (c == Contact.class) {
             return new Contact(0, 1, 1);
         }
+        if (c == Manifold.class) {
+            return new Manifold(new Contact(0, 1, 2), 2, 0, 0, 1, 4, 0, 2);
+        }
         if (c == PathCosts.class) {
             return PathCosts.steps();
         }
@@ -562,6 +567,9 @@ class BadInputCatalogTest {
         }
         if (type == Contact.class) {
             return new Contact(0, 1, 1);
+        }
+        if (type == Manifold.class) {
+            return receiver(Manifold.class);
         }
         if (type == Vec.class) {
             return new Vec(1, 2);

@@ -245,6 +245,28 @@ class ShapeKindDispatchTest {
                     assertTrue(SeparationOracleTest.toOutline(a, s.ax(), s.ay()) < 1e-3, "a's point on a: " + s);
                     assertTrue(SeparationOracleTest.toOutline(far, s.bx(), s.by()) < 1e-3, "b's point on b: " + s);
                 }));
+                tests.add(pair(first, second, name, "Contact.manifold", (a, b) -> {
+                    if (!ShapeKind.of(a).hasArea() || !ShapeKind.of(b).hasArea()) {
+                        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Contact.manifold(a, b));
+                        assertTrue(e.getMessage().contains("Segment"), e.getMessage());
+                        return;
+                    }
+                    Manifold m = Contact.manifold(a, b);
+                    assertNotNull(m, "overlapping shapes have a manifold");
+                    assertEquals(Contact.between(a, b), m.contact(), "the contact of Contact.between");
+                    assertTrue(m.pointCount() == 1 || m.pointCount() == 2, m.toString());
+                    for (int i = 0; i < m.pointCount(); i++) {
+                        // Every sample covers [-2, 2] x [-2, 2] and lies in [-13, 13] x [-11, 11].
+                        assertTrue(Math.abs(m.x(i)) <= 13 && Math.abs(m.y(i)) <= 11, m.toString());
+                        assertTrue(m.depth(i) > 0 && m.depth(i) <= m.depth(), m.toString());
+                    }
+                    Manifold back = Contact.manifold(b, a);
+                    assertNotNull(back);
+                    if (back.contact().equals(m.contact().flipped())) {
+                        assertEquals(m.flipped(), back, "both orders: the same points");
+                    }
+                    assertNull(Contact.manifold(a, b.translated(500, 0)), "far apart");
+                }));
                 tests.add(pair(first, second, name, "Sweep.timeOfImpact", (a, b) -> {
                     assertTrue(Sweep.timeOfImpact(a, 10, 0, b).alreadyOverlapping(), "overlapping at the start");
                     // Two copies of one segment, one moved along the other, would meet only at

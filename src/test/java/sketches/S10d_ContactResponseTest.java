@@ -12,8 +12,10 @@ import org.junit.jupiter.api.Test;
 
 import hitbox.Circle;
 import hitbox.Contact;
+import hitbox.Manifold;
 import hitbox.Shape;
 import hitbox.Vec;
+import hitbox.processing.Overlay;
 import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
@@ -168,6 +170,26 @@ class S10d_ContactResponseTest {
         SketchPixels.assertColour(frame, 470, 90, Palette.HIT, "the rect");
         SketchPixels.assertColour(frame, 160, 230, Palette.OBSTACLE, "the circle, untouched");
         SketchPixels.assertColour(frame, Math.round(s.x) + 8, Math.round(s.y) + 8, Palette.PLAYER, "the ball");
+    }
+
+    @Test
+    void overlay_drawsTheManifoldPoint_theBallsDeepestPointInTheShape() {
+        // As the screenshot: the mouse in the pentagon, the maths on.
+        SketchRun.Result<S10d_ContactResponse> r = SketchRun.of(new S10d_ContactResponse())
+                .script(new Script().frames(10).mouse(1, 398, 262).key(2, 'd')).run();
+        S10d_ContactResponse s = r.sketch();
+        assertTrue(s.showMaths);
+        S10d_ContactResponse.Answer a = s.shown;
+        assertEquals(2, a.shape, "the pentagon");
+        Manifold m = a.touch;
+        assertEquals(a.contact, m.contact(), "the manifold's contact is the one the ball was pushed out by");
+        assertEquals(1, m.pointCount(), "a ball meets anything at one point");
+        // Where the mouse put the ball, its deepest point along the normal, inside the pentagon.
+        assertEquals(a.ghostX + a.contact.nx() * s.r, m.x(0), 1e-3f);
+        assertEquals(a.ghostY + a.contact.ny() * s.r, m.y(0), 1e-3f);
+        assertTrue(s.shapes[2].contains(m.x(0), m.y(0)));
+        SketchPixels.assertColour(r.lastFrame(), Math.round(m.x(0)), Math.round(m.y(0)), Overlay.TEXT,
+                "the manifold point, a white dot");
     }
 
     @Test

@@ -3,6 +3,7 @@ package hitbox.processing;
 import hitbox.Capsule;
 import hitbox.Circle;
 import hitbox.Ellipse;
+import hitbox.Manifold;
 import hitbox.Polygon;
 import hitbox.Rect;
 import hitbox.Segment;
@@ -107,6 +108,28 @@ public final class Draw {
             g.vertex(k.x1() + k.r() * (float) Math.cos(t), k.y1() + k.r() * (float) Math.sin(t));
         }
         g.endShape(PConstants.CLOSE);
+    }
+
+    /**
+     * Draws a manifold's contact points ({@link hitbox.Contact#manifold}) as dots, with the
+     * current fill and stroke, as Processing's {@code circle} draws them: one dot where a
+     * ball touches, two at the ends of a box lying on a face.
+     *
+     * <p>Nothing is checked but the manifold: a NaN diameter is handed to Processing as it is.
+     *
+     * @param g        where to draw
+     * @param m        the manifold, not null
+     * @param diameter each dot's diameter, in pixels
+     * @throws IllegalArgumentException if {@code m} is null
+     */
+    public static void manifold(PGraphics g, Manifold m, float diameter) {
+        if (m == null) {
+            throw new IllegalArgumentException("the manifold m must not be null (Contact.manifold gives null when the shapes are apart: test it first)");
+        }
+        g.ellipseMode(PConstants.CENTER);
+        for (int i = 0; i < m.pointCount(); i++) {
+            g.ellipse(m.x(i), m.y(i), diameter, diameter);
+        }
     }
 
     /**

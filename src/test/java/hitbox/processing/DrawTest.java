@@ -6,7 +6,9 @@ import static org.junit.jupiter.api.Assertions.fail;
 
 import hitbox.Capsule;
 import hitbox.Circle;
+import hitbox.Contact;
 import hitbox.Ellipse;
+import hitbox.Manifold;
 import hitbox.Polygon;
 import hitbox.Rect;
 import hitbox.Segment;
@@ -19,6 +21,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestFactory;
 import processing.awt.PGraphicsJava2D;
 
@@ -73,6 +76,35 @@ class DrawTest {
             }));
         }
         return tests.stream();
+    }
+
+    @Test
+    void manifold_drawsADotAtEachContactPoint_andNothingElse() {
+        // A box lying 2 into a floor: two points, at the box's bottom corners.
+        Manifold m = Contact.manifold(new Rect(40, 60, 100, 42), new Rect(0, 100, 200, 60));
+        assertEquals(2, m.pointCount());
+        PGraphicsJava2D g = new PGraphicsJava2D();
+        g.setPrimary(false);
+        g.setSize(W, H);
+        g.beginDraw();
+        g.noSmooth();
+        g.background(0);
+        g.fill(255);
+        g.noStroke();
+        Draw.manifold(g, m, 6);
+        g.endDraw();
+        g.loadPixels();
+        int lit = 0;
+        for (int py = 0; py < H; py++) {
+            for (int px = 0; px < W; px++) {
+                boolean drawn = (g.pixels[py * W + px] & 0xff) > 127;
+                double near = Math.min(Math.hypot(px + 0.5 - m.x(0), py + 0.5 - m.y(0)), Math.hypot(px + 0.5 - m.x(1), py + 0.5 - m.y(1)));
+                assertTrue(!drawn || near <= 3 + BAND, "(" + px + ", " + py + ") drawn, " + near + " from the points");
+                assertTrue(drawn || near >= 3 - BAND, "(" + px + ", " + py + ") not drawn, " + near + " from the points");
+                lit += drawn ? 1 : 0;
+            }
+        }
+        assertTrue(lit > 2 * 20, "two dots of diameter 6: " + lit);
     }
 
     /** Draws the shape filled and stroked in white on black, and compares every pixel outside the band. */
