@@ -88,8 +88,8 @@
  *       ({@link hitbox.Hit}, {@link hitbox.RayHit}, {@link hitbox.Contact},
  *       {@link hitbox.Snap.Push}).</li>
  *   <li><b>No result.</b> An answer that is an object is {@code null} when there is none (no
- *       contact or manifold, no hit, no ray hit, no {@link hitbox.Separation} for shapes that overlap, no
- *       bounds for an empty mask); a {@code float} time or
+ *       contact or manifold, no hit, no ray hit, no {@link hitbox.Separation} for shapes that
+ *       overlap, no bounds for an empty mask); a {@code float} time or
  *       distance is {@link java.lang.Float#POSITIVE_INFINITY}, so {@code t <= 1} reads "hits
  *       this frame"; an index is -1, as in {@link java.util.List#indexOf}; a boolean is
  *       false; a set of sides is 0 ({@code NONE}); an array of answers is empty, never
