@@ -278,8 +278,9 @@ public final class Manifolds {
             referenceA = sa > sb;
         } else {
             // Equally along the normal: the reference is the shape the preferred one of n and
-            // -n points away from, whichever shape came first.
-            referenceA = Contacts.preferred(nx, ny, -nx, -ny);
+            // -n points away from, whichever shape came first (n and -n are mirror images in
+            // every key, so the keys are compared exactly: no tie tolerance).
+            referenceA = Contacts.preferred(nx, ny, -nx, -ny, 0);
         }
         Piece ref = referenceA ? p : q, inc = referenceA ? q : p;
         int f = referenceA ? fa : fb;
