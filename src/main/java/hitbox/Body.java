@@ -342,8 +342,10 @@ public final class Body {
 
     /**
      * Makes the body a carrier (a moving platform): when {@link World#move} moves it, the
-     * bodies standing on its top (touching it from above, layers accepting) move along by the
-     * same amount, sliding against everything else; the platform itself passes through them.
+     * bodies standing on its top (touching it from above, layers accepting) move along by as
+     * much as it moved, sliding against everything else. Going up they move first, and the
+     * platform then meets them as any other body (a rider a ceiling stopped stops it, as the
+     * filter says); going sideways or down the platform moves first, passing through them.
      *
      * @param carrier true to carry
      * @return this body, for chaining, never null

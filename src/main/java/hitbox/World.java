@@ -354,15 +354,24 @@ public final class World {
         holdFlush = true;
         try {
             List<Collision> out;
+            float px = p.x(), py = p.y();
             if (dy < 0) {
                 for (Body r : riders) {
                     moveOne(r, dx, dy, SLIDE);
                 }
-                out = moveOne(p, dx, dy, platform);
+                out = moveOne(p, dx, dy, filter);  // a rider a ceiling stopped stops it too
+                // Stopped short (a ceiling): the riders come back down with it.
+                float cx = p.x() - px - dx, cy = p.y() - py - dy;
+                if (cx != 0 || cy != 0) {
+                    for (Body r : riders) {
+                        moveOne(r, cx, cy, SLIDE);
+                    }
+                }
             } else {
                 out = moveOne(p, dx, dy, platform);
+                float ax = p.x() - px, ay = p.y() - py;
                 for (Body r : riders) {
-                    moveOne(r, dx, dy, SLIDE);
+                    moveOne(r, ax, ay, SLIDE);
                 }
             }
             holdFlush = false;
@@ -938,6 +947,44 @@ public final class World {
         contacts = now;
         stepped = true;
         return events;
+    }
+
+    /**
+     * Reports every pair of bodies whose layers accept each other and whose shapes overlap now
+     * (a grid's body: one of its solid cells), each pair once, the body added first first, in
+     * no particular order of pairs: the all-pairs question of {@link BroadPhase#pairs} asked
+     * of the bodies, without making events. Sensors are reported like any body.
+     *
+     * @param out receives each pair; it may read the world but not change it, not null
+     * @throws IllegalArgumentException if {@code out} is null, or it threw (the world is as it
+     *                                  was)
+     * @throws IllegalStateException    if called from inside a callback of this world, or
+     *                                  {@code out} tried to change the world
+     */
+    public void pairs(java.util.function.BiConsumer<Body, Body> out) {
+        Check.notNull("out", out);
+        checkNotInCallback("pairs");
+        flush();
+        broad.pairs((i, j) -> {
+            Body a = byId[i], b = byId[j];
+            if (a.accepts(b) && overlap(a, b)) {
+                if (a.serial > b.serial) {
+                    Body t = a;
+                    a = b;
+                    b = t;
+                }
+                callbackDepth++;
+                try {
+                    out.accept(a, b);
+                } catch (IllegalStateException e) {
+                    throw e;
+                } catch (RuntimeException e) {
+                    throw new IllegalArgumentException("out threw " + e + " for " + a + " and " + b, e);
+                } finally {
+                    callbackDepth--;
+                }
+            }
+        });
     }
 
     private static void putPair(Map<Long, Body[]> map, Body a, Body b) {

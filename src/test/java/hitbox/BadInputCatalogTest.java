@@ -554,6 +554,9 @@ class BadInputCatalogTest {
         if (type == Body.class) {
             return WORLD.add(attempt % 2 == 0 ? new Rect(30, 30, 10, 10) : new Circle(0, 0, 3));
         }
+        if (type == java.util.function.BiConsumer.class) {
+            return (java.util.function.BiConsumer<?, ?>) (a, b) -> { };
+        }
         if (type == CollisionFilter.class) {
             return (CollisionFilter) (m, o) -> Reaction.SLIDE;
         }

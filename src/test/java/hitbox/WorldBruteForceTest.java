@@ -181,6 +181,20 @@ class WorldBruteForceTest {
                     }
                 }
                 now.values().removeIf(p -> !p[0].alive() || !p[1].alive() || !p[0].accepts(p[1]));
+                java.util.Set<String> overlapping = new java.util.TreeSet<>();
+                for (int i = 0; i < all.size(); i++) {
+                    for (int j = i + 1; j < all.size(); j++) {
+                        if (all.get(i).accepts(all.get(j)) && all.get(i).shape().overlaps(all.get(j).shape())) {
+                            overlapping.add(key(all.get(i), all.get(j)));
+                        }
+                    }
+                }
+                java.util.Set<String> pairs = new java.util.TreeSet<>();
+                w.pairs((a, b) -> {
+                    assertTrue(all.indexOf(a) < all.indexOf(b), "the body added first first");
+                    assertTrue(pairs.add(key(a, b)), "each pair once");
+                });
+                assertEquals(overlapping, pairs, "pairs");
                 Map<String, BodyEvent.Kind> want = new TreeMap<>();
                 for (String k : now.keySet()) {
                     want.put(k, last.containsKey(k) ? BodyEvent.Kind.STAY : BodyEvent.Kind.ENTER);

@@ -237,6 +237,16 @@ class WorldMoveTest {
         w.move(platform, -5, 40);
         assertEquals(new Rect(70, 95, 10, 20), rider.shape());
         assertEquals(new Rect(30, 115, 100, 10), platform.shape());
+        // Stopped short by a wall: the rider moves as far as the platform did.
+        w.add(new Rect(150, 100, 10, 40));
+        w.move(platform, 50, 0);
+        assertEquals(new Rect(50, 115, 100, 10), platform.shape());
+        assertEquals(new Rect(90, 95, 10, 20), rider.shape());
+        // Up into a ceiling: the rider stops under it, the platform passes nothing.
+        w.add(new Rect(0, 60, 140, 10));
+        w.move(platform, 0, -30);
+        assertEquals(new Rect(90, 70, 10, 20), rider.shape());
+        assertEquals(new Rect(50, 90, 100, 10), platform.shape());
     }
 
     // ------------------------------------------------------------------ seams and grids
