@@ -62,7 +62,7 @@ void draw() {
   // A windmill: each blade is the same triangle, turned a quarter more than the last.
   pushMatrix();
   translate(440, 290);
-  rotate(-2 * angle);
+  rotate(-1.5 * angle);
   overBlade = -1;
   for (int i = 0; i < 4; i++) {
     rotate(HALF_PI);

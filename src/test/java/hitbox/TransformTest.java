@@ -282,6 +282,8 @@ class TransformTest {
         assertEquals(Transform.translation(3, 4), Transform.of(1, 0, 3, 0, 1, 4));
         assertEquals(Transform.translation(3, 4).hashCode(), Transform.of(1, 0, 3, 0, 1, 4).hashCode());
         assertEquals(Transform.IDENTITY, Transform.rotation(0));
+        assertEquals(Transform.IDENTITY.hashCode(), Transform.rotation(0).hashCode(), "-0 in a turn's entries hashes as 0");
+        assertEquals(Transform.rotation((float) Math.PI).hashCode(), Transform.scaling(-1).hashCode());
         assertNotEquals(Transform.translation(3, 4), Transform.translation(4, 3));
         assertEquals("Transform[1.0, 0.0, 3.0; 0.0, 1.0, 4.0]", Transform.translation(3, 4).toString());
         assertEquals(Transform.scaling(0, 0), Transform.scaling(-0f, -0f), "-0 is 0");

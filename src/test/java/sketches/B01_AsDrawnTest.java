@@ -58,8 +58,8 @@ class B01_AsDrawnTest {
         B01_AsDrawn s = mouseAt(5, 5).sketch();
         for (int i = 0; i < 4; i++) {
             Polygon blade = (Polygon) s.blades[i];
-            // blade i is turned (i + 1) quarter turns after rotate(-2 angle) about (440, 290)
-            double a = -2 * s.angle + (i + 1) * Math.PI / 2;
+            // blade i is turned (i + 1) quarter turns after rotate(-1.5 angle) about (440, 290)
+            double a = -1.5 * s.angle + (i + 1) * Math.PI / 2;
             float tipX = (float) (440 + 90 * Math.cos(a) + 22 * Math.sin(a));
             float tipY = (float) (290 + 90 * Math.sin(a) - 22 * Math.cos(a));
             assertEquals(tipX, blade.x(1), 1e-3, "blade " + i + "'s tip x");
