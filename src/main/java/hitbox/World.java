@@ -998,6 +998,12 @@ public final class World {
 
     /** Do two bodies overlap now (a grid's body: one of its solid cells)? */
     private boolean overlap(Body a, Body b) {
+        // The tight boxes first (the broad phase holds fat ones): no shape is made for a pair
+        // whose boxes are apart.
+        if (a.boxX > (double) b.boxX + b.boxW || b.boxX > (double) a.boxX + a.boxW
+                || a.boxY > (double) b.boxY + b.boxH || b.boxY > (double) a.boxY + a.boxH) {
+            return false;
+        }
         if (a.grid != null && b.grid != null) {
             return false;
         }
