@@ -351,11 +351,12 @@ public final class Body {
     /**
      * Keeps any object of the sketch's with the body, for a filter or an event to read.
      *
-     * @param data the object, or null for none
+     * @param data the object, not null (a body made without one has none)
      * @return this body, for chaining, never null
+     * @throws IllegalArgumentException if {@code data} is null
      */
     public Body data(Object data) {
-        this.data = data;
+        this.data = Check.notNull("data", data);
         return this;
     }
 

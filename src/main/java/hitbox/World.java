@@ -282,7 +282,9 @@ public final class World {
      * @param dy   the move this frame, y part
      * @return what it met, in the order met (empty if nothing), never null; where it ended is
      *         {@link Body#shape()}
-     * @throws IllegalArgumentException as {@link #move(Body, float, float, CollisionFilter)}
+     * @throws IllegalArgumentException if {@code body} is null, removed, another world's or a
+     *                                  grid's, dx or dy is NaN or infinite, or the move leaves
+     *                                  the float range
      * @throws IllegalStateException    if called from inside a callback of this world
      */
     public List<Collision> move(Body body, float dx, float dy) {
@@ -326,10 +328,6 @@ public final class World {
             throw new IllegalArgumentException("dx and dy move the body out of the float range: " + body + " by ("
                     + dx + ", " + dy + ")");
         }
-        if (stepped) {
-            stepCollisions.clear();
-            stepped = false;
-        }
         return body.carrier ? moveCarrier(body, dx, dy, filter) : moveOne(body, dx, dy, filter);
     }
 
@@ -341,8 +339,9 @@ public final class World {
             r.riderStamp = mark;
         }
         CollisionFilter platform = (m, o) -> o.riderStamp == mark ? null : filter.react(m, o);
-        int collisionsBefore = stepCollisions.size();
-        Object[] saved = new Object[riders.size() + 1];
+        List<Collision> collisionsBefore = new ArrayList<>(stepCollisions);
+        boolean steppedBefore = stepped;
+        Saved[] saved = new Saved[riders.size() + 1];
         saved[0] = save(p);
         for (int i = 0; i < riders.size(); i++) {
             saved[i + 1] = save(riders.get(i));
@@ -362,13 +361,13 @@ public final class World {
             }
             return out;
         } catch (RuntimeException e) {
-            restore(p, (double[]) saved[0]);
+            restore(p, saved[0]);
             for (int i = 0; i < riders.size(); i++) {
-                restore(riders.get(i), (double[]) saved[i + 1]);
+                restore(riders.get(i), saved[i + 1]);
             }
-            while (stepCollisions.size() > collisionsBefore) {
-                stepCollisions.remove(stepCollisions.size() - 1);
-            }
+            stepCollisions.clear();
+            stepCollisions.addAll(collisionsBefore);
+            stepped = steppedBefore;
             throw e;
         } finally {
             riderMark++;
@@ -403,18 +402,19 @@ public final class World {
         return out;
     }
 
-    private Object save(Body b) {
-        return new double[] {b.tx, b.ty};
+    /** A body's pose, shape and box, to put back when a carrier's move is refused. */
+    private record Saved(double tx, double ty, Shape shape, float x, float y, float w, float h) {
     }
 
-    private void restore(Body b, double[] saved) {
-        if (b.tx != saved[0] || b.ty != saved[1]) {
-            b.tx = saved[0];
-            b.ty = saved[1];
-            b.shape = null;
-            float[] box = box(b.pivotX + b.tx, b.pivotY + b.ty, b.extents, "a restored pose");
-            setBox(b, box[0], box[1], box[2], box[3]);
-        }
+    private static Saved save(Body b) {
+        return new Saved(b.tx, b.ty, b.shape, b.boxX, b.boxY, b.boxW, b.boxH);
+    }
+
+    private void restore(Body b, Saved saved) {
+        b.tx = saved.tx();
+        b.ty = saved.ty();
+        b.shape = saved.shape();
+        setBox(b, saved.x(), saved.y(), saved.w(), saved.h());
     }
 
     /** One body's move; the world changes only at the end, when nothing can throw any more. */
@@ -735,6 +735,10 @@ public final class World {
         m.ty = nty;
         m.shape = end;
         setBox(m, x0, y0, Math.nextUp(x1 - x0), Math.nextUp(y1 - y0));
+        if (stepped) {
+            stepCollisions.clear();
+            stepped = false;
+        }
         stepCollisions.addAll(out);
         return out.isEmpty() ? Collections.emptyList() : out;
     }
@@ -1213,10 +1217,12 @@ public final class World {
     /** The ids of the bodies whose boxes meet a box (padded by a few float steps), in the order added. */
     private void gather(double left, double top, double right, double bottom) {
         double pad = pad(left, top, right, bottom);
-        float x0 = (float) (left - pad), y0 = (float) (top - pad);
-        float x1 = (float) (right + pad), y1 = (float) (bottom + pad);
+        float x0 = (float) Math.max(-Float.MAX_VALUE, left - pad), y0 = (float) Math.max(-Float.MAX_VALUE, top - pad);
+        float x1 = (float) Math.min(Float.MAX_VALUE, right + pad), y1 = (float) Math.min(Float.MAX_VALUE, bottom + pad);
+        float w = (float) Math.min(Float.MAX_VALUE, Math.nextUp((double) x1 - x0));
+        float h = (float) Math.min(Float.MAX_VALUE, Math.nextUp((double) y1 - y0));
         candCount = 0;
-        broad.query(x0, y0, Math.nextUp((float) ((double) x1 - x0)), Math.nextUp((float) ((double) y1 - y0)), collect);
+        broad.query(x0, y0, w, h, collect);
         sortCandidates();
     }
 
