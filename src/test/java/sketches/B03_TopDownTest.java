@@ -20,7 +20,9 @@ import hitbox.Ray;
 import hitbox.RayHit;
 import hitbox.Segment;
 import hitbox.Shape;
+import hitbox.processing.Drawn;
 import hitbox.processing.Palette;
+import processing.awt.PGraphicsJava2D;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
@@ -87,6 +89,31 @@ class B03_TopDownTest {
             }
         }
         assertTrue(inside[0] > 1000 && outside[0] > 500, "pixels checked: " + inside[0] + " inside, " + outside[0] + " outside");
+    }
+
+    @Test
+    void everyBody_isTheShapeTheDrawingMatrixPutsOnScreen() {
+        // The sketch's drawTurned, on an off-screen PGraphics: translate(x, y); rotate(angle);
+        // then the shape in its own frame. Drawn.shape reads the matrix; the body must agree.
+        B03_TopDown s = SketchRun.of(new B03_TopDown()).frames(90).run().sketch();
+        PGraphicsJava2D g = new PGraphicsJava2D();
+        g.setPrimary(false);
+        g.setSize(600, 400);
+        g.beginDraw();
+        for (Body b : s.world.bodies()) {
+            g.pushMatrix();
+            g.translate(b.x(), b.y());
+            g.rotate(b.angle());
+            Polygon drawn = (Polygon) Drawn.shape(g, b.homeShape());
+            g.popMatrix();
+            Polygon body = (Polygon) b.shape();
+            assertEquals(drawn.size(), body.size(), b.toString());
+            for (int i = 0; i < body.size(); i++) {
+                assertEquals(drawn.x(i), body.x(i), 1e-3f, b + " corner " + i + " x");
+                assertEquals(drawn.y(i), body.y(i), 1e-3f, b + " corner " + i + " y");
+            }
+        }
+        g.endDraw();
     }
 
     @Test
