@@ -17,8 +17,8 @@
  * With no key pressed, the ship flies a demo circle; the first arrow key hands it to you.
  *
  * Try this: hide the ship behind a rock from the sentry; make the rocks turn ten times faster
- * (they still bounce the ship as drawn); give the rocks a mask that takes rocks and let them
- * bounce off each other too.
+ * and watch their boxes with d; answer Reaction.SLIDE for the rocks and the ship slides along
+ * them instead of bouncing off.
  * Keys: LEFT and RIGHT turn, UP thrusts, d shows the maths (every body's box, which grows
  * and shrinks as it turns, the grid's cells, the ship's contacts with their normals, and the
  * ray's answer).
@@ -105,9 +105,11 @@ void draw() {
   met.clear();
   met.addAll(world.move(ship, vx, vy, (me, other) -> Reaction.BOUNCE));
   for (Collision c : met) {
-    Vec v = Response.bounce(vx, vy, c.nx(), c.ny(), 0.8);   // off the rock, a little slower
-    vx = v.x();
-    vy = v.y();
+    if (c.reaction() == Reaction.BOUNCE) {
+      Vec v = Response.bounce(vx, vy, c.nx(), c.ny(), 0.8);   // off the rock, a little slower
+      vx = v.x();
+      vy = v.y();
+    }
   }
   wrap(ship, 20);
   for (BodyEvent e : world.step()) {

@@ -21,9 +21,11 @@ class Bouncer {
     met.addAll(world.move(body, vx, vy, bounceOffEverything));
     boolean hitObstacle = false;
     for (Collision c : met) {
-      Vec v = Response.bounce(vx, vy, c.nx(), c.ny(), 1);
-      vx = v.x();
-      vy = v.y();
+      if (c.reaction() == Reaction.BOUNCE) {
+        Vec v = Response.bounce(vx, vy, c.nx(), c.ny(), 1);
+        vx = v.x();
+        vy = v.y();
+      }
       int i = obstacles.indexOf(c.other());
       if (i >= 0) {
         glow[i] = 10;
