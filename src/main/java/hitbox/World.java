@@ -116,6 +116,8 @@ public final class World {
     private Map<Long, Body[]> contacts = new HashMap<>();
 
     private final double[] scratch = new double[4];
+    /** The collisions of the move under way, copied out when it ends. */
+    private final ArrayList<Collision> found = new ArrayList<>();
 
     /** Makes an empty world with a {@link BroadPhase#grid()} inside. */
     public World() {
@@ -230,6 +232,9 @@ public final class World {
     public void remove(Body body) {
         own("body", body);
         checkNotInCallback("remove");
+        if (body.dirtyIndex >= 0) {
+            undirty(body);
+        }
         broad.remove(body.id);
         byId[body.id] = null;
         if (freeCount == freeIds.length) {
@@ -346,6 +351,7 @@ public final class World {
         for (int i = 0; i < riders.size(); i++) {
             saved[i + 1] = save(riders.get(i));
         }
+        holdFlush = true;
         try {
             List<Collision> out;
             if (dy < 0) {
@@ -359,6 +365,8 @@ public final class World {
                     moveOne(r, dx, dy, SLIDE);
                 }
             }
+            holdFlush = false;
+            flushIfMany();
             return out;
         } catch (RuntimeException e) {
             restore(p, saved[0]);
@@ -371,6 +379,7 @@ public final class World {
             throw e;
         } finally {
             riderMark++;
+            holdFlush = false;
         }
     }
 
@@ -382,9 +391,7 @@ public final class World {
         List<Body> out = new ArrayList<>();
         Shape ps = p.shape();
         float probe = 0.01f;
-        candCount = 0;
-        broad.query(p.boxX, p.boxY - 2 * probe, p.boxW, p.boxH, collect);
-        sortCandidates();
+        gather(p.boxX, p.boxY - 2 * probe, (double) p.boxX + p.boxW, (double) p.boxY + p.boxH);
         for (int i = 0; i < candCount; i++) {
             Body o = byId[cand[i]];
             if (o == p || o.grid != null || o.sensor || o.carrier || !p.accepts(o)) {
@@ -403,25 +410,39 @@ public final class World {
     }
 
     /** A body's pose, shape and box, to put back when a carrier's move is refused. */
-    private record Saved(double tx, double ty, Shape shape, float x, float y, float w, float h) {
+    private record Saved(double tx, double ty, Shape shape, float[] box, boolean dirty) {
     }
 
     private static Saved save(Body b) {
-        return new Saved(b.tx, b.ty, b.shape, b.boxX, b.boxY, b.boxW, b.boxH);
+        return new Saved(b.tx, b.ty, b.shape, new float[] {b.boxX, b.boxY, b.boxW, b.boxH, b.fatX, b.fatY, b.fatW, b.fatH},
+                b.dirtyIndex >= 0);
     }
 
+    /** Puts a body back as saved; no flush happened meanwhile, so the broad phase is as it was. */
     private void restore(Body b, Saved saved) {
         b.tx = saved.tx();
         b.ty = saved.ty();
         b.shape = saved.shape();
-        setBox(b, saved.x(), saved.y(), saved.w(), saved.h());
+        float[] k = saved.box();
+        b.boxX = k[0];
+        b.boxY = k[1];
+        b.boxW = k[2];
+        b.boxH = k[3];
+        b.fatX = k[4];
+        b.fatY = k[5];
+        b.fatW = k[6];
+        b.fatH = k[7];
+        if (!saved.dirty() && b.dirtyIndex >= 0) {
+            undirty(b);
+        }
     }
 
     /** One body's move; the world changes only at the end, when nothing can throw any more. */
     private List<Collision> moveOne(Body m, float dx, float dy, CollisionFilter filter) {
         int st = ++stamp;
         Shape start = m.shape();
-        List<Collision> out = new ArrayList<>(2);
+        List<Collision> out = found;
+        out.clear();
         if (start instanceof Rect r && !m.sensor) {
             Rect end = rectWalk(m, r, dx, dy, filter, st, out);
             if (end != null) {
@@ -740,7 +761,12 @@ public final class World {
             stepped = false;
         }
         stepCollisions.addAll(out);
-        return out.isEmpty() ? Collections.emptyList() : out;
+        if (out.isEmpty()) {
+            return Collections.emptyList();
+        }
+        List<Collision> copy = new ArrayList<>(out);
+        out.clear();
+        return copy;
     }
 
     // ---------------------------------------------------------------- teleports (Body calls these)
@@ -788,18 +814,80 @@ public final class World {
         return boxOut;
     }
 
+    /**
+     * Sets a body's tight box. The broad phase holds a fat box: when the tight box leaves it,
+     * a new fat box (grown by an eighth of the body's size and a pixel, and four times the
+     * last move ahead) waits in the dirty list, which queries scan, until enough wait to put
+     * them all at once (or the next {@link #step()}): the grid rebuilds after each change, so
+     * putting one box per move would rebuild it once per move.
+     */
     private void setBox(Body b, float x, float y, float w, float h) {
         if (b.grid != null) {
-            x = 0;
-            y = 0;
-            w = b.grid.width();
-            h = b.grid.height();
+            b.boxX = b.fatX = 0;
+            b.boxY = b.fatY = 0;
+            b.boxW = b.fatW = b.grid.width();
+            b.boxH = b.fatH = b.grid.height();
+            broad.put(b.id, 0, 0, b.boxW, b.boxH);
+            return;
         }
+        boolean fresh = !b.boxed;
+        b.boxed = true;
+        double ddx = fresh ? 0 : (double) x - b.boxX, ddy = fresh ? 0 : (double) y - b.boxY;
         b.boxX = x;
         b.boxY = y;
         b.boxW = w;
         b.boxH = h;
-        broad.put(b.id, x, y, w, h);
+        if (!fresh && x >= b.fatX && y >= b.fatY && (double) x + w <= (double) b.fatX + b.fatW
+                && (double) y + h <= (double) b.fatY + b.fatH) {
+            return;
+        }
+        double m = 1 + Math.max(w, h) / 8.0;
+        double x0 = Math.max(-Float.MAX_VALUE, x - m + Math.min(0, 4 * ddx));
+        double y0 = Math.max(-Float.MAX_VALUE, y - m + Math.min(0, 4 * ddy));
+        double x1 = Math.min(Float.MAX_VALUE, (double) x + w + m + Math.max(0, 4 * ddx));
+        double y1 = Math.min(Float.MAX_VALUE, (double) y + h + m + Math.max(0, 4 * ddy));
+        b.fatX = Math.min(x, Math.nextDown((float) x0));
+        b.fatY = Math.min(y, Math.nextDown((float) y0));
+        b.fatW = (float) Math.min(Float.MAX_VALUE, Math.nextUp(x1 - b.fatX));
+        b.fatH = (float) Math.min(Float.MAX_VALUE, Math.nextUp(y1 - b.fatY));
+        if (b.dirtyIndex < 0) {
+            if (dirtyCount == dirty.length) {
+                dirty = java.util.Arrays.copyOf(dirty, 2 * dirtyCount);
+            }
+            b.dirtyIndex = dirtyCount;
+            dirty[dirtyCount++] = b;
+        }
+        flushIfMany();
+    }
+
+    private Body[] dirty = new Body[16];
+    private int dirtyCount;
+    private boolean holdFlush;
+
+    private void flushIfMany() {
+        if (!holdFlush && dirtyCount > 64 + 2 * Math.sqrt(size)) {
+            flush();
+        }
+    }
+
+    /** Puts every waiting fat box into the broad phase. */
+    private void flush() {
+        for (int i = 0; i < dirtyCount; i++) {
+            Body b = dirty[i];
+            broad.put(b.id, b.fatX, b.fatY, b.fatW, b.fatH);
+            b.dirtyIndex = -1;
+            dirty[i] = null;
+        }
+        dirtyCount = 0;
+    }
+
+    private void undirty(Body b) {
+        int i = b.dirtyIndex;
+        Body last = dirty[--dirtyCount];
+        dirty[i] = last;
+        last.dirtyIndex = i;
+        dirty[dirtyCount] = null;
+        b.dirtyIndex = -1;
     }
 
     // ---------------------------------------------------------------- events
@@ -815,6 +903,7 @@ public final class World {
      */
     public List<BodyEvent> step() {
         checkNotInCallback("step");
+        flush();
         Map<Long, Body[]> now = new HashMap<>();
         broad.pairs((i, j) -> {
             Body a = byId[i], b = byId[j];
@@ -1120,9 +1209,14 @@ public final class World {
             if (firstOnly && distance > nearest[0]) {
                 return false;
             }
-            collect.accept(id);
+            if (byId[id].dirtyIndex < 0) {
+                collect.accept(id);
+            }
             return true;
         });
+        for (int i = 0; i < dirtyCount; i++) {
+            collect.accept(dirty[i].id);
+        }
         List<BodyHit> out = new ArrayList<>();
         for (int i = 0; i < candCount; i++) {
             Body b = byId[cand[i]];
@@ -1180,6 +1274,7 @@ public final class World {
      */
     public void cells(BoxConsumer out) {
         Check.notNull("out", out);
+        flush();
         broad.cells(out);
     }
 
@@ -1223,6 +1318,19 @@ public final class World {
         float h = (float) Math.min(Float.MAX_VALUE, Math.nextUp((double) y1 - y0));
         candCount = 0;
         broad.query(x0, y0, w, h, collect);
+        int kept = 0;
+        for (int i = 0; i < candCount; i++) {
+            if (byId[cand[i]].dirtyIndex < 0) {
+                cand[kept++] = cand[i];  // a dirty body's box in the broad phase is stale
+            }
+        }
+        candCount = kept;
+        for (int i = 0; i < dirtyCount; i++) {
+            Body b = dirty[i];
+            if (b.fatX <= x1 && x0 <= (double) b.fatX + b.fatW && b.fatY <= y1 && y0 <= (double) b.fatY + b.fatH) {
+                collect.accept(b.id);
+            }
+        }
         sortCandidates();
     }
 
