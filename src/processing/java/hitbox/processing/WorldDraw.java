@@ -32,7 +32,7 @@ import processing.core.PGraphics;
 public final class WorldDraw {
     /** The broad phase's cells: a dim blue-grey, so they stay behind everything else. */
     public static final int CELL = 0x885A6478;
-    /** Each body's bounding box, the box the broad phase files it under: a light cyan. */
+    /** Each body's box: a light cyan. */
     public static final int BOX = 0xFF7FD4E8;
     /** A contact that blocked the mover (slide, touch, bounce): the overlay's guide yellow. */
     public static final int CONTACT = Overlay.GUIDE;
@@ -87,8 +87,9 @@ public final class WorldDraw {
     }
 
     /**
-     * Outlines each body's bounding box in {@link #BOX}: the box the broad phase knows it by,
-     * which turns with it and grows and shrinks as it turns.
+     * Outlines each body's box, {@link Body#bounds()}, in {@link #BOX}: the box around its
+     * shape where it stands, which grows and shrinks as the body turns. (The broad phase files
+     * it under that box grown by a margin; {@link #cells} shows the broad phase's side.)
      *
      * @param g     where to draw
      * @param world the world
