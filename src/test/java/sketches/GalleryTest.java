@@ -127,6 +127,28 @@ class GalleryTest {
     }
 
     @Test
+    void worldGroup_hasARowOfItsOwn_afterBeyondTheTutorial() throws IOException {
+        sketch("S10e_Fast", "/**\n * Fast objects\n * Beyond the tutorial: fast objects\n */\n");
+        sketch("S10i_Blade", "/**\n * A blade\n * Beyond the tutorial: turning sweeps\n */\n");
+        sketch("B02_Jump", "/**\n * A platformer\n * Beyond the tutorial: the world, a platformer\n */\n");
+        sketch("H02b_Again", "/**\n * Homework 2 again\n * Beyond the tutorial: the world, homework 2 again\n */\n");
+        sketch("H01_Maze", "/**\n * A maze\n * Homework 1: a maze\n */\n");
+        Catalog catalog = Catalog.load(root.toFile());
+
+        Gallery gallery = Gallery.picture(catalog);
+
+        assertEquals(List.of(Group.HOMEWORK, Group.BEYOND, Group.WORLD), gallery.groups());
+        assertEquals(List.of("H01_Maze", "S10e_Fast", "S10i_Blade", "B02_Jump", "H02b_Again"),
+                gallery.shown().stream().map(Catalog.SketchInfo::name).toList());
+        assertEquals("Beyond the tutorial: the world, a platformer", Gallery.label(catalog.find("B02_Jump").orElseThrow()));
+        int[] beyond = gallery.thumbnailCentre("S10e_Fast");
+        int[] world = gallery.thumbnailCentre("B02_Jump");
+        assertEquals(beyond[0], world[0], "the world's row starts at the left");
+        assertTrue(world[1] > gallery.thumbnailCentre("S10i_Blade")[1], "below the beyond row, not beside it");
+        assertEquals(world[1], gallery.thumbnailCentre("H02b_Again")[1], "the world's sketches share their row");
+    }
+
+    @Test
     void picture_ofTheRealSketches_showsEveryOneOfThem_eachInAGroup() {
         Catalog catalog = Catalog.load();
         assumeTrue(!catalog.sketches().isEmpty(), "needs a sketch");

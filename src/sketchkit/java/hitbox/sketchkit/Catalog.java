@@ -121,6 +121,11 @@ public final class Catalog {
         HOMEWORK("Homework", "The tutorial's homework"),
         /** "Beyond the tutorial: ...": an idea the tutorial does not have. */
         BEYOND("Beyond the tutorial", "Beyond the tutorial"),
+        /**
+         * "Beyond the tutorial: the world, ...": bodies in a {@code World}, moved with
+         * reactions, layers, sensors and events; a row of its own after {@link #BEYOND}.
+         */
+        WORLD("Beyond the tutorial: the world", "Beyond the tutorial: a world of bodies"),
         /** No such line: a sketch of your own, say. */
         OTHER("", "Other sketches");
 
@@ -143,18 +148,20 @@ public final class Catalog {
         }
 
         /**
-         * The group a header's second line names.
+         * The group a header's second line names: the group with the longest words it starts
+         * with ("Beyond the tutorial: the world, ..." is {@link #WORLD}, not {@link #BEYOND}).
          *
          * @param line the line after the title, e.g. "Beyond the tutorial: fast objects"
          * @return its group, {@link #OTHER} when it starts with no group's words
          */
         public static Group of(String line) {
+            Group found = OTHER;
             for (Group g : values()) {
-                if (!g.prefix.isEmpty() && line.startsWith(g.prefix)) {
-                    return g;
+                if (!g.prefix.isEmpty() && line.startsWith(g.prefix) && g.prefix.length() > found.prefix.length()) {
+                    found = g;
                 }
             }
-            return OTHER;
+            return found;
         }
     }
 

@@ -212,6 +212,7 @@ public final class Gallery extends PApplet {
             case TUTORIAL -> color(235);
             case HOMEWORK -> color(140, 200, 240);
             case BEYOND -> color(240, 190, 110);
+            case WORLD -> color(200, 160, 240);
             case OTHER -> color(170);
         };
     }

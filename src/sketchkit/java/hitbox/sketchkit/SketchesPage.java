@@ -19,7 +19,7 @@ import java.util.regex.Pattern;
  *
  * <p>Groups, in order: each tutorial section ("Section N: ...", named by the section line of its
  * first sketch, up to the first comma or bracket), the homework, what goes beyond the tutorial,
- * then any sketch of your own. Each entry: the screenshot, the title and the folder name, the
+ * the world's sketches, then any sketch of your own. Each entry: the screenshot, the title and the folder name, the
  * header's first prose paragraph, its paragraph on where Hitbox differs from the tutorial if it
  * has one (one that starts "Where Hitbox differs" or "Hitbox and the tutorial", else a later one
  * that says "Hitbox differs"), quoted as written, and the run command. The "Try this" and
@@ -145,6 +145,9 @@ public final class SketchesPage {
                         list.stream().allMatch(s -> s.name().startsWith("S10"))
                                 ? "Ideas neither source has, in section 10's folders because they build on it."
                                 : "Ideas neither source has.",
+                        list);
+                case WORLD -> group(out, e.getKey().heading(),
+                        "Many bodies in a `World`: moved each frame with a reaction per pair, layers, sensors and events.",
                         list);
                 default -> group(out, e.getKey().heading(), null, list);
             }

@@ -69,6 +69,12 @@ class CatalogTest {
     }
 
     @Test
+    void groupOf_theWorldsLine_isTheWorldGroup_notPlainBeyond() {
+        assertEquals(Catalog.Group.WORLD, Catalog.Group.of("Beyond the tutorial: the world, a platformer"));
+        assertEquals(Catalog.Group.BEYOND, Catalog.Group.of("Beyond the tutorial: fast objects"));
+    }
+
+    @Test
     void load_missingFolder_saysWhereItLooked() {
         File missing = root.resolve("nope").toFile();
         IllegalStateException e = assertThrows(IllegalStateException.class, () -> Catalog.load(missing));

@@ -1,0 +1,203 @@
+package sketches;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+import hitbox.Body;
+import hitbox.Circle;
+import hitbox.Collision;
+import hitbox.Polygon;
+import hitbox.Ray;
+import hitbox.RayHit;
+import hitbox.Segment;
+import hitbox.Shape;
+import hitbox.processing.Drawn;
+import hitbox.processing.Palette;
+import processing.awt.PGraphicsJava2D;
+import hitbox.sketchkit.Script;
+import hitbox.sketchkit.SketchRun;
+import processing.core.PImage;
+
+/**
+ * Turning rocks and a ship drawn with translate and rotate, tested as drawn; the ship moved by
+ * the world and bounced off the rocks; the sentry's line of sight by a ray cast through the
+ * world, checked against every body by hand.
+ */
+class B03_TopDownTest {
+
+    @BeforeAll
+    static void needsDisplay() {
+        assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
+    }
+
+    /** Is (x, y) at least d from the shape's outline (both it and a ring of radius d about it agree)? */
+    private static boolean clearOfOutline(Shape s, float x, float y, float d) {
+        boolean in = s.contains(x, y);
+        for (int i = 0; i < 16; i++) {
+            double t = 2 * Math.PI * i / 16;
+            if (s.contains(x + d * (float) Math.cos(t), y + d * (float) Math.sin(t)) != in) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    @Test
+    void rocksAndShip_drawnWithTranslateAndRotate_areWhereTheirShapesSayTheyAre() {
+        int[] inside = {0};
+        int[] outside = {0};
+        SketchRun.Result<B03_TopDown> r = SketchRun.of(new B03_TopDown()).frames(150).run();
+        B03_TopDown s = r.sketch();
+        PImage f = r.lastFrame();
+        List<Shape> all = new ArrayList<>();
+        for (Body rock : s.rocks) {
+            all.add(rock.shape());
+        }
+        all.add(s.ship.shape());
+        Segment line = new Segment(s.sentryX, s.sentryY, s.ship.x(), s.ship.y());
+        for (Body b : s.world.bodies()) {
+            Shape shape = b.shape();
+            assertTrue(b.angle() != 0 && shape instanceof Polygon, "a turned body stands as a polygon: " + b);
+            // The ship is red for a few frames after a contact, blue otherwise.
+            List<Integer> colours = b == s.ship ? List.of(Palette.PLAYER, Palette.HIT) : List.of(Palette.OBSTACLE);
+            for (int y = (int) shape.minY() - 3; y <= shape.maxY() + 3; y += 2) {
+                for (int x = (int) shape.minX() - 3; x <= shape.maxX() + 3; x += 2) {
+                    float px = x + 0.5f, py = y + 0.5f;
+                    boolean underText = y >= s.height - 20 || y < 50 && x < 330;   // the hint bar, the label
+                    if (x < 0 || y < 0 || x >= s.width || underText || !clearOfOutline(shape, px, py, 2)
+                            || line.overlaps(new Circle(px, py, 5)) || new Circle(s.sentryX, s.sentryY, 14).contains(px, py)) {
+                        continue;
+                    }
+                    if (shape.contains(px, py)) {
+                        assertTrue(colours.contains(f.get(x, y)), "(" + x + ", " + y + ") inside " + b + " is drawn in its colour, not "
+                                + Integer.toHexString(f.get(x, y)));
+                        inside[0]++;
+                    } else if (all.stream().allMatch(o -> !o.contains(px, py) && clearOfOutline(o, px, py, 2))) {
+                        assertEquals(Palette.BACKGROUND, f.get(x, y), "(" + x + ", " + y + ") outside every body is background");
+                        outside[0]++;
+                    }
+                }
+            }
+        }
+        assertTrue(inside[0] > 1000 && outside[0] > 500, "pixels checked: " + inside[0] + " inside, " + outside[0] + " outside");
+    }
+
+    @Test
+    void everyBody_isTheShapeTheDrawingMatrixPutsOnScreen() {
+        // The sketch's drawTurned, on an off-screen PGraphics: translate(x, y); rotate(angle);
+        // then the shape in its own frame. Drawn.shape reads the matrix; the body must agree.
+        B03_TopDown s = SketchRun.of(new B03_TopDown()).frames(90).run().sketch();
+        PGraphicsJava2D g = new PGraphicsJava2D();
+        g.setPrimary(false);
+        g.setSize(600, 400);
+        g.beginDraw();
+        for (Body b : s.world.bodies()) {
+            g.pushMatrix();
+            g.translate(b.x(), b.y());
+            g.rotate(b.angle());
+            Polygon drawn = (Polygon) Drawn.shape(g, b.homeShape());
+            g.popMatrix();
+            Polygon body = (Polygon) b.shape();
+            assertEquals(drawn.size(), body.size(), b.toString());
+            for (int i = 0; i < body.size(); i++) {
+                assertEquals(drawn.x(i), body.x(i), 1e-3f, b + " corner " + i + " x");
+                assertEquals(drawn.y(i), body.y(i), 1e-3f, b + " corner " + i + " y");
+            }
+        }
+        g.endDraw();
+    }
+
+    @Test
+    void leftAndRight_turnTheShip_andItsShapeTurnsWithIt() {
+        Script script = new Script().frames(40).hold(1, "LEFT", 20);
+        float[] last = {Float.NaN};
+        int[] turned = {0};
+        SketchRun.of(new B03_TopDown()).script(script).everyFrame(s -> {
+            if (s.left && !Float.isNaN(last[0])) {
+                assertEquals(last[0] - 0.08f, s.ship.angle(), 1e-5f, "frame " + s.frameCount);
+                turned[0]++;
+            }
+            last[0] = s.ship.angle();
+            // The nose, (16, 0) in the ship's own frame, is the first corner of its shape now.
+            Polygon p = (Polygon) s.ship.shape();
+            float a = s.ship.angle();
+            assertEquals(s.ship.x() + 16 * (float) Math.cos(a), p.x(0), 1e-3f, "the nose x");
+            assertEquals(s.ship.y() + 16 * (float) Math.sin(a), p.y(0), 1e-3f, "the nose y");
+        }).run();
+        assertTrue(turned[0] >= 15, "frames turned left: " + turned[0]);
+    }
+
+    @Test
+    void sentry_seesTheShipExactlyWhenNoRockIsNearerOnTheRay() {
+        int[] seen = {0};
+        int[] hidden = {0};
+        SketchRun.of(new B03_TopDown()).frames(600).everyFrame(s -> {
+            if (s.sight == null && !s.seen) {
+                return;   // the ship right on the sentry: no ray
+            }
+            Ray ray = Ray.between(s.sentryX, s.sentryY, s.ship.x(), s.ship.y());
+            RayHit toShip = ray.cast(s.ship.shape());
+            assertNotNull(toShip, "the ray towards the ship's position reaches its outline");
+            float nearestRock = Float.POSITIVE_INFINITY;
+            for (Body rock : s.rocks) {
+                RayHit h = ray.cast(rock.shape());
+                if (h != null) {
+                    nearestRock = Math.min(nearestRock, h.distance());
+                }
+            }
+            boolean expected = toShip.distance() < nearestRock;
+            assertEquals(expected, s.seen, "frame " + s.frameCount + ": ship at " + toShip.distance() + ", nearest rock at " + nearestRock);
+            if (!s.seen) {
+                assertEquals(nearestRock, s.sight.distance(), 1e-3f, "the ray stops at the nearest rock");
+            }
+            seen[0] += s.seen ? 1 : 0;
+            hidden[0] += s.seen ? 0 : 1;
+        }).run();
+        assertTrue(seen[0] > 50 && hidden[0] > 20, "frames seen: " + seen[0] + ", hidden: " + hidden[0]);
+    }
+
+    @Test
+    void ship_bouncesOffTheRocks_andEndsEachMoveOutsideThose_itMet() {
+        int[] bounces = {0};
+        SketchRun.of(new B03_TopDown()).frames(900).everyFrame(s -> {
+            for (Collision c : s.met) {
+                assertTrue(s.rocks.contains(c.other()), "the ship meets rocks only");
+                if (!c.hit().alreadyOverlapping()) {
+                    bounces[0]++;
+                    Shape ship = s.ship.shape();
+                    assertFalse(ship.overlaps(c.other().shape()), "frame " + s.frameCount + ": the ship ends clear of the rock it bounced off");
+                }
+            }
+        }).run();
+        assertTrue(bounces[0] > 0, "the demo bounces off a rock: " + bounces[0]);
+    }
+
+    @Test
+    void rocks_ignoreEachOther_byTheirLayers() {
+        B03_TopDown s = SketchRun.of(new B03_TopDown()).frames(1).run().sketch();
+        for (Body a : s.rocks) {
+            assertTrue(a.accepts(s.ship) && s.ship.accepts(a), "rock and ship meet");
+            for (Body b : s.rocks) {
+                assertFalse(a.accepts(b), "rocks do not meet rocks");
+            }
+        }
+    }
+
+    @Test
+    void overlayKey_drawsWhatTheWorldSees_andPressingAgainHidesIt() {
+        Script script = new Script().frames(12).key(3, 'd').key(8, 'd');
+        SketchRun.Result<B03_TopDown> r = SketchRun.of(new B03_TopDown()).script(script).capture(2).capture(6).run();
+        assertTrue(SketchPixels.differing(r.frame(2), r.frame(6)) > 1000, "boxes, cells and the ray's answer");
+        SketchRun.Result<B03_TopDown> plain = SketchRun.of(new B03_TopDown()).frames(12).run();
+        assertEquals(0, SketchPixels.differing(plain.lastFrame(), r.lastFrame()), "pressing d again hides it");
+    }
+}
