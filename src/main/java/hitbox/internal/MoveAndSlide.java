@@ -11,7 +11,21 @@ public final class MoveAndSlide {
     private MoveAndSlide() {
     }
 
+    /**
+     * Told of each stop of a walk, for a caller that reports what was hit (the world's move):
+     * the index of the obstacle in the order given, the time of impact within that leg of the
+     * walk, the obstacle's side hit, and where the box stands against it.
+     */
+    public interface Stops {
+        void stop(int index, double t, Side side, float x, float y);
+    }
+
     public static Sweep.Move move(Rect mover, float vx, float vy, Iterable<Rect> obstacles) {
+        return move(mover, vx, vy, obstacles, null);
+    }
+
+    /** {@link #move(Rect, float, float, Iterable)}, telling {@code stops} (if not null) of each stop. */
+    public static Sweep.Move move(Rect mover, float vx, float vy, Iterable<Rect> obstacles, Stops stops) {
         final float x0 = mover.x(), y0 = mover.y(), w = mover.w(), h = mover.h();
         float x = x0, y = y0;
         double mx = vx, my = vy;  // the motion still to do this frame
@@ -20,14 +34,17 @@ public final class MoveAndSlide {
         for (int stop = 0; stop < Sweep.MAX_SLIDES && (mx != 0 || my != 0); stop++) {
             double first = Slabs.INF;
             Rect hitRect = null;
+            int index = 0, hitIndex = -1;
             for (Rect o : obstacles) {
                 if (!Collide.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
                     double t = SweptPairs.rectRectTime(x, y, w, h, mx, my, o.x(), o.y(), o.w(), o.h());
                     if (t < first) {
                         first = t;
                         hitRect = o;
+                        hitIndex = index;
                     }
                 }
+                index++;
             }
             if (hitRect == null) {
                 float[] end = safeAlong(x, y, w, h, mx, my, 1, (float) (x + mx), (float) (y + my), x0, y0, obstacles);
@@ -49,6 +66,9 @@ public final class MoveAndSlide {
             float[] at = safeAlong(x, y, w, h, mx, my, first, tx, ty, x0, y0, obstacles);
             x = at[0];
             y = at[1];
+            if (stops != null) {
+                stops.stop(hitIndex, first, side, x, y);
+            }
             mx *= 1 - first;
             my *= 1 - first;
             if (side.isWall()) {

@@ -1,0 +1,378 @@
+package hitbox;
+
+import hitbox.internal.*;
+
+/**
+ * A shape in a {@link World}, which can move and turn: made by {@link World#add(Shape)}.
+ *
+ * <p><b>Its shape, in its own frame.</b> A body keeps the shape it was made with and a
+ * <em>pose</em>: a position ({@link #x()}, {@link #y()}) and an angle ({@link #angle()},
+ * radians, clockwise on screen as Processing's {@code rotate()}, y down). The position is
+ * where its pivot stands: for {@link World#add(Shape)} the centre of the shape's bounding box
+ * as added, for {@link World#add(Shape, float, float, float)} the origin of the frame the shape
+ * was given in, so a body made with {@code world.add(new Rect(-20, -10, 40, 20), x, y, a)}
+ * is where {@code translate(x, y); rotate(a); rect(-20, -10, 40, 20);} draws. Turning turns
+ * it about its position. {@link #shape()} is where it stands now, made when asked: a turned
+ * rectangle is a {@link Polygon}, a turned ellipse an {@link Ellipse} with its angle added, the
+ * other kinds stay their kind. At angle 0 the shape is the shape added, each coordinate moved
+ * by the same amount, so a rectangle keeps its exact size.
+ *
+ * <p><b>Moving by hand</b> ({@link #moveTo}, {@link #moveBy}, {@link #turnTo}, {@link #turnBy})
+ * is a teleport: no sweep, nothing in the way is looked at. It re-validates nothing, takes time
+ * independent of the number of bodies (a polygon's turn is linear in its vertices), and
+ * allocates nothing once the world has grown. To move through the others, use
+ * {@link World#move}.
+ *
+ * <p><b>Layers</b>, Box2D's rule: each body has a category (the bits it is) and a mask (the
+ * bits it meets). Two bodies meet only when each one's category is in the other's mask
+ * ({@link #accepts}); by default every body is category 1 and meets all. Layers are applied
+ * before any {@link CollisionFilter}, in {@link World#move} and the contacts of
+ * {@link World#step()}; queries take their own filter. A <b>sensor</b> is reported but never
+ * blocks nor is blocked: every move through it, or of it, crosses. A <b>one-way</b> body
+ * blocks only a mover that meets its given side ({@link #oneWay(Side)}): a platform that is
+ * {@code oneWay(Side.TOP)} is passed from below and from the sides and stood on from above.
+ * A <b>carrier</b> ({@link #carrier(boolean)}) takes along, when {@link World#move} moves
+ * it, the bodies that stand on it.
+ *
+ * <p>Bad input: NaN or infinite numbers throw an {@link IllegalArgumentException} naming the
+ * parameter, and nothing changes. A body removed from its world is dead: its methods that
+ * change it throw an {@link IllegalStateException}; reading it still works. A body may not be
+ * changed from inside a filter or query callback of its world ({@link IllegalStateException}).
+ */
+public final class Body {
+    // The world's bookkeeping: package-private, read and written by World.
+    World world;
+    final int id;
+    final int serial;
+    final Shape home;
+    final Grid grid;
+    final double pivotX;
+    final double pivotY;
+    double tx;
+    double ty;
+    float angle;
+    double cos = 1;
+    double sin;
+    /** The turned home shape's extents about the pivot: min x, min y, max x, max y. */
+    final double[] extents = new double[4];
+    /** The shape where it stands, or null until asked after a change. */
+    Shape shape;
+    /** The box in the broad phase. */
+    float boxX;
+    float boxY;
+    float boxW;
+    float boxH;
+    int category = 1;
+    int mask = -1;
+    boolean sensor;
+    Side oneWay = Side.NONE;
+    boolean carrier;
+    Object data;
+    /** Per-move scratch of the world: the move stamp when last seen, its reaction, its flags. */
+    int seenStamp;
+    Reaction seenReaction;
+    boolean seenOverlap;
+    boolean seenCrossed;
+    boolean seenBlocked;
+    int riderStamp;
+
+    Body(World world, int id, int serial, Shape home, double pivotX, double pivotY, Grid grid) {
+        this.world = world;
+        this.id = id;
+        this.serial = serial;
+        this.home = home;
+        this.pivotX = pivotX;
+        this.pivotY = pivotY;
+        this.grid = grid;
+    }
+
+    // ---------------------------------------------------------------- the pose
+
+    /** @return the position's x: where the body's pivot stands now */
+    public float x() {
+        return (float) (pivotX + tx);
+    }
+
+    /** @return the position's y: where the body's pivot stands now */
+    public float y() {
+        return (float) (pivotY + ty);
+    }
+
+    /** @return how far the body is turned about its position, in radians, clockwise on screen */
+    public float angle() {
+        return angle;
+    }
+
+    /**
+     * Where the body stands now: its shape turned and moved by its pose, made when asked (and
+     * kept until the body moves again). After {@link World#move}, exactly the shape the move
+     * left it as. For a {@link Grid}'s body, the grid's rectangle.
+     *
+     * @return the shape, never null
+     * @throws IllegalArgumentException if rounding the turned polygon to floats makes its
+     *                                  outline touch itself (a tiny polygon far from the
+     *                                  origin), or the pose puts it out of the float range
+     */
+    public Shape shape() {
+        if (shape == null) {
+            shape = Poses.place(home, pivotX, pivotY, tx, ty, angle, cos, sin);
+        }
+        return shape;
+    }
+
+    /**
+     * The shape in the body's own frame: the shape it was added with (for
+     * {@link World#add(Shape)}, where it stood then; its position then was the centre of its
+     * box).
+     *
+     * @return the shape as added, never null
+     */
+    public Shape homeShape() {
+        return home;
+    }
+
+    /**
+     * The body's box as the world's broad phase holds it: at or a hair outside
+     * {@code shape().bounds()}. Made without making the shape.
+     *
+     * @return a new rectangle, never null
+     */
+    public Rect bounds() {
+        return new Rect(boxX, boxY, boxW, boxH);
+    }
+
+    /**
+     * Teleports the body: its position becomes (x, y), its angle stays. Nothing in the way is
+     * looked at.
+     *
+     * <p>A NaN or infinite coordinate throws, naming it, and the body stays where it was.
+     *
+     * @param x the new position's x
+     * @param y the new position's y
+     * @return this body, for chaining, never null
+     * @throws IllegalArgumentException if x or y is NaN or infinite, or the shape would leave
+     *                                  the float range
+     * @throws IllegalStateException    if the body was removed, is a grid's, or this is called
+     *                                  from inside a callback of its world
+     */
+    public Body moveTo(float x, float y) {
+        Check.finite("x", x);
+        Check.finite("y", y);
+        World w = live("moveTo");
+        w.teleport(this, (double) x - pivotX, (double) y - pivotY, angle, "x and y");
+        return this;
+    }
+
+    /**
+     * Teleports the body by (dx, dy), its angle kept.
+     *
+     * <p>A NaN or infinite amount throws, naming it, and the body stays where it was.
+     *
+     * @param dx how far right
+     * @param dy how far down
+     * @return this body, for chaining, never null
+     * @throws IllegalArgumentException if dx or dy is NaN or infinite, or the shape would leave
+     *                                  the float range
+     * @throws IllegalStateException    if the body was removed, is a grid's, or this is called
+     *                                  from inside a callback of its world
+     */
+    public Body moveBy(float dx, float dy) {
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
+        World w = live("moveBy");
+        w.teleport(this, tx + dx, ty + dy, angle, "dx and dy");
+        return this;
+    }
+
+    /**
+     * Turns the body about its position to the given angle (a teleport).
+     *
+     * <p>A NaN or infinite angle throws, naming it, and the body stays as it was.
+     *
+     * @param angle the new angle, radians, clockwise on screen
+     * @return this body, for chaining, never null
+     * @throws IllegalArgumentException if angle is NaN or infinite, or the shape would leave
+     *                                  the float range
+     * @throws IllegalStateException    if the body was removed, is a grid's, or this is called
+     *                                  from inside a callback of its world
+     */
+    public Body turnTo(float angle) {
+        Check.finite("angle", angle);
+        World w = live("turnTo");
+        w.teleport(this, tx, ty, angle, "angle");
+        return this;
+    }
+
+    /**
+     * Turns the body about its position by {@code da} (a teleport).
+     *
+     * <p>A NaN or infinite turn throws, naming it, and the body stays as it was.
+     *
+     * @param da how much more to turn, radians, clockwise on screen
+     * @return this body, for chaining, never null
+     * @throws IllegalArgumentException if da is NaN or infinite, or the shape would leave the
+     *                                  float range
+     * @throws IllegalStateException    if the body was removed, is a grid's, or this is called
+     *                                  from inside a callback of its world
+     */
+    public Body turnBy(float da) {
+        Check.finite("da", da);
+        World w = live("turnBy");
+        w.teleport(this, tx, ty, (float) Math.IEEEremainder((double) angle + da, 2 * Math.PI), "da");
+        return this;
+    }
+
+    // ---------------------------------------------------------------- what it is
+
+    /** @return the world the body is in, or null once it was removed */
+    public World world() {
+        return world;
+    }
+
+    /** @return true while the body is in a world (false once removed) */
+    public boolean alive() {
+        return world != null;
+    }
+
+    /** @return the grid this body stands for ({@link World#add(Grid)}), or null for a shape's body */
+    public Grid grid() {
+        return grid;
+    }
+
+    /** @return the bits this body is, Box2D's category bits (1 by default) */
+    public int category() {
+        return category;
+    }
+
+    /** @return the bits of the categories this body meets (all, -1, by default) */
+    public int mask() {
+        return mask;
+    }
+
+    /**
+     * Sets the body's layers: what it is and what it meets.
+     *
+     * @param category the bits this body is (any int; 0 meets nothing)
+     * @param mask     the categories it meets (any int; -1 meets all)
+     * @return this body, for chaining, never null
+     * @throws IllegalStateException if the body was removed or this is called from inside a
+     *                               callback of its world
+     */
+    public Body layers(int category, int mask) {
+        live("layers");
+        this.category = category;
+        this.mask = mask;
+        return this;
+    }
+
+    /**
+     * Do these two bodies meet, by Box2D's rule: each one's category is in the other's mask.
+     *
+     * @param other the other body, not null
+     * @return true if {@code (category & other.mask) != 0} and {@code (other.category & mask) != 0}
+     * @throws IllegalArgumentException if {@code other} is null
+     */
+    public boolean accepts(Body other) {
+        Check.notNull("other", other);
+        return (category & other.mask) != 0 && (other.category & mask) != 0;
+    }
+
+    /** @return true if the body is a sensor: reported, never blocking */
+    public boolean isSensor() {
+        return sensor;
+    }
+
+    /**
+     * Makes the body a sensor (or a solid body again): every move into it, or of it, crosses,
+     * and it is still reported and in contact.
+     *
+     * @param sensor true for a sensor
+     * @return this body, for chaining, never null
+     * @throws IllegalStateException if the body was removed or this is called from inside a
+     *                               callback of its world
+     */
+    public Body sensor(boolean sensor) {
+        live("sensor");
+        this.sensor = sensor;
+        return this;
+    }
+
+    /** @return the side from which alone the body blocks, or {@link Side#NONE} if it blocks from every side */
+    public Side oneWay() {
+        return oneWay;
+    }
+
+    /**
+     * Makes the body one-way: it blocks a mover only when the mover meets the given side of it
+     * (the hit's side), and is passed through otherwise. {@code oneWay(Side.TOP)} is a
+     * platform stood on from above and jumped through from below and the sides.
+     * {@link Side#NONE} makes it block from every side again (the default). A mover that
+     * already overlaps it when its move starts is never blocked by it.
+     *
+     * @param side the side that blocks, or {@link Side#NONE}; not null
+     * @return this body, for chaining, never null
+     * @throws IllegalArgumentException if {@code side} is null
+     * @throws IllegalStateException    if the body was removed or this is called from inside a
+     *                                  callback of its world
+     */
+    public Body oneWay(Side side) {
+        Check.notNull("side", side);
+        live("oneWay");
+        this.oneWay = side;
+        return this;
+    }
+
+    /** @return true if {@link World#move} carries what stands on this body along with it */
+    public boolean isCarrier() {
+        return carrier;
+    }
+
+    /**
+     * Makes the body a carrier (a moving platform): when {@link World#move} moves it, the
+     * bodies standing on its top (touching it from above, layers accepting) move along by the
+     * same amount, sliding against everything else; the platform itself passes through them.
+     *
+     * @param carrier true to carry
+     * @return this body, for chaining, never null
+     * @throws IllegalStateException if the body was removed or this is called from inside a
+     *                               callback of its world
+     */
+    public Body carrier(boolean carrier) {
+        live("carrier");
+        this.carrier = carrier;
+        return this;
+    }
+
+    /** @return the sketch's own object kept with the body (a name, a sprite), or null if none was set */
+    public Object data() {
+        return data;
+    }
+
+    /**
+     * Keeps any object of the sketch's with the body, for a filter or an event to read.
+     *
+     * @param data the object, or null for none
+     * @return this body, for chaining, never null
+     */
+    public Body data(Object data) {
+        this.data = data;
+        return this;
+    }
+
+    /** @return the body's kind of shape, position, angle and number, for printing */
+    @Override
+    public String toString() {
+        String kind = grid != null ? "Grid" : home.getClass().getSimpleName();
+        return "Body#" + serial + "[" + kind + " at (" + x() + ", " + y() + "), angle " + angle
+                + (world == null ? ", removed" : "") + (data != null ? ", " + data : "") + "]";
+    }
+
+    /** The world, checked: the body is alive, not a grid's, and its world is not in a callback. */
+    private World live(String what) {
+        if (world == null) {
+            throw new IllegalStateException(what + ": this body was removed from its world");
+        }
+        world.checkNotInCallback(what);
+        return world;
+    }
+}

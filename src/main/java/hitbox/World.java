@@ -1,0 +1,1260 @@
+package hitbox;
+
+import hitbox.internal.*;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.IntConsumer;
+import java.util.function.Predicate;
+
+/**
+ * Many bodies that move, turn, meet and are asked about: bump.lua's {@code world}, a
+ * detect-collisions {@code System}, Box2D's world without its solver.
+ * <pre>{@code
+ * World world = new World();
+ * Body player = world.add(new Rect(40, 40, 20, 30));
+ * Body floor = world.add(new Rect(0, 380, 400, 20));
+ * List<Collision> hits = world.move(player, vx, vy);   // slides along the floor
+ * for (Collision c : hits) if (c.landed()) vy = 0;
+ * }</pre>
+ *
+ * <h2>Moving</h2>
+ * {@link #move(Body, float, float, CollisionFilter)} moves a body this frame through the
+ * others: it goes until it first meets one, reacts as the filter says ({@link Reaction}:
+ * slide along it, stop, pass through, bounce off), and goes on with what is left of the
+ * move, up to {@value #MAX_LEGS} times. It uses the exact swept tests of {@link Sweep}, so it
+ * never tunnels, for every pair of shape kinds at any speed, and at the end the mover overlaps
+ * no body it slid on, touched or bounced off (except one it already overlapped at the start,
+ * which never blocks it). A rectangle at angle 0 that slides among rectangles (every other it
+ * meets a rectangle at angle 0 or a grid, every reaction {@link Reaction#SLIDE}) ends exactly
+ * where {@link Sweep#move} puts it among the same rectangles in the order they were added;
+ * the same walk does both. The broad phase narrows the bodies looked at to those whose boxes
+ * meet the box the move sweeps.
+ *
+ * <h2>Contacts and events: a list per step</h2>
+ * Call {@link #step()} once a frame, after the moves: it returns the {@link BodyEvent}s of the
+ * frame, a contact's ENTER and EXIT once each and STAY every step in between. There are no
+ * listeners, so nothing of the sketch runs while the world is changing.
+ *
+ * <h2>Queries</h2>
+ * What a point, a box, a shape or a ray meets, and what a body overlaps now, each with an
+ * optional filter ({@code Predicate<Body>}); answers are lists, bodies in the order they were
+ * added, ray hits nearest first. A {@link Grid} added with {@link #add(Grid)} is one body that
+ * acts as its solid cells (cells inside the grid; beyond its edges is open here).
+ *
+ * <h2>Bad input</h2>
+ * A null, a NaN or infinite number, a removed body or another world's body throws an
+ * {@link IllegalArgumentException} naming the parameter or the rule. Changing the world (add,
+ * remove, move, turn, layers) from inside a filter or a query's filter throws an
+ * {@link IllegalStateException}. A filter that throws is reported as an
+ * {@link IllegalArgumentException} naming {@code filter}, the filter's exception as its cause
+ * (an {@code IllegalStateException} passes as it is). Every refused call leaves the world
+ * exactly as it was: every body's pose and shape and the broad phase's boxes. Not
+ * thread-safe.
+ *
+ * <p>This class is longer than most (about 900 lines): it is the whole public face of the
+ * world (bodies, moves, carrying, events, five queries) with full javadoc, and the move's
+ * walk, which needs the bodies' private bookkeeping, lives here too; the shapes' placement is
+ * in {@code Poses} and the rectangles' walk in {@code MoveAndSlide}.
+ */
+public final class World {
+
+    /** How many times one {@link #move} stops at a body and goes on before giving up. */
+    public static final int MAX_LEGS = 8;
+
+    private final BroadPhase broad;
+    private Body[] byId = new Body[16];
+    private int[] freeIds = new int[16];
+    private int freeCount;
+    private int nextId;
+    private int size;
+    private int serials;
+    private int callbackDepth;
+    private int stamp;
+    private int riderMark;
+
+    // Candidates of a query or a leg, by id.
+    private int[] cand = new int[16];
+    private int candCount;
+    private final IntConsumer collect = id -> {
+        if (candCount == cand.length) {
+            cand = java.util.Arrays.copyOf(cand, 2 * candCount);
+        }
+        cand[candCount++] = id;
+    };
+
+    // The obstacles of one leg: a body's shape, or one cell of a grid's.
+    private Shape[] obShape = new Shape[16];
+    private Body[] obBody = new Body[16];
+    private int[] obCell = new int[16];
+    private Hit[] obHit = new Hit[16];
+    private int obCount;
+    private final ArrayList<Rect> rects = new ArrayList<>();
+
+    // The rectangles' walk's stops.
+    private final int[] stopIndex = new int[Sweep.MAX_SLIDES];
+    private final double[] stopT = new double[Sweep.MAX_SLIDES];
+    private final Side[] stopSide = new Side[Sweep.MAX_SLIDES];
+    private final float[] stopX = new float[Sweep.MAX_SLIDES];
+    private final float[] stopY = new float[Sweep.MAX_SLIDES];
+    private int stopCount;
+    private final MoveAndSlide.Stops stops = (index, t, side, x, y) -> {
+        stopIndex[stopCount] = index;
+        stopT[stopCount] = t;
+        stopSide[stopCount] = side;
+        stopX[stopCount] = x;
+        stopY[stopCount] = y;
+        stopCount++;
+    };
+
+    // Contacts and the collisions of the current step.
+    private final ArrayList<Collision> stepCollisions = new ArrayList<>();
+    private boolean stepped;
+    private Map<Long, Body[]> contacts = new HashMap<>();
+
+    private final double[] scratch = new double[4];
+
+    /** Makes an empty world with a {@link BroadPhase#grid()} inside. */
+    public World() {
+        this(BroadPhase.grid());
+    }
+
+    /**
+     * Makes an empty world on the given broad phase (one of {@link BroadPhase}'s factories),
+     * which it then owns: do not change it yourself.
+     *
+     * @param broadPhase an empty broad phase, not null
+     * @throws IllegalArgumentException if {@code broadPhase} is null or holds boxes already
+     */
+    public World(BroadPhase broadPhase) {
+        Check.notNull("broadPhase", broadPhase);
+        if (broadPhase.size() != 0) {
+            throw new IllegalArgumentException("broadPhase must be empty, but holds " + broadPhase.size() + " boxes");
+        }
+        this.broad = broadPhase;
+    }
+
+    // ---------------------------------------------------------------- bodies
+
+    /**
+     * Adds a body where the shape stands: its position is the centre of the shape's bounding
+     * box, its angle 0, so it turns about that centre.
+     *
+     * @param shape the body's shape, not null
+     * @return the new body, never null
+     * @throws IllegalArgumentException if {@code shape} is null
+     * @throws IllegalStateException    if called from inside a callback of this world
+     */
+    public Body add(Shape shape) {
+        Check.notNull("shape", shape);
+        checkNotInCallback("add");
+        double px = (shape.minX() + shape.maxX()) / 2, py = (shape.minY() + shape.maxY()) / 2;
+        return added(shape, px, py, 0, 0, 0, null);
+    }
+
+    /**
+     * Adds a body whose shape is given in its own frame, placed at (x, y) and turned by angle:
+     * what {@code translate(x, y); rotate(angle);} and then drawing the shape shows. The body
+     * turns about (x, y).
+     *
+     * <p>A NaN or infinite number throws, naming it.
+     *
+     * @param shape the shape in the body's frame, around (0, 0), not null
+     * @param x     where the frame's origin stands, x
+     * @param y     where the frame's origin stands, y
+     * @param angle how far the body is turned, radians, clockwise on screen
+     * @return the new body, never null
+     * @throws IllegalArgumentException if {@code shape} is null, a number is NaN or infinite,
+     *                                  or the placed shape leaves the float range
+     * @throws IllegalStateException    if called from inside a callback of this world
+     */
+    public Body add(Shape shape, float x, float y, float angle) {
+        Check.notNull("shape", shape);
+        Check.finite("x", x);
+        Check.finite("y", y);
+        Check.finite("angle", angle);
+        checkNotInCallback("add");
+        return added(shape, 0, 0, x, y, angle, null);
+    }
+
+    /**
+     * Adds a grid as one body that acts as its solid cells ({@link Grid#isSolid}, cells inside
+     * the grid only) in moves, queries and contacts. The grid is read as it is at each use,
+     * so {@link Grid#set} changes the world too. A grid's body does not move or turn.
+     *
+     * @param grid the grid, not null
+     * @return the grid's body, never null
+     * @throws IllegalArgumentException if {@code grid} is null
+     * @throws IllegalStateException    if called from inside a callback of this world
+     */
+    public Body add(Grid grid) {
+        Check.notNull("grid", grid);
+        checkNotInCallback("add");
+        Rect r = new Rect(0, 0, grid.width(), grid.height());
+        return added(r, r.w() / 2.0, r.h() / 2.0, 0, 0, 0, grid);
+    }
+
+    private Body added(Shape home, double px, double py, double tx, double ty, float angle, Grid grid) {
+        double cos = angle == 0 ? 1 : Math.cos(angle), sin = angle == 0 ? 0 : Math.sin(angle);
+        Poses.extents(home, px, py, cos, sin, scratch);
+        float[] box = box(px + tx, py + ty, scratch, "x, y and angle");
+        int id = freeCount > 0 ? freeIds[--freeCount] : nextId++;
+        Body b = new Body(this, id, serials++, home, px, py, grid);
+        b.tx = tx;
+        b.ty = ty;
+        b.angle = angle;
+        b.cos = cos;
+        b.sin = sin;
+        System.arraycopy(scratch, 0, b.extents, 0, 4);
+        setBox(b, box[0], box[1], box[2], box[3]);
+        if (id >= byId.length) {
+            byId = java.util.Arrays.copyOf(byId, Math.max(2 * byId.length, id + 1));
+        }
+        byId[id] = b;
+        size++;
+        return b;
+    }
+
+    /**
+     * Removes a body. It is dead afterwards: its own changing methods throw. The next
+     * {@link #step()} reports the EXIT of its contacts.
+     *
+     * @param body a body of this world, not null
+     * @throws IllegalArgumentException if {@code body} is null, was removed, or is another
+     *                                  world's
+     * @throws IllegalStateException    if called from inside a callback of this world
+     */
+    public void remove(Body body) {
+        own("body", body);
+        checkNotInCallback("remove");
+        broad.remove(body.id);
+        byId[body.id] = null;
+        if (freeCount == freeIds.length) {
+            freeIds = java.util.Arrays.copyOf(freeIds, 2 * freeCount);
+        }
+        freeIds[freeCount++] = body.id;
+        body.world = null;
+        size--;
+    }
+
+    /**
+     * Is the body in this world?
+     *
+     * @param body any body, not null
+     * @return true if it was added to this world and not removed
+     * @throws IllegalArgumentException if {@code body} is null
+     */
+    public boolean contains(Body body) {
+        Check.notNull("body", body);
+        return body.world == this;
+    }
+
+    /** @return how many bodies the world holds */
+    public int size() {
+        return size;
+    }
+
+    /** @return the bodies, in the order they were added, as a new list, never null */
+    public List<Body> bodies() {
+        List<Body> out = new ArrayList<>(size);
+        for (int i = 0; i < nextId; i++) {
+            if (i < byId.length && byId[i] != null) {
+                out.add(byId[i]);
+            }
+        }
+        out.sort((a, b) -> Integer.compare(a.serial, b.serial));
+        return out;
+    }
+
+    // ---------------------------------------------------------------- moving
+
+    /**
+     * Moves a body this frame by (dx, dy) through the others, sliding along every one it
+     * meets: {@code move(body, dx, dy, CollisionFilter.slide())}.
+     *
+     * <p>A NaN or infinite move throws, naming it, and nothing moves.
+     *
+     * @param body the body, of this world, not null
+     * @param dx   the move this frame, x part
+     * @param dy   the move this frame, y part
+     * @return what it met, in the order met (empty if nothing), never null; where it ended is
+     *         {@link Body#shape()}
+     * @throws IllegalArgumentException as {@link #move(Body, float, float, CollisionFilter)}
+     * @throws IllegalStateException    if called from inside a callback of this world
+     */
+    public List<Collision> move(Body body, float dx, float dy) {
+        return move(body, dx, dy, SLIDE);
+    }
+
+    private static final CollisionFilter SLIDE = (m, o) -> Reaction.SLIDE;
+
+    /**
+     * Moves a body this frame by (dx, dy) through the others, each reacting as the filter
+     * says (see the class notes and {@link Reaction}); a {@linkplain Body#isCarrier()
+     * carrier} takes what stands on it along.
+     *
+     * <p>A NaN or infinite move throws, naming it, and nothing moves.
+     *
+     * @param body   the body, of this world, not a grid's, not null
+     * @param dx     the move this frame, x part
+     * @param dy     the move this frame, y part
+     * @param filter the reaction to each other body, not null
+     * @return what it met, in the order met (empty if nothing), never null; where it ended is
+     *         {@link Body#shape()}
+     * @throws IllegalArgumentException if an argument is null, dx or dy is NaN or infinite,
+     *                                  the body was removed, is another world's or a grid's,
+     *                                  the move leaves the float range, or the filter threw
+     *                                  (then the world is as it was)
+     * @throws IllegalStateException    if called from inside a callback of this world, or the
+     *                                  filter tried to change the world
+     */
+    public List<Collision> move(Body body, float dx, float dy, CollisionFilter filter) {
+        own("body", body);
+        Check.finite("dx", dx);
+        Check.finite("dy", dy);
+        Check.notNull("filter", filter);
+        checkNotInCallback("move");
+        if (body.grid != null) {
+            throw new IllegalArgumentException("body is a grid's body, which does not move");
+        }
+        if (!Float.isFinite(body.x() + dx) || !Float.isFinite(body.y() + dy)
+                || !Float.isFinite(body.boxX + dx) || !Float.isFinite(body.boxY + dy)
+                || !Float.isFinite(body.boxX + body.boxW + dx) || !Float.isFinite(body.boxY + body.boxH + dy)) {
+            throw new IllegalArgumentException("dx and dy move the body out of the float range: " + body + " by ("
+                    + dx + ", " + dy + ")");
+        }
+        if (stepped) {
+            stepCollisions.clear();
+            stepped = false;
+        }
+        return body.carrier ? moveCarrier(body, dx, dy, filter) : moveOne(body, dx, dy, filter);
+    }
+
+    /** A carrier's move: the riders go first when it goes up, after it otherwise. */
+    private List<Collision> moveCarrier(Body p, float dx, float dy, CollisionFilter filter) {
+        List<Body> riders = riders(p);
+        int mark = ++riderMark;
+        for (Body r : riders) {
+            r.riderStamp = mark;
+        }
+        CollisionFilter platform = (m, o) -> o.riderStamp == mark ? null : filter.react(m, o);
+        int collisionsBefore = stepCollisions.size();
+        Object[] saved = new Object[riders.size() + 1];
+        saved[0] = save(p);
+        for (int i = 0; i < riders.size(); i++) {
+            saved[i + 1] = save(riders.get(i));
+        }
+        try {
+            List<Collision> out;
+            if (dy < 0) {
+                for (Body r : riders) {
+                    moveOne(r, dx, dy, SLIDE);
+                }
+                out = moveOne(p, dx, dy, platform);
+            } else {
+                out = moveOne(p, dx, dy, platform);
+                for (Body r : riders) {
+                    moveOne(r, dx, dy, SLIDE);
+                }
+            }
+            return out;
+        } catch (RuntimeException e) {
+            restore(p, (double[]) saved[0]);
+            for (int i = 0; i < riders.size(); i++) {
+                restore(riders.get(i), (double[]) saved[i + 1]);
+            }
+            while (stepCollisions.size() > collisionsBefore) {
+                stepCollisions.remove(stepCollisions.size() - 1);
+            }
+            throw e;
+        } finally {
+            riderMark++;
+        }
+    }
+
+    /**
+     * The bodies standing on a carrier now: touching its top from above (a drop of a hundredth
+     * of a pixel would land them on it), layers accepting, not sensors, grids or carriers.
+     */
+    List<Body> riders(Body p) {
+        List<Body> out = new ArrayList<>();
+        Shape ps = p.shape();
+        float probe = 0.01f;
+        candCount = 0;
+        broad.query(p.boxX, p.boxY - 2 * probe, p.boxW, p.boxH, collect);
+        sortCandidates();
+        for (int i = 0; i < candCount; i++) {
+            Body o = byId[cand[i]];
+            if (o == p || o.grid != null || o.sensor || o.carrier || !p.accepts(o)) {
+                continue;
+            }
+            Shape os = o.shape();
+            if (os.overlaps(ps)) {
+                continue;
+            }
+            Hit h = Sweep.timeOfImpact(os, 0, probe, ps);
+            if (h != null && h.side() == Side.TOP) {
+                out.add(o);
+            }
+        }
+        return out;
+    }
+
+    private Object save(Body b) {
+        return new double[] {b.tx, b.ty};
+    }
+
+    private void restore(Body b, double[] saved) {
+        if (b.tx != saved[0] || b.ty != saved[1]) {
+            b.tx = saved[0];
+            b.ty = saved[1];
+            b.shape = null;
+            float[] box = box(b.pivotX + b.tx, b.pivotY + b.ty, b.extents, "a restored pose");
+            setBox(b, box[0], box[1], box[2], box[3]);
+        }
+    }
+
+    /** One body's move; the world changes only at the end, when nothing can throw any more. */
+    private List<Collision> moveOne(Body m, float dx, float dy, CollisionFilter filter) {
+        int st = ++stamp;
+        Shape start = m.shape();
+        List<Collision> out = new ArrayList<>(2);
+        if (start instanceof Rect r && !m.sensor) {
+            Rect end = rectWalk(m, r, dx, dy, filter, st, out);
+            if (end != null) {
+                return commit(m, start, end, out);
+            }
+        }
+        Shape cur = start;
+        double vx = dx, vy = dy, time = 0;
+        for (int leg = 0; leg < MAX_LEGS; leg++) {
+            float fvx = (float) vx, fvy = (float) vy;
+            if (fvx == 0 && fvy == 0) {
+                break;
+            }
+            obstacles(m, cur, fvx, fvy, filter, start, st, out);
+            int best = -1;
+            Hit bestHit = null;
+            for (int i = 0; i < obCount; i++) {
+                Hit h = Sweep.timeOfImpact(cur, fvx, fvy, obShape[i]);
+                Body o = obBody[i];
+                if (h != null && (h.alreadyOverlapping()
+                        || o.seenReaction != Reaction.CROSS && o.oneWay != Side.NONE && h.side() != o.oneWay)) {
+                    h = null;  // a one-way body met from a side that does not block
+                }
+                obHit[i] = h;
+                if (h != null && o.seenReaction != Reaction.CROSS
+                        && (best < 0 || h.t() < bestHit.t() || h.t() == bestHit.t() && o.serial < obBody[best].serial)) {
+                    best = i;
+                    bestHit = h;
+                }
+            }
+            float tb = best >= 0 ? bestHit.t() : 1;
+            crossings(m, start, cur, fvx, fvy, tb, time, out);
+            if (best < 0) {
+                cur = clearAlong(cur, fvx, fvy, 1, cur.translated(fvx, fvy));
+                break;
+            }
+            Body o = obBody[best];
+            Reaction reaction = o.seenReaction;
+            float t = bestHit.t();
+            Shape at = clearAlong(cur, fvx, fvy, t, t == 0 ? cur : cur.translated(t * fvx, t * fvy));
+            double frame = time + t * (1 - time);
+            if (o.oneWay != Side.NONE) {
+                o.seenBlocked = true;
+            }
+            out.add(new Collision(m, o, reaction, new Hit((float) Math.min(1, frame), bestHit.nx(), bestHit.ny(),
+                    bestHit.side()), poseX(m, start, at), poseY(m, start, at), obCell[best]));
+            cur = at;
+            double rx = (1 - (double) t) * vx, ry = (1 - (double) t) * vy;
+            double nx = bestHit.nx(), ny = bestHit.ny(), into = rx * nx + ry * ny;
+            switch (reaction) {
+                case TOUCH -> {
+                    rx = 0;
+                    ry = 0;
+                }
+                case BOUNCE -> {
+                    if (into > 0) {
+                        rx -= 2 * into * nx;
+                        ry -= 2 * into * ny;
+                    }
+                }
+                default -> {
+                    if (into > 0) {
+                        rx -= into * nx;
+                        ry -= into * ny;
+                    }
+                    // An axis-aligned face: the part into it is gone exactly.
+                    if (nx == 0) {
+                        ry = 0;
+                    } else if (ny == 0) {
+                        rx = 0;
+                    }
+                }
+            }
+            vx = rx;
+            vy = ry;
+            time = frame;
+        }
+        return commit(m, start, cur, out);
+    }
+
+    /** The crossed bodies met before tb in this leg, each reported once a move, in the order met. */
+    private void crossings(Body m, Shape start, Shape cur, float fvx, float fvy, float tb, double time,
+                           List<Collision> out) {
+        while (true) {
+            int first = -1;
+            for (int i = 0; i < obCount; i++) {
+                Body o = obBody[i];
+                Hit h = obHit[i];
+                if (h != null && o.seenReaction == Reaction.CROSS && !o.seenCrossed && h.t() <= tb
+                        && (first < 0 || h.t() < obHit[first].t())) {
+                    first = i;
+                }
+            }
+            if (first < 0) {
+                return;
+            }
+            Body o = obBody[first];
+            o.seenCrossed = true;
+            Hit h = obHit[first];
+            double frame = time + h.t() * (1 - time);
+            out.add(new Collision(m, o, Reaction.CROSS, new Hit((float) Math.min(1, frame), h.nx(), h.ny(), h.side()),
+                    poseX(m, start, cur) + h.t() * fvx, poseY(m, start, cur) + h.t() * fvy, obCell[first]));
+        }
+    }
+
+    /**
+     * The wanted stop if it overlaps no blocking obstacle of this leg; otherwise (only rounding
+     * can cause it) the farthest clear point before it along the leg, by halving.
+     */
+    private Shape clearAlong(Shape cur, float fvx, float fvy, float t, Shape wanted) {
+        if (clear(wanted)) {
+            return wanted;
+        }
+        Shape best = cur;
+        double lo = 0, hi = t;
+        for (int i = 0; i < 64 && lo < hi; i++) {
+            double mid = (lo + hi) / 2;
+            Shape s = cur.translated((float) (mid * fvx), (float) (mid * fvy));
+            if (clear(s)) {
+                lo = mid;
+                best = s;
+            } else {
+                hi = mid;
+            }
+            if (mid == lo && mid == hi) {
+                break;
+            }
+        }
+        return best;
+    }
+
+    private boolean clear(Shape s) {
+        for (int i = 0; i < obCount; i++) {
+            Body o = obBody[i];
+            boolean blocks = o.seenReaction != Reaction.CROSS && (o.oneWay == Side.NONE || o.seenBlocked);
+            if (blocks && s.overlaps(obShape[i])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private float poseX(Body m, Shape start, Shape at) {
+        return (float) (m.pivotX + m.tx + (Poses.refX(at) - Poses.refX(start)));
+    }
+
+    private float poseY(Body m, Shape start, Shape at) {
+        return (float) (m.pivotY + m.ty + (Poses.refY(at) - Poses.refY(start)));
+    }
+
+    /**
+     * The obstacles of one leg: the bodies (and grid cells) whose boxes meet the leg's swept
+     * box, that the filter does not ignore, that the mover did not overlap at the start, and
+     * not crossed already. Bodies the mover overlaps at the start are reported once.
+     */
+    private void obstacles(Body m, Shape cur, float fvx, float fvy, CollisionFilter filter, Shape start, int st,
+                           List<Collision> out) {
+        double left = Math.min(cur.minX(), cur.minX() + fvx), right = Math.max(cur.maxX(), cur.maxX() + fvx);
+        double top = Math.min(cur.minY(), cur.minY() + fvy), bottom = Math.max(cur.maxY(), cur.maxY() + fvy);
+        gather(left, top, right, bottom);
+        obCount = 0;
+        for (int i = 0; i < candCount; i++) {
+            Body o = byId[cand[i]];
+            if (o == m || reaction(m, o, filter, start, st, out) == null || o.seenOverlap) {
+                continue;
+            }
+            if (o.grid != null) {
+                cells(o, left, top, right, bottom, start);
+            } else {
+                addObstacle(o.shape(), o, -1);
+            }
+        }
+    }
+
+    /** The solid cells of a grid's body under a box, row by row, not those the start overlaps. */
+    private void cells(Body o, double left, double top, double right, double bottom, Shape start) {
+        Grid g = o.grid;
+        double pad = pad(left, top, right, bottom);
+        int c0 = Math.max(0, g.colAt((float) (left - pad))), c1 = Math.min(g.cols() - 1, g.colAt((float) (right + pad)));
+        int r0 = Math.max(0, g.rowAt((float) (top - pad))), r1 = Math.min(g.rows() - 1, g.rowAt((float) (bottom + pad)));
+        if ((long) (c1 - c0 + 1) * (r1 - r0 + 1) > GridMove.MAX_CELLS) {
+            throw new IllegalArgumentException("a move over a grid of the world sweeps more than " + GridMove.MAX_CELLS
+                    + " cells: moves are made for a few cells a frame");
+        }
+        for (int row = r0; row <= r1; row++) {
+            for (int col = c0; col <= c1; col++) {
+                if (g.isSolid(col, row)) {
+                    Rect cell = g.cellRect(col, row);
+                    if (start == null || !start.overlaps(cell)) {
+                        addObstacle(cell, o, row * g.cols() + col);
+                    }
+                }
+            }
+        }
+    }
+
+    private void addObstacle(Shape s, Body o, int cell) {
+        if (obCount == obShape.length) {
+            int n = 2 * obCount;
+            obShape = java.util.Arrays.copyOf(obShape, n);
+            obBody = java.util.Arrays.copyOf(obBody, n);
+            obCell = java.util.Arrays.copyOf(obCell, n);
+            obHit = java.util.Arrays.copyOf(obHit, n);
+        }
+        obShape[obCount] = s;
+        obBody[obCount] = o;
+        obCell[obCount] = cell;
+        obCount++;
+    }
+
+    /** The reaction to another body, asked once a move: layers, then sensors, then the filter. */
+    private Reaction reaction(Body m, Body o, CollisionFilter filter, Shape start, int st, List<Collision> out) {
+        if (o.seenStamp != st) {
+            o.seenStamp = st;
+            o.seenCrossed = false;
+            o.seenBlocked = false;
+            o.seenOverlap = false;
+            Reaction r;
+            if (!m.accepts(o)) {
+                r = null;
+            } else if (m.sensor || o.sensor) {
+                r = Reaction.CROSS;
+            } else {
+                r = ask(filter, m, o);
+            }
+            o.seenReaction = r;
+            if (r != null && o.grid == null && start.overlaps(o.shape())) {
+                o.seenOverlap = true;
+                o.seenCrossed = true;
+                out.add(new Collision(m, o, r, new Hit(0, 0, 0, Side.NONE), m.x(), m.y(), -1));
+            }
+        }
+        return o.seenReaction;
+    }
+
+    private Reaction ask(CollisionFilter filter, Body m, Body o) {
+        callbackDepth++;
+        try {
+            return filter.react(m, o);
+        } catch (IllegalStateException e) {
+            throw e;
+        } catch (RuntimeException e) {
+            throw new IllegalArgumentException("filter threw " + e + " for " + m + " and " + o
+                    + "; the world is as it was before the call", e);
+        } finally {
+            callbackDepth--;
+        }
+    }
+
+    /**
+     * A rectangle's slide among rectangles, by {@link Sweep#move}'s own walk: the end, or null
+     * when some body met is not a rectangle that slides (then the general walk runs).
+     */
+    private Rect rectWalk(Body m, Rect r, float dx, float dy, CollisionFilter filter, int st, List<Collision> out) {
+        double left = Math.min(r.minX(), r.minX() + dx), right = Math.max(r.maxX(), r.maxX() + dx);
+        double top = Math.min(r.minY(), r.minY() + dy), bottom = Math.max(r.maxY(), r.maxY() + dy);
+        gather(left, top, right, bottom);
+        int reported = out.size();
+        for (int i = 0; i < candCount; i++) {
+            Body o = byId[cand[i]];
+            if (o == m) {
+                continue;
+            }
+            Reaction re = reaction(m, o, filter, r, st, out);
+            if (re != null && (re != Reaction.SLIDE || o.oneWay != Side.NONE
+                    || o.grid == null && !(o.shape() instanceof Rect))) {
+                return null;
+            }
+        }
+        obCount = 0;
+        rects.clear();
+        for (int i = 0; i < candCount; i++) {
+            Body o = byId[cand[i]];
+            if (o == m || o.seenReaction == null) {
+                continue;
+            }
+            if (o.grid != null) {
+                cells(o, left, top, right, bottom, null);
+            } else {
+                addObstacle(o.shape(), o, -1);
+            }
+        }
+        for (int i = 0; i < obCount; i++) {
+            rects.add((Rect) obShape[i]);
+        }
+        stopCount = 0;
+        Sweep.Move end = MoveAndSlide.move(r, dx, dy, rects, stops);
+        double time = 0;
+        for (int k = 0; k < stopCount; k++) {
+            double frame = time + stopT[k] * (1 - time);
+            Side side = stopSide[k];
+            float nx = side == Side.LEFT ? 1 : side == Side.RIGHT ? -1 : 0;
+            float ny = side == Side.TOP ? 1 : side == Side.BOTTOM ? -1 : 0;
+            int i = stopIndex[k];
+            out.add(new Collision(m, obBody[i], Reaction.SLIDE, new Hit((float) Math.min(1, frame), nx, ny, side),
+                    (float) (m.pivotX + m.tx + ((double) stopX[k] - r.x())),
+                    (float) (m.pivotY + m.ty + ((double) stopY[k] - r.y())), obCell[i]));
+            time = frame;
+        }
+        return new Rect(end.x(), end.y(), r.w(), r.h());
+    }
+
+    /** The world changes: the mover's pose, shape and box. */
+    private List<Collision> commit(Body m, Shape start, Shape end, List<Collision> out) {
+        double ntx = m.tx + (Poses.refX(end) - Poses.refX(start)), nty = m.ty + (Poses.refY(end) - Poses.refY(start));
+        float[] box = box(m.pivotX + ntx, m.pivotY + nty, m.extents, "dx and dy");
+        Rect b = end.bounds();
+        float x0 = Math.min(box[0], b.x()), y0 = Math.min(box[1], b.y());
+        float x1 = Math.max(box[0] + box[2], Math.nextUp(b.x() + b.w())), y1 = Math.max(box[1] + box[3], Math.nextUp(b.y() + b.h()));
+        m.tx = ntx;
+        m.ty = nty;
+        m.shape = end;
+        setBox(m, x0, y0, Math.nextUp(x1 - x0), Math.nextUp(y1 - y0));
+        stepCollisions.addAll(out);
+        return out.isEmpty() ? Collections.emptyList() : out;
+    }
+
+    // ---------------------------------------------------------------- teleports (Body calls these)
+
+    void teleport(Body b, double tx, double ty, float angle, String what) {
+        if (b.grid != null) {
+            throw new IllegalStateException("a grid's body does not move or turn");
+        }
+        double cos = b.cos, sin = b.sin;
+        double[] ex = b.extents;
+        if (angle != b.angle) {
+            cos = angle == 0 ? 1 : Math.cos(angle);
+            sin = angle == 0 ? 0 : Math.sin(angle);
+            Poses.extents(b.home, b.pivotX, b.pivotY, cos, sin, scratch);
+            ex = scratch;
+        }
+        float[] box = box(b.pivotX + tx, b.pivotY + ty, ex, what);
+        if (ex == scratch) {
+            System.arraycopy(scratch, 0, b.extents, 0, 4);
+        }
+        b.tx = tx;
+        b.ty = ty;
+        b.angle = angle;
+        b.cos = cos;
+        b.sin = sin;
+        b.shape = null;
+        setBox(b, box[0], box[1], box[2], box[3]);
+    }
+
+    private final float[] boxOut = new float[4];
+
+    /** The box of a pose, rounded outwards a float step more; checked before anything changes. */
+    private float[] box(double ox, double oy, double[] ex, String what) {
+        float x0 = Math.nextDown((float) (ox + ex[0])), y0 = Math.nextDown((float) (oy + ex[1]));
+        float x1 = Math.nextUp((float) (ox + ex[2])), y1 = Math.nextUp((float) (oy + ex[3]));
+        float w = Math.nextUp((float) ((double) x1 - x0)), h = Math.nextUp((float) ((double) y1 - y0));
+        if (!Float.isFinite(x0) || !Float.isFinite(y0) || !Float.isFinite(x1) || !Float.isFinite(y1)
+                || !Float.isFinite(w) || !Float.isFinite(h)) {
+            throw new IllegalArgumentException(what + " put the body's shape out of the float range");
+        }
+        boxOut[0] = x0;
+        boxOut[1] = y0;
+        boxOut[2] = w;
+        boxOut[3] = h;
+        return boxOut;
+    }
+
+    private void setBox(Body b, float x, float y, float w, float h) {
+        if (b.grid != null) {
+            x = 0;
+            y = 0;
+            w = b.grid.width();
+            h = b.grid.height();
+        }
+        b.boxX = x;
+        b.boxY = y;
+        b.boxW = w;
+        b.boxH = h;
+        broad.put(b.id, x, y, w, h);
+    }
+
+    // ---------------------------------------------------------------- events
+
+    /**
+     * Ends the frame: the contacts now (pairs whose layers accept each other that overlap, or
+     * that a move since the last step met), compared with those of the last step. Call once a
+     * frame, after the moves.
+     *
+     * @return the events, ENTER and EXIT once per change and STAY for each contact that goes
+     *         on, bodies of each pair in the order added; empty if there are none, never null
+     * @throws IllegalStateException if called from inside a callback of this world
+     */
+    public List<BodyEvent> step() {
+        checkNotInCallback("step");
+        Map<Long, Body[]> now = new HashMap<>();
+        broad.pairs((i, j) -> {
+            Body a = byId[i], b = byId[j];
+            if (a.accepts(b) && overlap(a, b)) {
+                putPair(now, a, b);
+            }
+        });
+        if (!stepped) {
+            for (Collision c : stepCollisions) {
+                if (c.mover().world == this && c.other().world == this && c.mover().accepts(c.other())) {
+                    putPair(now, c.mover(), c.other());
+                }
+            }
+        }
+        List<BodyEvent> events = new ArrayList<>();
+        List<Long> keys = new ArrayList<>(now.keySet());
+        for (Long k : contacts.keySet()) {
+            if (!now.containsKey(k)) {
+                keys.add(k);
+            }
+        }
+        Collections.sort(keys);
+        for (Long k : keys) {
+            Body[] p = now.get(k);
+            if (p == null) {
+                Body[] q = contacts.get(k);
+                events.add(new BodyEvent(BodyEvent.Kind.EXIT, q[0], q[1]));
+            } else {
+                events.add(new BodyEvent(contacts.containsKey(k) ? BodyEvent.Kind.STAY : BodyEvent.Kind.ENTER, p[0], p[1]));
+            }
+        }
+        contacts = now;
+        stepped = true;
+        return events;
+    }
+
+    private static void putPair(Map<Long, Body[]> map, Body a, Body b) {
+        if (a.serial > b.serial) {
+            Body t = a;
+            a = b;
+            b = t;
+        }
+        map.putIfAbsent(((long) a.serial << 32) | b.serial, new Body[] {a, b});
+    }
+
+    /** Do two bodies overlap now (a grid's body: one of its solid cells)? */
+    private boolean overlap(Body a, Body b) {
+        if (a.grid != null && b.grid != null) {
+            return false;
+        }
+        if (a.grid != null) {
+            return gridMeets(a, b.shape());
+        }
+        if (b.grid != null) {
+            return gridMeets(b, a.shape());
+        }
+        return a.shape().overlaps(b.shape());
+    }
+
+    /** Does a shape overlap a solid cell of a grid's body? */
+    private boolean gridMeets(Body g, Shape s) {
+        return gridCell(g, s) >= 0;
+    }
+
+    /** The first solid cell (row by row) of a grid's body that a shape overlaps, or -1. */
+    private int gridCell(Body g, Shape s) {
+        Grid grid = g.grid;
+        double pad = pad(s.minX(), s.minY(), s.maxX(), s.maxY());
+        int c0 = Math.max(0, grid.colAt((float) (s.minX() - pad))), c1 = Math.min(grid.cols() - 1, grid.colAt((float) (s.maxX() + pad)));
+        int r0 = Math.max(0, grid.rowAt((float) (s.minY() - pad))), r1 = Math.min(grid.rows() - 1, grid.rowAt((float) (s.maxY() + pad)));
+        for (int row = r0; row <= r1; row++) {
+            for (int col = c0; col <= c1; col++) {
+                if (grid.isSolid(col, row) && s.overlaps(grid.cellRect(col, row))) {
+                    return row * grid.cols() + col;
+                }
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * The collisions the moves reported since the last {@link #step()}, or, right after a step,
+     * those of the frame it ended (until the next move): for drawing the frame's contacts.
+     *
+     * @return the collisions in the order met, a new list; empty if none, never null
+     */
+    public List<Collision> collisions() {
+        return new ArrayList<>(stepCollisions);
+    }
+
+    // ---------------------------------------------------------------- queries
+
+    /**
+     * The bodies whose shape holds a point ({@link Shape#contains}: the outline of a shape with
+     * area does not count; a grid's body: the point is inside a solid cell).
+     *
+     * <p>A NaN or infinite coordinate throws, naming it.
+     *
+     * @param x the point's x
+     * @param y the point's y
+     * @return the bodies, in the order added; empty if none, never null
+     * @throws IllegalArgumentException if x or y is NaN or infinite
+     */
+    public List<Body> queryPoint(float x, float y) {
+        return queryPoint(x, y, ALL);
+    }
+
+    /**
+     * The bodies the filter keeps whose shape holds a point: see {@link #queryPoint(float, float)}.
+     *
+     * <p>A NaN or infinite coordinate throws, naming it.
+     *
+     * @param x      the point's x
+     * @param y      the point's y
+     * @param filter which bodies to keep, not null
+     * @return the bodies, in the order added; empty if none, never null
+     * @throws IllegalArgumentException if x or y is NaN or infinite, {@code filter} is null or
+     *                                  threw
+     */
+    public List<Body> queryPoint(float x, float y, Predicate<Body> filter) {
+        Check.finite("x", x);
+        Check.finite("y", y);
+        Check.notNull("filter", filter);
+        gather(x, y, x, y);
+        List<Body> out = new ArrayList<>();
+        for (int i = 0; i < candCount; i++) {
+            Body b = byId[cand[i]];
+            boolean in;
+            if (b.grid != null) {
+                Grid g = b.grid;
+                int col = g.colAt(x), row = g.rowAt(y);
+                in = g.inGrid(col, row) && g.isSolid(col, row) && g.cellRect(col, row).contains(x, y);
+            } else {
+                in = b.shape().contains(x, y);
+            }
+            if (in && keep(filter, b)) {
+                out.add(b);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * The bodies whose shape overlaps a box ({@link Shape#overlaps}, the touching rule).
+     *
+     * <p>A NaN or infinite number, or a negative size, throws, naming it.
+     *
+     * @param x the box's left edge
+     * @param y the box's top edge
+     * @param w the box's width, 0 or more
+     * @param h the box's height, 0 or more
+     * @return the bodies, in the order added; empty if none, never null
+     * @throws IllegalArgumentException if a number is NaN or infinite, or a size negative
+     */
+    public List<Body> queryBox(float x, float y, float w, float h) {
+        return queryShape(new Rect(x, y, w, h), ALL);
+    }
+
+    /**
+     * The bodies the filter keeps whose shape overlaps a box: see
+     * {@link #queryBox(float, float, float, float)}.
+     *
+     * <p>A NaN or infinite number, or a negative size, throws, naming it.
+     *
+     * @param x      the box's left edge
+     * @param y      the box's top edge
+     * @param w      the box's width, 0 or more
+     * @param h      the box's height, 0 or more
+     * @param filter which bodies to keep, not null
+     * @return the bodies, in the order added; empty if none, never null
+     * @throws IllegalArgumentException if a number is NaN or infinite, a size negative, or
+     *                                  {@code filter} is null or threw
+     */
+    public List<Body> queryBox(float x, float y, float w, float h, Predicate<Body> filter) {
+        return queryShape(new Rect(x, y, w, h), filter);
+    }
+
+    /**
+     * The bodies whose shape overlaps a shape ({@link Shape#overlaps}).
+     *
+     * @param shape the shape, not null
+     * @return the bodies, in the order added; empty if none, never null
+     * @throws IllegalArgumentException if {@code shape} is null
+     */
+    public List<Body> queryShape(Shape shape) {
+        return queryShape(shape, ALL);
+    }
+
+    /**
+     * The bodies the filter keeps whose shape overlaps a shape.
+     *
+     * @param shape  the shape, not null
+     * @param filter which bodies to keep, not null
+     * @return the bodies, in the order added; empty if none, never null
+     * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
+     */
+    public List<Body> queryShape(Shape shape, Predicate<Body> filter) {
+        Check.notNull("shape", shape);
+        Check.notNull("filter", filter);
+        return meeting(shape, null, filter);
+    }
+
+    private List<Body> meeting(Shape shape, Body except, Predicate<Body> filter) {
+        gather(shape.minX(), shape.minY(), shape.maxX(), shape.maxY());
+        List<Body> out = new ArrayList<>();
+        for (int i = 0; i < candCount; i++) {
+            Body b = byId[cand[i]];
+            if (b == except) {
+                continue;
+            }
+            boolean meets = b.grid != null ? gridMeets(b, shape) : b.shape().overlaps(shape);
+            if (meets && keep(filter, b)) {
+                out.add(b);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * The bodies a body overlaps now (not itself; for a grid's body, the bodies on its solid
+     * cells).
+     *
+     * @param body a body of this world, not null
+     * @return the bodies, in the order added; empty if none, never null
+     * @throws IllegalArgumentException if {@code body} is null, removed or another world's
+     */
+    public List<Body> overlapping(Body body) {
+        return overlapping(body, ALL);
+    }
+
+    /**
+     * The bodies the filter keeps that a body overlaps now.
+     *
+     * @param body   a body of this world, not null
+     * @param filter which bodies to keep, not null
+     * @return the bodies, in the order added; empty if none, never null
+     * @throws IllegalArgumentException if an argument is null, the body is removed or another
+     *                                  world's, or {@code filter} threw
+     */
+    public List<Body> overlapping(Body body, Predicate<Body> filter) {
+        own("body", body);
+        Check.notNull("filter", filter);
+        if (body.grid == null) {
+            return meeting(body.shape(), body, filter);
+        }
+        gather(body.boxX, body.boxY, (double) body.boxX + body.boxW, (double) body.boxY + body.boxH);
+        List<Body> out = new ArrayList<>();
+        for (int i = 0; i < candCount; i++) {
+            Body b = byId[cand[i]];
+            if (b != body && b.grid == null && gridMeets(body, b.shape()) && keep(filter, b)) {
+                out.add(b);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Every body a ray meets within its reach, nearest first ({@link Ray#cast}: distance,
+     * point, normal from the ray into the body); each body once, at its nearest point.
+     *
+     * @param ray the ray, not null
+     * @return the hits, nearest first (equal distances: in the order added); empty if none,
+     *         never null
+     * @throws IllegalArgumentException if {@code ray} is null
+     */
+    public List<BodyHit> raycast(Ray ray) {
+        return raycast(ray, ALL);
+    }
+
+    /**
+     * Every body the filter keeps that a ray meets, nearest first: see {@link #raycast(Ray)}.
+     *
+     * @param ray    the ray, not null
+     * @param filter which bodies to keep, not null
+     * @return the hits, nearest first; empty if none, never null
+     * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
+     */
+    public List<BodyHit> raycast(Ray ray, Predicate<Body> filter) {
+        Check.notNull("ray", ray);
+        Check.notNull("filter", filter);
+        return rayHits(ray, filter, false);
+    }
+
+    /**
+     * The nearest body a ray meets within its reach: line of sight, a laser.
+     *
+     * @param ray    the ray, not null
+     * @param filter which bodies to keep (leave out the one looking), not null
+     * @return the nearest hit, or null if the ray meets nothing
+     * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
+     */
+    public BodyHit raycastFirst(Ray ray, Predicate<Body> filter) {
+        Check.notNull("ray", ray);
+        Check.notNull("filter", filter);
+        List<BodyHit> hits = rayHits(ray, filter, true);
+        return hits.isEmpty() ? null : hits.get(0);
+    }
+
+    private List<BodyHit> rayHits(Ray ray, Predicate<Body> filter, boolean firstOnly) {
+        candCount = 0;
+        double[] nearest = {Double.POSITIVE_INFINITY};
+        broad.raycast(ray, (id, distance) -> {
+            if (firstOnly && distance > nearest[0]) {
+                return false;
+            }
+            collect.accept(id);
+            return true;
+        });
+        List<BodyHit> out = new ArrayList<>();
+        for (int i = 0; i < candCount; i++) {
+            Body b = byId[cand[i]];
+            BodyHit hit = b.grid != null ? gridRay(b, ray) : hitOf(b, ray.cast(b.shape()));
+            if (hit != null && keep(filter, b)) {
+                out.add(hit);
+                if (firstOnly) {
+                    nearest[0] = Math.min(nearest[0], hit.distance());
+                }
+            }
+        }
+        out.sort((p, q) -> p.distance() != q.distance() ? Float.compare(p.distance(), q.distance())
+                : Integer.compare(p.body().serial, q.body().serial));
+        if (firstOnly && out.size() > 1) {
+            return out.subList(0, 1);
+        }
+        return out;
+    }
+
+    private static BodyHit hitOf(Body b, RayHit h) {
+        return h == null ? null : new BodyHit(b, h, -1);
+    }
+
+    /** The nearest solid cell of a grid's body that a ray meets, within its reach and the grid. */
+    private BodyHit gridRay(Body b, Ray ray) {
+        Grid g = b.grid;
+        double len = Math.hypot(ray.dx(), ray.dy());
+        double reach = Math.min(ray.maxDistance(), Math.hypot(g.width(), g.height())
+                + Math.hypot(Math.max(Math.abs(ray.ox()), Math.abs(ray.ox() - g.width())),
+                Math.max(Math.abs(ray.oy()), Math.abs(ray.oy() - g.height()))));
+        double ex = ray.ox() + ray.dx() / len * reach, ey = ray.oy() + ray.dy() / len * reach;
+        int c0 = Math.max(0, g.colAt((float) Math.min(ray.ox(), ex))), c1 = Math.min(g.cols() - 1, g.colAt((float) Math.max(ray.ox(), ex)));
+        int r0 = Math.max(0, g.rowAt((float) Math.min(ray.oy(), ey))), r1 = Math.min(g.rows() - 1, g.rowAt((float) Math.max(ray.oy(), ey)));
+        BodyHit best = null;
+        for (int row = r0; row <= r1; row++) {
+            for (int col = c0; col <= c1; col++) {
+                if (g.isSolid(col, row)) {
+                    RayHit h = ray.cast(g.cellRect(col, row));
+                    if (h != null && (best == null || h.distance() < best.distance())) {
+                        best = new BodyHit(b, h, row * g.cols() + col);
+                    }
+                }
+            }
+        }
+        return best;
+    }
+
+    // ---------------------------------------------------------------- looking inside
+
+    /**
+     * Visits the broad phase's own regions, for drawing: see {@link BroadPhase#cells}.
+     *
+     * @param out receives each region, not null
+     * @throws IllegalArgumentException if {@code out} is null
+     */
+    public void cells(BoxConsumer out) {
+        Check.notNull("out", out);
+        broad.cells(out);
+    }
+
+    /** @return the name of the broad phase inside, for labels */
+    @Override
+    public String toString() {
+        return "World of " + size + " bodies on " + broad;
+    }
+
+    /** The broad phase, for the tests that check a refused call changed nothing. */
+    BroadPhase broadPhase() {
+        return broad;
+    }
+
+    // ---------------------------------------------------------------- helpers
+
+    private static final Predicate<Body> ALL = b -> true;
+
+    private boolean keep(Predicate<Body> filter, Body b) {
+        if (filter == ALL) {
+            return true;
+        }
+        callbackDepth++;
+        try {
+            return filter.test(b);
+        } catch (IllegalStateException e) {
+            throw e;
+        } catch (RuntimeException e) {
+            throw new IllegalArgumentException("filter threw " + e + " for " + b, e);
+        } finally {
+            callbackDepth--;
+        }
+    }
+
+    /** The ids of the bodies whose boxes meet a box (padded by a few float steps), in the order added. */
+    private void gather(double left, double top, double right, double bottom) {
+        double pad = pad(left, top, right, bottom);
+        float x0 = (float) (left - pad), y0 = (float) (top - pad);
+        float x1 = (float) (right + pad), y1 = (float) (bottom + pad);
+        candCount = 0;
+        broad.query(x0, y0, Math.nextUp((float) ((double) x1 - x0)), Math.nextUp((float) ((double) y1 - y0)), collect);
+        sortCandidates();
+    }
+
+    private static double pad(double left, double top, double right, double bottom) {
+        double m = Math.max(Math.max(Math.abs(left), Math.abs(right)), Math.max(Math.abs(top), Math.abs(bottom)));
+        return 4 * Math.ulp((float) Math.min(m, Float.MAX_VALUE / 4)) + Float.MIN_NORMAL;
+    }
+
+    /** Insertion sort of the candidates by the order added: ties are met in that order. */
+    private void sortCandidates() {
+        for (int i = 1; i < candCount; i++) {
+            int id = cand[i];
+            int s = byId[id].serial;
+            int j = i - 1;
+            while (j >= 0 && byId[cand[j]].serial > s) {
+                cand[j + 1] = cand[j];
+                j--;
+            }
+            cand[j + 1] = id;
+        }
+    }
+
+    /** A body argument of this world, checked. */
+    private Body own(String name, Body body) {
+        Check.notNull(name, body);
+        if (body.world == null) {
+            throw new IllegalArgumentException(name + " was removed from its world: " + body);
+        }
+        if (body.world != this) {
+            throw new IllegalArgumentException(name + " belongs to another world: " + body);
+        }
+        return body;
+    }
+
+    void checkNotInCallback(String what) {
+        if (callbackDepth > 0) {
+            throw new IllegalStateException(what + " was called from inside a filter of this world: a filter may read"
+                    + " the world but not change it; collect the bodies and change the world after the call");
+        }
+    }
+}

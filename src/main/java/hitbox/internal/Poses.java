@@ -1,0 +1,253 @@
+package hitbox.internal;
+
+import hitbox.*;
+
+/**
+ * A body's shape kept in its own frame and placed by a pose, behind {@link Body}: the shape as
+ * it was added (its "home"), turned by an angle about a pivot and moved by a translation. A
+ * point p of the home shape stands at {@code pivot + R(angle) (p - pivot) + t}, worked out in
+ * double and rounded once to float. At angle 0 this is a plain translation of each
+ * coordinate, {@code (float) (p + t)}, so a body that only moves keeps its kind and its exact
+ * size (a rectangle stays the rectangle {@code Sweep.move} would give).
+ *
+ * <p>The extents of the turned home shape about its pivot are worked out without making a
+ * shape (no allocation, time linear in a polygon's vertices), so a teleport can update the
+ * broad phase's box at once and leave the shape to be made when asked.
+ */
+public final class Poses {
+    private Poses() {
+    }
+
+    /**
+     * The extents of the home shape turned by (cos, sin) about the pivot, relative to the
+     * pivot: out[0..3] = min x, min y, max x, max y.
+     */
+    public static void extents(Shape home, double px, double py, double cos, double sin, double[] out) {
+        if (sin == 0 && cos == 1) {
+            out[0] = home.minX() - px;
+            out[1] = home.minY() - py;
+            out[2] = home.maxX() - px;
+            out[3] = home.maxY() - py;
+            return;
+        }
+        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY;
+        double grow = 0;
+        switch (ShapeKind.of(home)) {
+            case CIRCLE -> {
+                Circle c = (Circle) home;
+                double x = turnX(c.x() - px, c.y() - py, cos, sin), y = turnY(c.x() - px, c.y() - py, cos, sin);
+                minX = x - c.r();
+                maxX = x + c.r();
+                minY = y - c.r();
+                maxY = y + c.r();
+            }
+            case RECT -> {
+                Rect r = (Rect) home;
+                double x0 = r.x() - px, y0 = r.y() - py, x1 = (double) r.x() + r.w() - px, y1 = (double) r.y() + r.h() - py;
+                for (int i = 0; i < 4; i++) {
+                    double x = (i & 1) == 0 ? x0 : x1, y = (i & 2) == 0 ? y0 : y1;
+                    double tx = turnX(x, y, cos, sin), ty = turnY(x, y, cos, sin);
+                    minX = Math.min(minX, tx);
+                    maxX = Math.max(maxX, tx);
+                    minY = Math.min(minY, ty);
+                    maxY = Math.max(maxY, ty);
+                }
+            }
+            case SEGMENT, CAPSULE -> {
+                double x1, y1, x2, y2;
+                if (home instanceof Segment s) {
+                    x1 = s.x1(); y1 = s.y1(); x2 = s.x2(); y2 = s.y2();
+                } else {
+                    Capsule c = (Capsule) home;
+                    x1 = c.x1(); y1 = c.y1(); x2 = c.x2(); y2 = c.y2();
+                    grow = c.r();
+                }
+                double ax = turnX(x1 - px, y1 - py, cos, sin), ay = turnY(x1 - px, y1 - py, cos, sin);
+                double bx = turnX(x2 - px, y2 - py, cos, sin), by = turnY(x2 - px, y2 - py, cos, sin);
+                minX = Math.min(ax, bx);
+                maxX = Math.max(ax, bx);
+                minY = Math.min(ay, by);
+                maxY = Math.max(ay, by);
+            }
+            case ELLIPSE -> {
+                Ellipse e = (Ellipse) home;
+                double x = turnX(e.x() - px, e.y() - py, cos, sin), y = turnY(e.x() - px, e.y() - py, cos, sin);
+                double a = e.angle() + Math.atan2(sin, cos);
+                double c = Math.cos(a), s = Math.sin(a);
+                double hx = Math.hypot(e.rx() * c, e.ry() * s), hy = Math.hypot(e.rx() * s, e.ry() * c);
+                minX = x - hx;
+                maxX = x + hx;
+                minY = y - hy;
+                maxY = y + hy;
+                grow = 1e-6 * Math.max(e.rx(), e.ry());
+            }
+            case POLYGON -> {
+                float[] xy = HiddenParts.raw((Polygon) home);
+                for (int i = 0; i < xy.length; i += 2) {
+                    double x = xy[i] - px, y = xy[i + 1] - py;
+                    double tx = turnX(x, y, cos, sin), ty = turnY(x, y, cos, sin);
+                    minX = Math.min(minX, tx);
+                    maxX = Math.max(maxX, tx);
+                    minY = Math.min(minY, ty);
+                    maxY = Math.max(maxY, ty);
+                }
+            }
+        }
+        out[0] = minX - grow;
+        out[1] = minY - grow;
+        out[2] = maxX + grow;
+        out[3] = maxY + grow;
+    }
+
+    private static double turnX(double x, double y, double cos, double sin) {
+        return x * cos - y * sin;
+    }
+
+    private static double turnY(double x, double y, double cos, double sin) {
+        return x * sin + y * cos;
+    }
+
+    /**
+     * The home shape placed: turned by angle (given with its cos and sin) about the pivot,
+     * then moved by (tx, ty). A turned rectangle is a polygon, a turned ellipse an ellipse with
+     * its angle added; the other kinds keep their kind.
+     *
+     * @throws IllegalArgumentException if a coordinate leaves the float range, or rounding the
+     *                                  turned polygon makes its outline touch itself
+     */
+    public static Shape place(Shape home, double px, double py, double tx, double ty, float angle,
+                              double cos, double sin) {
+        if (angle == 0) {
+            return switch (ShapeKind.of(home)) {
+                case RECT -> {
+                    Rect r = (Rect) home;
+                    yield new Rect(f(r.x() + tx), f(r.y() + ty), r.w(), r.h());
+                }
+                case CIRCLE -> {
+                    Circle c = (Circle) home;
+                    yield new Circle(f(c.x() + tx), f(c.y() + ty), c.r());
+                }
+                case SEGMENT -> {
+                    Segment s = (Segment) home;
+                    yield new Segment(f(s.x1() + tx), f(s.y1() + ty), f(s.x2() + tx), f(s.y2() + ty));
+                }
+                case CAPSULE -> {
+                    Capsule c = (Capsule) home;
+                    yield new Capsule(f(c.x1() + tx), f(c.y1() + ty), f(c.x2() + tx), f(c.y2() + ty), c.r());
+                }
+                case ELLIPSE -> {
+                    Ellipse e = (Ellipse) home;
+                    yield new Ellipse(f(e.x() + tx), f(e.y() + ty), e.rx(), e.ry(), e.angle());
+                }
+                case POLYGON -> {
+                    Polygon p = (Polygon) home;
+                    float fx = (float) tx, fy = (float) ty;
+                    if (fx == tx && fy == ty) {
+                        yield p.translated(fx, fy);  // checks again only where rounding moved a vertex
+                    }
+                    float[] xy = HiddenParts.raw(p);
+                    float[] moved = new float[xy.length];
+                    for (int i = 0; i < xy.length; i += 2) {
+                        moved[i] = f(xy[i] + tx);
+                        moved[i + 1] = f(xy[i + 1] + ty);
+                    }
+                    yield polygon(moved, angle);
+                }
+            };
+        }
+        double ox = px + tx, oy = py + ty;
+        return switch (ShapeKind.of(home)) {
+            case CIRCLE -> {
+                Circle c = (Circle) home;
+                yield new Circle(fx(c.x(), c.y(), px, py, cos, sin, ox), fy(c.x(), c.y(), px, py, cos, sin, oy), c.r());
+            }
+            case SEGMENT -> {
+                Segment s = (Segment) home;
+                yield new Segment(fx(s.x1(), s.y1(), px, py, cos, sin, ox), fy(s.x1(), s.y1(), px, py, cos, sin, oy),
+                        fx(s.x2(), s.y2(), px, py, cos, sin, ox), fy(s.x2(), s.y2(), px, py, cos, sin, oy));
+            }
+            case CAPSULE -> {
+                Capsule c = (Capsule) home;
+                yield new Capsule(fx(c.x1(), c.y1(), px, py, cos, sin, ox), fy(c.x1(), c.y1(), px, py, cos, sin, oy),
+                        fx(c.x2(), c.y2(), px, py, cos, sin, ox), fy(c.x2(), c.y2(), px, py, cos, sin, oy), c.r());
+            }
+            case ELLIPSE -> {
+                Ellipse e = (Ellipse) home;
+                double a = Math.IEEEremainder((double) e.angle() + angle, 2 * Math.PI);
+                yield new Ellipse(fx(e.x(), e.y(), px, py, cos, sin, ox), fy(e.x(), e.y(), px, py, cos, sin, oy),
+                        e.rx(), e.ry(), (float) a);
+            }
+            case RECT -> {
+                Rect r = (Rect) home;
+                float x0 = r.x(), y0 = r.y();
+                double x1 = (double) r.x() + r.w(), y1 = (double) r.y() + r.h();
+                float[] xy = {
+                    fx(x0, y0, px, py, cos, sin, ox), fy(x0, y0, px, py, cos, sin, oy),
+                    fx(x1, y0, px, py, cos, sin, ox), fy(x1, y0, px, py, cos, sin, oy),
+                    fx(x1, y1, px, py, cos, sin, ox), fy(x1, y1, px, py, cos, sin, oy),
+                    fx(x0, y1, px, py, cos, sin, ox), fy(x0, y1, px, py, cos, sin, oy)};
+                yield polygon(xy, angle);
+            }
+            case POLYGON -> {
+                float[] src = HiddenParts.raw((Polygon) home);
+                float[] xy = new float[src.length];
+                for (int i = 0; i < src.length; i += 2) {
+                    xy[i] = fx(src[i], src[i + 1], px, py, cos, sin, ox);
+                    xy[i + 1] = fy(src[i], src[i + 1], px, py, cos, sin, oy);
+                }
+                yield polygon(xy, angle);
+            }
+        };
+    }
+
+    private static Polygon polygon(float[] xy, float angle) {
+        try {
+            return Polygon.of(xy);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("the body's shape placed at its pose (angle " + angle
+                    + ") rounds to an outline that is not a polygon: " + e.getMessage(), e);
+        }
+    }
+
+    private static float fx(double x, double y, double px, double py, double cos, double sin, double ox) {
+        return f(ox + turnX(x - px, y - py, cos, sin));
+    }
+
+    private static float fy(double x, double y, double px, double py, double cos, double sin, double oy) {
+        return f(oy + turnY(x - px, y - py, cos, sin));
+    }
+
+    private static float f(double v) {
+        float r = (float) v;
+        if (Float.isInfinite(r) || Float.isNaN(r)) {
+            throw new IllegalArgumentException("the body's pose puts its shape out of the float range (a coordinate of "
+                    + v + ")");
+        }
+        return r;
+    }
+
+    /** A coordinate that moves with the shape exactly as its pose's translation: its first x. */
+    public static double refX(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case RECT -> ((Rect) s).x();
+            case CIRCLE -> ((Circle) s).x();
+            case SEGMENT -> ((Segment) s).x1();
+            case CAPSULE -> ((Capsule) s).x1();
+            case ELLIPSE -> ((Ellipse) s).x();
+            case POLYGON -> HiddenParts.raw((Polygon) s)[0];
+        };
+    }
+
+    /** {@link #refX}'s y. */
+    public static double refY(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case RECT -> ((Rect) s).y();
+            case CIRCLE -> ((Circle) s).y();
+            case SEGMENT -> ((Segment) s).y1();
+            case CAPSULE -> ((Capsule) s).y1();
+            case ELLIPSE -> ((Ellipse) s).y();
+            case POLYGON -> HiddenParts.raw((Polygon) s)[1];
+        };
+    }
+}
