@@ -92,6 +92,37 @@ public record Capsule(float x1, float y1, float x2, float y2, float r) implement
                 Check.finite("x2 + dx", x2 + dx), Check.finite("y2 + dy", y2 + dy), r);
     }
 
+    /**
+     * {@inheritDoc}
+     *
+     * <p>A capsule stays a capsule under a similarity (a turn, a mirror, a scale the same both
+     * ways, a move): its segment's ends transformed, its radius times the scale. Under a scale
+     * that differs by direction, or a shear, its round ends would become elliptical: there is
+     * no exact result, and it is refused (scale it the same both ways, or transform
+     * {@link #segment()} and choose the radius). A capsule of radius 0 is its segment, and
+     * takes any transform.
+     *
+     * @throws IllegalArgumentException if {@code t} is null, an end or the radius goes beyond
+     *                                  the float range, or the transform stretches a capsule
+     *                                  with a radius more one way than another (after rounding
+     *                                  to float)
+     */
+    @Override
+    public Capsule transformed(Transform t) {
+        return Transforms.capsule(this, Check.notNull("t", t).affine());
+    }
+
+    /**
+     * {@inheritDoc}
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite, or an end goes beyond
+     *                                  the float range
+     */
+    @Override
+    public Capsule rotated(float angle, float pivotX, float pivotY) {
+        return (Capsule) Transform.turn(this, angle, pivotX, pivotY);
+    }
+
     /** @return the segment between the capsule's two round ends, never null */
     public Segment segment() {
         return new Segment(x1, y1, x2, y2);

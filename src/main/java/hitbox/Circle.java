@@ -79,4 +79,32 @@ public record Circle(float x, float y, float r) implements Shape {
         Check.finite("dy", dy);
         return new Circle(Check.finite("x + dx", x + dx), Check.finite("y + dy", y + dy), r);
     }
+
+    /**
+     * {@inheritDoc}
+     *
+     * <p>A circle stays a circle (its centre transformed, its radius times the scale) under a
+     * similarity: a turn, a mirror, a scale the same both ways, a move. Under a scale that
+     * differs by direction or a shear it becomes a turned {@link Ellipse}, an aligned one when
+     * the transform keeps the axes, flat (a radius of 0) when the transform is singular;
+     * whenever the image's two radii round to the same float it is a circle again.
+     *
+     * @throws IllegalArgumentException if {@code t} is null, or the centre or a radius goes
+     *                                  beyond the float range
+     */
+    @Override
+    public Shape transformed(Transform t) {
+        return Transforms.circle(this, Check.notNull("t", t).affine());
+    }
+
+    /**
+     * {@inheritDoc} A turned circle is a circle with the same radius.
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite, or the centre goes
+     *                                  beyond the float range
+     */
+    @Override
+    public Circle rotated(float angle, float pivotX, float pivotY) {
+        return (Circle) Transform.turn(this, angle, pivotX, pivotY);
+    }
 }

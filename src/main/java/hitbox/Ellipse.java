@@ -131,4 +131,33 @@ public record Ellipse(float x, float y, float rx, float ry, float angle) impleme
         Check.finite("dy", dy);
         return new Ellipse(Check.finite("x + dx", x + dx), Check.finite("y + dy", y + dy), rx, ry, angle);
     }
+
+    /**
+     * {@inheritDoc}
+     *
+     * <p>An ellipse stays an ellipse (the image of an ellipse under an affine map is one): its
+     * centre transformed, its radii and angle those of the transformed outline, from the 2x2
+     * singular value decomposition. Exact where it can be: an aligned ellipse under an axis
+     * scale or a quarter turn stays aligned (angle 0, radii times the factors); under a turn
+     * or mirror the radii are kept and the angle turned. A singular transform gives a flat
+     * ellipse (a radius of 0).
+     *
+     * @throws IllegalArgumentException if {@code t} is null, or the centre or a radius goes
+     *                                  beyond the float range
+     */
+    @Override
+    public Ellipse transformed(Transform t) {
+        return Transforms.ellipse(this, Check.notNull("t", t).affine());
+    }
+
+    /**
+     * {@inheritDoc} The radii are kept and the angle grows by {@code angle}.
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite, or the centre goes
+     *                                  beyond the float range
+     */
+    @Override
+    public Ellipse rotated(float angle, float pivotX, float pivotY) {
+        return (Ellipse) Transform.turn(this, angle, pivotX, pivotY);
+    }
 }

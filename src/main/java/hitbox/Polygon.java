@@ -45,6 +45,11 @@ public final class Polygon implements Shape {
             public int concaveVertex(Polygon p) {
                 return p.concaveVertex;
             }
+
+            @Override
+            public Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb) {
+                return p.image(xy, scaleMin, delta, verb);
+            }
         });
     }
 
@@ -68,17 +73,25 @@ public final class Polygon implements Shape {
     private final int convexWinding;
     /** The vertices widened to double (exactly), made once for the contact search. */
     private final double[] corners;
+    /**
+     * A lower bound on the distance from any vertex to any edge that does not end at it
+     * ({@link Polygons#margin}), or NaN until a move first needs it: while rounding moves no
+     * vertex by more than half of it, the outline stays simple (see {@link #translated}).
+     * Written at most once per value by any thread (like {@code String}'s hash).
+     */
+    private volatile double margin;
 
     private Polygon(float[] xy, int concaveVertex) {
-        this(xy, concaveVertex, concaveVertex < 0 ? Polygons.winding(xy) : 0);
+        this(xy, concaveVertex, concaveVertex < 0 ? Polygons.winding(xy) : 0, Double.NaN);
     }
 
-    private Polygon(float[] xy, int concaveVertex, int convexWinding) {
+    private Polygon(float[] xy, int concaveVertex, int convexWinding, double margin) {
         this.xy = xy;
         this.bounds = Polygons.bounds(xy);
         this.concaveVertex = concaveVertex;
         this.convexWinding = convexWinding;
         this.corners = Polygons.toDouble(xy);
+        this.margin = margin;
     }
 
     /**
@@ -435,38 +448,123 @@ public final class Polygon implements Shape {
     /**
      * {@inheritDoc}
      *
-     * <p>When every coordinate moves exactly (whole numbers do), the moved outline is as
-     * valid as this one and is not checked again; when rounding shifted a vertex, the new
-     * polygon is checked as in {@link #of}.
+     * <p>Cheap, and checked only as far as rounding could change the outline:
+     * <ul>
+     *   <li>When every coordinate moves exactly (whole numbers do), the moved outline is as
+     *       valid as this one and nothing is checked: O(n).</li>
+     *   <li>When rounding shifts vertices (a fractional move), a convex polygon is checked
+     *       for convexity again, O(n); a concave one is not checked when its margin (the
+     *       shortest distance from a vertex to an edge that does not end at it, found once,
+     *       in O(n<sup>2</sup>), the first time it is needed, and handed on to the moved
+     *       polygon less what the rounding may have taken) is more than twice the rounding:
+     *       no vertex can then have reached an edge, so the outline is still simple, O(n).</li>
+     *   <li>Only when neither rule applies (the margin is used up, after very many inexact
+     *       moves, or the polygon has features as small as a float step) is the moved outline
+     *       checked as {@link #of} checks it, O(n<sup>2</sup>), and a fresh margin found.</li>
+     * </ul>
+     * A polygon whose features are wider than a few float steps at its coordinates (any
+     * polygon a sketch draws) therefore never throws for a finite move.
      *
      * @throws IllegalArgumentException if the move gives a NaN or infinite coordinate, or
-     *                                  rounding made the outline touch itself
+     *                                  rounding made the outline touch itself (its features
+     *                                  smaller than a float step at the new place)
      */
     @Override
     public Polygon translated(float dx, float dy) {
         Check.finite("dx", dx);
         Check.finite("dy", dy);
-        float[] moved = xy.clone();
+        float[] moved = new float[xy.length];
         boolean exact = true;
+        float big = 0;
         for (int i = 0; i < moved.length; i += 2) {
-            moved[i] += dx;
-            moved[i + 1] += dy;
-            exact &= moved[i] == (double) xy[i] + dx && moved[i + 1] == (double) xy[i + 1] + dy;
+            float x = xy[i] + dx;
+            float y = xy[i + 1] + dy;
+            moved[i] = x;
+            moved[i + 1] = y;
+            exact &= x == (double) xy[i] + dx && y == (double) xy[i + 1] + dy;
+            big = Math.max(big, Math.max(Math.abs(x), Math.abs(y)));
         }
-        for (int i = 0; i < moved.length; i++) {
-            Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2) + (i % 2 == 0 ? " + dx" : " + dy"), moved[i]);
-        }
-        if (!exact) {
-            try {
-                return of(moved);
-            } catch (IllegalArgumentException e) {
-                throw new IllegalArgumentException("moving by dx = " + dx + ", dy = " + dy + " rounds the outline: "
-                        + e.getMessage(), e);
+        if (!Float.isFinite(big)) {
+            for (int i = 0; i < moved.length; i++) {
+                Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2) + (i % 2 == 0 ? " + dx" : " + dy"), moved[i]);
             }
         }
-        // Every coordinate moved exactly, so every orientation, the concave vertex and the
-        // winding are kept: a sweep moves a polygon many times a call.
-        return new Polygon(moved, concaveVertex, convexWinding);
+        if (exact) {
+            // Every coordinate moved exactly, so every orientation, the concave vertex, the
+            // winding and the margin are kept: a sweep moves a polygon many times a call.
+            return new Polygon(moved, concaveVertex, convexWinding, margin);
+        }
+        // Each coordinate is the exact sum rounded once: off by half a float step at most, so
+        // each vertex by less than a float step at the largest coordinate.
+        return image(moved, 1, Math.ulp(big), "moving by dx = " + dx + ", dy = " + dy);
+    }
+
+    /**
+     * {@inheritDoc}
+     *
+     * <p>A polygon stays a polygon. A mirror reverses the winding, which a polygon may have
+     * either way; a concave polygon stays concave. The new outline is checked only as far as
+     * rounding could have changed it, by the rules of {@link #translated} (its margin scaled
+     * by the transform's smallest stretch), so turning a polygon every frame is O(n).
+     *
+     * @throws IllegalArgumentException if {@code t} is null, the transform is singular (a
+     *                                  polygon squashed onto a line has no area), a vertex
+     *                                  goes beyond the float range, or rounding made the
+     *                                  outline touch itself (features smaller than a float
+     *                                  step at the new place)
+     */
+    @Override
+    public Polygon transformed(Transform t) {
+        return Transforms.polygon(this, Check.notNull("t", t).affine());
+    }
+
+    /**
+     * {@inheritDoc}
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite, a vertex goes beyond
+     *                                  the float range, or rounding made the outline touch
+     *                                  itself (see {@link #transformed})
+     */
+    @Override
+    public Polygon rotated(float angle, float pivotX, float pivotY) {
+        return (Polygon) Transform.turn(this, angle, pivotX, pivotY);
+    }
+
+    /**
+     * This polygon's outline moved to {@code moved}, the image of an affine map whose smallest
+     * stretch is at least {@code scaleMin}, each vertex rounded at most {@code delta} away
+     * from its exact image: checked only as far as that rounding could have changed it.
+     */
+    private Polygon image(float[] moved, double scaleMin, double delta, String verb) {
+        if (convexWinding != 0) {
+            // convex before: convex again (n exact orientations) is simple, with area
+            int w = Polygons.convexWinding(moved);
+            if (w != 0 && !Polygons.repeatsNeighbour(moved)) {
+                return new Polygon(moved, -1, w, Double.NaN);
+            }
+        }
+        double m = margin();
+        double left = m * scaleMin - 2 * delta;
+        if (left > 0) {
+            // No vertex came within reach of an edge it does not end: still simple (Polygons.margin)
+            int concave = Polygons.concaveVertex(moved);
+            return new Polygon(moved, concave, concave < 0 ? Polygons.winding(moved) : 0, left);
+        }
+        try {
+            return of(moved);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(verb + " rounds the outline: " + e.getMessage(), e);
+        }
+    }
+
+    /** The margin, found the first time it is asked for. */
+    private double margin() {
+        double m = margin;
+        if (m != m) {
+            m = Polygons.margin(xy);
+            margin = m;
+        }
+        return m;
     }
 
     /** Two polygons are equal when they have the same vertices in the same order. */

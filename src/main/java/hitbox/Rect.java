@@ -144,6 +144,26 @@ public record Rect(float x, float y, float w, float h) implements Shape {
     }
 
     /**
+     * {@inheritDoc}
+     *
+     * <p>A rect stays a rect when the transform keeps the axes ({@link Transform#keepsAxes}:
+     * a move, a scale or mirror along the axes, a whole number of quarter turns), each edge
+     * the transformed edge rounded to float; a scale by 0 gives a rect of width or height 0.
+     * Otherwise it becomes the {@link Polygon} of its four corners, transformed, in the order
+     * top-left, top-right, bottom-right, bottom-left of the rect.
+     *
+     * @throws IllegalArgumentException if {@code t} is null, a corner goes beyond the float
+     *                                  range, the transform turns or shears a rect of width
+     *                                  or height 0 (a segment without its ends, which no kind
+     *                                  is), or it is singular and does not keep the axes (no
+     *                                  area for a polygon)
+     */
+    @Override
+    public Shape transformed(Transform t) {
+        return Transforms.rect(this, Check.notNull("t", t).affine());
+    }
+
+    /**
      * This rectangle with its top-left corner moved to (x, y), the size kept.
      *
      * @param newX the new left edge

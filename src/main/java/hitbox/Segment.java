@@ -89,6 +89,29 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
     }
 
     /**
+     * {@inheritDoc} A segment stays a segment: its two ends transformed (a singular transform
+     * may bring them together, a segment of length 0).
+     *
+     * @throws IllegalArgumentException if {@code t} is null, or an end goes beyond the float
+     *                                  range
+     */
+    @Override
+    public Segment transformed(Transform t) {
+        return Transforms.segment(this, Check.notNull("t", t).affine());
+    }
+
+    /**
+     * {@inheritDoc}
+     *
+     * @throws IllegalArgumentException if a value is NaN or infinite, or an end goes beyond
+     *                                  the float range
+     */
+    @Override
+    public Segment rotated(float angle, float pivotX, float pivotY) {
+        return (Segment) Transform.turn(this, angle, pivotX, pivotY);
+    }
+
+    /**
      * Which side of this segment's line is the point on, walking from the first end to the
      * second? Same as {@link Collide#lineSide}.
      *

@@ -71,6 +71,57 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
     Shape translated(float dx, float dy);
 
     /**
+     * This shape under the affine transform {@code t}: turned, scaled, mirrored, sheared and
+     * moved as {@code t} moves each of its points (see {@link Transform}). What each kind
+     * becomes, documented on each kind's method:
+     * <ul>
+     *   <li>{@link Circle}: a circle under a similarity (a turn, a mirror, a scale the same
+     *       both ways, a move); under a scale that differs by direction, or a shear, a turned
+     *       {@link Ellipse} (an ellipse whose two radii round to the same float is a circle
+     *       again).</li>
+     *   <li>{@link Rect}: a rect when the transform keeps the axes (a move, an axis scale or
+     *       mirror, a quarter turn, {@link Transform#keepsAxes}); otherwise a {@link Polygon}
+     *       of its four corners.</li>
+     *   <li>{@link Segment}, {@link Polygon}, {@link Ellipse}: the same kind (an ellipse's
+     *       image is an ellipse, exactly, with new radii and angle).</li>
+     *   <li>{@link Capsule}: a capsule under a similarity; a capsule stretched one way has
+     *       elliptical ends, no exact result, and is refused.</li>
+     * </ul>
+     * Every point is transformed in double and rounded once to float.
+     *
+     * <p>A <em>singular</em> transform (determinant 0, such as {@code Transform.scaling(0, 1)})
+     * squashes the plane onto a line or a point: a segment, a circle or an ellipse (flat: a
+     * radius of 0), an axis-kept rect (width or height 0) and a capsule of radius 0 still have
+     * an answer; a polygon, a rect turned off the axes and a capsule with a radius have none
+     * and are refused.
+     *
+     * @param t the transform, not null
+     * @return the transformed shape, never null
+     * @throws IllegalArgumentException if {@code t} is null, a coordinate or size goes beyond
+     *                                  the float range, or the kind has no exact result (see
+     *                                  each kind)
+     */
+    Shape transformed(Transform t);
+
+    /**
+     * This shape turned by {@code angle} about the point (pivotX, pivotY): radians, clockwise
+     * on screen for a positive angle, as Processing's {@code rotate()}. Same as
+     * {@code transformed(Transform.rotation(angle, pivotX, pivotY))}: a turn keeps every kind
+     * but a rectangle, which stays a rect for a whole number of quarter turns
+     * ({@code HALF_PI}, {@code PI}...) and becomes a {@link Polygon} otherwise.
+     *
+     * @param angle  the turn, in radians
+     * @param pivotX the x of the point it turns about
+     * @param pivotY the y of the point it turns about
+     * @return the turned shape, never null
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a coordinate goes
+     *                                  beyond the float range
+     */
+    default Shape rotated(float angle, float pivotX, float pivotY) {
+        return Transform.turn(this, angle, pivotX, pivotY);
+    }
+
+    /**
      * The shape's smallest x, in double: exact for circles, rectangles, segments and capsules
      * (a sum of two floats is exact in double), a hair outside for a turned ellipse (widened
      * past its rounding) and a polygon (its {@link #bounds()} box's edge). {@link #bounds()}

@@ -67,7 +67,9 @@ class BadInputCatalogTest {
      */
     private static final Set<String> CHECKED = Set.of(
             "Rect.centered", "Rect.at", "Rect.translated", "Circle.translated", "Segment.translated",
-            "Polygon.translated", "Ellipse.translated", "Capsule.translated", "Shape.translated", "Polygon.triangle", "Polygon.rotatedRect", "Polygon.regular", "Polygon.of",
+            "Polygon.translated", "Ellipse.translated", "Capsule.translated", "Shape.translated",
+            "Circle.rotated", "Segment.rotated", "Polygon.rotated", "Ellipse.rotated", "Capsule.rotated", "Shape.rotated",
+            "Transform.of", "Transform.translation", "Transform.rotation", "Transform.scaling", "Transform.apply", "Polygon.triangle", "Polygon.rotatedRect", "Polygon.regular", "Polygon.of",
             "Ray.between", "Sweep.timeOfImpact", "Sweep.move", "Response.pushOutA", "Response.pushOutB",
             "Grid.parse", "Grid.fillRandom", "Grid.move", "Grid.moveObstacles", "Grid.fromPixels",
             // A broad phase refuses a bad box outright (issue 11), so a stored box always holds.
@@ -112,6 +114,8 @@ class BadInputCatalogTest {
             Map.entry("Vec.dot", "any"),
             Map.entry("Hybrid.Counter.add", "any"),
             Map.entry("Segment.side", "0"),
+            // a position handed back: NaN in, NaN out
+            Map.entry("Transform.applyX", "any"), Map.entry("Transform.applyY", "any"),
             Map.entry("Rect.contains", "false"), Map.entry("Circle.contains", "false"),
             Map.entry("Segment.contains", "false"), Map.entry("Polygon.contains", "false"),
             Map.entry("Ellipse.contains", "false"), Map.entry("Capsule.contains", "false"));
@@ -381,6 +385,9 @@ class BadInputCatalogTest {
         if (c == Polygon.class || c == Shape.class) {
             return Polygon.of(0, 0, 10, 0, 0, 10);
         }
+        if (c == Transform.class) {
+            return Transform.rotation(0.3f, 1, 2);
+        }
         if (c == Grid.class) {
             Grid g = new Grid(4, 3, 10);
             g.set(1, 1, Grid.SOLID);
@@ -501,6 +508,10 @@ class BadInputCatalogTest {
         if (type == Side.class) {
             return Side.TOP;
         }
+        if (type == Transform.class) {
+            // a turn and a uniform scale, which every kind of shape takes
+            return Transform.rotation(0.5f).then(Transform.scaling(2));
+        }
         if (type == Set.class) {
             return EnumSet.of(Side.LEFT);
         }
@@ -610,6 +621,13 @@ class BadInputCatalogTest {
                 out.add(new Bad("{+-MAX_VALUE}", new float[] {-Float.MAX_VALUE, -Float.MAX_VALUE, Float.MAX_VALUE,
                         -Float.MAX_VALUE, 0, Float.MAX_VALUE}, Kind.CONTENT));
                 out.add(new Bad("{Infinity...}", new float[] {0, 0, Float.POSITIVE_INFINITY, 0, 0, 10}, Kind.CONTENT));
+            } else if (type == Transform.class) {
+                // singular, huge, stretched one way (a capsule has no exact image), a shear
+                out.add(new Bad("scaling(0, 0)", Transform.scaling(0, 0), Kind.CONTENT));
+                out.add(new Bad("scaling(0, 1)", Transform.scaling(0, 1), Kind.CONTENT));
+                out.add(new Bad("scaling(MAX_VALUE)", Transform.scaling(Float.MAX_VALUE), Kind.CONTENT));
+                out.add(new Bad("scaling(2, 1)", Transform.scaling(2, 1), Kind.CONTENT));
+                out.add(new Bad("shear", Transform.of(1, 3, 0, 0, 1, 0), Kind.CONTENT));
             } else if (type == int[].class) {
                 out.add(new Bad("{}", new int[0], Kind.CONTENT));
             } else if (type == boolean[][].class) {

@@ -110,6 +110,25 @@ class ShapeKindDispatchTest {
                 assertEquals(s.bounds().x() + 100, moved.bounds().x(), 1e-3);
                 assertEquals(s.bounds().y() - 50, moved.bounds().y(), 1e-3);
             }));
+            tests.add(each(name, "transformed", s -> {
+                // a turn, a mirror and a uniform scale (a similarity every kind takes), with a move
+                Transform t = Transform.rotation(0.7f).then(Transform.scaling(-2, 2)).then(Transform.translation(300, 100));
+                Shape image = s.transformed(t);
+                assertSame(s.getClass() == Rect.class ? Polygon.class : s.getClass(), image.getClass());
+                assertEquals(image, Transforms.apply(s, t), "the kernel's own route");
+                // the image of an inside point is inside the image (the sample holds (0.5, 0.25))
+                assertTrue(image.contains(t.applyX(0.5f, 0.25f), t.applyY(0.5f, 0.25f)) || !ShapeKind.of(s).hasArea());
+                assertTrue(image.bounds().x() > 250 && image.bounds().y() > 50, image.bounds().toString());
+            }));
+            tests.add(each(name, "rotated", s -> {
+                Shape turned = s.rotated(0.4f, 1000, 0);
+                assertSame(s.getClass() == Rect.class ? Polygon.class : s.getClass(), turned.getClass());
+                Shape quarter = s.rotated((float) Math.PI / 2, 0, 0);
+                assertSame(s.getClass(), quarter.getClass(), "a quarter turn keeps every kind");
+                // turning (0.5, 0.25) by a quarter turn clockwise on screen gives (-0.25, 0.5)
+                assertTrue(quarter.contains(-0.25f, 0.5f) || !ShapeKind.of(s).hasArea());
+                assertTrue(turned.bounds().y() > 300, "turned about (1000, 0), it is far below: " + turned.bounds());
+            }));
             tests.add(each(name, "Ray.cast", s -> {
                 RayHit hit = new Ray(-100, 0.5f, 1, 0).cast(s);
                 assertNotNull(hit, "a ray along y = 0.5 from the left must hit");

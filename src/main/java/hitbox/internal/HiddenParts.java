@@ -2,6 +2,7 @@ package hitbox.internal;
 
 import hitbox.Grid;
 import hitbox.Polygon;
+import hitbox.Transform;
 
 /**
  * What the kernels read of a {@link Polygon} and a {@link Grid} that the API does not hand
@@ -42,6 +43,26 @@ public final class HiddenParts {
          * @return its first vertex where the outline bends inwards, or -1 if convex
          */
         int concaveVertex(Polygon p);
+
+        /**
+         * @param p        the polygon
+         * @param xy       its vertices' images under an affine map, rounded to float (taken, not copied)
+         * @param scaleMin the map's smallest stretch (its smaller singular value), or less
+         * @param delta    how far rounding may have moved a vertex from its exact image, or more
+         * @param verb     what was done, for a message ("moving by dx = 1.5, dy = 0")
+         * @return the polygon of {@code xy}, checked only as far as the rounding could have changed it
+         * @throws IllegalArgumentException if the rounded outline is not a valid polygon
+         */
+        Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb);
+    }
+
+    /** A transform's entries in double, granted by {@link Transform}. */
+    public interface TransformAccess {
+        /**
+         * @param t the transform
+         * @return its entries in double, as kept
+         */
+        Affine affine(Transform t);
     }
 
     /** A grid's cells, granted by {@link Grid}. */
@@ -55,6 +76,7 @@ public final class HiddenParts {
 
     private static PolygonAccess polygons;
     private static GridAccess grids;
+    private static TransformAccess transforms;
 
     /**
      * Called once, by {@link Polygon}'s static initialiser.
@@ -82,10 +104,24 @@ public final class HiddenParts {
         grids = access;
     }
 
+    /**
+     * Called once, by {@link Transform}'s static initialiser.
+     *
+     * @param access the access, not null
+     * @throws IllegalStateException if it was granted already
+     */
+    public static synchronized void grantTransforms(TransformAccess access) {
+        if (transforms != null) {
+            throw new IllegalStateException("transform access granted already");
+        }
+        transforms = access;
+    }
+
     /** The granted accesses as constants; loading this first initialises Polygon and Grid. */
     private static final class Granted {
         public static final PolygonAccess POLYGONS = initialised(Polygon.class) ? polygons : null;
         public static final GridAccess GRIDS = initialised(Grid.class) ? grids : null;
+        public static final TransformAccess TRANSFORMS = initialised(Transform.class) ? transforms : null;
 
         private static boolean initialised(Class<?> type) {
             try {
@@ -115,6 +151,20 @@ public final class HiddenParts {
     /** @param p the polygon @return its first concave vertex, or -1 */
     public static int concaveVertex(Polygon p) {
         return Granted.POLYGONS.concaveVertex(p);
+    }
+
+    /**
+     * @param p the polygon @param xy its vertices' images @param scaleMin the map's smallest stretch
+     * @param delta the rounding's reach @param verb what was done
+     * @return the new polygon (see {@link PolygonAccess#image})
+     */
+    public static Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb) {
+        return Granted.POLYGONS.image(p, xy, scaleMin, delta, verb);
+    }
+
+    /** @param t the transform @return its entries in double */
+    public static Affine affine(Transform t) {
+        return Granted.TRANSFORMS.affine(t);
     }
 
     /** @param g the grid @return its cells without a copy */

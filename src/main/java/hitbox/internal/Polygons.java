@@ -604,6 +604,65 @@ public final class Polygons {
     }
 
     /**
+     * Does any vertex equal the next one (the last the first)? {@link #validate} refuses that;
+     * {@link #convexWinding} skips it.
+     */
+    public static boolean repeatsNeighbour(float[] xy) {
+        int n = xy.length / 2;
+        for (int i = 0; i < n; i++) {
+            int k = i + 1 == n ? 0 : i + 1;
+            if (sameVertex(xy, i, k)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * A lower bound on the polygon's margin: the shortest distance from a vertex to an edge
+     * that does not end at it, less a bound on its double rounding (so 0 or less for an
+     * outline that is not valid, or too small for its coordinates to tell). O(n<sup>2</sup>).
+     *
+     * <p>Why it matters: move the vertices, each by at most d, along straight paths. The
+     * distance from a point to a segment changes by at most the point's move plus the larger
+     * move of the segment's ends, so no vertex-to-edge distance drops by more than 2d. Two
+     * edges that do not meet can only come to cross by first touching, and touching puts an
+     * end of one on the other (a distance 0); neighbouring edges fold over each other only
+     * when a vertex reaches its neighbour's edge, and a vertex reaches its neighbour only
+     * along that same edge. So a valid outline with margin m stays valid (simple, no repeated
+     * vertex, with area) under every move of at most d &lt; m / 2 per vertex; an affine map
+     * scales every distance by at least its smaller singular value s, so its image has margin
+     * at least s m before rounding.
+     */
+    public static double margin(float[] xy) {
+        int n = xy.length / 2;
+        double min = Double.POSITIVE_INFINITY;
+        double big = 0;
+        for (float v : xy) {
+            big = Math.max(big, Math.abs(v));
+        }
+        for (int j = 0; j < n; j++) {
+            int k = j + 1 == n ? 0 : j + 1;
+            double ax = xy[2 * j], ay = xy[2 * j + 1];
+            double ex = xy[2 * k] - ax, ey = xy[2 * k + 1] - ay;
+            double len2 = ex * ex + ey * ey;
+            for (int i = 0; i < n; i++) {
+                if (i == j || i == k) {
+                    continue;
+                }
+                double px = xy[2 * i] - ax, py = xy[2 * i + 1] - ay;
+                double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, (px * ex + py * ey) / len2));
+                double d = Math.hypot(px - t * ex, py - t * ey);
+                if (d < min) {
+                    min = d;
+                }
+            }
+        }
+        // Each distance above is off by a few units of 2^-53 of the coordinates' size.
+        return min - 1e-13 * big;
+    }
+
+    /**
      * The first vertex where the polygon bends inwards (turns against its {@link #winding}),
      * or -1 if it is convex. Straight vertices (on the line between their neighbours) do not
      * count. Exact orientation signs; assumes a simple polygon, as {@link Polygon#of} makes.
