@@ -45,6 +45,7 @@ final class WorldSceneContenders {
 
     static Contender of(String name) {
         return switch (name) {
+            case "hitboxWorld" -> new HitboxWorld();
             case "hitboxParts" -> new HitboxParts();
             case "dyn4jWorld" -> new Dyn4jWorld();
             case "jbox2dWorld" -> new JBox2DWorld();
@@ -91,6 +92,62 @@ final class WorldSceneContenders {
 
         static long key(int a, int b) {
             return (long) Math.min(a, b) << 32 | Math.max(a, b);
+        }
+    }
+
+    /**
+     * Hitbox's {@code World}: a body per scene body, its shape given once in its own frame
+     * ({@code World.add(shape, x, y, angle)}); each frame every moving body is teleported
+     * ({@code moveTo}, and {@code turnTo} for those that turn), then {@code World.step()}
+     * reports the contacts, ENTER or STAY for each pair that overlaps now (EXIT for those that
+     * no longer do, not counted).
+     */
+    static final class HitboxWorld extends Contender {
+        private hitbox.World world;
+        private hitbox.Body[] bodies;
+
+        @Override
+        void load(WorldScene s) {
+            scene = s;
+            world = new hitbox.World();
+            bodies = new hitbox.Body[s.n];
+            for (int i = 0; i < s.n; i++) {
+                bodies[i] = world.add(home(s, i), s.x[i], s.y[i], s.angle[i]);
+                bodies[i].data(i);
+            }
+            world.step();
+        }
+
+        /** Body i's shape in its own frame, in pixels. */
+        static Shape home(WorldScene s, int i) {
+            float a = s.p[i], b = s.q[i];
+            return switch (s.kind[i]) {
+                case WorldScene.CIRCLE -> new hitbox.Circle(0, 0, a);
+                case WorldScene.ELLIPSE -> new hitbox.Ellipse(0, 0, a, b);
+                case WorldScene.BOX -> hitbox.Rect.centered(0, 0, a, b);
+                case WorldScene.LINE -> new hitbox.Segment(-a, -b, a, b);
+                default -> hitbox.Polygon.of(s.corners[i]);
+            };
+        }
+
+        @Override
+        long frame() {
+            WorldScene s = scene;
+            for (int i = 0; i < s.n; i++) {
+                if (s.moves(i)) {
+                    bodies[i].moveTo(s.x[i], s.y[i]);
+                    if (s.spin[i] != 0) {
+                        bodies[i].turnTo(s.angle[i]);
+                    }
+                }
+            }
+            count = 0;
+            for (hitbox.BodyEvent e : world.step()) {
+                if (e.kind() != hitbox.BodyEvent.Kind.EXIT) {
+                    found((Integer) e.a().data(), (Integer) e.b().data());
+                }
+            }
+            return count;
         }
     }
 
