@@ -64,7 +64,7 @@ public final class WorldSceneTable {
             }
             StringBuilder row = new StringBuilder(String.format(Locale.ROOT, "| %,d |", n));
             for (int c = 0; c < CONTENDERS.length; c++) {
-                row.append(String.format(Locale.ROOT, " %.3g (%s) |", median(ms[c]), kilobytes(median(bytes[c]))));
+                row.append(String.format(Locale.ROOT, " %s (%s) |", millis(median(ms[c])), kilobytes(median(bytes[c]))));
             }
             double fasterPeer = Math.min(median(ms[2]), median(ms[3]));
             row.append(String.format(Locale.ROOT, " %.1fx |", fasterPeer / median(ms[0])));
@@ -82,6 +82,11 @@ public final class WorldSceneTable {
         double[] s = v.clone();
         Arrays.sort(s);
         return s[s.length / 2];
+    }
+
+    /** Three significant digits, or whole milliseconds with a thousands separator from 100 on. */
+    private static String millis(double ms) {
+        return ms >= 100 ? String.format(Locale.ROOT, "%,.0f", ms) : String.format(Locale.ROOT, "%.3g", ms);
     }
 
     private static String kilobytes(double b) {
