@@ -81,6 +81,11 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
     private final long[] lastA = new long[LEVELS];
     private final long[] lastB = new long[LEVELS];
     private final int[] occupied = new int[LEVELS];
+    /**
+     * A dense level's bucket of cell (a, b) is {@code denseOffset + a + b * (columns + 1)}: its
+     * base, less its origin, one row down (in long arithmetic, which wraps exactly).
+     */
+    private final long[] denseOffset = new long[LEVELS];
     private int levels;
 
     private double minX;
@@ -193,7 +198,10 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
             Arrays.fill(start, 0, buckets + 1, 0);
         }
         for (int s = 0; s < n; s++) {
-            int bucket = bucket(slotLevel[s], slotA[s], slotB[s]);
+            int level = slotLevel[s];
+            // A dense level's bucket without bucket()'s range checks: every box is inside its level's span.
+            int bucket = dense[level] ? (int) (denseOffset[level] + slotA[s] + slotB[s] * (columns[level] + 1))
+                    : bucket(level, slotA[s], slotB[s]);
             slotBucket[s] = bucket;
             start[bucket]++;
         }
@@ -243,6 +251,7 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
                 // every cell has the four neighbours the pairs look at.
                 columns[level] = spanA;
                 rows[level] = spanB;
+                denseOffset[level] = next - originA[level] + (1 - originB[level]) * (spanA + 1);
                 next += (int) ((spanA + 1) * (spanB + 2));
             } else {
                 int wide = 64 - Long.numberOfLeadingZeros(spanA - 1), tall = 64 - Long.numberOfLeadingZeros(spanB - 1);
