@@ -57,7 +57,19 @@ public final class Body {
     final double[] extents = new double[4];
     /** The shape where it stands, or null until asked after a change. */
     Shape shape;
-    /** The box in the broad phase. */
+    /**
+     * The fat box: the box held for the body in the broad phase (or waiting to be put there
+     * while the body is dirty), the tight box grown by a margin and ahead of its last move.
+     */
+    float fatX;
+    float fatY;
+    float fatW;
+    float fatH;
+    /** Where the body is in the world's list of bodies whose fat box the broad phase lacks, or -1. */
+    int dirtyIndex = -1;
+    /** Has the body had a box yet? */
+    boolean boxed;
+    /** The tight box: at or a hair outside the shape's bounds. */
     float boxX;
     float boxY;
     float boxW;
@@ -132,8 +144,9 @@ public final class Body {
     }
 
     /**
-     * The body's box as the world's broad phase holds it: at or a hair outside
-     * {@code shape().bounds()}. Made without making the shape.
+     * The body's box: at or a hair outside {@code shape().bounds()}, made without making the
+     * shape. (The broad phase holds it grown by a margin, so a body that moves a little
+     * costs it nothing.)
      *
      * @return a new rectangle, never null
      */
@@ -329,8 +342,10 @@ public final class Body {
 
     /**
      * Makes the body a carrier (a moving platform): when {@link World#move} moves it, the
-     * bodies standing on its top (touching it from above, layers accepting) move along by the
-     * same amount, sliding against everything else; the platform itself passes through them.
+     * bodies standing on its top (touching it from above, layers accepting) move along by as
+     * much as it moved, sliding against everything else. Going up they move first, and the
+     * platform then meets them as any other body (a rider a ceiling stopped stops it, as the
+     * filter says); going sideways or down the platform moves first, passing through them.
      *
      * @param carrier true to carry
      * @return this body, for chaining, never null
@@ -351,11 +366,12 @@ public final class Body {
     /**
      * Keeps any object of the sketch's with the body, for a filter or an event to read.
      *
-     * @param data the object, or null for none
+     * @param data the object, not null (a body made without one has none)
      * @return this body, for chaining, never null
+     * @throws IllegalArgumentException if {@code data} is null
      */
     public Body data(Object data) {
-        this.data = data;
+        this.data = Check.notNull("data", data);
         return this;
     }
 

@@ -29,7 +29,11 @@ public record BodyHit(Body body, RayHit hit, int cell) {
         }
     }
 
-    /** @return how far along the ray the body was met, in pixels, 0 or more ({@code hit().distance()}) */
+    /**
+     * How far along the ray the body was met: {@code hit().distance()}.
+     *
+     * @return the distance in pixels, 0 or more, within the ray's reach (never Infinity)
+     */
     public float distance() {
         return hit.distance();
     }

@@ -5,6 +5,7 @@ import hitbox.internal.*;
 import java.math.BigDecimal;
 import java.math.MathContext;
 import java.util.Arrays;
+import java.util.function.Supplier;
 
 /**
  * A simple polygon, convex or concave, in either winding: its vertices in order.
@@ -47,7 +48,7 @@ public final class Polygon implements Shape {
             }
 
             @Override
-            public Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb) {
+            public Polygon image(Polygon p, float[] xy, double scaleMin, double delta, Supplier<String> verb) {
                 return p.image(xy, scaleMin, delta, verb);
             }
         });
@@ -496,7 +497,7 @@ public final class Polygon implements Shape {
         }
         // Each coordinate is the exact sum rounded once: off by half a float step at most, so
         // each vertex by less than a float step at the largest coordinate.
-        return image(moved, 1, Math.ulp(big), "moving by dx = " + dx + ", dy = " + dy);
+        return image(moved, 1, Math.ulp(big), () -> "moving by dx = " + dx + ", dy = " + dy);
     }
 
     /**
@@ -535,7 +536,7 @@ public final class Polygon implements Shape {
      * stretch is at least {@code scaleMin}, each vertex rounded at most {@code delta} away
      * from its exact image: checked only as far as that rounding could have changed it.
      */
-    private Polygon image(float[] moved, double scaleMin, double delta, String verb) {
+    private Polygon image(float[] moved, double scaleMin, double delta, Supplier<String> verb) {
         if (convexWinding != 0) {
             // convex before: convex again (n exact orientations) is simple, with area
             int w = Polygons.convexWinding(moved);
@@ -553,7 +554,7 @@ public final class Polygon implements Shape {
         try {
             return of(moved);
         } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException(verb + " rounds the outline: " + e.getMessage(), e);
+            throw new IllegalArgumentException(verb.get() + " rounds the outline: " + e.getMessage(), e);
         }
     }
 

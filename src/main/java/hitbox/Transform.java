@@ -47,13 +47,14 @@ public final class Transform {
     private final Affine affine;
 
     private Transform(double m00, double m01, double m02, double m10, double m11, double m12) {
-        this.m00 = m00;
-        this.m01 = m01;
-        this.m02 = m02;
-        this.m10 = m10;
-        this.m11 = m11;
-        this.m12 = m12;
-        this.affine = new Affine(m00, m01, m02, m10, m11, m12);
+        // -0.0 is kept as 0 (adding 0.0 does that), so that equal transforms hash alike
+        this.m00 = m00 + 0.0;
+        this.m01 = m01 + 0.0;
+        this.m02 = m02 + 0.0;
+        this.m10 = m10 + 0.0;
+        this.m11 = m11 + 0.0;
+        this.m12 = m12 + 0.0;
+        this.affine = new Affine(this.m00, this.m01, this.m02, this.m10, this.m11, this.m12);
     }
 
     /** A transform from double entries, refusing a NaN or infinite one by its name. */
@@ -66,8 +67,7 @@ public final class Transform {
                         + ", beyond the float range");
             }
         }
-        // -0.0 is kept as 0 so that equal transforms are equal
-        return new Transform(m00 + 0.0, m01 + 0.0, m02 + 0.0, m10 + 0.0, m11 + 0.0, m12 + 0.0);
+        return new Transform(m00, m01, m02, m10, m11, m12);
     }
 
     /**

@@ -116,6 +116,8 @@ public final class World {
     private Map<Long, Body[]> contacts = new HashMap<>();
 
     private final double[] scratch = new double[4];
+    /** The collisions of the move under way, copied out when it ends. */
+    private final ArrayList<Collision> found = new ArrayList<>();
 
     /** Makes an empty world with a {@link BroadPhase#grid()} inside. */
     public World() {
@@ -230,6 +232,9 @@ public final class World {
     public void remove(Body body) {
         own("body", body);
         checkNotInCallback("remove");
+        if (body.dirtyIndex >= 0) {
+            undirty(body);
+        }
         broad.remove(body.id);
         byId[body.id] = null;
         if (freeCount == freeIds.length) {
@@ -282,7 +287,9 @@ public final class World {
      * @param dy   the move this frame, y part
      * @return what it met, in the order met (empty if nothing), never null; where it ended is
      *         {@link Body#shape()}
-     * @throws IllegalArgumentException as {@link #move(Body, float, float, CollisionFilter)}
+     * @throws IllegalArgumentException if {@code body} is null, removed, another world's or a
+     *                                  grid's, dx or dy is NaN or infinite, or the move leaves
+     *                                  the float range
      * @throws IllegalStateException    if called from inside a callback of this world
      */
     public List<Collision> move(Body body, float dx, float dy) {
@@ -326,10 +333,6 @@ public final class World {
             throw new IllegalArgumentException("dx and dy move the body out of the float range: " + body + " by ("
                     + dx + ", " + dy + ")");
         }
-        if (stepped) {
-            stepCollisions.clear();
-            stepped = false;
-        }
         return body.carrier ? moveCarrier(body, dx, dy, filter) : moveOne(body, dx, dy, filter);
     }
 
@@ -341,37 +344,51 @@ public final class World {
             r.riderStamp = mark;
         }
         CollisionFilter platform = (m, o) -> o.riderStamp == mark ? null : filter.react(m, o);
-        int collisionsBefore = stepCollisions.size();
-        Object[] saved = new Object[riders.size() + 1];
+        List<Collision> collisionsBefore = new ArrayList<>(stepCollisions);
+        boolean steppedBefore = stepped;
+        Saved[] saved = new Saved[riders.size() + 1];
         saved[0] = save(p);
         for (int i = 0; i < riders.size(); i++) {
             saved[i + 1] = save(riders.get(i));
         }
+        holdFlush = true;
         try {
             List<Collision> out;
+            float px = p.x(), py = p.y();
             if (dy < 0) {
                 for (Body r : riders) {
                     moveOne(r, dx, dy, SLIDE);
                 }
-                out = moveOne(p, dx, dy, platform);
+                out = moveOne(p, dx, dy, filter);  // a rider a ceiling stopped stops it too
+                // Stopped short (a ceiling): the riders come back down with it.
+                float cx = p.x() - px - dx, cy = p.y() - py - dy;
+                if (cx != 0 || cy != 0) {
+                    for (Body r : riders) {
+                        moveOne(r, cx, cy, SLIDE);
+                    }
+                }
             } else {
                 out = moveOne(p, dx, dy, platform);
+                float ax = p.x() - px, ay = p.y() - py;
                 for (Body r : riders) {
-                    moveOne(r, dx, dy, SLIDE);
+                    moveOne(r, ax, ay, SLIDE);
                 }
             }
+            holdFlush = false;
+            flushIfMany();
             return out;
         } catch (RuntimeException e) {
-            restore(p, (double[]) saved[0]);
+            restore(p, saved[0]);
             for (int i = 0; i < riders.size(); i++) {
-                restore(riders.get(i), (double[]) saved[i + 1]);
+                restore(riders.get(i), saved[i + 1]);
             }
-            while (stepCollisions.size() > collisionsBefore) {
-                stepCollisions.remove(stepCollisions.size() - 1);
-            }
+            stepCollisions.clear();
+            stepCollisions.addAll(collisionsBefore);
+            stepped = steppedBefore;
             throw e;
         } finally {
             riderMark++;
+            holdFlush = false;
         }
     }
 
@@ -383,9 +400,7 @@ public final class World {
         List<Body> out = new ArrayList<>();
         Shape ps = p.shape();
         float probe = 0.01f;
-        candCount = 0;
-        broad.query(p.boxX, p.boxY - 2 * probe, p.boxW, p.boxH, collect);
-        sortCandidates();
+        gather(p.boxX, p.boxY - 2 * probe, (double) p.boxX + p.boxW, (double) p.boxY + p.boxH);
         for (int i = 0; i < candCount; i++) {
             Body o = byId[cand[i]];
             if (o == p || o.grid != null || o.sensor || o.carrier || !p.accepts(o)) {
@@ -403,17 +418,31 @@ public final class World {
         return out;
     }
 
-    private Object save(Body b) {
-        return new double[] {b.tx, b.ty};
+    /** A body's pose, shape and box, to put back when a carrier's move is refused. */
+    private record Saved(double tx, double ty, Shape shape, float[] box, boolean dirty) {
     }
 
-    private void restore(Body b, double[] saved) {
-        if (b.tx != saved[0] || b.ty != saved[1]) {
-            b.tx = saved[0];
-            b.ty = saved[1];
-            b.shape = null;
-            float[] box = box(b.pivotX + b.tx, b.pivotY + b.ty, b.extents, "a restored pose");
-            setBox(b, box[0], box[1], box[2], box[3]);
+    private static Saved save(Body b) {
+        return new Saved(b.tx, b.ty, b.shape, new float[] {b.boxX, b.boxY, b.boxW, b.boxH, b.fatX, b.fatY, b.fatW, b.fatH},
+                b.dirtyIndex >= 0);
+    }
+
+    /** Puts a body back as saved; no flush happened meanwhile, so the broad phase is as it was. */
+    private void restore(Body b, Saved saved) {
+        b.tx = saved.tx();
+        b.ty = saved.ty();
+        b.shape = saved.shape();
+        float[] k = saved.box();
+        b.boxX = k[0];
+        b.boxY = k[1];
+        b.boxW = k[2];
+        b.boxH = k[3];
+        b.fatX = k[4];
+        b.fatY = k[5];
+        b.fatW = k[6];
+        b.fatH = k[7];
+        if (!saved.dirty() && b.dirtyIndex >= 0) {
+            undirty(b);
         }
     }
 
@@ -421,7 +450,8 @@ public final class World {
     private List<Collision> moveOne(Body m, float dx, float dy, CollisionFilter filter) {
         int st = ++stamp;
         Shape start = m.shape();
-        List<Collision> out = new ArrayList<>(2);
+        List<Collision> out = found;
+        out.clear();
         if (start instanceof Rect r && !m.sensor) {
             Rect end = rectWalk(m, r, dx, dy, filter, st, out);
             if (end != null) {
@@ -735,8 +765,17 @@ public final class World {
         m.ty = nty;
         m.shape = end;
         setBox(m, x0, y0, Math.nextUp(x1 - x0), Math.nextUp(y1 - y0));
+        if (stepped) {
+            stepCollisions.clear();
+            stepped = false;
+        }
         stepCollisions.addAll(out);
-        return out.isEmpty() ? Collections.emptyList() : out;
+        if (out.isEmpty()) {
+            return Collections.emptyList();
+        }
+        List<Collision> copy = new ArrayList<>(out);
+        out.clear();
+        return copy;
     }
 
     // ---------------------------------------------------------------- teleports (Body calls these)
@@ -784,18 +823,80 @@ public final class World {
         return boxOut;
     }
 
+    /**
+     * Sets a body's tight box. The broad phase holds a fat box: when the tight box leaves it,
+     * a new fat box (grown by an eighth of the body's size and a pixel, and four times the
+     * last move ahead) waits in the dirty list, which queries scan, until enough wait to put
+     * them all at once (or the next {@link #step()}): the grid rebuilds after each change, so
+     * putting one box per move would rebuild it once per move.
+     */
     private void setBox(Body b, float x, float y, float w, float h) {
         if (b.grid != null) {
-            x = 0;
-            y = 0;
-            w = b.grid.width();
-            h = b.grid.height();
+            b.boxX = b.fatX = 0;
+            b.boxY = b.fatY = 0;
+            b.boxW = b.fatW = b.grid.width();
+            b.boxH = b.fatH = b.grid.height();
+            broad.put(b.id, 0, 0, b.boxW, b.boxH);
+            return;
         }
+        boolean fresh = !b.boxed;
+        b.boxed = true;
+        double ddx = fresh ? 0 : (double) x - b.boxX, ddy = fresh ? 0 : (double) y - b.boxY;
         b.boxX = x;
         b.boxY = y;
         b.boxW = w;
         b.boxH = h;
-        broad.put(b.id, x, y, w, h);
+        if (!fresh && x >= b.fatX && y >= b.fatY && (double) x + w <= (double) b.fatX + b.fatW
+                && (double) y + h <= (double) b.fatY + b.fatH) {
+            return;
+        }
+        double m = 1 + Math.max(w, h) / 8.0;
+        double x0 = Math.max(-Float.MAX_VALUE, x - m + Math.min(0, 4 * ddx));
+        double y0 = Math.max(-Float.MAX_VALUE, y - m + Math.min(0, 4 * ddy));
+        double x1 = Math.min(Float.MAX_VALUE, (double) x + w + m + Math.max(0, 4 * ddx));
+        double y1 = Math.min(Float.MAX_VALUE, (double) y + h + m + Math.max(0, 4 * ddy));
+        b.fatX = Math.min(x, Math.nextDown((float) x0));
+        b.fatY = Math.min(y, Math.nextDown((float) y0));
+        b.fatW = (float) Math.min(Float.MAX_VALUE, Math.nextUp(x1 - b.fatX));
+        b.fatH = (float) Math.min(Float.MAX_VALUE, Math.nextUp(y1 - b.fatY));
+        if (b.dirtyIndex < 0) {
+            if (dirtyCount == dirty.length) {
+                dirty = java.util.Arrays.copyOf(dirty, 2 * dirtyCount);
+            }
+            b.dirtyIndex = dirtyCount;
+            dirty[dirtyCount++] = b;
+        }
+        flushIfMany();
+    }
+
+    private Body[] dirty = new Body[16];
+    private int dirtyCount;
+    private boolean holdFlush;
+
+    private void flushIfMany() {
+        if (!holdFlush && dirtyCount > 64 + 2 * Math.sqrt(size)) {
+            flush();
+        }
+    }
+
+    /** Puts every waiting fat box into the broad phase. */
+    private void flush() {
+        for (int i = 0; i < dirtyCount; i++) {
+            Body b = dirty[i];
+            broad.put(b.id, b.fatX, b.fatY, b.fatW, b.fatH);
+            b.dirtyIndex = -1;
+            dirty[i] = null;
+        }
+        dirtyCount = 0;
+    }
+
+    private void undirty(Body b) {
+        int i = b.dirtyIndex;
+        Body last = dirty[--dirtyCount];
+        dirty[i] = last;
+        last.dirtyIndex = i;
+        dirty[dirtyCount] = null;
+        b.dirtyIndex = -1;
     }
 
     // ---------------------------------------------------------------- events
@@ -811,6 +912,7 @@ public final class World {
      */
     public List<BodyEvent> step() {
         checkNotInCallback("step");
+        flush();
         Map<Long, Body[]> now = new HashMap<>();
         broad.pairs((i, j) -> {
             Body a = byId[i], b = byId[j];
@@ -845,6 +947,44 @@ public final class World {
         contacts = now;
         stepped = true;
         return events;
+    }
+
+    /**
+     * Reports every pair of bodies whose layers accept each other and whose shapes overlap now
+     * (a grid's body: one of its solid cells), each pair once, the body added first first, in
+     * no particular order of pairs: the all-pairs question of {@link BroadPhase#pairs} asked
+     * of the bodies, without making events. Sensors are reported like any body.
+     *
+     * @param out receives each pair; it may read the world but not change it, not null
+     * @throws IllegalArgumentException if {@code out} is null, or it threw (the world is as it
+     *                                  was)
+     * @throws IllegalStateException    if called from inside a callback of this world, or
+     *                                  {@code out} tried to change the world
+     */
+    public void pairs(java.util.function.BiConsumer<Body, Body> out) {
+        Check.notNull("out", out);
+        checkNotInCallback("pairs");
+        flush();
+        broad.pairs((i, j) -> {
+            Body a = byId[i], b = byId[j];
+            if (a.accepts(b) && overlap(a, b)) {
+                if (a.serial > b.serial) {
+                    Body t = a;
+                    a = b;
+                    b = t;
+                }
+                callbackDepth++;
+                try {
+                    out.accept(a, b);
+                } catch (IllegalStateException e) {
+                    throw e;
+                } catch (RuntimeException e) {
+                    throw new IllegalArgumentException("out threw " + e + " for " + a + " and " + b, e);
+                } finally {
+                    callbackDepth--;
+                }
+            }
+        });
     }
 
     private static void putPair(Map<Long, Body[]> map, Body a, Body b) {
@@ -1116,9 +1256,14 @@ public final class World {
             if (firstOnly && distance > nearest[0]) {
                 return false;
             }
-            collect.accept(id);
+            if (byId[id].dirtyIndex < 0) {
+                collect.accept(id);
+            }
             return true;
         });
+        for (int i = 0; i < dirtyCount; i++) {
+            collect.accept(dirty[i].id);
+        }
         List<BodyHit> out = new ArrayList<>();
         for (int i = 0; i < candCount; i++) {
             Body b = byId[cand[i]];
@@ -1176,6 +1321,7 @@ public final class World {
      */
     public void cells(BoxConsumer out) {
         Check.notNull("out", out);
+        flush();
         broad.cells(out);
     }
 
@@ -1213,10 +1359,25 @@ public final class World {
     /** The ids of the bodies whose boxes meet a box (padded by a few float steps), in the order added. */
     private void gather(double left, double top, double right, double bottom) {
         double pad = pad(left, top, right, bottom);
-        float x0 = (float) (left - pad), y0 = (float) (top - pad);
-        float x1 = (float) (right + pad), y1 = (float) (bottom + pad);
+        float x0 = (float) Math.max(-Float.MAX_VALUE, left - pad), y0 = (float) Math.max(-Float.MAX_VALUE, top - pad);
+        float x1 = (float) Math.min(Float.MAX_VALUE, right + pad), y1 = (float) Math.min(Float.MAX_VALUE, bottom + pad);
+        float w = (float) Math.min(Float.MAX_VALUE, Math.nextUp((double) x1 - x0));
+        float h = (float) Math.min(Float.MAX_VALUE, Math.nextUp((double) y1 - y0));
         candCount = 0;
-        broad.query(x0, y0, Math.nextUp((float) ((double) x1 - x0)), Math.nextUp((float) ((double) y1 - y0)), collect);
+        broad.query(x0, y0, w, h, collect);
+        int kept = 0;
+        for (int i = 0; i < candCount; i++) {
+            if (byId[cand[i]].dirtyIndex < 0) {
+                cand[kept++] = cand[i];  // a dirty body's box in the broad phase is stale
+            }
+        }
+        candCount = kept;
+        for (int i = 0; i < dirtyCount; i++) {
+            Body b = dirty[i];
+            if (b.fatX <= x1 && x0 <= (double) b.fatX + b.fatW && b.fatY <= y1 && y0 <= (double) b.fatY + b.fatH) {
+                collect.accept(b.id);
+            }
+        }
         sortCandidates();
     }
 

@@ -73,7 +73,13 @@ class BadInputCatalogTest {
             "Ray.between", "Sweep.timeOfImpact", "Sweep.move", "Response.pushOutA", "Response.pushOutB",
             "Grid.parse", "Grid.fillRandom", "Grid.move", "Grid.moveObstacles", "Grid.fromPixels",
             // A broad phase refuses a bad box outright (issue 11), so a stored box always holds.
-            "BroadPhase.grid", "BroadPhase.put", "BroadPhase.query", "BroadPhase.raycast");
+            "BroadPhase.grid", "BroadPhase.put", "BroadPhase.query", "BroadPhase.raycast",
+            // The world (issue 20): its numbers are positions, angles and moves, all refused when NaN or infinite.
+            "World.add", "World.move", "World.queryPoint", "World.queryBox",
+            "Body.moveTo", "Body.moveBy", "Body.turnTo", "Body.turnBy");
+
+    /** The world the catalog calls World's and Body's methods on; every Body argument is a new body of it. */
+    private static final World WORLD = new World();
 
     /** Plain carriers of raw-float answers, documented to take any float. */
     private static final Set<Class<?>> CARRIERS = Set.of(Vec.class, Motion.Step.class, Snap.Push.class);
@@ -420,6 +426,15 @@ class BadInputCatalogTest {
         if (c == TerrainColors.class) {
             return new TerrainColors().put(0x000000, Grid.EMPTY).put(0xFFFFFF, Grid.SOLID);
         }
+        if (c == World.class) {
+            return WORLD;
+        }
+        if (c == Body.class) {
+            return WORLD.add(new Rect(30, 30, 10, 10));
+        }
+        if (c == BodyEvent.class) {
+            return new BodyEvent(BodyEvent.Kind.ENTER, WORLD.add(new Circle(0, 0, 1)), WORLD.add(new Circle(1, 0, 1)));
+        }
         if (c == BroadPhase.class) {
             BroadPhase b = BroadPhase.grid();
             for (int id = 0; id < 8; id++) {
@@ -534,7 +549,31 @@ class BadInputCatalogTest {
             return new Ray(0, 0, 1, 0);
         }
         if (type == BroadPhase.class) {
-            return receiver(BroadPhase.class);
+            return e.getDeclaringClass() == World.class ? BroadPhase.grid() : receiver(BroadPhase.class);
+        }
+        if (type == Body.class) {
+            return WORLD.add(attempt % 2 == 0 ? new Rect(30, 30, 10, 10) : new Circle(0, 0, 3));
+        }
+        if (type == java.util.function.BiConsumer.class) {
+            return (java.util.function.BiConsumer<?, ?>) (a, b) -> { };
+        }
+        if (type == CollisionFilter.class) {
+            return (CollisionFilter) (m, o) -> Reaction.SLIDE;
+        }
+        if (type == java.util.function.Predicate.class) {
+            return (java.util.function.Predicate<?>) b -> true;
+        }
+        if (type == Reaction.class) {
+            return Reaction.SLIDE;
+        }
+        if (type == BodyEvent.Kind.class) {
+            return BodyEvent.Kind.ENTER;
+        }
+        if (type == Hit.class) {
+            return new Hit(0.5f, 0, 1, Side.TOP);
+        }
+        if (type == RayHit.class) {
+            return new RayHit(1, 2, 3, 1, 0);
         }
         if (type == Hybrid.Stage.class) {
             return Hybrid.Stage.PRECISE;

@@ -3,6 +3,7 @@ package hitbox.internal;
 import hitbox.Grid;
 import hitbox.Polygon;
 import hitbox.Transform;
+import java.util.function.Supplier;
 
 /**
  * What the kernels read of a {@link Polygon} and a {@link Grid} that the API does not hand
@@ -49,11 +50,11 @@ public final class HiddenParts {
          * @param xy       its vertices' images under an affine map, rounded to float (taken, not copied)
          * @param scaleMin the map's smallest stretch (its smaller singular value), or less
          * @param delta    how far rounding may have moved a vertex from its exact image, or more
-         * @param verb     what was done, for a message ("moving by dx = 1.5, dy = 0")
+         * @param verb     what was done, for a message ("moving by dx = 1.5, dy = 0"), made only when needed
          * @return the polygon of {@code xy}, checked only as far as the rounding could have changed it
          * @throws IllegalArgumentException if the rounded outline is not a valid polygon
          */
-        Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb);
+        Polygon image(Polygon p, float[] xy, double scaleMin, double delta, Supplier<String> verb);
     }
 
     /** A transform's entries in double, granted by {@link Transform}. */
@@ -158,7 +159,7 @@ public final class HiddenParts {
      * @param delta the rounding's reach @param verb what was done
      * @return the new polygon (see {@link PolygonAccess#image})
      */
-    public static Polygon image(Polygon p, float[] xy, double scaleMin, double delta, String verb) {
+    public static Polygon image(Polygon p, float[] xy, double scaleMin, double delta, Supplier<String> verb) {
         return Granted.POLYGONS.image(p, xy, scaleMin, delta, verb);
     }
 

@@ -6,7 +6,8 @@ import hitbox.*;
  * A body's shape kept in its own frame and placed by a pose, behind {@link Body}: the shape as
  * it was added (its "home"), turned by an angle about a pivot and moved by a translation. A
  * point p of the home shape stands at {@code pivot + R(angle) (p - pivot) + t}, worked out in
- * double and rounded once to float. At angle 0 this is a plain translation of each
+ * double and rounded once to float; a turned shape is {@link Shape#transformed}'s image under
+ * that matrix (a turned rectangle a polygon, or a rect for a quarter turn). At angle 0 this is a plain translation of each
  * coordinate, {@code (float) (p + t)}, so a body that only moves keeps its kind and its exact
  * size (a rectangle stays the rectangle {@code Sweep.move} would give).
  *
@@ -146,76 +147,22 @@ public final class Poses {
                     if (fx == tx && fy == ty) {
                         yield p.translated(fx, fy);  // checks again only where rounding moved a vertex
                     }
-                    float[] xy = HiddenParts.raw(p);
-                    float[] moved = new float[xy.length];
-                    for (int i = 0; i < xy.length; i += 2) {
-                        moved[i] = f(xy[i] + tx);
-                        moved[i + 1] = f(xy[i + 1] + ty);
-                    }
-                    yield polygon(moved, angle);
+                    // Transforms checks the moved outline again only where rounding could have
+                    // made it touch itself (a move smaller than its clearance never does).
+                    yield Transforms.polygon(p, new Affine(1, 0, tx, 0, 1, ty));
                 }
             };
         }
-        double ox = px + tx, oy = py + ty;
-        return switch (ShapeKind.of(home)) {
-            case CIRCLE -> {
-                Circle c = (Circle) home;
-                yield new Circle(fx(c.x(), c.y(), px, py, cos, sin, ox), fy(c.x(), c.y(), px, py, cos, sin, oy), c.r());
-            }
-            case SEGMENT -> {
-                Segment s = (Segment) home;
-                yield new Segment(fx(s.x1(), s.y1(), px, py, cos, sin, ox), fy(s.x1(), s.y1(), px, py, cos, sin, oy),
-                        fx(s.x2(), s.y2(), px, py, cos, sin, ox), fy(s.x2(), s.y2(), px, py, cos, sin, oy));
-            }
-            case CAPSULE -> {
-                Capsule c = (Capsule) home;
-                yield new Capsule(fx(c.x1(), c.y1(), px, py, cos, sin, ox), fy(c.x1(), c.y1(), px, py, cos, sin, oy),
-                        fx(c.x2(), c.y2(), px, py, cos, sin, ox), fy(c.x2(), c.y2(), px, py, cos, sin, oy), c.r());
-            }
-            case ELLIPSE -> {
-                Ellipse e = (Ellipse) home;
-                double a = Math.IEEEremainder((double) e.angle() + angle, 2 * Math.PI);
-                yield new Ellipse(fx(e.x(), e.y(), px, py, cos, sin, ox), fy(e.x(), e.y(), px, py, cos, sin, oy),
-                        e.rx(), e.ry(), (float) a);
-            }
-            case RECT -> {
-                Rect r = (Rect) home;
-                float x0 = r.x(), y0 = r.y();
-                double x1 = (double) r.x() + r.w(), y1 = (double) r.y() + r.h();
-                float[] xy = {
-                    fx(x0, y0, px, py, cos, sin, ox), fy(x0, y0, px, py, cos, sin, oy),
-                    fx(x1, y0, px, py, cos, sin, ox), fy(x1, y0, px, py, cos, sin, oy),
-                    fx(x1, y1, px, py, cos, sin, ox), fy(x1, y1, px, py, cos, sin, oy),
-                    fx(x0, y1, px, py, cos, sin, ox), fy(x0, y1, px, py, cos, sin, oy)};
-                yield polygon(xy, angle);
-            }
-            case POLYGON -> {
-                float[] src = HiddenParts.raw((Polygon) home);
-                float[] xy = new float[src.length];
-                for (int i = 0; i < src.length; i += 2) {
-                    xy[i] = fx(src[i], src[i + 1], px, py, cos, sin, ox);
-                    xy[i + 1] = fy(src[i], src[i + 1], px, py, cos, sin, oy);
-                }
-                yield polygon(xy, angle);
-            }
-        };
-    }
-
-    private static Polygon polygon(float[] xy, float angle) {
+        // Turned: Shape.transformed's own maths (one home for how each kind turns), on the
+        // pose's matrix in double: p -> R (p - pivot) + pivot + t.
+        Affine a = new Affine(cos, -sin, px + tx - (cos * px - sin * py),
+                sin, cos, py + ty - (sin * px + cos * py));
         try {
-            return Polygon.of(xy);
+            return Transforms.apply(home, a);
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("the body's shape placed at its pose (angle " + angle
-                    + ") rounds to an outline that is not a polygon: " + e.getMessage(), e);
+                    + ") has no float shape: " + e.getMessage(), e);
         }
-    }
-
-    private static float fx(double x, double y, double px, double py, double cos, double sin, double ox) {
-        return f(ox + turnX(x - px, y - py, cos, sin));
-    }
-
-    private static float fy(double x, double y, double px, double py, double cos, double sin, double oy) {
-        return f(oy + turnY(x - px, y - py, cos, sin));
     }
 
     private static float f(double v) {

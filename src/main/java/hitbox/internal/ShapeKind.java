@@ -13,7 +13,10 @@ import hitbox.*;
  * <em>expression</em> that names every constant and has no {@code default}: javac refuses a
  * switch expression that misses a constant, so a new kind of shape does not compile until
  * every operation has a case for it. Operations a shape answers itself ({@code contains},
- * {@code bounds}, {@code translated}) stay in the shape's own class and need no switch.
+ * {@code bounds}, {@code translated}) stay in the shape's own class and need no switch;
+ * {@code transformed} and {@code rotated} call their kind's case of {@link Transforms}
+ * directly, and {@link Transforms#apply(Shape, Affine)} switches here for a caller that
+ * holds a {@link Shape}.
  *
  * <p>The constants' order is the order in which the pair operations are written: a pair is
  * answered by the code of its earlier kind (the later one handed over, swapped if it came

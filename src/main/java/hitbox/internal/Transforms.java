@@ -201,7 +201,7 @@ public final class Transforms {
         // each vertex moves from its exact image by at most half a float step per coordinate
         // (the rounding to float) plus the double sum's error
         double delta = Math.ulp((float) big) + 4 * Math.ulp(err);
-        return HiddenParts.image(p, out, svd[1] * (1 - 1e-15), delta, a.isTranslation() ? "moving" : "transforming");
+        return HiddenParts.image(p, out, svd[1] * (1 - 1e-12), delta, () -> "transforming by " + a);
     }
 
     /**

@@ -1,0 +1,96 @@
+package hitbox;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.SplittableRandom;
+import net.jqwik.api.ForAll;
+import net.jqwik.api.Property;
+
+/**
+ * Properties of {@link World#move} over random worlds of every kind, turned and not, with every
+ * reaction chosen at random per pair: the mover ends overlapping no body it slid on, touched or
+ * bounced off (unless it overlapped it at the start); collisions come in the order met, each
+ * crossed body once; the broad phase's box holds the shape; a teleport there and back gives the
+ * same shape.
+ */
+class WorldPropertiesTest {
+
+    @Property(tries = 300)
+    void moves_neverEndInsideWhatBlocked(@ForAll long seed) {
+        SplittableRandom rnd = new SplittableRandom(seed);
+        World w = WorldBruteForceTest.randomWorld(rnd, 5 + rnd.nextInt(30));
+        for (Body b : w.bodies()) {
+            if (rnd.nextInt(6) == 0) {
+                b.oneWay(Side.TOP);
+            }
+        }
+        List<Body> all = w.bodies();
+        for (int k = 0; k < 10; k++) {
+            Body m = all.get(rnd.nextInt(all.size()));
+            Shape start = m.shape();
+            Map<Body, Reaction> chosen = new HashMap<>();
+            float scale = rnd.nextInt(3) == 0 ? 3000 : 60;
+            float dx = (float) ((rnd.nextDouble() - 0.5) * scale), dy = (float) ((rnd.nextDouble() - 0.5) * scale);
+            List<Collision> got = w.move(m, dx, dy, (me, o) -> {
+                Reaction r = rnd.nextInt(5) == 0 ? null : Reaction.values()[rnd.nextInt(4)];
+                assertFalse(chosen.containsKey(o), "asked twice about " + o);
+                chosen.put(o, r);
+                return r;
+            });
+            Shape end = m.shape();
+            String what = "seed " + seed + ": " + start + " by (" + dx + ", " + dy + ") to " + end;
+            float lastT = 0;
+            java.util.Set<Body> crossed = new java.util.HashSet<>();
+            for (Collision c : got) {
+                assertTrue(c.hit().t() >= lastT, what + ": out of order " + got);
+                lastT = c.hit().t();
+                if (c.reaction() == Reaction.CROSS && !c.hit().alreadyOverlapping()) {
+                    assertTrue(crossed.add(c.other()), what + ": crossed twice " + c.other());
+                }
+                assertEquals(m, c.mover());
+                if (c.other().isSensor() || m.isSensor()) {
+                    assertEquals(Reaction.CROSS, c.reaction());
+                }
+            }
+            for (Body o : all) {
+                if (o == m || !o.alive()) {
+                    continue;
+                }
+                // A body never asked about was never met: it must not be overlapped either.
+                Reaction r = chosen.containsKey(o) ? chosen.get(o) : Reaction.SLIDE;
+                boolean blocks = r != null && r != Reaction.CROSS && !o.isSensor() && !m.isSensor() && m.accepts(o);
+                boolean oneWayPassed = o.oneWay() != Side.NONE
+                        && got.stream().noneMatch(c -> c.other() == o && c.reaction() != Reaction.CROSS);
+                if (blocks && !oneWayPassed && !start.overlaps(o.shape())) {
+                    assertFalse(end.overlaps(o.shape()), what + ": ends inside " + o + " " + o.shape() + " (" + r + ")");
+                }
+            }
+            Rect box = m.bounds();
+            assertTrue(box.x() <= end.minX() && box.y() <= end.minY() && box.x() + (double) box.w() >= end.maxX()
+                    && box.y() + (double) box.h() >= end.maxY(), what + ": box " + box);
+        }
+    }
+
+    @Property(tries = 300)
+    void teleports_thereAndBack_giveTheSameShape_andTheBoxHoldsIt(@ForAll long seed) {
+        SplittableRandom rnd = new SplittableRandom(seed);
+        World w = WorldBruteForceTest.randomWorld(rnd, 3);
+        for (Body b : w.bodies()) {
+            Shape before = b.shape();
+            float x = b.x(), y = b.y(), a = b.angle();
+            b.moveTo(x + rnd.nextInt(2000) - 1000, y + rnd.nextInt(2000) - 1000);
+            b.turnTo((float) (rnd.nextDouble() * 20 - 10));
+            Shape turned = b.shape();
+            Rect box = b.bounds();
+            assertTrue(box.x() <= turned.minX() && box.y() <= turned.minY() && box.x() + (double) box.w() >= turned.maxX()
+                    && box.y() + (double) box.h() >= turned.maxY(), "box " + box + " of " + turned);
+            b.moveTo(x, y).turnTo(a);
+            assertEquals(before, b.shape());
+        }
+    }
+}
