@@ -31,7 +31,7 @@ public class WorldSceneBench {
     @Param({"1000", "10000", "100000"})
     public int n;
 
-    @Param({"hitboxWorld", "hitboxParts", "dyn4jWorld", "jbox2dWorld"})
+    @Param({"hitboxWorld", "hitboxWorldStep", "hitboxParts", "dyn4jWorld", "jbox2dWorld"})
     public String contender;
 
     private WorldScene scene;

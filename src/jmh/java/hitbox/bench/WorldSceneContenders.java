@@ -45,7 +45,8 @@ final class WorldSceneContenders {
 
     static Contender of(String name) {
         return switch (name) {
-            case "hitboxWorld" -> new HitboxWorld();
+            case "hitboxWorld" -> new HitboxWorld(false);
+            case "hitboxWorldStep" -> new HitboxWorld(true);
             case "hitboxParts" -> new HitboxParts();
             case "dyn4jWorld" -> new Dyn4jWorld();
             case "jbox2dWorld" -> new JBox2DWorld();
@@ -98,13 +99,22 @@ final class WorldSceneContenders {
     /**
      * Hitbox's {@code World}: a body per scene body, its shape given once in its own frame
      * ({@code World.add(shape, x, y, angle)}); each frame every moving body is teleported
-     * ({@code moveTo}, and {@code turnTo} for those that turn), then {@code World.step()}
-     * reports the contacts, ENTER or STAY for each pair that overlaps now (EXIT for those that
-     * no longer do, not counted).
+     * ({@code moveTo}, and {@code turnTo} for those that turn), then {@code World.pairs} hands
+     * over every overlapping pair; or ({@code hitboxWorldStep}) {@code World.step()} reports the
+     * contacts as events, ENTER or STAY for each pair that overlaps now (EXIT for those that no
+     * longer do, not counted).
      */
     static final class HitboxWorld extends Contender {
+        private final boolean events;
+        private final java.util.function.BiConsumer<hitbox.Body, hitbox.Body> pair =
+                (a, b) -> found((Integer) a.data(), (Integer) b.data());
         private hitbox.World world;
         private hitbox.Body[] bodies;
+
+        /** @param events the contacts as {@code World.step()}'s events rather than {@code World.pairs}' callback */
+        HitboxWorld(boolean events) {
+            this.events = events;
+        }
 
         @Override
         void load(WorldScene s) {
@@ -142,10 +152,14 @@ final class WorldSceneContenders {
                 }
             }
             count = 0;
-            for (hitbox.BodyEvent e : world.step()) {
-                if (e.kind() != hitbox.BodyEvent.Kind.EXIT) {
-                    found((Integer) e.a().data(), (Integer) e.b().data());
+            if (events) {
+                for (hitbox.BodyEvent e : world.step()) {
+                    if (e.kind() != hitbox.BodyEvent.Kind.EXIT) {
+                        found((Integer) e.a().data(), (Integer) e.b().data());
+                    }
                 }
+            } else {
+                world.pairs(pair);
             }
             return count;
         }
