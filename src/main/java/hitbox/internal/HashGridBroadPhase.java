@@ -17,7 +17,7 @@ import java.util.function.IntConsumer;
  *       cells as boxes): one bucket per cell of the span, row by row, with an empty row above
  *       and below and an empty column on the right, so a bucket is a cell, no cell needs
  *       checking, and a cell and the one on its right are side by side in memory, as are the
- *       two below them;</li>
+ *       three below them;</li>
  *   <li><b>hashed</b> otherwise (sparse or enormous worlds): the cell's column and row wrapped
  *       into a power-of-two rectangle of about two buckets per box, and each entry keeps its
  *       cell, to tell apart the cells that share a bucket.</li>
@@ -26,9 +26,9 @@ import java.util.function.IntConsumer;
  * boxes, four doubles each), so each cell's boxes are side by side in memory and the cells
  * next door were just read.
  *
- * <p>Pairs within a level: each cell's boxes with each other, and with the boxes of the four
- * cells after it (right-above, right, right-below, below), so each pair of neighbouring cells
- * is looked at from one side only. Pairs across levels L &lt; M: either each level-L box looks up
+ * <p>Pairs within a level: each cell's boxes with each other, and with the boxes of four of its
+ * neighbours (right, below-left, below, below-right), so each pair of neighbouring cells is
+ * looked at from one side only. Pairs across levels L &lt; M: either each level-L box looks up
  * the two or three cells per axis of level M it can reach, or each level-M box looks up the
  * cells of level L it covers, whichever looks up fewer; a level is scanned whole when that is
  * cheaper still.
@@ -52,6 +52,8 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
     private double[] ebox = new double[0];
     private int[] eid = new int[0];
     private int[] eslot = new int[0];
+    /** An entry's bucket, so that the pairs can go entry by entry without looking at empty buckets. */
+    private int[] ebucket = new int[0];
     /** An entry's cell, kept for hashed levels only. */
     private long[] ea = new long[0];
     private long[] eb = new long[0];
@@ -79,6 +81,11 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
     private final long[] lastA = new long[LEVELS];
     private final long[] lastB = new long[LEVELS];
     private final int[] occupied = new int[LEVELS];
+    /**
+     * A dense level's bucket of cell (a, b) is {@code denseOffset + a + b * (columns + 1)}: its
+     * base, less its origin, one row down (in long arithmetic, which wraps exactly).
+     */
+    private final long[] denseOffset = new long[LEVELS];
     private int levels;
 
     private double minX;
@@ -134,6 +141,7 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
         ebox = Arrays.copyOf(ebox, 4 * capacity);
         eid = Arrays.copyOf(eid, capacity);
         eslot = Arrays.copyOf(eslot, capacity);
+        ebucket = Arrays.copyOf(ebucket, capacity);
         ea = Arrays.copyOf(ea, capacity);
         eb = Arrays.copyOf(eb, capacity);
     }
@@ -190,7 +198,10 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
             Arrays.fill(start, 0, buckets + 1, 0);
         }
         for (int s = 0; s < n; s++) {
-            int bucket = bucket(slotLevel[s], slotA[s], slotB[s]);
+            int level = slotLevel[s];
+            // A dense level's bucket without bucket()'s range checks: every box is inside its level's span.
+            int bucket = dense[level] ? (int) (denseOffset[level] + slotA[s] + slotB[s] * (columns[level] + 1))
+                    : bucket(level, slotA[s], slotB[s]);
             slotBucket[s] = bucket;
             start[bucket]++;
         }
@@ -210,6 +221,7 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
             ebox[j + 3] = bx[k + 3];
             eid[e] = ids[s];
             eslot[e] = s;
+            ebucket[e] = slotBucket[s];
             if (!dense[slotLevel[s]]) {
                 ea[e] = slotA[s];
                 eb[e] = slotB[s];
@@ -239,6 +251,7 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
                 // every cell has the four neighbours the pairs look at.
                 columns[level] = spanA;
                 rows[level] = spanB;
+                denseOffset[level] = next - originA[level] + (1 - originB[level]) * (spanA + 1);
                 next += (int) ((spanA + 1) * (spanB + 2));
             } else {
                 int wide = 64 - Long.numberOfLeadingZeros(spanA - 1), tall = 64 - Long.numberOfLeadingZeros(spanB - 1);
@@ -337,43 +350,34 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
     }
 
     /**
-     * A dense level, cell by cell: each box of a cell against the boxes after it in the cell and
-     * in the cell on its right (side by side in memory), against the two cells below (side by
-     * side too), and against the cell above on the right.
+     * A dense level, entry by entry: each box against the boxes after it in its cell and in the
+     * cell on its right (side by side in memory), and against the three cells below, from
+     * below-left to below-right (side by side too: the empty column on the right of a row is the
+     * cell left of the next row's first). Those are half the eight neighbours, so each pair of
+     * neighbouring cells is looked at from one side only; and going by entries, not by cells,
+     * no empty cell is looked at.
      */
     private void densePairs(PairConsumer out, int level) {
-        int stride = (int) columns[level] + 1, first = base[level] + stride, last = first + stride * (int) rows[level];
-        int[] at = start;
+        int stride = (int) columns[level] + 1;
+        int[] at = start, bucketOf = ebucket;
         double[] b = ebox;  // a local: the callback could change a field, so it would be read again after each
         long tests = 0;
-        for (int bucket = first; bucket < last; bucket++) {
-            int from = at[bucket], to = at[bucket + 1];
-            if (from == to) {
-                continue;
+        for (int i = levelFirst(level), last = i + levelCount[level]; i < last; i++) {
+            int bucket = bucketOf[i];
+            int rightEnd = at[bucket + 2], below = at[bucket + stride - 1], belowEnd = at[bucket + stride + 2];
+            int k = 4 * i;
+            double x = b[k], right = b[k + 1], y = b[k + 2], bottom = b[k + 3];
+            for (int j = i + 1; j < rightEnd; j++) {
+                if (overlap(x, right, y, bottom, b[4 * j], b[4 * j + 1], b[4 * j + 2], b[4 * j + 3])) {
+                    emitEntries(out, i, j);
+                }
             }
-            int rightEnd = at[bucket + 2];
-            int below = at[bucket + stride], belowEnd = at[bucket + stride + 2];
-            int above = at[bucket + 1 - stride], aboveEnd = at[bucket + 2 - stride];
-            for (int i = from; i < to; i++) {
-                int k = 4 * i;
-                double x = b[k], right = b[k + 1], y = b[k + 2], bottom = b[k + 3];
-                for (int j = i + 1; j < rightEnd; j++) {
-                    if (overlap(x, right, y, bottom, b[4 * j], b[4 * j + 1], b[4 * j + 2], b[4 * j + 3])) {
-                        emitEntries(out, i, j);
-                    }
+            for (int j = below; j < belowEnd; j++) {
+                if (overlap(x, right, y, bottom, b[4 * j], b[4 * j + 1], b[4 * j + 2], b[4 * j + 3])) {
+                    emitEntries(out, i, j);
                 }
-                for (int j = below; j < belowEnd; j++) {
-                    if (overlap(x, right, y, bottom, b[4 * j], b[4 * j + 1], b[4 * j + 2], b[4 * j + 3])) {
-                        emitEntries(out, i, j);
-                    }
-                }
-                for (int j = above; j < aboveEnd; j++) {
-                    if (overlap(x, right, y, bottom, b[4 * j], b[4 * j + 1], b[4 * j + 2], b[4 * j + 3])) {
-                        emitEntries(out, i, j);
-                    }
-                }
-                tests += (rightEnd - i - 1) + (belowEnd - below) + (aboveEnd - above);
             }
+            tests += (rightEnd - i - 1) + (belowEnd - below);
         }
         tally += tests;
     }

@@ -1,0 +1,124 @@
+package hitbox.bench;
+
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+
+/**
+ * One frame of the world scene ({@link WorldScene}, after detect-collisions' stress test): move
+ * and turn every body, then find every overlapping pair, at 1,000, 10,000 and 100,000 bodies,
+ * Hitbox beside dyn4j's and JBox2D's worlds ({@link WorldSceneContenders}).
+ *
+ * <p>Before timing, each trial checks its contender against Hitbox's answer, on the first frame
+ * and again after 100 more (10 at 100,000 bodies, where a peer's frame takes seconds) ({@link #check}): a pair found by one and not the other must be one
+ * that nearly touches, within the contender's documented tolerance. The table in
+ * docs/world-benchmark.md is made with {@code -prof gc}.
+ */
+@State(Scope.Benchmark)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+public class WorldSceneBench {
+
+    @Param({"1000", "10000", "100000"})
+    public int n;
+
+    @Param({"hitboxWorld", "hitboxWorldStep", "hitboxParts", "dyn4jWorld", "jbox2dWorld"})
+    public String contender;
+
+    private WorldScene scene;
+    private WorldSceneContenders.Contender it;
+
+    @Setup(Level.Trial)
+    public void setup() {
+        scene = new WorldScene(n, 42);
+        it = WorldSceneContenders.of(contender);
+        it.load(scene);
+        check(scene, it, contender);
+        for (int f = 0, frames = Math.max(3, Math.min(100, 1_000_000 / n)); f < frames; f++) {
+            scene.step();
+            it.frame();
+        }
+        check(scene, it, contender);
+    }
+
+    /**
+     * The contender's pairs this frame against Hitbox's (a fresh {@code hitboxParts} on the same
+     * poses): every pair only one of them finds must be within {@link #tolerance} of touching,
+     * measured by dyn4j's GJK on the exact shapes (the gap for a pair found only by the
+     * contender, the depth for one found only by Hitbox). Throws otherwise; prints the tally.
+     */
+    static void check(WorldScene scene, WorldSceneContenders.Contender it, String name) {
+        long[] got = it.framePairs();
+        WorldSceneContenders.HitboxParts reference = new WorldSceneContenders.HitboxParts();
+        reference.load(scene);
+        long[] want = reference.framePairs();
+        WorldSceneContenders.Referee referee = new WorldSceneContenders.Referee(scene);
+        int extra = 0, missing = 0;
+        double worstGap = 0, worstDepth = 0;
+        int i = 0, j = 0;
+        while (i < got.length || j < want.length) {
+            if (j == want.length || i < got.length && got[i] < want[j]) {
+                int a = (int) (got[i] >>> 32), b = (int) got[i];
+                double gap = referee.gap(a, b);
+                worstGap = Math.max(worstGap, gap);
+                if (gap > tolerance(scene, name, a, b)) {
+                    throw new IllegalStateException(name + " finds bodies " + a + " and " + b + " (kinds " + scene.kind[a]
+                            + ", " + scene.kind[b] + ") " + gap + " px apart; Hitbox does not");
+                }
+                extra++;
+                i++;
+            } else if (i == got.length || want[j] < got[i]) {
+                int a = (int) (want[j] >>> 32), b = (int) want[j];
+                double depth = referee.depth(a, b);
+                worstDepth = Math.max(worstDepth, depth);
+                if (depth > tolerance(scene, name, a, b)) {
+                    throw new IllegalStateException(name + " misses bodies " + a + " and " + b + " (kinds " + scene.kind[a]
+                            + ", " + scene.kind[b] + "), " + depth + " px deep");
+                }
+                missing++;
+                j++;
+            } else {
+                i++;
+                j++;
+            }
+        }
+        System.out.printf(Locale.ROOT, "%n%s, %d bodies: %d pairs, Hitbox %d; %d more (at most %.3g px apart), %d fewer (at most %.3g px deep)%n",
+                name, scene.n, got.length, want.length, extra, worstGap, missing, worstDepth);
+    }
+
+    /**
+     * How far from touching a pair may be and still be answered either way, in pixels: for
+     * Hitbox and dyn4j a millionth of the size unit (rounding); for JBox2D its skin of
+     * 2 x 0.01 m (the size unit being a metre), plus the octagon around an ellipse, up to
+     * 8.3% of its larger radius beyond it, plus half of a line's thickness there (0.001 m),
+     * plus rounding in float.
+     */
+    static double tolerance(WorldScene s, String name, int a, int b) {
+        double t = 1e-6 * s.size;
+        if (name.startsWith("jbox2d")) {
+            t += 0.02 * s.size + 1e-4 * s.size;
+            t += 0.0005 * s.size * ((s.kind[a] == WorldScene.LINE ? 1 : 0) + (s.kind[b] == WorldScene.LINE ? 1 : 0));
+            for (int i : new int[] {a, b}) {
+                if (s.kind[i] == WorldScene.ELLIPSE) {
+                    t += (1 / Math.cos(Math.PI / 8) - 1) * s.reach[i];
+                }
+            }
+        }
+        return t;
+    }
+
+    @Benchmark
+    public long frame() {
+        scene.step();
+        return it.frame();
+    }
+}

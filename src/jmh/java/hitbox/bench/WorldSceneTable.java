@@ -1,0 +1,96 @@
+package hitbox.bench;
+
+import java.lang.management.ManagementFactory;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The world scene's table on a shared machine ({@code gradle worldTable}): every contender of
+ * {@link WorldSceneBench} in one JVM, each on its own copy of the scene, checked as the benchmark
+ * checks them, then timed in turns (a round of frames for each, round after round), by the
+ * thread's CPU time and the bytes it allocates. Wall-clock time on a machine whose load is ten
+ * times its cores measures the other jobs; CPU time measures the frame's work (caches shared
+ * with the other jobs still slow it), and the turns give every contender the same load. JMH
+ * ({@code gradle jmh -Pjmh.include=WorldSceneBench}) is the measurement for a quiet machine.
+ *
+ * <p>Arguments: the sizes (default 1000 10000 100000). System properties: {@code rounds}
+ * (default 7), {@code budgetMs} (CPU time per contender per round, default 300 ms).
+ */
+public final class WorldSceneTable {
+    private static final String[] CONTENDERS = {"hitboxWorld", "hitboxParts", "dyn4jWorld", "jbox2dWorld"};
+
+    private WorldSceneTable() {
+    }
+
+    public static void main(String[] args) {
+        int[] sizes = args.length == 0 ? new int[] {1000, 10000, 100000} : Arrays.stream(args).mapToInt(Integer::parseInt).toArray();
+        int rounds = Integer.getInteger("rounds", 7);
+        long budget = Long.getLong("budgetMs", 300) * 1_000_000;
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        List<String> rows = new ArrayList<>();
+        for (int n : sizes) {
+            WorldScene[] scenes = new WorldScene[CONTENDERS.length];
+            WorldSceneContenders.Contender[] its = new WorldSceneContenders.Contender[CONTENDERS.length];
+            for (int c = 0; c < CONTENDERS.length; c++) {
+                scenes[c] = new WorldScene(n, 42);
+                its[c] = WorldSceneContenders.of(CONTENDERS[c]);
+                its[c].load(scenes[c]);
+                WorldSceneBench.check(scenes[c], its[c], CONTENDERS[c]);
+            }
+            double[][] ms = new double[CONTENDERS.length][rounds];
+            double[][] bytes = new double[CONTENDERS.length][rounds];
+            for (int r = -2; r < rounds; r++) {  // two rounds of warming up
+                for (int c = 0; c < CONTENDERS.length; c++) {
+                    long t0 = mx.getCurrentThreadCpuTime(), b0 = mx.getCurrentThreadAllocatedBytes();
+                    int frames = 0;
+                    long t;
+                    do {
+                        scenes[c].step();
+                        its[c].frame();
+                        frames++;
+                        t = mx.getCurrentThreadCpuTime() - t0;
+                    } while (t < budget);
+                    long b = mx.getCurrentThreadAllocatedBytes() - b0;
+                    if (r >= 0) {
+                        ms[c][r] = t / 1e6 / frames;
+                        bytes[c][r] = (double) b / frames;
+                    }
+                }
+            }
+            for (int c = 0; c < CONTENDERS.length; c++) {
+                WorldSceneBench.check(scenes[c], its[c], CONTENDERS[c]);
+            }
+            StringBuilder row = new StringBuilder(String.format(Locale.ROOT, "| %,d |", n));
+            for (int c = 0; c < CONTENDERS.length; c++) {
+                row.append(String.format(Locale.ROOT, " %s (%s) |", millis(median(ms[c])), kilobytes(median(bytes[c]))));
+            }
+            double fasterPeer = Math.min(median(ms[2]), median(ms[3]));
+            row.append(String.format(Locale.ROOT, " %.1fx |", fasterPeer / median(ms[0])));
+            rows.add(row.toString());
+            System.out.println(row);
+        }
+        System.out.println();
+        System.out.println("| bodies | `World` | parts (grid + new shapes) | dyn4j World | JBox2D World | faster peer / `World` |");
+        System.out.println("| ---: | ---: | ---: | ---: | ---: | ---: |");
+        rows.forEach(System.out::println);
+        System.out.println("\nms of CPU a frame (median of " + rounds + " rounds), and (bytes allocated a frame)");
+    }
+
+    private static double median(double[] v) {
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s[s.length / 2];
+    }
+
+    /** Three significant digits, or whole milliseconds with a thousands separator from 100 on. */
+    private static String millis(double ms) {
+        return ms >= 100 ? String.format(Locale.ROOT, "%,.0f", ms) : String.format(Locale.ROOT, "%.3g", ms);
+    }
+
+    private static String kilobytes(double b) {
+        return b < 1024 ? String.format(Locale.ROOT, "%.0f B", b) : b < 1024 * 1024
+                ? String.format(Locale.ROOT, "%.0f KB", b / 1024) : String.format(Locale.ROOT, "%.1f MB", b / 1024 / 1024);
+    }
+}
