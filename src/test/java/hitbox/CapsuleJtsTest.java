@@ -7,9 +7,7 @@ import java.util.Random;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.Test;
-import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
-import org.locationtech.jts.geom.GeometryFactory;
 import org.locationtech.jts.operation.buffer.BufferParameters;
 import org.locationtech.jts.operation.distance.DistanceOp;
 
@@ -29,55 +27,7 @@ import org.locationtech.jts.operation.distance.DistanceOp;
  */
 class CapsuleJtsTest {
 
-    private static final GeometryFactory GF = new GeometryFactory();
     private static final int QUADRANT = 64;
-
-    private static Geometry segment(double x1, double y1, double x2, double y2) {
-        if (x1 == x2 && y1 == y2) {
-            return GF.createPoint(new Coordinate(x1, y1));
-        }
-        return GF.createLineString(new Coordinate[] {new Coordinate(x1, y1), new Coordinate(x2, y2)});
-    }
-
-    private static Geometry polygon(double... xy) {
-        Coordinate[] c = new Coordinate[xy.length / 2 + 1];
-        for (int i = 0; i < xy.length / 2; i++) {
-            c[i] = new Coordinate(xy[2 * i], xy[2 * i + 1]);
-        }
-        c[c.length - 1] = c[0];
-        return GF.createPolygon(c);
-    }
-
-    /** The other shape as JTS geometry (a circle as its centre, with its radius added to the reach). */
-    private static Geometry geometry(Shape s) {
-        if (s instanceof Circle c) {
-            return GF.createPoint(new Coordinate(c.x(), c.y()));
-        }
-        if (s instanceof Capsule k) {
-            return segment(k.x1(), k.y1(), k.x2(), k.y2());
-        }
-        if (s instanceof Segment g) {
-            return segment(g.x1(), g.y1(), g.x2(), g.y2());
-        }
-        if (s instanceof Rect r) {
-            double x = r.x(), y = r.y(), x2 = x + (double) r.w(), y2 = y + (double) r.h();
-            if (r.w() == 0 || r.h() == 0) {
-                return segment(x, y, x2, y2);
-            }
-            return polygon(x, y, x2, y, x2, y2, x, y2);
-        }
-        Polygon p = (Polygon) s;
-        double[] xy = new double[2 * p.size()];
-        for (int i = 0; i < p.size(); i++) {
-            xy[2 * i] = p.x(i);
-            xy[2 * i + 1] = p.y(i);
-        }
-        return polygon(xy);
-    }
-
-    private static double radius(Shape s) {
-        return s instanceof Circle c ? c.r() : s instanceof Capsule k ? k.r() : 0;
-    }
 
     private static boolean hasArea(Shape s) {
         return s instanceof Polygon || s instanceof Rect r && r.w() > 0 && r.h() > 0
@@ -86,25 +36,25 @@ class CapsuleJtsTest {
 
     /** JTS's answer, or null inside the tie band. */
     private static Boolean oracle(Capsule k, Shape other, double band) {
-        Geometry seg = segment(k.x1(), k.y1(), k.x2(), k.y2());
+        Geometry seg = JtsShapes.segment(k.x1(), k.y1(), k.x2(), k.y2());
         if (k.r() == 0) {
             if (!hasArea(other)) {
                 return false;
             }
             if (other instanceof Circle || other instanceof Capsule) {
                 // The segment reaches the open disc or capsule: closer than its radius.
-                double d = DistanceOp.distance(seg, geometry(other));
-                return Math.abs(d - radius(other)) < band * (1 + d) ? null : d < radius(other);
+                double d = DistanceOp.distance(seg, JtsShapes.core(other));
+                return Math.abs(d - JtsShapes.radius(other)) < band * (1 + d) ? null : d < JtsShapes.radius(other);
             }
-            return seg.relate(geometry(other), "T********");
+            return seg.relate(JtsShapes.core(other), "T********");
         }
         if (other instanceof Circle c && c.r() == 0 || other instanceof Capsule m && m.r() == 0) {
             if (other instanceof Capsule m && !(m.x1() == m.x2() && m.y1() == m.y2())) {
                 return oracle(m, k, band); // a segment reaching into k: the other way round
             }
         }
-        double reach = k.r() + radius(other);
-        double d = DistanceOp.distance(seg, geometry(other));
+        double reach = k.r() + JtsShapes.radius(other);
+        double d = DistanceOp.distance(seg, JtsShapes.core(other));
         if (Math.abs(d - reach) < band * (1 + reach)) {
             return null;
         }
@@ -208,8 +158,8 @@ class CapsuleJtsTest {
             do {
                 other = Sampled.any(rnd);
             } while (other instanceof Ellipse || other instanceof Circle || other instanceof Capsule || other instanceof Segment);
-            Geometry seg = segment(k.x1(), k.y1(), k.x2(), k.y2());
-            Geometry g = geometry(other);
+            Geometry seg = JtsShapes.segment(k.x1(), k.y1(), k.x2(), k.y2());
+            Geometry g = JtsShapes.core(other);
             Geometry inner = seg.buffer(k.r(), QUADRANT, BufferParameters.CAP_ROUND);
             Geometry outer = seg.buffer(k.r() * grow, QUADRANT, BufferParameters.CAP_ROUND);
             if (inner.relate(g, "T********")) {

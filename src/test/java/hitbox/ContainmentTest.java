@@ -8,9 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
-import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
-import org.locationtech.jts.geom.GeometryFactory;
 
 /**
  * {@link Shape#contains(Shape)} and the raw {@code Collide.*Contains*} forms: the closure of
@@ -31,7 +29,6 @@ import org.locationtech.jts.geom.GeometryFactory;
  */
 class ContainmentTest {
 
-    private static final GeometryFactory GF = new GeometryFactory();
 
     // ------------------------------------------------------------------ facts
 
@@ -335,47 +332,10 @@ class ContainmentTest {
 
     /** The closure of a polygonal or zero-size shape as JTS geometry. */
     static Geometry jts(Shape s) {
-        if (s instanceof Rect r) {
-            double x = r.x(), y = r.y(), right = x + r.w(), bottom = y + r.h();
-            if (r.w() > 0 && r.h() > 0) {
-                return polygon(x, y, right, y, right, bottom, x, bottom);
-            }
-            return segment(x, y, right, bottom);
+        if (s instanceof Circle c && c.r() == 0 || s instanceof Capsule k && k.r() == 0) {
+            return JtsShapes.core(s);
         }
-        if (s instanceof Segment g) {
-            return segment(g.x1(), g.y1(), g.x2(), g.y2());
-        }
-        if (s instanceof Polygon p) {
-            float[] xy = p.coordinates();
-            double[] d = new double[xy.length];
-            for (int i = 0; i < xy.length; i++) {
-                d[i] = xy[i];
-            }
-            return polygon(d);
-        }
-        if (s instanceof Circle c && c.r() == 0) {
-            return segment(c.x(), c.y(), c.x(), c.y());
-        }
-        if (s instanceof Capsule k && k.r() == 0) {
-            return segment(k.x1(), k.y1(), k.x2(), k.y2());
-        }
-        throw new IllegalArgumentException("not polygonal: " + s);
-    }
-
-    private static Geometry segment(double x1, double y1, double x2, double y2) {
-        if (x1 == x2 && y1 == y2) {
-            return GF.createPoint(new Coordinate(x1, y1));
-        }
-        return GF.createLineString(new Coordinate[] {new Coordinate(x1, y1), new Coordinate(x2, y2)});
-    }
-
-    private static Geometry polygon(double... xy) {
-        Coordinate[] c = new Coordinate[xy.length / 2 + 1];
-        for (int i = 0; i < xy.length / 2; i++) {
-            c[i] = new Coordinate(xy[2 * i], xy[2 * i + 1]);
-        }
-        c[c.length - 1] = c[0];
-        return GF.createPolygon(c);
+        return JtsShapes.straight(s);
     }
 
     // ------------------------------------------------------------------ dense sampling, the curved kinds

@@ -29,7 +29,7 @@ import org.locationtech.jts.operation.distance.DistanceOp;
  */
 class SeparationOracleTest {
 
-    private static final GeometryFactory GF = new GeometryFactory();
+    private static final GeometryFactory GF = JtsShapes.GF;
 
     // ---------------------------------------------------------------- random shapes
 
@@ -57,45 +57,6 @@ class SeparationOracleTest {
     }
 
     // ---------------------------------------------------------------- JTS's view
-
-    private static Geometry segment(double x1, double y1, double x2, double y2) {
-        if (x1 == x2 && y1 == y2) {
-            return GF.createPoint(new Coordinate(x1, y1));
-        }
-        return GF.createLineString(new Coordinate[] {new Coordinate(x1, y1), new Coordinate(x2, y2)});
-    }
-
-    /** The shape's core as JTS geometry (a circle as its centre, a capsule as its segment). */
-    static Geometry core(Shape s) {
-        if (s instanceof Circle c) {
-            return GF.createPoint(new Coordinate(c.x(), c.y()));
-        }
-        if (s instanceof Capsule k) {
-            return segment(k.x1(), k.y1(), k.x2(), k.y2());
-        }
-        if (s instanceof Segment g) {
-            return segment(g.x1(), g.y1(), g.x2(), g.y2());
-        }
-        if (s instanceof Rect r) {
-            double x = r.x(), y = r.y(), x2 = x + (double) r.w(), y2 = y + (double) r.h();
-            if (r.w() == 0 || r.h() == 0) {
-                return segment(x, y, x2, y2);
-            }
-            return GF.createPolygon(new Coordinate[] {new Coordinate(x, y), new Coordinate(x2, y),
-                    new Coordinate(x2, y2), new Coordinate(x, y2), new Coordinate(x, y)});
-        }
-        Polygon p = (Polygon) s;
-        Coordinate[] c = new Coordinate[p.size() + 1];
-        for (int i = 0; i < p.size(); i++) {
-            c[i] = new Coordinate(p.x(i), p.y(i));
-        }
-        c[p.size()] = c[0];
-        return GF.createPolygon(c);
-    }
-
-    static double radius(Shape s) {
-        return s instanceof Circle c ? c.r() : s instanceof Capsule k ? k.r() : 0;
-    }
 
     // ---------------------------------------------------------------- on the outline
 
@@ -187,7 +148,7 @@ class SeparationOracleTest {
             double gap = rnd.nextDouble(0, 60);
             Shape a = random(rnd, ka, 0, 0, false), b = random(rnd, kb, gap, rnd.nextDouble(-30, 30), false);
             pairs++;
-            double oracle = Math.max(0, DistanceOp.distance(core(a), core(b)) - radius(a) - radius(b));
+            double oracle = Math.max(0, DistanceOp.distance(JtsShapes.core(a), JtsShapes.core(b)) - JtsShapes.radius(a) - JtsShapes.radius(b));
             double tol = Math.ulp((float) oracle) + 1e-12 * scale(a, b);
             checkShape(a, b, 1e-5 * scale(a, b));
             for (Separation s : new Separation[] {Separation.between(a, b), Separation.between(b, a)}) {
@@ -238,7 +199,7 @@ class SeparationOracleTest {
             Shape a = gear(rnd, 10 + rnd.nextInt(100), 0, 0);
             Shape b = n % 3 == 0 ? gear(rnd, 10 + rnd.nextInt(100), rnd.nextDouble(-120, 120), rnd.nextDouble(-120, 120))
                     : random(rnd, rnd.nextInt(6), rnd.nextDouble(-120, 120), rnd.nextDouble(-120, 120), false);
-            double oracle = Math.max(0, DistanceOp.distance(core(a), core(b)) - radius(a) - radius(b));
+            double oracle = Math.max(0, DistanceOp.distance(JtsShapes.core(a), JtsShapes.core(b)) - JtsShapes.radius(a) - JtsShapes.radius(b));
             checkShape(a, b, 1e-5 * scale(a, b));
             for (Separation s : new Separation[] {Separation.between(a, b), Separation.between(b, a)}) {
                 if (s != null) {
@@ -306,7 +267,7 @@ class SeparationOracleTest {
             if (root == null) {
                 continue;
             }
-            Q exact = root.minus(Q.of((float) radius(a))).minus(Q.of((float) radius(b)));
+            Q exact = root.minus(Q.of((float) JtsShapes.radius(a))).minus(Q.of((float) JtsShapes.radius(b)));
             if (exact.signum() < 0) {
                 exact = Q.ZERO;
             }
@@ -324,7 +285,7 @@ class SeparationOracleTest {
 
     /** Do the cores of two straight shapes meet (then their distance is 0, not an end's)? */
     private static boolean coresMeet(Shape a, Shape b) {
-        return core(a).intersects(core(b)) || core(a).distance(core(b)) == 0;
+        return JtsShapes.core(a).intersects(JtsShapes.core(b)) || JtsShapes.core(a).distance(JtsShapes.core(b)) == 0;
     }
 
     // ---------------------------------------------------------------- ellipses
@@ -335,7 +296,7 @@ class SeparationOracleTest {
             throw new IllegalArgumentException("sampled separately: " + e);
         }
         if (s instanceof Rect || s instanceof Polygon) {
-            Geometry g = core(s);
+            Geometry g = JtsShapes.core(s);
             return g.distance(GF.createPoint(new Coordinate(px, py)));
         }
         if (s instanceof Circle c) {
@@ -375,10 +336,10 @@ class SeparationOracleTest {
     private static double[] bracket(Ellipse e, Shape other) {
         int n = 1024;
         Geometry in = polygonOf(e, n, false), out = polygonOf(e, n, true);
-        Geometry o = other instanceof Ellipse f ? null : core(other);
+        Geometry o = other instanceof Ellipse f ? null : JtsShapes.core(other);
         double lower = o == null ? out.distance(polygonOf((Ellipse) other, n, true)) : out.distance(o);
         double upper = o == null ? in.distance(polygonOf((Ellipse) other, n, false)) : in.distance(o);
-        double r = radius(other);
+        double r = JtsShapes.radius(other);
         return new double[] {Math.max(0, lower - r), Math.max(0, upper - r)};
     }
 
@@ -455,7 +416,7 @@ class SeparationOracleTest {
                     s.distance() + " outside JTS's [" + br[0] + ", " + br[1] + "]: " + e + " " + b);
             if (!(b instanceof Ellipse)) {
                 // Refined sampling, accurate to double rounding: the answer is within its own float rounding.
-                double reference = Math.max(0, sampled(e, b) - radius(b));
+                double reference = Math.max(0, sampled(e, b) - JtsShapes.radius(b));
                 assertTrue(s.distance() <= reference + tol, s.distance() + " > sampled " + reference + ": " + e + " " + b);
                 worst = Math.max(worst, (Math.abs(reference - s.distance()) - Math.ulp(s.distance())) / size);
             }
