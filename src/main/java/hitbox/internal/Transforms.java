@@ -75,6 +75,19 @@ public final class Transforms {
         return f;
     }
 
+    /**
+     * {@link #coordinate(String, double)} for the {@code index}th vertex, its name (prefix,
+     * index, suffix) built only when refused: a turned body's shape is made every frame, and
+     * a name built up front would be most of its cost.
+     */
+    private static float coordinate(String prefix, int index, String suffix, double v) {
+        float f = (float) v;
+        if (!Float.isFinite(f)) {
+            return coordinate(prefix + index + suffix, v);
+        }
+        return f;
+    }
+
     /** A transformed size rounded to float, refused if it leaves the float range. */
     private static float size(String name, double v) {
         return coordinate(name, v);
@@ -165,7 +178,7 @@ public final class Transforms {
             throw singular("rectangle", a);
         }
         double[] corners = {x0, y0, x1, y0, x1, y1, x0, y1};
-        return polygonOf(corners, a, "rectangle " + r);
+        return polygonOf(corners, a, r);
     }
 
     /** A segment's image: its two ends transformed. */
@@ -190,8 +203,8 @@ public final class Transforms {
         for (int i = 0; i < xy.length; i += 2) {
             double x = a.x(xy[i], xy[i + 1]);
             double y = a.y(xy[i], xy[i + 1]);
-            out[i] = coordinate("x" + (i / 2), x);
-            out[i + 1] = coordinate("y" + (i / 2), y);
+            out[i] = coordinate("x", i / 2, "", x);
+            out[i + 1] = coordinate("y", i / 2, "", y);
             // how far the double sum can be off: a few units of 2^-53 of its terms
             err = Math.max(err, Math.abs(a.m00() * xy[i]) + Math.abs(a.m01() * xy[i + 1]) + Math.abs(a.m02())
                     + Math.abs(a.m10() * xy[i]) + Math.abs(a.m11() * xy[i + 1]) + Math.abs(a.m12()));
@@ -266,16 +279,16 @@ public final class Transforms {
     }
 
     /** The polygon of the given corners (in double) transformed, checked as Polygon.of checks. */
-    private static Polygon polygonOf(double[] corners, Affine a, String what) {
+    private static Polygon polygonOf(double[] corners, Affine a, Rect rect) {
         float[] xy = new float[corners.length];
         for (int i = 0; i < xy.length; i += 2) {
-            xy[i] = coordinate("corner " + (i / 2) + "'s x", a.x(corners[i], corners[i + 1]));
-            xy[i + 1] = coordinate("corner " + (i / 2) + "'s y", a.y(corners[i], corners[i + 1]));
+            xy[i] = coordinate("corner ", i / 2, "'s x", a.x(corners[i], corners[i + 1]));
+            xy[i + 1] = coordinate("corner ", i / 2, "'s y", a.y(corners[i], corners[i + 1]));
         }
         try {
             return Polygon.of(xy);
         } catch (IllegalArgumentException ex) {
-            throw new IllegalArgumentException("the corners of the " + what + " transformed round to an outline a"
+            throw new IllegalArgumentException("the corners of the rectangle " + rect + " transformed round to an outline a"
                     + " polygon cannot have: " + ex.getMessage(), ex);
         }
     }
