@@ -1,7 +1,7 @@
 /**
  * Hitbox: collision detection for Processing sketches and Java 2D games, one idea at a time.
  *
- * <h2>Two ways in</h2>
+ * <h2>Three ways in</h2>
  * <ul>
  *   <li>{@link hitbox.Collide}: static tests on plain {@code float}s, written the way the
  *       tutorial writes its {@code if} statements, for example
@@ -10,7 +10,13 @@
  *   <li>Shapes ({@link hitbox.Circle}, {@link hitbox.Rect}, and the rest of the sealed
  *       {@link hitbox.Shape} family): immutable values whose constructors reject bad input
  *       with a message that names the parameter. {@code a.overlaps(b)} answers for every
- *       pair of shapes, in either order, through the same code as {@code Collide}.</li>
+ *       pair of shapes, in either order, through the same code as {@code Collide}. A shape
+ *       moves with {@code translated} and turns with {@code rotated} or
+ *       {@code transformed(}{@link hitbox.Transform}{@code )}, the way Processing's
+ *       {@code translate}, {@code rotate} and {@code scale} draw it.</li>
+ *   <li>A {@link hitbox.World} of {@link hitbox.Body bodies}, for a game: each body keeps its
+ *       shape and a pose, and {@code world.move(body, dx, dy, filter)} moves it through the
+ *       others with the reaction each pair needs, never tunnelling.</li>
  * </ul>
  *
  * <h2>Units and conventions</h2>
