@@ -112,25 +112,42 @@ public final class Overlaps {
         };
     }
 
-    /** A circle with anything: a capsule or an ellipse, the earlier kinds, takes the pair swapped. */
+    /**
+     * A circle with anything: a capsule or an ellipse, the earlier kinds, takes the pair swapped.
+     *
+     * <p>The tutorial's two pairs, circle with circle and circle with rectangle, are asked
+     * before the switch: a documented fast path (docs/architecture.md). The narrow-phase table
+     * measured {@code Circle.overlaps} about 1 ns (20 to 25%) slower through the switch alone,
+     * which reads the kind's case from a table javac makes for an enum switch; the other kinds'
+     * {@code overlaps} showed no such loss. The switch keeps both cases, so the dispatch stays
+     * complete without the fast path.
+     */
     public static boolean circleWith(Circle c, Shape other) {
+        if (other instanceof Circle d) {
+            return circleCircle(c, d);
+        }
+        if (other instanceof Rect r) {
+            return circleRect(c, r);
+        }
         return switch (ShapeKind.of(other)) {
             case ELLIPSE -> ellipseWith((Ellipse) other, c);
             case CAPSULE -> capsuleWith((Capsule) other, c);
-            case CIRCLE -> {
-                Circle d = (Circle) other;
-                yield Collide.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
-            }
-            case RECT -> {
-                Rect r = (Rect) other;
-                yield Collide.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
-            }
+            case CIRCLE -> circleCircle(c, (Circle) other);
+            case RECT -> circleRect(c, (Rect) other);
             case SEGMENT -> {
                 Segment s = (Segment) other;
                 yield Collide.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
             }
             case POLYGON -> Collide.polygonCircle(HiddenParts.raw((Polygon) other), c.x(), c.y(), c.r());
         };
+    }
+
+    private static boolean circleCircle(Circle c, Circle d) {
+        return Collide.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
+    }
+
+    private static boolean circleRect(Circle c, Rect r) {
+        return Collide.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
     }
 
     /** A rectangle with anything: a circle, a capsule or an ellipse takes the pair swapped. */
