@@ -37,7 +37,7 @@ class DrawTest {
 
     private static final int W = 200, H = 160;
     /** How far from the outline a pixel may go either way: rasterising rules and the stroke. */
-    private static final float BAND = 1.5f;
+    private static final float BAND = PixelsAgainstContains.BAND;
 
     /** Samples per kind, turned ellipses, concave polygons and capsules at angles included. */
     private static final Map<Class<?>, List<Shape>> SAMPLES = new LinkedHashMap<>();
@@ -121,48 +121,7 @@ class DrawTest {
         Draw.shape(g, shape);
         g.endDraw();
         g.loadPixels();
-        boolean area = ShapeKind.of(shape).hasArea();
-        int checked = 0, lit = 0;
-        List<String> wrong = new ArrayList<>();
-        for (int py = 0; py < H; py++) {
-            for (int px = 0; px < W; px++) {
-                float x = px + 0.5f, y = py + 0.5f;
-                boolean drawn = (g.pixels[py * W + px] & 0xff) > 127;
-                lit += drawn ? 1 : 0;
-                if (nearOutline(shape, x, y, area)) {
-                    continue;
-                }
-                checked++;
-                if (drawn != shape.contains(x, y)) {
-                    wrong.add("(" + px + ", " + py + ") " + (drawn ? "drawn" : "not drawn"));
-                }
-            }
-        }
-        assertTrue(checked > W * H / 2, shape + ": too few pixels outside the band: " + checked);
-        assertTrue(lit > 0, shape + ": nothing drawn");
-        assertEquals(List.of(), wrong.size() > 10 ? wrong.subList(0, 10) : wrong,
-                shape + ": " + wrong.size() + " pixels differ from contains");
-    }
-
-    /**
-     * Is the point within {@link #BAND} of the outline? For a shape with area: do points on a
-     * ring of that radius about it (and the point) disagree about being inside? For a
-     * segment: does a disc of that radius reach it?
-     */
-    private static boolean nearOutline(Shape shape, float x, float y, boolean area) {
-        if (!area) {
-            return shape.overlaps(new Circle(x, y, BAND));
-        }
-        boolean in = shape.contains(x, y);
-        for (int i = 0; i < 24; i++) {
-            double t = 2 * Math.PI * i / 24;
-            for (float r : new float[] {BAND / 2, BAND}) {
-                if (shape.contains(x + r * (float) Math.cos(t), y + r * (float) Math.sin(t)) != in) {
-                    return true;
-                }
-            }
-        }
-        return false;
+        PixelsAgainstContains.check(g, shape, 1, 0);
     }
 
     /** The test's own kinds list agrees with ShapeKind's (a kind added to one and not the other fails). */
