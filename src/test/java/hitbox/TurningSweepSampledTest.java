@@ -33,7 +33,8 @@ class TurningSweepSampledTest {
     private static final int SAMPLES = 400;
     private static final GeometryFactory GF = new GeometryFactory();
 
-    private static Polygon regular(SplittableRandom rnd, double cx, double cy, int n, double r) {
+    /** A regular n-gon of radius r about (cx, cy), turned at random. */
+    static Polygon regular(SplittableRandom rnd, double cx, double cy, int n, double r) {
         float[] xy = new float[2 * n];
         double start = rnd.nextDouble() * Math.PI;
         for (int k = 0; k < n; k++) {
@@ -64,7 +65,7 @@ class TurningSweepSampledTest {
     }
 
     /** The mover at time t, shifted by (sx, sy): turned by t turn about the pivot, moved by t v. */
-    private static Geometry moverAt(Polygon mover, double px, double py, double vx, double vy, double turn, double t,
+    static Geometry moverAt(Polygon mover, double px, double py, double vx, double vy, double turn, double t,
                                     double sx, double sy) {
         float[] xy = mover.coordinates();
         double c = Math.cos(t * turn), s = Math.sin(t * turn);

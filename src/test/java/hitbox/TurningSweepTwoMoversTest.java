@@ -9,9 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
-import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
-import org.locationtech.jts.geom.GeometryFactory;
 
 /**
  * Issue 23, item 4: {@link Sweep#turningTimeOfImpact(Polygon, float, float, float, float, float,
@@ -25,19 +23,8 @@ import org.locationtech.jts.geom.GeometryFactory;
  */
 class TurningSweepTwoMoversTest {
 
-    private static final double TOUCH = 1e-3;
+    private static final double TOUCH = TurningSweepSampledTest.TOUCH;
     private static final int SAMPLES = 400;
-    private static final GeometryFactory GF = new GeometryFactory();
-
-    private static Polygon regular(SplittableRandom rnd, double cx, double cy, int n, double r) {
-        float[] xy = new float[2 * n];
-        double start = rnd.nextDouble() * Math.PI;
-        for (int k = 0; k < n; k++) {
-            xy[2 * k] = (float) (cx + r * Math.cos(start + 2 * Math.PI * k / n));
-            xy[2 * k + 1] = (float) (cy + r * Math.sin(start + 2 * Math.PI * k / n));
-        }
-        return Polygon.of(xy);
-    }
 
     /** A thin bar of length 2 half about (cx, cy), at an angle. */
     private static Polygon bar(double cx, double cy, double half, double thick, double angle) {
@@ -51,18 +38,10 @@ class TurningSweepTwoMoversTest {
         return Polygon.of(xy);
     }
 
-    /** A body at time t, shifted by (sx, sy), as JTS geometry. */
+    /** A body at time t, shifted by (sx, sy), as JTS geometry: the sampled test's own. */
     private static Geometry at(Polygon body, double px, double py, double vx, double vy, double turn, double t,
                                double sx, double sy) {
-        float[] xy = body.coordinates();
-        double c = Math.cos(t * turn), s = Math.sin(t * turn);
-        int n = xy.length / 2;
-        Coordinate[] ring = new Coordinate[n + 1];
-        for (int i = 0; i <= n; i++) {
-            double x = xy[2 * (i % n)] - px, y = xy[2 * (i % n) + 1] - py;
-            ring[i] = new Coordinate(px + t * vx + c * x - s * y + sx, py + t * vy + s * x + c * y + sy);
-        }
-        return GF.createPolygon(ring);
+        return TurningSweepSampledTest.moverAt(body, px, py, vx, vy, turn, t, sx, sy);
     }
 
     /** One body of the pair: the polygon, its pivot, its motion and its turn. */
@@ -126,10 +105,10 @@ class TurningSweepTwoMoversTest {
             double ax = rnd.nextDouble() * 200, ay = rnd.nextDouble() * 200;
             double bx = rnd.nextDouble() * 200, by = rnd.nextDouble() * 200;
             Polygon pa = i % 5 == 0 ? bar(ax, ay, 10 + rnd.nextDouble() * 30, 0.5 + rnd.nextDouble(), rnd.nextDouble() * 3)
-                    : regular(rnd, ax, ay, 3 + rnd.nextInt(6), 5 + rnd.nextDouble() * 25);
+                    : TurningSweepSampledTest.regular(rnd, ax, ay, 3 + rnd.nextInt(6), 5 + rnd.nextDouble() * 25);
             Polygon pb = i % 7 == 0 ? Polygon.of((float) bx, (float) by, (float) bx + 30, (float) by, (float) bx + 30, (float) by + 30,
                     (float) bx + 15, (float) by + 10, (float) bx, (float) by + 30)
-                    : regular(rnd, bx, by, 3 + rnd.nextInt(6), 5 + rnd.nextDouble() * 25);
+                    : TurningSweepSampledTest.regular(rnd, bx, by, 3 + rnd.nextInt(6), 5 + rnd.nextDouble() * 25);
             // Towards each other, each about half the way, with some scatter; turning or not.
             float vax = (float) (0.7 * (bx - ax) + rnd.nextDouble() * 40 - 20), vay = (float) (0.7 * (by - ay) + rnd.nextDouble() * 40 - 20);
             float vbx = (float) (0.7 * (ax - bx) + rnd.nextDouble() * 40 - 20), vby = (float) (0.7 * (ay - by) + rnd.nextDouble() * 40 - 20);
@@ -165,8 +144,8 @@ class TurningSweepTwoMoversTest {
     void oneBodyAtRest_isTheStandingSweep() {
         SplittableRandom rnd = new SplittableRandom(77);
         for (int i = 0; i < 60; i++) {
-            Polygon pa = regular(rnd, 0, 0, 3 + rnd.nextInt(5), 8);
-            Polygon pb = regular(rnd, 40 + rnd.nextDouble() * 20, rnd.nextDouble() * 20 - 10, 3 + rnd.nextInt(5), 10);
+            Polygon pa = TurningSweepSampledTest.regular(rnd, 0, 0, 3 + rnd.nextInt(5), 8);
+            Polygon pb = TurningSweepSampledTest.regular(rnd, 40 + rnd.nextDouble() * 20, rnd.nextDouble() * 20 - 10, 3 + rnd.nextInt(5), 10);
             float vx = 60, vy = (float) (rnd.nextDouble() * 20 - 10), turn = (float) (rnd.nextDouble() * 4 - 2);
             Hit standing = Sweep.turningTimeOfImpact(pa, 0, 0, vx, vy, turn, pb);
             Hit both = Sweep.turningTimeOfImpact(pa, 0, 0, vx, vy, turn, pb, 50, 0, 0, 0, 0);
