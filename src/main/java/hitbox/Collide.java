@@ -236,7 +236,8 @@ public final class Collide {
      * second radius at most the first radius? Touching from inside counts, so a circle
      * contains itself.
      *
-     * <p>The tutorial's distance, {@code dist(x1, y1, x2, y2) <= r1 - r2}, compared squared and
+     * <p>The tutorial has no containment test; this is its distance turned round,
+     * {@code dist(x1, y1, x2, y2) <= r1 - r2}, compared squared and
      * exactly for every float; libGDX's {@code Circle.contains(Circle)} gives the same for
      * circles with area. A circle of radius 0 is its centre: it contains only itself (a circle
      * of radius 0 at the same place), and a circle contains it when the centre is in the

@@ -150,8 +150,9 @@ public record Separation(float distance, float ax, float ay, float bx, float by)
     }
 
     /**
-     * How far a point is from a circle's outline, 0 when it is inside or on it: the
-     * tutorial's {@code dist(px, py, cx, cy) - r}, held at 0.
+     * How far a point is from a circle's outline, 0 when it is inside or on it:
+     * {@code dist(px, py, cx, cy) - r}, held at 0 (the tutorial compares that distance with
+     * r; this is by how much it misses).
      *
      * <p>A NaN in any argument, an infinite one or a negative radius answers
      * {@code +Infinity} (the <a href="package-summary.html#bad-input">NaN rule</a>).
@@ -171,8 +172,9 @@ public record Separation(float distance, float ax, float ay, float bx, float by)
     }
 
     /**
-     * How far apart two circles are, 0 when they touch or overlap: the tutorial's
-     * {@code dist(x1, y1, x2, y2) - (r1 + r2)}, held at 0. Exact for whole numbers when the
+     * How far apart two circles are, 0 when they touch or overlap:
+     * {@code dist(x1, y1, x2, y2) - (r1 + r2)}, held at 0 (the tutorial compares that
+     * distance with r1 + r2; this is by how much it misses). Exact for whole numbers when the
      * centres' distance is a whole number.
      *
      * <p>A NaN in any argument, an infinite one or a negative radius answers
