@@ -6,13 +6,14 @@
  * off them, and a new colour for a bouncer each time it hits one. It is section 8 twice over:
  * a loop over the bouncers, and inside it section 8's loop over the obstacles.
  *
- * Each bouncer asks every obstacle first, combines the answers (Motion.rectBlocked, once per
- * obstacle), then reverses once and moves only where it is free. Hitbox does it this way,
- * not with the tutorial's flip inside the loop, because random obstacles overlap and leave
- * gaps narrower than one move, where a flip inside the loop can send a bouncer into an
+ * Where Hitbox differs: each bouncer asks every obstacle first, combines the answers
+ * (Motion.rectBlocked, once per obstacle), then reverses once and moves only where it is
+ * free. The tutorial flips a speed inside the loop instead, but random obstacles overlap and
+ * leave gaps narrower than one move, where a flip inside the loop can send a bouncer into an
  * obstacle (S08 shows that). Press t for section 8's own loop, flip and all, and watch the
- * count of bouncers caught inside an obstacle. That is 100 x 100 = 10,000 bouncer-obstacle pairs a frame, a
- * few comparisons each: far below a millisecond, so no grid or other broad phase is needed.
+ * count of bouncers caught inside an obstacle. That is 100 x 100 = 10,000 bouncer-obstacle
+ * pairs a frame, a few comparisons each: far below a millisecond, so no grid or other broad
+ * phase is needed.
  *
  * Everything random comes from randomSeed, so every run is the same.
  *

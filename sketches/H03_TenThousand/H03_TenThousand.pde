@@ -13,7 +13,8 @@
  *
  * Everything random comes from randomSeed, so every run is the same.
  *
- * Section 10 names two of these structures, R-trees and quadtrees. The dynamic tree (3) is
+ * Where Hitbox differs: section 10 only names two of these structures, R-trees and
+ * quadtrees, and writes neither; Hitbox has both kinds and more. The dynamic tree (3) is
  * an R-tree kind: it groups nearby boxes under a box that holds them, those groups under
  * bigger boxes, up to one box round everything, and a search skips every group whose box it
  * misses (the maths draws its boxes near the mouse). The quadtree (4) cuts the window into

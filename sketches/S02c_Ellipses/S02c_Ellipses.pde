@@ -14,7 +14,8 @@
  *
  * The fourth ellipse is turned: new Ellipse(x, y, rx, ry, angle) takes the angle as rotate()
  * does (radians, clockwise on screen). It has no raw-float test; the shape answers, by turning
- * the mouse into the ellipse's own frame, where the same formula holds.
+ * the mouse into the ellipse's own frame, where the same formula holds, and Draw.shape(g, e)
+ * draws it turned.
  *
  * Try this: make an ellipse flat (a radius of 0: it has no inside any more); give the mouse
  * circle radius 0 and see it act as a point; squash an ellipse by changing its radii.
@@ -61,11 +62,13 @@ void draw() {
     }
     noStroke();
     fill(hit[i] ? Palette.HIT : Palette.MISS);
-    pushMatrix();
-    translate(e.x(), e.y());
-    rotate(e.angle());
-    ellipse(0, 0, 2 * e.rx(), 2 * e.ry());
-    popMatrix();
+    if (e.angle() != 0) {
+      // Turned: the library draws it turned about its centre, as rotate() turns it.
+      Draw.shape(g, e);
+    } else {
+      // As the tutorial draws: ellipse() takes the width and height, twice the radii.
+      ellipse(e.x(), e.y(), 2 * e.rx(), 2 * e.ry());
+    }
   }
 
   // The mouse: a point, or a circle drawn as its outline.

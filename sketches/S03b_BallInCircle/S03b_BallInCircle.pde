@@ -8,11 +8,11 @@
  * edges, and section 3's circles, dist(x, y, circleCenterX, circleCenterY) < r +
  * circleRadius. Red here means "overlapping": the ball turns red as soon as it reaches in.
  *
- * Press t for the tutorial's own tests: section 1's centre against the edges with the speed
- * multiplied by -1 (the ball goes half out of the window before it turns), and the dist()
- * test written out. By default Hitbox's: the ball's edge against the window's (Edges, as in
- * S01), the speed's sign set and the ball put back at the edge, and Collide.circleCircle,
- * the same test compared squared.
+ * Where Hitbox differs: at the edges. By default it tests the ball's edge against the
+ * window's (Edges, as in S01), sets the speed's sign and puts the ball back at the edge; the
+ * circles are Collide.circleCircle, the same test compared squared. Press t for the
+ * tutorial's own tests: section 1's centre against the edges with the speed multiplied by -1
+ * (the ball goes half out of the window before it turns), and the dist() test written out.
  *
  * Try this: make it red only when wholly inside (dist + r < circleRadius); make the ball
  * bigger than the circle; add a second ball and test the two balls against each other.

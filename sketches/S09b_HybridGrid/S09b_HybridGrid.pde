@@ -15,12 +15,13 @@
  * the next position, one axis at a time, in the cells under the box there, and section 7's
  * snap to the edge of the cell it would enter.
  *
- * Hitbox's way (the default) is one call, grid.move(player, vx, vy): it sweeps the box from
- * where it is to where the motion would take it, through the cells under that path, stops
- * it touching the first obstacle and slides it along with the rest of the motion. The
- * tutorial's way looks at one next position, so a move longer than a platform is thick can
- * step right over it; the sweep never tunnels. Touching is not colliding in both, so running
- * along a floor never catches on the seams between cells. The map's edge counts as solid.
+ * Where Hitbox differs: its way (the default) is one call, grid.move(player, vx, vy): it
+ * sweeps the box from where it is to where the motion would take it, through the cells under
+ * that path, stops it touching the first obstacle and slides it along with the rest of the
+ * motion. The tutorial's way looks at one next position, so a move longer than a platform is
+ * thick can step right over it; the sweep never tunnels. Touching is not colliding in both,
+ * so running along a floor never catches on the seams between cells. The map's edge counts
+ * as solid.
  *
  * Try this: raise maxFall to 60 (more than two cells a frame), fall onto a thin platform in
  * both ways; make the player wider than a cell, or draw your own level in the map below.

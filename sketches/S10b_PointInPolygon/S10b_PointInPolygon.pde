@@ -10,14 +10,18 @@
  * at or above it, and meet it right of the point. Only one end may count as "at", because a
  * ray through a corner would otherwise count that corner twice (once per edge): a corner the
  * outline just touches counts 0 or 2 times, one it passes through once. Collide.polygonPoint
- * is the whole count in one call (Collide.rayCrossesEdge the rule for one edge). A point on
- * the outline is not inside. Yellow dots are the crossings; hollow rings are corners touched,
- * not crossed.
+ * is the whole count in one call (Collide.rayCrossesEdge the rule for one edge). Yellow dots
+ * are the crossings; hollow rings are corners touched, not crossed.
  *
  * Press b and the mouse carries a ball: a shape against the concave polygon, which the video
  * says becomes more complex. They overlap when an edge of the crown cuts into the ball, or
  * when the ball's centre is inside (the crossing count again), for a ball wholly inside
  * touches no edge; crown.overlaps(ball) is the library's answer.
+ *
+ * Where Hitbox differs: neither source writes the count out, so there is no tutorial's
+ * version to switch to. Collide.polygonPoint counts as crosses() does; a point on the
+ * outline is not inside, and a ball that only touches an edge does not overlap, because
+ * touching is not colliding for every pair.
  *
  * Try this: put the mouse level with a corner of the crown (y = 140 or y = 70); put it in
  * the notch at the bottom; with the ball, slide it into the notch until it touches both

@@ -13,10 +13,10 @@
  * runs the same three stages in one call, with the same answers. The big star is coloured by
  * the stage that decided; the first pixel the two share is marked.
  *
- * The tutorial gives no code for these stages. Stage 3 can be a plain loop over the pixels
- * (press p), and that loop is what makes pixel-perfect slow; Hitbox's PixelMask.overlaps
- * keeps each row of a sprite as bits, 64 pixels to a long, and compares 64 pixels in one
- * step. The time stage 3 took this frame is on screen for both.
+ * Where Hitbox differs: in stage 3. The tutorial gives no code for these stages. Stage 3 can
+ * be a plain loop over the pixels (press p), and that loop is what makes pixel-perfect slow;
+ * Hitbox's PixelMask.overlaps keeps each row of a sprite as bits, 64 pixels to a long, and
+ * compares 64 pixels in one step. The time stage 3 took this frame is on screen for both.
  *
  * Try this: put the ring between two of the star's points (the boxes overlap, the pixels
  * do not); press c and sweep the ring through a crowd to see how rarely the pixel test has

@@ -14,6 +14,7 @@
  * Both answer exactly as Collide.rectRect would for every pair: boxes that only touch are not
  * a pair.
  *
+ * Where Hitbox differs: the tutorial only names R-trees and quadtrees, and writes neither.
  * Press r for the same boxes in BroadPhase.dynamicTree(), Hitbox's R-tree kind of structure:
  * instead of cutting the window into squares, it groups nearby boxes under a box that holds
  * them, those groups under bigger boxes, and so on up to one box round everything (the grey

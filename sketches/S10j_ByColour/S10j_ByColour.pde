@@ -10,10 +10,11 @@
  * under a wheel means stop. It reads where the wheels WOULD be after this frame's move, as
  * section 6 looks before it moves, so no wheel ever ends up on the wall.
  *
- * Hitbox has no call for this, because there is no shape to test: the colours are the
- * sketch's own drawing, so the test is get() and ==. The library only places the wheels
- * (Polygon.rotatedRect, the car's corners). The track is drawn without smoothing, so every
- * pixel is exactly one of its colours; a smoothed edge would be a blend that matches none.
+ * Where Hitbox differs: it has no call for this, because there is no shape to test: the
+ * colours are the sketch's own drawing, so the test is get() and ==. The library only places
+ * the wheels (Polygon.rotatedRect, the car's corners). The track is drawn without smoothing,
+ * so every pixel is exactly one of its colours; a smoothed edge would be a blend that
+ * matches none.
  *
  * Try this: draw a puddle in another colour that makes the car skid; read the colour after
  * drawing the car and see the test find the car itself.

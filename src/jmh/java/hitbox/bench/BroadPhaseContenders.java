@@ -83,7 +83,11 @@ final class BroadPhaseContenders {
         }
     }
 
-    /** The tutorial's loop: every pair, Collide.rectRect. */
+    /**
+     * A plain loop over every pair, each tested as Collide.rectRect: the checks that section 10's
+     * R-trees and quadtrees cut down. The tutorial writes no such loop; its section 8 loops over
+     * one rectangle's obstacles.
+     */
     static final class PlainLoop implements Contender {
         private BroadPhaseWorld world;
 

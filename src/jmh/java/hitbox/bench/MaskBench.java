@@ -12,8 +12,9 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 
 /**
- * Pixel-perfect overlap of two 256x256 sprites: the word-wise bit mask against the
- * tutorial's per-pixel loop (the baseline). The sprites are a disc sitting in a ring's hole,
+ * Pixel-perfect overlap of two 256x256 sprites: the word-wise bit mask against a plain
+ * per-pixel loop (the baseline; the tutorial names pixel-perfect collision detection but
+ * writes no code for it). The sprites are a disc sitting in a ring's hole,
  * so their boxes overlap completely but no pixel is shared: both must look at everything.
  */
 @State(Scope.Benchmark)
