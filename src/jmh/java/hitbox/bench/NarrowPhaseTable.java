@@ -84,7 +84,7 @@ public final class NarrowPhaseTable {
                 if (touchingHit > 0) parts.add(touchingHit + " touching or grazing cases it counts as hits");
                 if (touchingMiss > 0) parts.add(touchingMiss + " touching or grazing hits it misses");
             }
-            String within = relative ? tolerance + " of the shapes' size" : tolerance + " px";
+            String within = relative ? String.format(Locale.ROOT, "%.0e", tolerance).replace("e-0", "e-") + " of the shapes' size" : tolerance + " px";
             if (skin > 0) parts.add(skin + " answers off by under " + within + " (its skin or tolerance)");
             if (normalTies > 0) parts.add(normalTies + " equally deep normals it picks otherwise");
             if (gaveUp > 0) parts.add(gaveUp + " it gives up on (no answer)");
@@ -522,6 +522,23 @@ public final class NarrowPhaseTable {
         s.append("so their times are compared to 0.25 px of motion and their hit or miss exactly. \"Touching or grazing\" means\n");
         s.append("Hitbox's answer changes when the second shape moves 0.02 px (0.05 px for sweeps): the peer's touching rule\n");
         s.append("(closed shapes, a contact of depth 0) or its skin, not a wrong answer; any other difference fails the run.\n");
+        s.append("The separation rows' cases are all apart or touching (every case has an answer; in a quarter of those placed by\n");
+        s.append("hand the shapes touch exactly, distance 0): a distance agrees to 1e-4 of the case's size (its largest coordinate;\n");
+        s.append("JBox2D works in float), and JTS, which has no circle, measures to the centre and the radius is taken off.\n");
+        s.append("The containment rows hold a shape touching the outline from inside (Hitbox's rule, and JTS's `covers`);\n");
+        s.append("libGDX's `Rectangle.contains(Rectangle)` and dyn4j's `Sat.contains` (strictly inside every projection) do not,\n");
+        s.append("and dyn4j's circle in circle compares the circles' extents along x only (its wrong answers are checked exactly).\n");
+        s.append("The manifold rows compare the depth and normal as the contact rows do, then the points deeper than 0.05 px,\n");
+        s.append("in either order, to 0.05 px in place and depth: JBox2D keeps the first polygon's face unless the other's is 2%\n");
+        s.append("less deep, and its search for the face can stop at a local best (both checked against the least depth by\n");
+        s.append("separating axes in double); JBox2D and dyn4j clip the incident edge to the reference face's side lines only,\n");
+        s.append("where Hitbox keeps each point in both shapes (checked by JTS distance). Such differences, another count of\n");
+        s.append("points, and the same points seen on the other shape are counted in the notes, not failed. The two-movers row\n");
+        s.append("turns both 8-gons about their centroids; a time is compared to 0.25 px of the fastest any point of one gains\n");
+        s.append("on the other, and where a peer stops earlier than that the gap it leaves is measured instead; where a peer\n");
+        s.append("misses a hit, the motion is sampled 4,000 times, each body placed in double and JTS asked whether they overlap.\n");
+        s.append("\"WRONG (checked ...)\" marks a peer's answer that such a check shows wrong and Hitbox's right; it is reported,\n");
+        s.append("not failed. A `Manifold` per hit holds its `Contact`: two result objects.\n");
         s.append("The pixel masks and `Hybrid` have no peer. Every contender answers case i through a lambda over its own\n");
         s.append("arrays, in a JVM of its own (one JMH fork each), so the call is inlined as a direct call would be.\n");
         s.append(whereTheTimeGoes(misses, profiles));
