@@ -13,9 +13,13 @@ import java.util.function.IntToDoubleFunction;
  * <p>Three forms, by what the question asks: yes or no ({@link IntPredicate}); a distance or
  * a time ({@link IntToDoubleFunction}, {@code +Infinity} for none); a contact, written as
  * (depth, normal x, normal y) into a scratch array, the normal from the first shape to the
- * second.
+ * second; contact points, written as (depth, nx, ny, count, x1, y1, depth1, x2, y2, depth2) into
+ * an array of {@value #POINTS} doubles (the first point repeated when there is one).
  */
 abstract class NarrowContender {
+    /** How many numbers a contact-points answer has. */
+    static final int POINTS = 10;
+
     /** Who answers: Hitbox's own call, Hitbox through {@code Shape}, or a peer. */
     enum Role { HITBOX, SHAPE, PEER }
 
@@ -45,7 +49,8 @@ abstract class NarrowContender {
 
     /**
      * Case i's answer for the agreement check: null for no hit, else {1} for a yes, {value}
-     * for a distance or time, {depth, nx, ny} for a contact.
+     * for a distance or time (NaN when the contender gives up), {depth, nx, ny} for a
+     * contact, {@value #POINTS} numbers for contact points.
      */
     abstract double[] answer(int i, float[] scratch);
 
@@ -142,6 +147,38 @@ abstract class NarrowContender {
         @Override
         double[] answer(int i, float[] out) {
             return f.at(i, out) ? new double[] {out[0], out[1], out[2]} : null;
+        }
+    }
+
+    /** Case i's contact points, written into {@code out} as {@value #POINTS} numbers; false for none. */
+    interface PointsFn {
+        boolean at(int i, double[] out);
+    }
+
+    /** A contact-points contender. */
+    static final class Points extends Built<PointsFn> {
+        private final double[] out = new double[POINTS];
+
+        Points(String question, String key, Role role, String call, Function<NarrowCase, PointsFn> factory) {
+            super(question, key, role, call, factory);
+        }
+
+        @Override
+        double run(float[] scratch) {
+            PointsFn f = this.f;
+            double[] out = this.out;
+            double sum = 0;
+            for (int i = 0; i < NarrowCase.N; i++) {
+                if (f.at(i, out)) {
+                    sum += out[0] + out[3] + out[4] + out[5] + out[7] + out[8];
+                }
+            }
+            return sum;
+        }
+
+        @Override
+        double[] answer(int i, float[] scratch) {
+            return f.at(i, out) ? out.clone() : null;
         }
     }
 }

@@ -14,6 +14,9 @@ import org.jbox2d.collision.shapes.CircleShape;
 import org.jbox2d.collision.shapes.EdgeShape;
 import org.jbox2d.collision.shapes.PolygonShape;
 import org.jbox2d.common.Vec2;
+import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Geometry;
+import org.locationtech.jts.geom.GeometryFactory;
 
 /**
  * Hitbox shapes as the peers' own shapes, built once before timing so that every contender
@@ -82,6 +85,54 @@ final class NarrowPeers {
     /** The shape's outline for libGDX's polygon tests (a rectangle as its four corners). */
     static com.badlogic.gdx.math.Polygon gdxPolygon(Shape s) {
         return new com.badlogic.gdx.math.Polygon(s instanceof Rect r ? Polygon.of(r).coordinates() : ((Polygon) s).coordinates());
+    }
+
+    /**
+     * A polygon as a dyn4j convex about (px, py): its vertices less the point, in double, so
+     * that a transform at (px, py) puts it back where it is and dyn4j turns it about that point
+     * (the origin of its own frame).
+     */
+    static Convex dyn4jAbout(Polygon p, double px, double py) {
+        float[] xy = p.coordinates();
+        int n = xy.length / 2;
+        boolean counterClockwise = signedArea(xy) > 0;
+        Vector2[] v = new Vector2[n];
+        for (int k = 0; k < n; k++) {
+            int j = counterClockwise ? k : n - 1 - k;
+            v[k] = new Vector2(xy[2 * j] - px, xy[2 * j + 1] - py);
+        }
+        return new org.dyn4j.geometry.Polygon(v);
+    }
+
+    /** A polygon in JBox2D about (px, py), its vertices less the point rounded to float: a sweep's body frame. */
+    static PolygonShape jbox2dAbout(Polygon p, double px, double py) {
+        float[] xy = p.coordinates();
+        Vec2[] v = new Vec2[xy.length / 2];
+        for (int k = 0; k < v.length; k++) {
+            v[k] = new Vec2((float) (xy[2 * k] - px), (float) (xy[2 * k + 1] - py));
+        }
+        PolygonShape polygon = new PolygonShape();
+        polygon.set(v, v.length);
+        return polygon;
+    }
+
+    private static final GeometryFactory JTS = new GeometryFactory();
+
+    /** The shape in JTS: a polygon or rectangle as its ring, a circle as its centre (see {@link #jtsRadius}). */
+    static Geometry jts(Shape s) {
+        if (s instanceof Circle c) return JTS.createPoint(new Coordinate(c.x(), c.y()));
+        float[] xy = s instanceof Rect r ? Polygon.of(r).coordinates() : ((Polygon) s).coordinates();
+        Coordinate[] ring = new Coordinate[xy.length / 2 + 1];
+        for (int k = 0; k <= xy.length / 2; k++) {
+            int j = k % (xy.length / 2);
+            ring[k] = new Coordinate(xy[2 * j], xy[2 * j + 1]);
+        }
+        return JTS.createPolygon(ring);
+    }
+
+    /** What JTS's distance to {@link #jts}'s geometry leaves out: a circle's radius, else 0. */
+    static double jtsRadius(Shape s) {
+        return s instanceof Circle c ? c.r() : 0;
     }
 
     /** Twice the signed area, positive when the corners turn counter-clockwise with y up. */

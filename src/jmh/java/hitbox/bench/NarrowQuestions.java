@@ -31,14 +31,18 @@ import hitbox.Collide;
 import hitbox.Contact;
 import hitbox.Hit;
 import hitbox.Hybrid;
+import hitbox.Manifold;
 import hitbox.PixelMask;
 import hitbox.Polygon;
 import hitbox.Ray;
 import hitbox.RayHit;
+import hitbox.Separation;
 import hitbox.Shape;
 import hitbox.Sweep;
 import org.dyn4j.collision.continuous.ConservativeAdvancement;
 import org.dyn4j.collision.continuous.TimeOfImpact;
+import org.dyn4j.collision.manifold.ClippingManifoldSolver;
+import org.dyn4j.collision.manifold.ManifoldPoint;
 import org.dyn4j.collision.narrowphase.Gjk;
 import org.dyn4j.collision.narrowphase.Penetration;
 import org.dyn4j.collision.narrowphase.Raycast;
@@ -46,15 +50,23 @@ import org.dyn4j.collision.narrowphase.Sat;
 import org.dyn4j.geometry.Convex;
 import org.dyn4j.geometry.Transform;
 import org.jbox2d.collision.Collision;
+import org.jbox2d.collision.Distance;
+import org.jbox2d.collision.DistanceInput;
+import org.jbox2d.collision.DistanceOutput;
 import org.jbox2d.collision.RayCastInput;
 import org.jbox2d.collision.RayCastOutput;
 import org.jbox2d.collision.TimeOfImpact.TOIInput;
 import org.jbox2d.collision.TimeOfImpact.TOIOutput;
 import org.jbox2d.collision.TimeOfImpact.TOIOutputState;
+import org.jbox2d.collision.shapes.PolygonShape;
 import org.jbox2d.pooling.normal.DefaultWorldPool;
 import org.locationtech.jts.algorithm.RayCrossingCounter;
 import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.Location;
+import org.locationtech.jts.geom.prep.PreparedGeometry;
+import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
+import org.locationtech.jts.operation.distance.DistanceOp;
 
 /**
  * Every question of the narrow-phase table and every contender for it, in table order: the
@@ -65,9 +77,11 @@ import org.locationtech.jts.geom.Location;
 final class NarrowQuestions {
     /**
      * A question: its row title, its cases, how far a nudge must move a shape to call a case
-     * touching, and how far (in pixels) a peer's distance, depth or time times speed may be off.
+     * touching, and how far (in pixels) a peer's distance, depth or time times speed may be off;
+     * when {@code relative}, that tolerance is a fraction of the case's size
+     * ({@link NarrowCase#size}) instead.
      */
-    record Question(String id, String title, Supplier<NarrowCase> cases, float step, double tolerance,
+    record Question(String id, String title, Supplier<NarrowCase> cases, float step, double tolerance, boolean relative,
                     List<NarrowContender> contenders) {
     }
 
@@ -114,7 +128,11 @@ final class NarrowQuestions {
     }
 
     private static void question(String id, String title, Supplier<NarrowCase> cases, float step, double tolerance) {
-        current = new Question(id, title, cases, step, tolerance, new ArrayList<>());
+        question(id, title, cases, step, tolerance, false);
+    }
+
+    private static void question(String id, String title, Supplier<NarrowCase> cases, float step, double tolerance, boolean relative) {
+        current = new Question(id, title, cases, step, tolerance, relative, new ArrayList<>());
         ALL.put(id, current);
     }
 
@@ -128,6 +146,10 @@ final class NarrowQuestions {
 
     private static void depth(String key, NarrowContender.Role role, String call, Function<NarrowCase, NarrowContender.ContactFn> f) {
         current.contenders().add(new NarrowContender.Depth(current.id(), key, role, call, f));
+    }
+
+    private static void points(String key, NarrowContender.Role role, String call, Function<NarrowCase, NarrowContender.PointsFn> f) {
+        current.contenders().add(new NarrowContender.Points(current.id(), key, role, call, f));
     }
 
     /** Collide's test on raw floats: the shapes' floats as {@link NarrowCase#raw} gives them. */
@@ -595,6 +617,325 @@ final class NarrowQuestions {
         bool("check", HITBOX, "Hybrid.check(Shape, Shape)", q -> {
             Shape[] a = q.a, b = q.b;
             return i -> Hybrid.check(a[i], b[i]).overlaps();
+        });
+
+        // ---- issue 23: the distance between shapes apart, one shape in another, contact points,
+        // two bodies that both move and turn. The Hitbox call first (raw where Hitbox has a raw form).
+        // A distance agrees to 1e-4 of the case's size (NarrowCase.size): JBox2D works in float.
+        question("sepPoly8", "separation, convex 8-gon vs 8-gon (apart)", () -> NarrowCase.apart(90, OCTAGON, OCTAGON), 0.02f, 1e-4, true);
+        num("raw", HITBOX, "Separation.polygonPolygon", q -> {
+            float[][] a = q.ra, b = q.rb;
+            return i -> Separation.polygonPolygon(a[i], b[i]);
+        });
+        separationShape();
+        dyn4jDistance();
+        jbox2dDistance();
+        jtsDistance();
+
+        question("sepCirclePoly8", "separation, circle vs convex 8-gon", () -> NarrowCase.apart(91, OCTAGON, CIRCLE), 0.02f, 1e-4, true);
+        num("raw", HITBOX, "Separation.polygonCircle", q -> {
+            float[][] a = q.ra, b = q.rb;
+            return i -> Separation.polygonCircle(a[i], b[i][0], b[i][1], b[i][2]);
+        });
+        separationShape();
+        dyn4jDistance();
+        jbox2dDistance();
+        jtsDistance();
+
+        question("sepCircleCircle", "separation, circle vs circle", () -> NarrowCase.apart(92, CIRCLE, CIRCLE), 0.02f, 1e-4, true);
+        num("raw", HITBOX, "Separation.circleCircle", q -> {
+            float[][] a = q.ra, b = q.rb;
+            return i -> Separation.circleCircle(a[i][0], a[i][1], a[i][2], b[i][0], b[i][1], b[i][2]);
+        });
+        separationShape();
+        dyn4jDistance();
+        jbox2dDistance();
+        jtsDistance();
+
+        // Containment: Hitbox's rule counts a shape touching the outline from inside as held.
+        question("containRect", "rect in rect", () -> NarrowCase.containing(93, RECT, NarrowCase.RECT_IN_RECT));
+        bool("collide", HITBOX, "Collide.rectContainsRect", q -> {
+            float[][] a = q.ra, b = q.rb;
+            return i -> Collide.rectContainsRect(a[i][0], a[i][1], a[i][2], a[i][3], b[i][0], b[i][1], b[i][2], b[i][3]);
+        });
+        shapeContainsShape("Rect.contains(Shape)");
+        bool("gdx", PEER, "libGDX Rectangle.contains(Rectangle)", q -> {
+            var a = each(q, true, NarrowQuestions::gdxRect, com.badlogic.gdx.math.Rectangle[]::new);
+            var b = each(q, false, NarrowQuestions::gdxRect, com.badlogic.gdx.math.Rectangle[]::new);
+            return i -> a[i].contains(b[i]);
+        });
+        dyn4jContains();
+        jtsCovers();
+
+        question("containCircle", "circle in circle", () -> NarrowCase.containing(94, CIRCLE, NarrowCase.CIRCLE_IN_CIRCLE));
+        bool("collide", HITBOX, "Collide.circleContainsCircle", q -> {
+            float[][] a = q.ra, b = q.rb;
+            return i -> Collide.circleContainsCircle(a[i][0], a[i][1], a[i][2], b[i][0], b[i][1], b[i][2]);
+        });
+        shapeContainsShape("Circle.contains(Shape)");
+        bool("gdx", PEER, "libGDX Circle.contains(Circle)", q -> {
+            var a = each(q, true, NarrowQuestions::gdxCircle, com.badlogic.gdx.math.Circle[]::new);
+            var b = each(q, false, NarrowQuestions::gdxCircle, com.badlogic.gdx.math.Circle[]::new);
+            return i -> a[i].contains(b[i]);
+        });
+        dyn4jContains();
+
+        question("containPoly8", "convex 8-gon in 8-gon", () -> NarrowCase.containing(95, OCTAGON, NarrowCase.POLY_IN_POLY));
+        bool("contains", HITBOX, "Polygon.contains(Shape)", q -> {
+            Shape[] a = q.a, b = q.b;
+            return i -> a[i].contains(b[i]);
+        });
+        dyn4jContains();
+        jtsCovers();
+
+        // Contact points: the count, the depth and normal (which must agree as Contact.between's do),
+        // and the points, each an end of the incident edge clipped, to 0.05 px.
+        question("manifoldPoly8", "manifold, convex 8-gon vs 8-gon", () -> NarrowCase.pairs(NarrowCase.Kind.CONTACT, 96, OCTAGON, OCTAGON));
+        manifolds();
+        question("manifoldBoxes", "manifold, rect vs rect (turned boxes)", () -> NarrowCase.pairs(NarrowCase.Kind.CONTACT, 97, NarrowCase.BOX, NarrowCase.BOX));
+        manifolds();
+
+        // Two bodies that both move and turn about their centroids: times compared to 0.25 px of
+        // the fastest any point of one gains on the other (NarrowCase.scale).
+        sweepQuestion("turnTwoPoly8", "turning sweep, two 8-gons both moving and turning", () -> NarrowCase.turning(98));
+        num("turning", HITBOX, "Sweep.turningTimeOfImpact(Polygon .., Polygon ..)", q -> {
+            Shape[] a = q.a, b = q.b;
+            float[][] v = q.v;
+            return i -> {
+                float[] m = v[i];
+                return time(Sweep.turningTimeOfImpact((Polygon) a[i], m[0], m[1], m[2], m[3], m[4], (Polygon) b[i], m[5], m[6], m[7], m[8], m[9]));
+            };
+        });
+        num("dyn4j", PEER, "dyn4j ConservativeAdvancement (turning)", q -> {
+            Convex[] a = new Convex[NarrowCase.N], b = new Convex[NarrowCase.N];
+            Transform[] ta = new Transform[NarrowCase.N], tb = new Transform[NarrowCase.N];
+            org.dyn4j.geometry.Vector2[] va = new org.dyn4j.geometry.Vector2[NarrowCase.N], vb = new org.dyn4j.geometry.Vector2[NarrowCase.N];
+            double[] turnA = new double[NarrowCase.N], turnB = new double[NarrowCase.N];
+            for (int i = 0; i < NarrowCase.N; i++) {
+                float[] m = q.v[i];
+                // each body about its pivot, which dyn4j turns it about (its transform's origin)
+                a[i] = NarrowPeers.dyn4jAbout((Polygon) q.a[i], m[0], m[1]);
+                b[i] = NarrowPeers.dyn4jAbout((Polygon) q.b[i], m[5], m[6]);
+                ta[i] = new Transform();
+                ta[i].translate(m[0], m[1]);
+                tb[i] = new Transform();
+                tb[i].translate(m[5], m[6]);
+                va[i] = new org.dyn4j.geometry.Vector2(m[2], m[3]);
+                vb[i] = new org.dyn4j.geometry.Vector2(m[7], m[8]);
+                turnA[i] = m[4];
+                turnB[i] = m[9];
+            }
+            ConservativeAdvancement ca = new ConservativeAdvancement();
+            TimeOfImpact out = new TimeOfImpact();
+            return i -> ca.getTimeOfImpact(a[i], ta[i], va[i], turnA[i], b[i], tb[i], vb[i], turnB[i], out) ? out.getTime() : INF;
+        });
+        num("jbox2d", PEER, "JBox2D TimeOfImpact (turning sweeps)", q -> {
+            DefaultWorldPool pool = new DefaultWorldPool(16, 16);
+            TOIInput[] in = new TOIInput[NarrowCase.N];
+            for (int i = 0; i < NarrowCase.N; i++) {
+                float[] m = q.v[i];
+                in[i] = new TOIInput();
+                in[i].proxyA.set(NarrowPeers.jbox2dAbout((Polygon) q.a[i], m[0], m[1]), 0);
+                in[i].proxyB.set(NarrowPeers.jbox2dAbout((Polygon) q.b[i], m[5], m[6]), 0);
+                in[i].sweepA.c0.set(m[0], m[1]);
+                in[i].sweepA.c.set(m[0] + m[2], m[1] + m[3]);
+                in[i].sweepA.a = m[4];
+                in[i].sweepB.c0.set(m[5], m[6]);
+                in[i].sweepB.c.set(m[5] + m[7], m[6] + m[8]);
+                in[i].sweepB.a = m[9];
+                in[i].tMax = 1;
+            }
+            org.jbox2d.collision.TimeOfImpact toi = new org.jbox2d.collision.TimeOfImpact(pool);
+            TOIOutput out = new TOIOutput();
+            return i -> {
+                toi.timeOfImpact(out, in[i]);
+                return switch (out.state) {
+                    case TOUCHING -> out.t;
+                    case OVERLAPPED -> 0;
+                    case SEPARATED -> INF;
+                    default -> Double.NaN; // FAILED: its root finder gave up
+                };
+            };
+        });
+    }
+
+    // ---------------------------------------------------------------- issue 23's contenders
+
+    /** Hitbox's separation through {@code Separation.between}, beside the raw form. */
+    private static void separationShape() {
+        num("shape", SHAPE, "Separation.between", q -> {
+            Shape[] a = q.a, b = q.b;
+            return i -> {
+                Separation s = Separation.between(a[i], b[i]);
+                return s == null ? INF : s.distance();
+            };
+        });
+    }
+
+    /** dyn4j's GJK distance: false (no answer) when the shapes overlap, and it may say so when they touch. */
+    private static void dyn4jDistance() {
+        num("dyn4j", PEER, "dyn4j Gjk.distance", q -> {
+            Dyn4j d = new Dyn4j(q);
+            Gjk gjk = new Gjk();
+            org.dyn4j.collision.narrowphase.Separation out = new org.dyn4j.collision.narrowphase.Separation();
+            return i -> gjk.distance(d.a[i], d.ta[i], d.b[i], d.tb[i], out) ? out.getDistance() : INF;
+        });
+    }
+
+    /**
+     * JBox2D's GJK distance (Box2D's b2Distance), in float, on its distance proxies with the
+     * polygons' 0.01 skin taken off (radius 0) and a circle's radius kept.
+     */
+    private static void jbox2dDistance() {
+        num("jbox2d", PEER, "JBox2D Distance.distance", q -> {
+            DistanceInput[] in = new DistanceInput[NarrowCase.N];
+            for (int i = 0; i < NarrowCase.N; i++) {
+                in[i] = new DistanceInput();
+                in[i].proxyA.set(NarrowPeers.jbox2d(q.a[i]), 0);
+                in[i].proxyB.set(NarrowPeers.jbox2d(q.b[i]), 0);
+                if (!(q.a[i] instanceof hitbox.Circle)) in[i].proxyA.m_radius = 0;
+                if (!(q.b[i] instanceof hitbox.Circle)) in[i].proxyB.m_radius = 0;
+                in[i].useRadii = true;
+            }
+            Distance distance = new Distance();
+            Distance.SimplexCache cache = new Distance.SimplexCache();
+            DistanceOutput out = new DistanceOutput();
+            return i -> {
+                cache.count = 0;
+                distance.distance(out, cache, in[i]);
+                return out.distance;
+            };
+        });
+    }
+
+    /** JTS's distance between the geometries; a circle is its centre, its radius taken off after. */
+    private static void jtsDistance() {
+        num("jts", PEER, "JTS DistanceOp.distance (a circle as centre - r)", q -> {
+            Geometry[] a = each(q, true, NarrowPeers::jts, Geometry[]::new), b = each(q, false, NarrowPeers::jts, Geometry[]::new);
+            double[] radii = new double[NarrowCase.N];
+            for (int i = 0; i < NarrowCase.N; i++) {
+                radii[i] = NarrowPeers.jtsRadius(q.a[i]) + NarrowPeers.jtsRadius(q.b[i]);
+            }
+            return i -> DistanceOp.distance(a[i], b[i]) - radii[i];
+        });
+    }
+
+    /** Hitbox through {@code Shape.contains(Shape)}, beside the raw form. */
+    private static void shapeContainsShape(String call) {
+        bool("shape", SHAPE, call, q -> {
+            Shape[] a = q.a, b = q.b;
+            return i -> a[i].contains(b[i]);
+        });
+    }
+
+    /** dyn4j's containment (separating axes, each projection strictly inside: touching is not held). */
+    private static void dyn4jContains() {
+        bool("dyn4j", PEER, "dyn4j Sat.contains", q -> {
+            Dyn4j d = new Dyn4j(q);
+            Sat sat = new Sat();
+            org.dyn4j.collision.narrowphase.Containment out = new org.dyn4j.collision.narrowphase.Containment();
+            return i -> sat.contains(d.a[i], d.ta[i], d.b[i], d.tb[i], out) && out.isBContainedInA();
+        });
+    }
+
+    /** JTS's covers (no point of b outside a: the outline counts), prepared once per outer shape and plain. */
+    private static void jtsCovers() {
+        bool("jtsPrepared", PEER, "JTS PreparedGeometry.covers", q -> {
+            PreparedGeometry[] a = new PreparedGeometry[NarrowCase.N];
+            Geometry[] b = each(q, false, NarrowPeers::jts, Geometry[]::new);
+            for (int i = 0; i < NarrowCase.N; i++) {
+                a[i] = PreparedGeometryFactory.prepare(NarrowPeers.jts(q.a[i]));
+            }
+            return i -> a[i].covers(b[i]);
+        });
+        bool("jts", PEER, "JTS Geometry.covers", q -> {
+            Geometry[] a = each(q, true, NarrowPeers::jts, Geometry[]::new), b = each(q, false, NarrowPeers::jts, Geometry[]::new);
+            return i -> a[i].covers(b[i]);
+        });
+    }
+
+    /** The manifold's contenders: Hitbox's, dyn4j's clipping after SAT, JBox2D's polygon collision. */
+    private static void manifolds() {
+        points("manifold", HITBOX, "Contact.manifold", q -> {
+            Shape[] a = q.a, b = q.b;
+            return (i, out) -> {
+                Manifold m = Contact.manifold(a[i], b[i]);
+                if (m == null) return false;
+                out[0] = m.depth();
+                out[1] = m.nx();
+                out[2] = m.ny();
+                out[3] = m.pointCount();
+                out[4] = m.x1();
+                out[5] = m.y1();
+                out[6] = m.depth1();
+                out[7] = m.x2();
+                out[8] = m.y2();
+                out[9] = m.depth2();
+                return true;
+            };
+        });
+        points("dyn4j", PEER, "dyn4j Sat.detect + ClippingManifoldSolver", q -> {
+            Dyn4j d = new Dyn4j(q);
+            Sat sat = new Sat();
+            ClippingManifoldSolver solver = new ClippingManifoldSolver();
+            Penetration p = new Penetration();
+            org.dyn4j.collision.manifold.Manifold m = new org.dyn4j.collision.manifold.Manifold();
+            return (i, out) -> {
+                m.clear(); // the solver adds to the manifold's points: the caller clears them
+                if (!sat.detect(d.a[i], d.ta[i], d.b[i], d.tb[i], p) || !solver.getManifold(p, d.a[i], d.ta[i], d.b[i], d.tb[i], m)) {
+                    return false;
+                }
+                // dyn4j's normal points from the first shape to the second, as Hitbox's
+                out[0] = p.getDepth();
+                out[1] = p.getNormal().x;
+                out[2] = p.getNormal().y;
+                List<ManifoldPoint> points = m.getPoints();
+                int n = Math.min(2, points.size());
+                out[3] = n;
+                for (int k = 0; k < 2; k++) {
+                    ManifoldPoint mp = points.get(Math.min(k, n - 1));
+                    out[4 + 3 * k] = mp.getPoint().x;
+                    out[5 + 3 * k] = mp.getPoint().y;
+                    out[6 + 3 * k] = mp.getDepth();
+                }
+                return n > 0;
+            };
+        });
+        points("jbox2d", PEER, "JBox2D Collision.collidePolygons", q -> {
+            PolygonShape[] a = new PolygonShape[NarrowCase.N], b = new PolygonShape[NarrowCase.N];
+            for (int i = 0; i < NarrowCase.N; i++) {
+                a[i] = (PolygonShape) NarrowPeers.jbox2d(q.a[i]);
+                b[i] = (PolygonShape) NarrowPeers.jbox2d(q.b[i]);
+            }
+            Collision collision = new Collision(new DefaultWorldPool(16, 16));
+            org.jbox2d.common.Transform identity = new org.jbox2d.common.Transform();
+            identity.setIdentity();
+            org.jbox2d.collision.Manifold m = new org.jbox2d.collision.Manifold();
+            return (i, out) -> {
+                collision.collidePolygons(m, a[i], identity, b[i], identity);
+                if (m.pointCount == 0) return false;
+                // With identity transforms the manifold's local frame is the world. Its points are
+                // the incident polygon's clipped vertices (as Hitbox's and dyn4j's); each point's
+                // depth is how far it lies behind the reference face (Box2D's separation, turned
+                // round, without the polygons' 0.01 skins). Box2D keeps points up to the skins
+                // (0.02) in front of the face: such a point has a depth just below 0.
+                double nx = m.localNormal.x, ny = m.localNormal.y, px = m.localPoint.x, py = m.localPoint.y;
+                double max = Double.NEGATIVE_INFINITY;
+                for (int k = 0; k < 2; k++) {
+                    org.jbox2d.common.Vec2 c = m.points[Math.min(k, m.pointCount - 1)].localPoint;
+                    double depth = -((c.x - px) * nx + (c.y - py) * ny);
+                    out[4 + 3 * k] = c.x;
+                    out[5 + 3 * k] = c.y;
+                    out[6 + 3 * k] = depth;
+                    max = Math.max(max, depth);
+                }
+                boolean faceB = m.type == org.jbox2d.collision.Manifold.ManifoldType.FACE_B;
+                out[0] = max; // its contact depth: the deepest point's
+                out[1] = faceB ? -nx : nx; // the normal from A to B, as its WorldManifold turns it
+                out[2] = faceB ? -ny : ny;
+                out[3] = m.pointCount;
+                return true;
+            };
         });
     }
 
