@@ -168,7 +168,7 @@ public record Separation(float distance, float ax, float ay, float bx, float by)
         if (Check.notFinite(cx, cy, r, px, py) || r < 0) {
             return Float.POSITIVE_INFINITY;
         }
-        return apart(point(cx, cy, r), point(px, py, 0));
+        return Check.held(Distances.discs(cx, cy, r, px, py, 0));
     }
 
     /**
@@ -192,7 +192,7 @@ public record Separation(float distance, float ax, float ay, float bx, float by)
         if (Check.notFinite(x1, y1, r1, x2, y2) || !Float.isFinite(r2) || r1 < 0 || r2 < 0) {
             return Float.POSITIVE_INFINITY;
         }
-        return apart(point(x1, y1, r1), point(x2, y2, r2));
+        return Check.held(Distances.discs(x1, y1, r1, x2, y2, r2));
     }
 
     /**

@@ -155,7 +155,18 @@ public final class Containment {
 
     /** {@link Collide#rectContainsRect}: finite values, sizes 0 or more. */
     public static boolean rectRect(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2) {
-        return within(x2, 0, w2, x1, 0, w1) && within(y2, 0, h2, y1, 0, h1);
+        return x2 >= x1 && y2 >= y1 && notPast(x2, w2, x1, w1) && notPast(y2, h2, y1, h1);
+    }
+
+    /**
+     * Is {@code v + vs <= w + ws}, exactly, for finite floats? The sums in float decide when
+     * they differ: rounding never reverses an order (a larger exact sum never rounds to a
+     * smaller float, overflow included), so only sums that round to the same float, an edge
+     * touching from inside among them, are compared exactly ({@link #atLeast}).
+     */
+    private static boolean notPast(float v, float vs, float w, float ws) {
+        float a = v + vs, b = w + ws;
+        return a != b ? a < b : atLeast(w, ws, v, vs);
     }
 
     /** {@link Collide#rectContainsCircle}: finite values, sizes 0 or more. */

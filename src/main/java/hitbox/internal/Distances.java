@@ -133,7 +133,7 @@ public final class Distances {
         if (ra == 0 && rb == 0) {
             return d;
         }
-        double gap = d - (ra + rb);
+        double gap = less(d, ra, rb);
         if (d > 0) {
             double ux = (q[2] - q[0]) / d, uy = (q[3] - q[1]) / d;
             q[0] += ra * ux;
@@ -141,7 +141,7 @@ public final class Distances {
             q[2] -= rb * ux;
             q[3] -= rb * uy;
         }
-        if (!(gap > 0)) {
+        if (gap == 0) {
             // Touching: one point, on both outlines. The one on a core without a radius is
             // exactly on its outline; else a's, moved out by its radius.
             if (rb == 0) {
@@ -154,6 +154,24 @@ public final class Distances {
             return 0;
         }
         return gap;
+    }
+
+    /** The distance d between two cores less their radii, held at 0 (touching or overlapping). */
+    private static double less(double d, double ra, double rb) {
+        double gap = d - (ra + rb);
+        return gap > 0 ? gap : 0;
+    }
+
+    /**
+     * The distance between two discs (centre and radius; a point has radius 0), held at 0:
+     * {@link #apart} for two point cores, without making them, for the raw-float forms. The
+     * squares of two floats' differences cannot overflow or vanish in a double, so a plain
+     * square root serves; it is correctly rounded, so exact when the distance is a whole
+     * number.
+     */
+    public static double discs(float x1, float y1, float r1, float x2, float y2, float r2) {
+        double dx = (double) x2 - x1, dy = (double) y2 - y1;
+        return less(Math.sqrt(dx * dx + dy * dy), r1, r2);
     }
 
     /** The distance between two cores (without their radii), closest points in q. */
@@ -219,7 +237,7 @@ public final class Distances {
             slack *= 1e-12;
         }
         double best = Double.POSITIVE_INFINITY;
-        double[] t = new double[4];
+        double[] t = new double[4], feet = new double[2];
         for (int k = 0; k < ea; k++) {
             int i = sorted ? oa[k] : k;
             if (sorted && loB[ob[0]] - hiA[i] > best + slack) {
@@ -239,7 +257,7 @@ public final class Distances {
                 if (gx > best || gy > best) {
                     continue;
                 }
-                double d = segments(ax1, ay1, ax2, ay2, bx1, by1, bx2, by2, t);
+                double d = segments(ax1, ay1, ax2, ay2, bx1, by1, bx2, by2, t, feet);
                 if (d < best) {
                     best = d;
                     System.arraycopy(t, 0, q, 0, 4);
@@ -295,7 +313,12 @@ public final class Distances {
      */
     public static double segments(double ax, double ay, double bx, double by,
                                   double cx, double cy, double dx, double dy, double[] q) {
-        double[] f = new double[2];
+        return segments(ax, ay, bx, by, cx, cy, dx, dy, q, new double[2]);
+    }
+
+    /** {@link #segments} with a scratch array of two for the feet, so a loop allocates once. */
+    private static double segments(double ax, double ay, double bx, double by,
+                                   double cx, double cy, double dx, double dy, double[] q, double[] f) {
         double best = pointSegment(ax, ay, cx, cy, dx, dy, f);
         put(q, ax, ay, f[0], f[1]);
         double d = pointSegment(bx, by, cx, cy, dx, dy, f);
@@ -310,7 +333,9 @@ public final class Distances {
         if (d < best) {
             best = put(q, f[0], f[1], dx, dy) + d;
         }
-        if (best > 0 && Lines.segmentsMeet(ax, ay, bx, by, cx, cy, dx, dy)) {
+        // Segments that meet have boxes that meet: the box test skips the four exact
+        // orientations for most pairs (the end-to-edge distances above were all > 0).
+        if (best > 0 && boxesMeet(ax, ay, bx, by, cx, cy, dx, dy) && Lines.segmentsMeet(ax, ay, bx, by, cx, cy, dx, dy)) {
             // They cross (no end lies on the other, or rounding hid it): at the crossing.
             double o1 = Lines.orient(cx, cy, dx, dy, ax, ay), o2 = Lines.orient(cx, cy, dx, dy, bx, by);
             double s = o1 == o2 ? 0 : o1 / (o1 - o2);
@@ -318,6 +343,13 @@ public final class Distances {
             return put(q, x, y, x, y);
         }
         return best;
+    }
+
+    /** Do the closed boxes of segments AB and CD have a point in common? */
+    private static boolean boxesMeet(double ax, double ay, double bx, double by,
+                                     double cx, double cy, double dx, double dy) {
+        return Math.max(ax, bx) >= Math.min(cx, dx) && Math.max(cx, dx) >= Math.min(ax, bx)
+                && Math.max(ay, by) >= Math.min(cy, dy) && Math.max(cy, dy) >= Math.min(ay, by);
     }
 
     /** Writes the two points into q; returns 0, for a caller to add its distance to. */
