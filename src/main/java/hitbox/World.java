@@ -809,8 +809,14 @@ public final class World {
 
     /** The box of a pose, rounded outwards a float step more; checked before anything changes. */
     private float[] box(double ox, double oy, double[] ex, String what) {
-        float x0 = Math.nextDown((float) (ox + ex[0])), y0 = Math.nextDown((float) (oy + ex[1]));
-        float x1 = Math.nextUp((float) (ox + ex[2])), y1 = Math.nextUp((float) (oy + ex[3]));
+        // The placed shape's coordinates are rounded to float where they are, anywhere in the
+        // box: a capsule's end 4.5 inside its box edge rounds at the end's size, which can
+        // move the edge by more than one step of the edge's own size. A step at the box's
+        // largest size along each axis covers any such rounding.
+        double sx = Math.ulp((float) Math.max(Math.abs(ox + ex[0]), Math.abs(ox + ex[2])));
+        double sy = Math.ulp((float) Math.max(Math.abs(oy + ex[1]), Math.abs(oy + ex[3])));
+        float x0 = Math.nextDown((float) (ox + ex[0] - sx)), y0 = Math.nextDown((float) (oy + ex[1] - sy));
+        float x1 = Math.nextUp((float) (ox + ex[2] + sx)), y1 = Math.nextUp((float) (oy + ex[3] + sy));
         float w = Math.nextUp((float) ((double) x1 - x0)), h = Math.nextUp((float) ((double) y1 - y0));
         if (!Float.isFinite(x0) || !Float.isFinite(y0) || !Float.isFinite(x1) || !Float.isFinite(y1)
                 || !Float.isFinite(w) || !Float.isFinite(h)) {

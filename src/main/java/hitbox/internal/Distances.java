@@ -321,17 +321,23 @@ public final class Distances {
                                    double cx, double cy, double dx, double dy, double[] q, double[] f) {
         double best = pointSegment(ax, ay, cx, cy, dx, dy, f);
         put(q, ax, ay, f[0], f[1]);
-        double d = pointSegment(bx, by, cx, cy, dx, dy, f);
-        if (d < best) {
-            best = put(q, bx, by, f[0], f[1]) + d;
-        }
-        d = pointSegment(cx, cy, ax, ay, bx, by, f);
-        if (d < best) {
-            best = put(q, f[0], f[1], cx, cy) + d;
-        }
-        d = pointSegment(dx, dy, ax, ay, bx, by, f);
-        if (d < best) {
-            best = put(q, f[0], f[1], dx, dy) + d;
+        // When AB is a point (a circle's centre), its distance to CD is the answer; when CD
+        // is one, its end d is its end c: the skipped distances cannot be smaller.
+        if (ax != bx || ay != by) {
+            double d = pointSegment(bx, by, cx, cy, dx, dy, f);
+            if (d < best) {
+                best = put(q, bx, by, f[0], f[1]) + d;
+            }
+            d = pointSegment(cx, cy, ax, ay, bx, by, f);
+            if (d < best) {
+                best = put(q, f[0], f[1], cx, cy) + d;
+            }
+            if (cx != dx || cy != dy) {
+                d = pointSegment(dx, dy, ax, ay, bx, by, f);
+                if (d < best) {
+                    best = put(q, f[0], f[1], dx, dy) + d;
+                }
+            }
         }
         // Segments that meet have boxes that meet: the box test skips the four exact
         // orientations for most pairs (the end-to-edge distances above were all > 0).
