@@ -100,10 +100,49 @@ class ContactTieRuleTest {
             assertEquals(d < 4, new Ellipse(2, -1 - d, 5, 2).overlaps(pm));
             assertEquals(d < 4, new Ellipse(2 + 0.6f * d, -1 + 0.8f * d, 5, 2).overlaps(pm));
         }
+        // And no push is shorter: 3.999 along any of 3600 directions still overlaps.
+        assertEveryPushOverlaps(e, p, 3.999);
         assertEquals(new Contact(0, -1, 4), Contact.between(p, e));
         assertEquals(new Contact(0, 1, 4), Contact.between(e, p));
         assertEquals(new Contact(0, -1, 4), Contact.between(pm, em));
         assertEquals(new Contact(0, 1, 4), Contact.between(em, pm));
+    }
+
+    @Test
+    void concavePolygonAgainstCapsule_aConeOfEqualPushes_theRuleTakesItsMostVerticalEnd_mirroredToo() {
+        // The capsule's end (-1, -1) is a corner of the polygon: every push of 2.5 (its
+        // radius) in a cone from about 90.8 to 206.5 degrees clears, and the rule takes the
+        // end with the larger |ny|. That end is no edge normal: the capsule's end, pushed by
+        // 2.5, reaches 2.5 from the edge (1, 0)-(0, -1), the line x - y = 1, where
+        // sin(t - 45 deg) = 1 - 0.4 / sqrt 2. Before: directions inside the cone where the
+        // search happened to stop, (-0.851, 0.526) one way and (-0.960, 0.282) mirrored in y.
+        Polygon p = Polygon.of(-1, -1, 0, -3, 1, -2, 1, 0, 0, -1);
+        Capsule k = new Capsule(-1, -1, -3, -1, 2.5f);
+        double t = Math.PI / 4 + Math.asin(1 - 0.4 / Math.sqrt(2));
+        float ex = (float) Math.cos(t), ey = (float) Math.sin(t);
+        assertEveryPushOverlaps(k, p, 2.499);
+        for (boolean mirror : new boolean[] {false, true}) {
+            Polygon q = mirror ? (Polygon) mirrored(p, false) : p;
+            Capsule m = mirror ? (Capsule) mirrored(k, false) : k;
+            float sy = mirror ? -1 : 1;
+            Contact c = Contact.between(q, m);
+            assertNormal(ex, sy * ey, c, "mirrored " + mirror);
+            assertEquals(2.5f, c.depth(), 1e-6f);
+            assertNormal(-ex, -sy * ey, Contact.between(m, q), "swapped, mirrored " + mirror);
+            // The push clears, and the cone's end is sharp: 1e-3 radians past it does not.
+            assertFalse(m.translated(c.nx() * 2.5f, c.ny() * 2.5f).overlaps(q));
+            double past = t + 1e-3;
+            assertTrue(m.translated((float) (2.5 * Math.cos(past)), (float) (sy * 2.5 * Math.sin(past))).overlaps(q));
+        }
+    }
+
+    /** Moved by {@code d} along each of 3600 directions, the shape still overlaps the other. */
+    private static void assertEveryPushOverlaps(Shape moving, Shape other, double d) {
+        for (int i = 0; i < 3600; i++) {
+            double a = 2 * Math.PI * i / 3600;
+            Shape moved = moving.translated((float) (d * Math.cos(a)), (float) (d * Math.sin(a)));
+            assertTrue(moved.overlaps(other), () -> "clears at " + a + ": " + moved);
+        }
     }
 
     @Test

@@ -43,6 +43,12 @@ public final class CurvedClearance {
     private static final double SLACK = 2 * ConvexSweep.TOUCH;
 
     /**
+     * How far past a cone's end (radians) f must have risen by ten times {@link #SLACK} for
+     * the end to be offered ({@code coneEnd}): a steep rise, not the slow one past a side.
+     */
+    private static final double CONE_STEP = 1e-4;
+
+    /**
      * The contact of curved k and concave polygon p (they overlap); normal from the first
      * shape to the second: from k to p unless {@code polygonFirst}.
      */
@@ -84,7 +90,65 @@ public final class CurvedClearance {
         // A capsule's sides: where a whole cone of directions is equally short (a corner of
         // the polygon on the capsule's segment), a side's normal can be the cone's end.
         offerEdgeNormals(best, round, pieces, Supports.straightEdges(k), far);
+        coneEnds(best, round, pieces, f, far);
         return best.contact();
+    }
+
+    /**
+     * The ends of a cone of equally short pushes where another region starts. When k is
+     * round at its ends with one radius (a capsule, or an ellipse with equal radii) and the
+     * best push is that radius, the origin can be a corner of a region (a polygon corner on
+     * the capsule's segment): every direction of a cone then pushes exactly that far, and the
+     * rule's pick is one of the cone's ends or an axis direction inside it (sampled). An end
+     * bounded by a straight side is an edge normal, offered already; an end where the push's
+     * end point enters another region is found here, by bisection between a direction in the
+     * cone (a sample, or the best so far) and a neighbouring sample outside it, and offered
+     * when f rises steeply past it (beyond a straight side it rises only as the square of the
+     * angle, and the bisection would stop about 1e-3 radians past the exact normal).
+     */
+    private static void coneEnds(Contacts.Shortest best, Object round, List<Object> pieces, double[] f, double far) {
+        ConvexSweep.Round k = (ConvexSweep.Round) round;
+        double d = best.depth, limit = d + SLACK, step = 2 * Math.PI / STEPS;
+        if (k.a != k.b || !(Math.abs(d - k.a) <= SLACK)) {
+            return;
+        }
+        double bestAngle = Math.atan2(best.ny, best.nx);
+        for (int i = 0; i < STEPS; i++) {
+            if (f[i] <= limit) {
+                for (int j : new int[] {i - 1, i + 1}) {
+                    if (f[Math.floorMod(j, STEPS)] > limit) {
+                        coneEnd(best, round, pieces, step * i, step * j, limit, far);
+                    }
+                }
+            }
+        }
+        int below = (int) Math.floor(bestAngle / step);
+        for (int j : new int[] {below, below + 1}) {
+            if (f[Math.floorMod(j, STEPS)] > limit) {
+                coneEnd(best, round, pieces, bestAngle, step * j, limit, far);
+            }
+        }
+    }
+
+    /** Bisection between angle in (f at most limit) and angle out (f above it); see {@link #coneEnds}. */
+    private static void coneEnd(Contacts.Shortest best, Object round, List<Object> pieces, double in, double out,
+                                double limit, double far) {
+        for (int s = 0; s < 60 && Math.abs(out - in) > Tolerance.CLEARANCE_ANGLE; s++) {
+            double mid = (in + out) / 2;
+            double[] u = unit(mid);
+            // Closer to the cone's flat depth than the tie slack, so that the end offered
+            // pushes as far as the cone, not up to the slack farther.
+            if (push(round, pieces, u[0], u[1], far, null) <= limit - SLACK * 63 / 64) {
+                in = mid;
+            } else {
+                out = mid;
+            }
+        }
+        double[] past = unit(in + Math.signum(out - in) * CONE_STEP);
+        if (push(round, pieces, past[0], past[1], far, null) > limit + 10 * SLACK) {
+            double[] u = unit(in);
+            best.offer(u[0], u[1], push(round, pieces, u[0], u[1], far, null));
+        }
     }
 
     /** Offers the push along both normals of every edge of the corners xy. */
@@ -110,14 +174,14 @@ public final class CurvedClearance {
      * where that region's boundary is nearest the origin, the ray's way out of it is as long
      * as the two shapes' support functions say ({@code reach(piece, n) + reach(k, -n)},
      * exact and smooth, its least found to a double's resolution). The entries stop anywhere
-     * within {@link ConvexSweep#TOUCH}, so f wobbles by about 1e-7 and its golden search
+     * within {@link ConvexSweep#TOUCH}, so f wobbles by up to about 1e-6 and its golden search
      * ends up to 1e-3 radians off a flat least, where it ties (within the slack) with the
      * exact least and the rule could prefer it, so that mirror images disagree. Offered, in
      * place of the search's, only when f there agrees (a least at a corner of the union,
      * where two regions meet, is not one of these and is left as found): was it?
      */
     private static boolean polish(Contacts.Shortest best, Object round, List<Object> pieces, double angle, double far,
-                               int[] last) {
+                                  int[] last) {
         double[] n = unit(angle);
         push(round, pieces, n[0], n[1], far, last);
         if (last[0] < 0) {
