@@ -136,6 +136,24 @@ class ContactTieRuleTest {
         }
     }
 
+    @Test
+    void concavePolygonAgainstEllipse_aCornerAtTheCentreOfCurvature_theAxisBothWays() {
+        // The polygon's corner (0, -3) is the centre of curvature of the ellipse's left end
+        // (-1, -3) (radius ry^2 / rx = 1): the push out along (1, 0), 1 deep, is the least
+        // but flat to the fourth order, so that directions 1e-4 off are as short to a
+        // double's resolution. Before, the search's stopping place decided: (1, -1.7e-8) one
+        // way and (1, 4.3e-4) mirrored in y.
+        Polygon p = Polygon.of(0, -2, 0, -3, -2, -3, -1, 1, 0, 1, 1, 2);
+        Ellipse e = new Ellipse(3, -3, 4, 2);
+        assertEveryPushOverlaps(e, p, 0.999);
+        assertFalse(e.translated(1, 0).overlaps(p));
+        for (boolean mirror : new boolean[] {false, true}) {
+            Shape q = mirror ? mirrored(p, false) : p, m = mirror ? mirrored(e, false) : e;
+            assertEquals(new Contact(1, 0, 1), Contact.between(q, m), "mirrored " + mirror);
+            assertEquals(new Contact(-1, 0, 1), Contact.between(m, q), "swapped, mirrored " + mirror);
+        }
+    }
+
     /** Moved by {@code d} along each of 3600 directions, the shape still overlaps the other. */
     private static void assertEveryPushOverlaps(Shape moving, Shape other, double d) {
         for (int i = 0; i < 3600; i++) {
