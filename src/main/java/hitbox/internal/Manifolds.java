@@ -523,7 +523,10 @@ public final class Manifolds {
                 // widened by a float's rounding there, so the side's rounding does not decide.
                 hi = Math.min(hi, (along < ALONG ? gap + AS_DEEP * reach : gap) / along);
             } else if (along < 0) {
-                lo = Math.max(lo, gap / along);
+                // The same on the side the ray enters by: a point on such a side (an incident
+                // edge's end clipped to a box's side line, the ray along the box's face normal)
+                // would else be outside by its rounding divided by the tiny cosine.
+                lo = Math.max(lo, (along > -ALONG ? gap + AS_DEEP * reach : gap) / along);
             } else if (gap < -tol) {
                 return null;
             }
