@@ -26,7 +26,7 @@ import java.util.List;
  * second term is 0, and the first is Box2D's separation from the reference face when the
  * face is across the normal.
  *
- * <p>At about 780 lines this class is longer than most: the clipping, the depths, the
+ * <p>At about 820 lines this class is longer than most: the clipping, the depths, the
  * fallbacks and the one-point rule all read the same pieces, and only make sense together.
  *
  * <p>Reference: E. Catto, Box2D's {@code b2ClipPolygons} and {@code b2ClipSegments}; W.
@@ -43,7 +43,7 @@ public final class Manifolds {
     /** Below this cosine a side is nearly along a ray (about 0.06 degrees off). */
     private static final double ALONG = 1e-3;
 
-    /** Relative slack for "equally along the normal" when the reference face is chosen. */
+    /** Slack (in cosine) for "as far against the reference face" when the incident edge is chosen. */
     private static final double FACE_TIE = 1e-6;
 
     /**
@@ -273,9 +273,16 @@ public final class Manifolds {
             return;
         }
         double sa = p.faces[fa] * nx + p.faces[fa + 1] * ny, sb = -(q.faces[fb] * nx + q.faces[fb + 1] * ny);
+        // Equally along by their angles to the normal, not by their cosines, which near the
+        // normal differ by about the angles' squares (a cosine slack of 1e-6 tied faces up to
+        // 0.08 degrees apart): sin(angle a - angle b), tied within the turn that the rounding
+        // of the faces' float corners can give them.
+        double xa = Math.abs(p.faces[fa] * ny - p.faces[fa + 1] * nx), xb = Math.abs(q.faces[fb] * ny - q.faces[fb + 1] * nx);
+        double apart = xa * sb - sa * xb;
+        double rounding = AS_DEEP * scale / Math.min(faceLength(p, fa), faceLength(q, fb));
         boolean referenceA;
-        if (Math.abs(sa - sb) > FACE_TIE) {
-            referenceA = sa > sb;
+        if (Math.abs(apart) > rounding) {
+            referenceA = apart < 0;
         } else {
             // Equally along the normal: the reference is the shape the preferred one of n and
             // -n points away from, whichever shape came first (n and -n are mirror images in
@@ -360,6 +367,10 @@ public final class Manifolds {
             }
         }
         return new double[] {f[g + 2], f[g + 3], f[g + 4], f[g + 5]};
+    }
+
+    private static double faceLength(Piece p, int f) {
+        return Math.hypot(p.faces[f + 4] - p.faces[f + 2], p.faces[f + 5] - p.faces[f + 3]);
     }
 
     /** The face of the piece most nearly along (ux, uy), as an index into its faces; -1 if none. */
@@ -523,7 +534,10 @@ public final class Manifolds {
                 // widened by a float's rounding there, so the side's rounding does not decide.
                 hi = Math.min(hi, (along < ALONG ? gap + AS_DEEP * reach : gap) / along);
             } else if (along < 0) {
-                lo = Math.max(lo, gap / along);
+                // The same on the side the ray enters by: a point on such a side (an incident
+                // edge's end clipped to a box's side line, the ray along the box's face normal)
+                // would else be outside by its rounding divided by the tiny cosine.
+                lo = Math.max(lo, (along > -ALONG ? gap + AS_DEEP * reach : gap) / along);
             } else if (gap < -tol) {
                 return null;
             }
