@@ -107,8 +107,34 @@ public final class Sweep {
         if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
             return 0;
         }
+        return rectRectAnswer(x, y, w, h, vx, vy, ox, oy, ow, oh, SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh),
+                null);
+    }
+
+    /**
+     * The promised t of a box sweep from its exact entry e, or where that misses, from the
+     * entry of the obstacle grown by the rounding slack of the float positions. Fills
+     * {@code grownOut[0]} with that grown entry, for the normal, if asked.
+     */
+    private static float rectRectAnswer(float x, float y, float w, float h, float vx, float vy,
+                                        float ox, float oy, float ow, float oh, Earliest e, Earliest[] grownOut) {
+        Earliest grown = SweptPairs.rectRectGrown(x, y, w, h, vx, vy, ox, oy, ow, oh,
+                SweptPairs.slack(x, vx), SweptPairs.slack(y, vy));
+        if (grownOut != null) {
+            grownOut[0] = grown;
+        }
+        if (e.inside || e.found() && e.t == 0) {
+            return 0;  // overlapping, or touching at the start and moving in (Hit's promise)
+        }
+        // Two boxes overlap on one interval of floats, with "clear, not past" below it and
+        // "past" above it (SweptPairs.Search.answer), so the walk from the exact entry cannot
+        // step over it however rounding moves or shortens it.
+        if (!e.found()) {
+            return Float.POSITIVE_INFINITY;  // hit or not is the exact path's decision
+        }
+        double from = e.t;
         // The search's loop here, with the overlap test written out: see SweptPairs.Search.
-        SweptPairs.Search s = new SweptPairs.Search(SweptPairs.rectRectTime(x, y, w, h, vx, vy, ox, oy, ow, oh), true);
+        SweptPairs.Search s = new SweptPairs.Search(from, false);
         while (s.searching()) {
             float t = s.t();
             float mx = x + t * vx, my = y + t * vy;
@@ -138,12 +164,8 @@ public final class Sweep {
      */
     public static float circleCircle(float x, float y, float r, float vx, float vy,
                                      float ox, float oy, float or) {
-        SweptPairs.Search s = new SweptPairs.Search(SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or));
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
-        }
-        return s.t();
+        Hit hit = circleCircleHit(x, y, r, vx, vy, ox, oy, or);
+        return hit == null ? Float.POSITIVE_INFINITY : hit.t();
     }
 
     /**
@@ -200,13 +222,9 @@ public final class Sweep {
             return null;
         }
         Earliest e = SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            float mx = x + t * vx, my = y + t * vy;
-            s.answer(Collide.rectRect(mx, my, w, h, ox, oy, ow, oh), SweptPairs.rectPast(mx, my, w, h, vx, vy, ox, oy, ow, oh));
-        }
-        return s.hit(e, false);
+        Earliest[] grown = new Earliest[1];
+        float t = rectRectAnswer(x, y, w, h, vx, vy, ox, oy, ow, oh, e, grown);
+        return SweptPairs.hit(t, e, grown[0], false);
     }
 
     /**
@@ -229,12 +247,15 @@ public final class Sweep {
     public static Hit circleCircleHit(float x, float y, float r, float vx, float vy,
                                       float ox, float oy, float or) {
         Earliest e = SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
+        if (!e.found() && !(Float.isFinite(x) && Float.isFinite(y) && r >= 0 && Float.isFinite(vx) && Float.isFinite(vy)
+                && Float.isFinite(ox) && Float.isFinite(oy) && or >= 0 && Float.isFinite(r) && Float.isFinite(or))) {
+            return null;  // bad input: no hit, as documented
         }
-        return s.hit(e, false);
+        double g = SweptPairs.slack(x, vx) + SweptPairs.slack(y, vy);
+        Earliest grown = SweptPairs.circleCircleGrown(x, y, r, vx, vy, ox, oy, or, g);
+        float t = SweptPairs.answer(e, grown, u -> Collide.circleCircle(x + u * vx, y + u * vy, r, ox, oy, or),
+                x, vx, y, vy);
+        return SweptPairs.hit(t, e, grown, false);
     }
 
     /**
@@ -263,12 +284,15 @@ public final class Sweep {
     public static Hit circleRectHit(float cx, float cy, float r, float vx, float vy,
                                     float rectX, float rectY, float rectW, float rectH) {
         Earliest e = SweptPairs.circleRectEntry(cx, cy, r, vx, vy, rectX, rectY, rectW, rectH);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.circleRect(cx + t * vx, cy + t * vy, r, rectX, rectY, rectW, rectH));
+        if (!e.found() && (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(rectX, rectY, rectW, rectH, 0)
+                || r < 0 || rectW < 0 || rectH < 0)) {
+            return null;  // bad input: no hit, as documented
         }
-        return s.hit(e, false);
+        Earliest grown = SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy),
+                vx, vy, rectX, rectY, rectW, rectH);
+        float t = SweptPairs.answer(e, grown, u -> Collide.circleRect(cx + u * vx, cy + u * vy, r, rectX, rectY, rectW, rectH),
+                cx, vx, cy, vy);
+        return SweptPairs.hit(t, e, grown, false);
     }
 
     /**
@@ -296,12 +320,11 @@ public final class Sweep {
     public static Hit rectSegmentHit(float x, float y, float w, float h, float vx, float vy,
                                      float x1, float y1, float x2, float y2) {
         Earliest e = SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.lineRect(x1, y1, x2, y2, x + t * vx, y + t * vy, w, h));
-        }
-        return s.hit(e, false);
+        Earliest grown = SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2,
+                SweptPairs.slack(x, vx), SweptPairs.slack(y, vy));
+        float t = SweptPairs.answer(e, grown, u -> Collide.lineRect(x1, y1, x2, y2, x + u * vx, y + u * vy, w, h),
+                x, vx, y, vy);
+        return SweptPairs.hit(t, e, grown, false);
     }
 
     /**
@@ -326,12 +349,11 @@ public final class Sweep {
     public static Hit circleSegmentHit(float cx, float cy, float r, float vx, float vy,
                                        float x1, float y1, float x2, float y2) {
         Earliest e = SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.lineCircle(x1, y1, x2, y2, cx + t * vx, cy + t * vy, r));
-        }
-        return s.hit(e, false);
+        Earliest grown = SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2,
+                SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy));
+        float t = SweptPairs.answer(e, grown, u -> Collide.lineCircle(x1, y1, x2, y2, cx + u * vx, cy + u * vy, r),
+                cx, vx, cy, vy);
+        return SweptPairs.hit(t, e, grown, false);
     }
 
     // ---------------------------------------------------------------- on shapes
@@ -404,12 +426,11 @@ public final class Sweep {
         float x = mover.x(), y = mover.y(), w = mover.w(), h = mover.h();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
         Earliest e = SweptPairs.circleRectEntry(cx, cy, r, -vx, -vy, x, y, w, h);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.circleRect(cx, cy, r, x + t * vx, y + t * vy, w, h));
-        }
-        return s.hit(e, true);
+        Earliest grown = SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(x, vx), SweptPairs.slack(y, vy),
+                -vx, -vy, x, y, w, h);
+        float t = SweptPairs.answer(e, grown, u -> Collide.circleRect(cx, cy, r, x + u * vx, y + u * vy, w, h),
+                x, vx, y, vy);
+        return SweptPairs.hit(t, e, grown, true);
     }
 
     /**
@@ -446,12 +467,12 @@ public final class Sweep {
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float rectX = obstacle.x(), rectY = obstacle.y(), rectW = obstacle.w(), rectH = obstacle.h();
         Earliest e = SweptPairs.rectSegmentEntry(rectX, rectY, rectW, rectH, -vx, -vy, x1, y1, x2, y2);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.lineRect(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, rectX, rectY, rectW, rectH));
-        }
-        return s.hit(e, true);
+        Earliest grown = SweptPairs.rectSegmentEntry(rectX, rectY, rectW, rectH, -vx, -vy, x1, y1, x2, y2,
+                Math.max(SweptPairs.slack(x1, vx), SweptPairs.slack(x2, vx)), Math.max(SweptPairs.slack(y1, vy), SweptPairs.slack(y2, vy)));
+        float t = SweptPairs.answer(e, grown,
+                u -> Collide.lineRect(x1 + u * vx, y1 + u * vy, x2 + u * vx, y2 + u * vy, rectX, rectY, rectW, rectH),
+                x1, vx, y1, vy, x2, vx, y2, vy);
+        return SweptPairs.hit(t, e, grown, true);
     }
 
     /**
@@ -488,12 +509,12 @@ public final class Sweep {
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
         Earliest e = SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.lineCircle(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, cx, cy, r));
-        }
-        return s.hit(e, true);
+        Earliest grown = SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2,
+                Math.max(SweptPairs.slack(x1, vx), SweptPairs.slack(x2, vx)), Math.max(SweptPairs.slack(y1, vy), SweptPairs.slack(y2, vy)));
+        float t = SweptPairs.answer(e, grown,
+                u -> Collide.lineCircle(x1 + u * vx, y1 + u * vy, x2 + u * vx, y2 + u * vy, cx, cy, r),
+                x1, vx, y1, vy, x2, vx, y2, vy);
+        return SweptPairs.hit(t, e, grown, true);
     }
 
     /**
