@@ -18,10 +18,17 @@ import hitbox.internal.*;
  * {@code t} is a {@code float} in [0, 1], and it is the <em>largest</em> float for which the
  * mover, moved the way a sketch moves it ({@code x + t * vx} and {@code y + t * vy}, in
  * {@code float}), does not overlap the obstacle ({@link Collide}'s test), while at the next
- * float up it does. So moving a sketch's object by {@code t} never leaves it a hair inside,
- * and it stands as close as floats allow. Where rounding leaves the moved position unchanged
- * over a range of {@code t} (a mover far from the origin moving slowly), {@code t} is the end
- * of that range. The one exception: a mover that touches the obstacle at the start and moves
+ * float up it does, and every float below it is clear too. So moving a sketch's object by
+ * {@code t} never leaves it a hair inside, and it stands as close as floats allow. Where
+ * rounding leaves the moved position unchanged over a range of {@code t} (a mover far from
+ * the origin moving slowly), {@code t} is the end of that range. Far from the origin the
+ * rounding of the moved position can start the float overlap before the exact one, shorten
+ * it or split it in pieces; the pairs on plain floats (and their shape forms) visit the
+ * float positions one by one from the earliest time rounding could make one overlap, so
+ * {@code t} stands before the first piece (up to 4096 positions; past that, a walk from the
+ * exact entry decides). Whether there is a hit at all is the exact path's decision: a path
+ * that misses exactly is no hit, even where rounding puts a float position a hair inside.
+ * The one exception: a mover that touches the obstacle at the start and moves
  * into it gets {@code t = 0} exactly, as {@link Hit} promises, not the hair above 0 at which
  * its float position has not yet moved: for the exact pairs (circles, rectangles, segments,
  * two convex polygons) its exact entry is 0, which decides before any float is tried; for

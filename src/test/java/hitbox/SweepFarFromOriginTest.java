@@ -274,6 +274,20 @@ class SweepFarFromOriginTest {
         check(what, t, (s, k) -> Collide.rectRect(m(x, s, vx, k), m(y, s, vy, k), w, h, ox, oy, ow, oh), x, vx, y, vy);
     }
 
+    /**
+     * A searched pair (conservative advancement, then the walk of SweptPairs.lastClear): an
+     * ellipse mover against a circle, far from the origin.
+     */
+    @Property(tries = 5000)
+    void ellipseCircle_searched_answerIsTheLastClearFloat_farFromTheOrigin(@ForAll("farCircles") float[] c) {
+        float x = c[0], y = c[1], rx = c[2], ry = c[2] * 0.6f + 0.5f, vx = c[3], vy = c[4];
+        Circle o = new Circle(c[5], c[6], c[7]);
+        Ellipse mover = new Ellipse(x, y, rx, ry);
+        String what = "ellipse into circle" + java.util.Arrays.toString(new float[] {x, y, rx, ry, vx, vy, c[5], c[6], c[7]});
+        float t = t(Sweep.timeOfImpact(mover, vx, vy, o));
+        check(what, t, (s, k) -> new Ellipse(m(x, s, vx, k), m(y, s, vy, k), rx, ry).overlaps(o), x, vx, y, vy);
+    }
+
     /** The obstacle box's diagonal (or anti-diagonal) as the segment. */
     static float[] segmentOf(float[] c) {
         boolean anti = Float.floatToRawIntBits(c[8]) % 2 == 0;
@@ -380,5 +394,29 @@ class SweepFarFromOriginTest {
         float sc = t(Sweep.timeOfImpact(new Segment(3241157.5f, -1729808.9f, 3241164.8f, -1729818.6f), 57.45913f, -45.29672f,
                 new Circle(3241177.2f, -1729820.5f, 4.550862f)));
         assertEquals(Math.nextDown(0.22407232f), sc);
+    }
+
+    /**
+     * The searched pairs had the same fault: an ellipse far out (the walk from the
+     * conservative advancement's entry answered 0.7447916), and two convex polygons near the
+     * origin, whose slanted edges make each rounded coordinate move them off the line: the
+     * float positions overlap at 0.44035122 to 0.44035128, are clear again after, and the
+     * exact polygon sweep answered 0.44035158.
+     */
+    @org.junit.jupiter.api.Test
+    void searchedPairs_overlapSplitByRounding_isNotWalkedOver() {
+        Hit e = Sweep.timeOfImpact(new Ellipse(-1496257.9f, 932641.5f, 1.637266f, 1.4823596f), -36.0f, -59.0f,
+                new Circle(-1496287.4f, 932598.44f, 1.2222853f));
+        assertEquals(Math.nextDown(0.7413195f), e.t());
+        Polygon a = Polygon.of(58.82529f, 82.57199f, 58.808113f, 82.5993f, 51.24117f, 85.35738f, 25.808365f, 80.78121f,
+                58.65307f, 81.19602f);
+        Polygon b = Polygon.of(44.604088f, 121.982346f, 39.065704f, 127.61528f, 10.913459f, 127.60056f, 2.0f, 110.5f,
+                20.0f, 90.5f, 30.509384f, 90.611374f, 47.0f, 104.5f);
+        float vx = 10.778797f, vy = 22.410355f;
+        Hit h = Sweep.timeOfImpact(a, vx, vy, b);
+        assertEquals(0.4403512f, h.t());
+        assertFalse(a.translated(h.t() * vx, h.t() * vy).overlaps(b));
+        float next = Math.nextUp(h.t());
+        assertTrue(a.translated(next * vx, next * vy).overlaps(b));
     }
 }

@@ -86,4 +86,29 @@ class SweepSearchedStartTest {
             assertTrue(h.t() > 0.001f && h.t() < 0.0015f, deg + ": " + h);
         }
     }
+
+    @Test
+    void turningSquareTouchingAnEllipseAtAnAngle_movingIn_isZero() {
+        Ellipse e = new Ellipse(0, 0, 20, 10);
+        for (int deg = 10; deg < 360; deg += 40) {
+            double[] n = normal(20, 10, deg);
+            double th = Math.toRadians(deg);
+            double px = 20 * Math.cos(th), py = 10 * Math.sin(th), tx = -n[1], ty = n[0];
+            for (double gap : new double[] {0, 0.05}) {
+                double qx = px + gap * n[0], qy = py + gap * n[1];
+                Polygon sq = Polygon.of((float) (qx - 2 * tx), (float) (qy - 2 * ty), (float) (qx + 2 * tx),
+                        (float) (qy + 2 * ty), (float) (qx + 2 * tx + 4 * n[0]), (float) (qy + 2 * ty + 4 * n[1]),
+                        (float) (qx - 2 * tx + 4 * n[0]), (float) (qy - 2 * ty + 4 * n[1]));
+                // Turning a little about its far side's middle while moving in along the normal.
+                float pivotX = (float) (qx + 4 * n[0]), pivotY = (float) (qy + 4 * n[1]);
+                Hit h = Sweep.turningTimeOfImpact(sq, pivotX, pivotY, (float) (-6 * n[0]), (float) (-6 * n[1]), 0.01f, e);
+                assertNotNull(h, deg + " gap " + gap);
+                if (gap == 0) {
+                    assertEquals(0f, h.t(), deg + ": " + h);
+                } else {
+                    assertTrue(h.t() > 0.005f && h.t() < 0.01f, deg + " gap " + gap + ": " + h);
+                }
+            }
+        }
+    }
 }

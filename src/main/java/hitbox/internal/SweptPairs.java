@@ -372,6 +372,40 @@ public final class SweptPairs {
     }
 
     /**
+     * {@link #firstOverlap(double, double, OverlapAt, float, float, float, float, float, float,
+     * float, float)} for a mover with any number of coordinates: {@code xy} holds them in
+     * pairs, each x moving by {@code b + t * vx}, each y by {@code b + t * vy} (a shape moved
+     * by {@link Shape#translated}). +infinity if none up to {@code until} (or 1) overlaps,
+     * NaN past {@link #MAX_POSITIONS} positions.
+     */
+    public static float firstOverlap(double from, double until, OverlapAt o, float[] xy, float vx, float vy) {
+        float t = (float) Math.max(from, 0);
+        if (t > from) {
+            t = Math.max(Math.nextDown(t), 0f);
+        }
+        if (t > 1 || t > until) {
+            return Float.POSITIVE_INFINITY;
+        }
+        if (o.at(t)) {
+            return Float.NaN;  // the bound was not one: leave it to the caller's walk
+        }
+        for (int n = 0; n < MAX_POSITIONS; n++) {
+            float next = Float.POSITIVE_INFINITY;
+            for (int i = 0; i < xy.length; i += 2) {
+                next = Math.min(next, Math.min(nextChange(t, xy[i], vx), nextChange(t, xy[i + 1], vy)));
+            }
+            if (next > 1 || next > until) {
+                return Float.POSITIVE_INFINITY;
+            }
+            t = next;
+            if (o.at(t)) {
+                return t;
+            }
+        }
+        return Float.NaN;
+    }
+
+    /**
      * The promised t (see {@link Sweep}), +infinity for no hit: 0 if the exact entry e is
      * inside at the start or at exactly 0 (touching and moving in); else the float just below
      * the first float position that overlaps, found by visiting the positions from the entry
