@@ -26,7 +26,9 @@ import hitbox.internal.*;
  * it or split it in pieces; the pairs on plain floats (and their shape forms) visit the
  * float positions one by one from the earliest time rounding could make one overlap, so
  * {@code t} stands before the first piece (up to 4096 positions; past that, a walk from the
- * exact entry decides). Whether there is a hit at all is the exact path's decision: a path
+ * exact entry decides; two boxes need no visit, their float overlap is one interval), and the
+ * searched pairs and two convex polygons look back the same way from the walk's answer.
+ * Whether there is a hit at all is the exact path's decision: a path
  * that misses exactly is no hit, even where rounding puts a float position a hair inside.
  * The one exception: a mover that touches the obstacle at the start and moves
  * into it gets {@code t = 0} exactly, as {@link Hit} promises, not the hair above 0 at which
