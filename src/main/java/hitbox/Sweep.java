@@ -116,22 +116,15 @@ public final class Sweep {
         if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
             return 0;
         }
-        return rectRectAnswer(x, y, w, h, vx, vy, ox, oy, ow, oh, SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh),
-                null);
+        return rectRectAnswer(x, y, w, h, vx, vy, ox, oy, ow, oh, SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh));
     }
 
     /**
-     * The promised t of a box sweep from its exact entry e, or where that misses, from the
-     * entry of the obstacle grown by the rounding slack of the float positions. Fills
-     * {@code grownOut[0]} with that grown entry, for the normal, if asked.
+     * The promised t of a box sweep from its exact entry e: 0 if inside or touching at the
+     * start and moving in, +infinity if the exact path misses, else the walk from the entry.
      */
     private static float rectRectAnswer(float x, float y, float w, float h, float vx, float vy,
-                                        float ox, float oy, float ow, float oh, Earliest e, Earliest[] grownOut) {
-        Earliest grown = SweptPairs.rectRectGrown(x, y, w, h, vx, vy, ox, oy, ow, oh,
-                SweptPairs.slack(x, vx), SweptPairs.slack(y, vy));
-        if (grownOut != null) {
-            grownOut[0] = grown;
-        }
+                                        float ox, float oy, float ow, float oh, Earliest e) {
         if (e.inside || e.found() && e.t == 0) {
             return 0;  // overlapping, or touching at the start and moving in (Hit's promise)
         }
@@ -231,9 +224,8 @@ public final class Sweep {
             return null;
         }
         Earliest e = SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh);
-        Earliest[] grown = new Earliest[1];
-        float t = rectRectAnswer(x, y, w, h, vx, vy, ox, oy, ow, oh, e, grown);
-        return SweptPairs.hit(t, e, grown[0], false);
+        float t = rectRectAnswer(x, y, w, h, vx, vy, ox, oy, ow, oh, e);
+        return SweptPairs.hit(t, e, e, false);
     }
 
     /**
@@ -261,7 +253,8 @@ public final class Sweep {
             return null;  // bad input: no hit, as documented
         }
         double g = SweptPairs.slack(x, vx) + SweptPairs.slack(y, vy);
-        Earliest grown = SweptPairs.circleCircleGrown(x, y, r, vx, vy, ox, oy, or, g);
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleCircleGrown(x, y, r, vx, vy, ox, oy, or, g);
         float t = SweptPairs.answer(e, grown, u -> Collide.circleCircle(x + u * vx, y + u * vy, r, ox, oy, or),
                 x, vx, y, vy);
         return SweptPairs.hit(t, e, grown, false);
@@ -297,7 +290,8 @@ public final class Sweep {
                 || r < 0 || rectW < 0 || rectH < 0)) {
             return null;  // bad input: no hit, as documented
         }
-        Earliest grown = SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy),
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy),
                 vx, vy, rectX, rectY, rectW, rectH);
         float t = SweptPairs.answer(e, grown, u -> Collide.circleRect(cx + u * vx, cy + u * vy, r, rectX, rectY, rectW, rectH),
                 cx, vx, cy, vy);
@@ -329,7 +323,8 @@ public final class Sweep {
     public static Hit rectSegmentHit(float x, float y, float w, float h, float vx, float vy,
                                      float x1, float y1, float x2, float y2) {
         Earliest e = SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2);
-        Earliest grown = SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2,
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2,
                 SweptPairs.slack(x, vx), SweptPairs.slack(y, vy));
         float t = SweptPairs.answer(e, grown, u -> Collide.lineRect(x1, y1, x2, y2, x + u * vx, y + u * vy, w, h),
                 x, vx, y, vy);
@@ -358,7 +353,8 @@ public final class Sweep {
     public static Hit circleSegmentHit(float cx, float cy, float r, float vx, float vy,
                                        float x1, float y1, float x2, float y2) {
         Earliest e = SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2);
-        Earliest grown = SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2,
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2,
                 SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy));
         float t = SweptPairs.answer(e, grown, u -> Collide.lineCircle(x1, y1, x2, y2, cx + u * vx, cy + u * vy, r),
                 cx, vx, cy, vy);
@@ -435,7 +431,8 @@ public final class Sweep {
         float x = mover.x(), y = mover.y(), w = mover.w(), h = mover.h();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
         Earliest e = SweptPairs.circleRectEntry(cx, cy, r, -vx, -vy, x, y, w, h);
-        Earliest grown = SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(x, vx), SweptPairs.slack(y, vy),
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(x, vx), SweptPairs.slack(y, vy),
                 -vx, -vy, x, y, w, h);
         float t = SweptPairs.answer(e, grown, u -> Collide.circleRect(cx, cy, r, x + u * vx, y + u * vy, w, h),
                 x, vx, y, vy);
@@ -476,7 +473,8 @@ public final class Sweep {
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float rectX = obstacle.x(), rectY = obstacle.y(), rectW = obstacle.w(), rectH = obstacle.h();
         Earliest e = SweptPairs.rectSegmentEntry(rectX, rectY, rectW, rectH, -vx, -vy, x1, y1, x2, y2);
-        Earliest grown = SweptPairs.rectSegmentEntry(rectX, rectY, rectW, rectH, -vx, -vy, x1, y1, x2, y2,
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.rectSegmentEntry(rectX, rectY, rectW, rectH, -vx, -vy, x1, y1, x2, y2,
                 Math.max(SweptPairs.slack(x1, vx), SweptPairs.slack(x2, vx)), Math.max(SweptPairs.slack(y1, vy), SweptPairs.slack(y2, vy)));
         float t = SweptPairs.answer(e, grown,
                 u -> Collide.lineRect(x1 + u * vx, y1 + u * vy, x2 + u * vx, y2 + u * vy, rectX, rectY, rectW, rectH),
@@ -518,7 +516,8 @@ public final class Sweep {
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
         Earliest e = SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2);
-        Earliest grown = SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2,
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2,
                 Math.max(SweptPairs.slack(x1, vx), SweptPairs.slack(x2, vx)), Math.max(SweptPairs.slack(y1, vy), SweptPairs.slack(y2, vy)));
         float t = SweptPairs.answer(e, grown,
                 u -> Collide.lineCircle(x1 + u * vx, y1 + u * vy, x2 + u * vx, y2 + u * vy, cx, cy, r),

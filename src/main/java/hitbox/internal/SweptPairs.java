@@ -437,6 +437,14 @@ public final class SweptPairs {
         return 1;
     }
 
+    /**
+     * Does e alone decide {@link #answer} (no entry, inside at the start, or touching and
+     * moving in), so that the grown entry need not be worked out? Most sweeps miss.
+     */
+    public static boolean decided(Earliest e) {
+        return !e.found() || e.inside || e.t == 0;
+    }
+
     /** {@link #answer} for a mover with two coordinates moving. */
     public static float answer(Earliest e, Earliest grown, OverlapAt o, float bx, float vx, float by, float vy) {
         return answer(e, grown, o, bx, vx, by, vy, 0, 0, 0, 0);
