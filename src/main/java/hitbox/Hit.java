@@ -25,7 +25,15 @@ import hitbox.internal.*;
  * test instead. A mover that only touches the obstacle at the start and moves into it gets
  * {@code t = 0} exactly, with a real normal and side (the one exception to the largest float
  * t of {@link Sweep}: there the float position has not moved for a hair above 0, but the
- * exact entry is 0).
+ * exact entry is 0). "Touches" is exact for the pairs {@link Sweep} solves exactly (circles,
+ * rectangles, segments, two convex polygons). Where a curved shape meets anything but a
+ * circle, a rectangle or a segment of those (an ellipse, a capsule, a polygon against a
+ * curved shape), touching at a slanted place cannot be built exactly in floats nor decided
+ * exactly, and the search stands in for it: a start within 1e-6 pixels, closing in, whose
+ * last clear float moves the mover by no more than a float step of its largest coordinate,
+ * gets {@code t = 0}; a start a clear gap away (0.01 pixels, say) gets its time. For the
+ * turning sweeps ({@link Sweep#turningTimeOfImpact}) it is a gap below their stopping
+ * distance, 1e-3 pixels, while closing in.
  *
  * @param t    the fraction of the motion done at impact, from 0 to 1
  * @param nx   the normal from the mover into the obstacle, x part (unit length, or 0)

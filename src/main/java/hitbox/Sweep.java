@@ -18,10 +18,19 @@ import hitbox.internal.*;
  * {@code t} is a {@code float} in [0, 1], and it is the <em>largest</em> float for which the
  * mover, moved the way a sketch moves it ({@code x + t * vx} and {@code y + t * vy}, in
  * {@code float}), does not overlap the obstacle ({@link Collide}'s test), while at the next
- * float up it does. So moving a sketch's object by {@code t} never leaves it a hair inside,
- * and it stands as close as floats allow. Where rounding leaves the moved position unchanged
- * over a range of {@code t} (a mover far from the origin moving slowly), {@code t} is the end
- * of that range. The one exception: a mover that touches the obstacle at the start and moves
+ * float up it does, and every float below it is clear too. So moving a sketch's object by
+ * {@code t} never leaves it a hair inside, and it stands as close as floats allow. Where
+ * rounding leaves the moved position unchanged over a range of {@code t} (a mover far from
+ * the origin moving slowly), {@code t} is the end of that range. Far from the origin the
+ * rounding of the moved position can start the float overlap before the exact one, shorten
+ * it or split it in pieces; the pairs on plain floats (and their shape forms) visit the
+ * float positions one by one from the earliest time rounding could make one overlap, so
+ * {@code t} stands before the first piece (up to 4096 positions; past that, a walk from the
+ * exact entry decides; two boxes need no visit, their float overlap is one interval), and the
+ * searched pairs and two convex polygons look back the same way from the walk's answer.
+ * Whether there is a hit at all is the exact path's decision: a path
+ * that misses exactly is no hit, even where rounding puts a float position a hair inside.
+ * The one exception: a mover that touches the obstacle at the start and moves
  * into it gets {@code t = 0} exactly, as {@link Hit} promises, not the hair above 0 at which
  * its float position has not yet moved: for the exact pairs (circles, rectangles, segments,
  * two convex polygons) its exact entry is 0, which decides before any float is tried; for
@@ -107,8 +116,27 @@ public final class Sweep {
         if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
             return 0;
         }
+        return rectRectAnswer(x, y, w, h, vx, vy, ox, oy, ow, oh, SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh));
+    }
+
+    /**
+     * The promised t of a box sweep from its exact entry e: 0 if inside or touching at the
+     * start and moving in, +infinity if the exact path misses, else the walk from the entry.
+     */
+    private static float rectRectAnswer(float x, float y, float w, float h, float vx, float vy,
+                                        float ox, float oy, float ow, float oh, Earliest e) {
+        if (e.inside || e.found() && e.t == 0) {
+            return 0;  // overlapping, or touching at the start and moving in (Hit's promise)
+        }
+        // Two boxes overlap on one interval of floats, with "clear, not past" below it and
+        // "past" above it (SweptPairs.Search.answer), so the walk from the exact entry cannot
+        // step over it however rounding moves or shortens it.
+        if (!e.found()) {
+            return Float.POSITIVE_INFINITY;  // hit or not is the exact path's decision
+        }
+        double from = e.t;
         // The search's loop here, with the overlap test written out: see SweptPairs.Search.
-        SweptPairs.Search s = new SweptPairs.Search(SweptPairs.rectRectTime(x, y, w, h, vx, vy, ox, oy, ow, oh), true);
+        SweptPairs.Search s = new SweptPairs.Search(from, false);
         while (s.searching()) {
             float t = s.t();
             float mx = x + t * vx, my = y + t * vy;
@@ -138,12 +166,8 @@ public final class Sweep {
      */
     public static float circleCircle(float x, float y, float r, float vx, float vy,
                                      float ox, float oy, float or) {
-        SweptPairs.Search s = new SweptPairs.Search(SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or));
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
-        }
-        return s.t();
+        Hit hit = circleCircleHit(x, y, r, vx, vy, ox, oy, or);
+        return hit == null ? Float.POSITIVE_INFINITY : hit.t();
     }
 
     /**
@@ -200,13 +224,8 @@ public final class Sweep {
             return null;
         }
         Earliest e = SweptPairs.rectRectEntry(x, y, w, h, vx, vy, ox, oy, ow, oh);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            float mx = x + t * vx, my = y + t * vy;
-            s.answer(Collide.rectRect(mx, my, w, h, ox, oy, ow, oh), SweptPairs.rectPast(mx, my, w, h, vx, vy, ox, oy, ow, oh));
-        }
-        return s.hit(e, false);
+        float t = rectRectAnswer(x, y, w, h, vx, vy, ox, oy, ow, oh, e);
+        return SweptPairs.hit(t, e, e, false);
     }
 
     /**
@@ -229,12 +248,16 @@ public final class Sweep {
     public static Hit circleCircleHit(float x, float y, float r, float vx, float vy,
                                       float ox, float oy, float or) {
         Earliest e = SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.circleCircle(x + t * vx, y + t * vy, r, ox, oy, or));
+        if (!e.found() && !(Float.isFinite(x) && Float.isFinite(y) && r >= 0 && Float.isFinite(vx) && Float.isFinite(vy)
+                && Float.isFinite(ox) && Float.isFinite(oy) && or >= 0 && Float.isFinite(r) && Float.isFinite(or))) {
+            return null;  // bad input: no hit, as documented
         }
-        return s.hit(e, false);
+        double g = SweptPairs.slack(x, vx) + SweptPairs.slack(y, vy);
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleCircleGrown(x, y, r, vx, vy, ox, oy, or, g);
+        float t = SweptPairs.answer(e, grown, u -> Collide.circleCircle(x + u * vx, y + u * vy, r, ox, oy, or),
+                x, vx, y, vy);
+        return SweptPairs.hit(t, e, grown, false);
     }
 
     /**
@@ -263,12 +286,16 @@ public final class Sweep {
     public static Hit circleRectHit(float cx, float cy, float r, float vx, float vy,
                                     float rectX, float rectY, float rectW, float rectH) {
         Earliest e = SweptPairs.circleRectEntry(cx, cy, r, vx, vy, rectX, rectY, rectW, rectH);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.circleRect(cx + t * vx, cy + t * vy, r, rectX, rectY, rectW, rectH));
+        if (!e.found() && (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(rectX, rectY, rectW, rectH, 0)
+                || r < 0 || rectW < 0 || rectH < 0)) {
+            return null;  // bad input: no hit, as documented
         }
-        return s.hit(e, false);
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy),
+                vx, vy, rectX, rectY, rectW, rectH);
+        float t = SweptPairs.answer(e, grown, u -> Collide.circleRect(cx + u * vx, cy + u * vy, r, rectX, rectY, rectW, rectH),
+                cx, vx, cy, vy);
+        return SweptPairs.hit(t, e, grown, false);
     }
 
     /**
@@ -296,12 +323,12 @@ public final class Sweep {
     public static Hit rectSegmentHit(float x, float y, float w, float h, float vx, float vy,
                                      float x1, float y1, float x2, float y2) {
         Earliest e = SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.lineRect(x1, y1, x2, y2, x + t * vx, y + t * vy, w, h));
-        }
-        return s.hit(e, false);
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2,
+                SweptPairs.slack(x, vx), SweptPairs.slack(y, vy));
+        float t = SweptPairs.answer(e, grown, u -> Collide.lineRect(x1, y1, x2, y2, x + u * vx, y + u * vy, w, h),
+                x, vx, y, vy);
+        return SweptPairs.hit(t, e, grown, false);
     }
 
     /**
@@ -326,12 +353,12 @@ public final class Sweep {
     public static Hit circleSegmentHit(float cx, float cy, float r, float vx, float vy,
                                        float x1, float y1, float x2, float y2) {
         Earliest e = SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.lineCircle(x1, y1, x2, y2, cx + t * vx, cy + t * vy, r));
-        }
-        return s.hit(e, false);
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2,
+                SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy));
+        float t = SweptPairs.answer(e, grown, u -> Collide.lineCircle(x1, y1, x2, y2, cx + u * vx, cy + u * vy, r),
+                cx, vx, cy, vy);
+        return SweptPairs.hit(t, e, grown, false);
     }
 
     // ---------------------------------------------------------------- on shapes
@@ -404,12 +431,12 @@ public final class Sweep {
         float x = mover.x(), y = mover.y(), w = mover.w(), h = mover.h();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
         Earliest e = SweptPairs.circleRectEntry(cx, cy, r, -vx, -vy, x, y, w, h);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.circleRect(cx, cy, r, x + t * vx, y + t * vy, w, h));
-        }
-        return s.hit(e, true);
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(x, vx), SweptPairs.slack(y, vy),
+                -vx, -vy, x, y, w, h);
+        float t = SweptPairs.answer(e, grown, u -> Collide.circleRect(cx, cy, r, x + u * vx, y + u * vy, w, h),
+                x, vx, y, vy);
+        return SweptPairs.hit(t, e, grown, true);
     }
 
     /**
@@ -446,12 +473,13 @@ public final class Sweep {
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float rectX = obstacle.x(), rectY = obstacle.y(), rectW = obstacle.w(), rectH = obstacle.h();
         Earliest e = SweptPairs.rectSegmentEntry(rectX, rectY, rectW, rectH, -vx, -vy, x1, y1, x2, y2);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.lineRect(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, rectX, rectY, rectW, rectH));
-        }
-        return s.hit(e, true);
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.rectSegmentEntry(rectX, rectY, rectW, rectH, -vx, -vy, x1, y1, x2, y2,
+                Math.max(SweptPairs.slack(x1, vx), SweptPairs.slack(x2, vx)), Math.max(SweptPairs.slack(y1, vy), SweptPairs.slack(y2, vy)));
+        float t = SweptPairs.answer(e, grown,
+                u -> Collide.lineRect(x1 + u * vx, y1 + u * vy, x2 + u * vx, y2 + u * vy, rectX, rectY, rectW, rectH),
+                x1, vx, y1, vy, x2, vx, y2, vy);
+        return SweptPairs.hit(t, e, grown, true);
     }
 
     /**
@@ -488,12 +516,13 @@ public final class Sweep {
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
         Earliest e = SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2);
-        SweptPairs.Search s = new SweptPairs.Search(e);
-        while (s.searching()) {
-            float t = s.t();
-            s.answer(Collide.lineCircle(x1 + t * vx, y1 + t * vy, x2 + t * vx, y2 + t * vy, cx, cy, r));
-        }
-        return s.hit(e, true);
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2,
+                Math.max(SweptPairs.slack(x1, vx), SweptPairs.slack(x2, vx)), Math.max(SweptPairs.slack(y1, vy), SweptPairs.slack(y2, vy)));
+        float t = SweptPairs.answer(e, grown,
+                u -> Collide.lineCircle(x1 + u * vx, y1 + u * vy, x2 + u * vx, y2 + u * vy, cx, cy, r),
+                x1, vx, y1, vy, x2, vx, y2, vy);
+        return SweptPairs.hit(t, e, grown, true);
     }
 
     /**

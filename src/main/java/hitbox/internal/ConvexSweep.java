@@ -52,7 +52,15 @@ public final class ConvexSweep {
             return null;
         }
         if (convexPolygon(mover) && convexPolygon(obstacle)) {
-            return ConvexPolygonSweep.timeOfImpact((Polygon) mover, vx, vy, (Polygon) obstacle);
+            Hit h = ConvexPolygonSweep.timeOfImpact((Polygon) mover, vx, vy, (Polygon) obstacle);
+            if (h == null || !(h.t() > 0) || h.alreadyOverlapping()) {
+                return h;
+            }
+            // The exact entry's walk can land past a piece of float overlap that rounding split
+            // off before it (a slanted edge, each coordinate rounded on its own): look back.
+            float t = notWalkedOver(mover, Polygons.corners(mover), Polygons.corners(obstacle), vx, vy, h.t(),
+                    u -> movedOverlaps(mover, u * vx, u * vy, obstacle));
+            return t == h.t() ? h : new Hit(t, h.nx(), h.ny(), h.side());
         }
         return byPieces(mover, vx, vy, obstacle);
     }
@@ -81,6 +89,9 @@ public final class ConvexSweep {
                     // barely moved. (This entry is only a bound, so it cannot say it exactly.)
                     t = 0;
                 }
+                if (t > 0 && t <= 1) {
+                    t = notWalkedOver(mover, a, b, vx, vy, t, overlapAt);
+                }
                 if (t < best && (t < 1 || overlapAt.at(1))) {
                     best = t;
                     bx = normal[0];
@@ -89,6 +100,43 @@ public final class ConvexSweep {
             }
         }
         return best <= 1 ? SweptPairs.hit(best, bx, by) : null;
+    }
+
+    /**
+     * The walk's answer t, or an earlier one if rounding of the float positions made one
+     * overlap before it: far from the origin the float overlap can start before the exact
+     * one, or be split in pieces, and the walk from the entry may land in a later piece.
+     * The float positions are visited one by one from the time the pieces come within the
+     * rounding slack of the mover's coordinates (before it none can overlap) up to t; the
+     * first overlapping one gives the float just below it. (Past
+     * {@link SweptPairs#MAX_POSITIONS} positions, a graze near the origin, t stands.)
+     */
+    private static float notWalkedOver(Shape mover, Object a, Object b, float vx, float vy, float t,
+                                       SweptPairs.OverlapAt overlapAt) {
+        float[] xy = coordinates(mover);
+        double gx = 0, gy = 0;
+        for (int i = 0; i < xy.length; i += 2) {
+            gx = Math.max(gx, SweptPairs.slack(xy[i], vx));
+            gy = Math.max(gy, SweptPairs.slack(xy[i + 1], vy));
+        }
+        double from = entryWithin(a, b, vx, vy, new double[2], gx + gy + TOUCH);
+        if (!(from < t)) {
+            return t;
+        }
+        float f = SweptPairs.firstOverlap(from, Math.nextDown(t), overlapAt, xy, vx, vy);
+        return f > 0 && f <= t ? Math.nextDown(f) : t;
+    }
+
+    /** The coordinates that {@link Shape#translated} moves, in x, y pairs. */
+    private static float[] coordinates(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE -> new float[] {((Ellipse) s).x(), ((Ellipse) s).y()};
+            case CIRCLE -> new float[] {((Circle) s).x(), ((Circle) s).y()};
+            case RECT -> new float[] {((Rect) s).x(), ((Rect) s).y()};
+            case CAPSULE -> new float[] {((Capsule) s).x1(), ((Capsule) s).y1(), ((Capsule) s).x2(), ((Capsule) s).y2()};
+            case SEGMENT -> new float[] {((Segment) s).x1(), ((Segment) s).y1(), ((Segment) s).x2(), ((Segment) s).y2()};
+            case POLYGON -> HiddenParts.raw((Polygon) s);
+        };
     }
 
     /** Is a move by (dx, dy) no longer than a float step of the shape's largest coordinate? */
@@ -217,20 +265,33 @@ public final class ConvexSweep {
 
     /** As {@link #entry(Object, Object, double, double, double[])}, piece a starting moved by (sx, sy). */
     public static double entry(Object a, Object b, double sx, double sy, double vx, double vy, double[] normal) {
+        return entryWithin(a, b, sx, sy, vx, vy, normal, TOUCH);
+    }
+
+    /** As {@link #entry(Object, Object, double, double, double[])}, coming within {@code within} instead. */
+    public static double entryWithin(Object a, Object b, double vx, double vy, double[] normal, double within) {
+        return entryWithin(a, b, 0, 0, vx, vy, normal, within);
+    }
+
+    private static double entryWithin(Object a, Object b, double sx, double sy, double vx, double vy, double[] normal,
+                                      double within) {
         double t = 0;
         double[] n = new double[2];
         for (int step = 0; step < MAX_STEPS; step++) {
             double gap = separation(a, b, sx + t * vx, sy + t * vy, n);
             normal[0] = n[0];
             normal[1] = n[1];
-            if (gap <= TOUCH) {
+            if (gap <= within) {
                 return t;
             }
             double closing = vx * n[0] + vy * n[1];
             if (!(closing > 0)) {
                 return Double.POSITIVE_INFINITY; // the gap along n never closes
             }
-            t += gap / closing;
+            // The separation along n closes at exactly v . n and the distance is never less,
+            // so stepping to a separation of within / 2 along n keeps it above that (coming
+            // within TOUCH, to the contact: the step the advancement has always taken).
+            t += (within > TOUCH ? gap - within / 2 : gap) / closing;
             if (t > 1) {
                 return Double.POSITIVE_INFINITY;
             }

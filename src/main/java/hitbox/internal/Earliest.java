@@ -13,6 +13,11 @@ public final class Earliest {
     public double nx;
     public double ny;
     public boolean inside;
+    /**
+     * The latest exit of the pieces entered or started in (the union is convex, so this is
+     * when the path leaves it), -infinity if none: where a search may stop.
+     */
+    public double until = Double.NEGATIVE_INFINITY;
 
     /** A clip's entry, if it is the earliest so far. */
     public void clip(Slabs.Clip clip, double limit) {
@@ -20,6 +25,9 @@ public final class Earliest {
             inside = true;
         }
         offer(clip.firstTime(limit), clip.nx, clip.ny);
+        if (clip.insideAtStart() || clip.firstTime(limit) != Slabs.INF) {
+            until = Math.max(until, clip.exit);
+        }
     }
 
     /** A point {@code d + t v} entering the open disc of radius reach around the origin. */
@@ -29,6 +37,12 @@ public final class Earliest {
             inside = true;
         } else {
             offer(te, dx + te * vx, dy + te * vy);
+        }
+        if (te != Slabs.INF) {
+            // The exit, (-b + sqrt(b^2 - a c)) / a: never, for a point at rest inside.
+            double a = vx * vx + vy * vy, b = dx * vx + dy * vy, c = dx * dx + dy * dy - reach * reach;
+            double out = a > 0 ? (-b + Math.sqrt(Math.max(b * b - a * c, 0))) / a : Slabs.INF;
+            until = Math.max(until, out);
         }
     }
 

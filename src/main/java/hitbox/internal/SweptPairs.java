@@ -7,6 +7,12 @@ import hitbox.*;
  * {@code double} (slabs for boxes, discs for round parts), and the step from that exact
  * entry to the float {@code t} Sweep promises: the largest float at which the mover, moved
  * as a sketch moves it, does not overlap.
+ *
+ * <p>This class is longer than most (about 590 lines) because it holds both halves of every
+ * swept pair, the exact entries (each also grown by the rounding slack of the float
+ * positions) and the two ways from an entry to the promised float: visiting the float
+ * positions one by one ({@link #answer}) and the walk ({@link Search}); split, each half
+ * would be a list of pairs that only the other half reads.
  */
 public final class SweptPairs {
     private SweptPairs() {
@@ -67,6 +73,18 @@ public final class SweptPairs {
         return e;
     }
 
+    /**
+     * Circle against circle with the summed radius grown by {@code grow}: the earliest time
+     * the mover, displaced by up to grow, can overlap (see {@link #answer}); inside at the
+     * start for a start already within grow.
+     */
+    public static Earliest circleCircleGrown(float x, float y, float r, float vx, float vy,
+                                             float ox, float oy, float or, double grow) {
+        Earliest e = new Earliest();
+        e.disc((double) x - ox, (double) y - oy, vx, vy, (double) r + or + grow, 1);
+        return e;
+    }
+
     public static Earliest circleRectEntry(float cx, float cy, float r, float vx, float vy,
                                             float rx, float ry, float rw, float rh) {
         Earliest e = new Earliest();
@@ -77,17 +95,30 @@ public final class SweptPairs {
             e.inside = true;
             return e;
         }
-        double left = rx, right = (double) rx + rw, top = ry, bottom = (double) ry + rh;
+        return circleRectGrown(e, cx, cy, r, 0, 0, vx, vy, rx, ry, rw, rh);
+    }
+
+    /**
+     * The entry into the rectangle grown by the radius {@code r}, into e; with gx, gy not 0,
+     * into that rounded box grown by gx across and gy up and down (the corner discs by
+     * gx + gy), for the earliest time a centre displaced that much can overlap (see
+     * {@link #answer}).
+     */
+    public static Earliest circleRectGrown(Earliest e, float cx, float cy, float r, double gx, double gy,
+                                           float vx, float vy, float rx, float ry, float rw, float rh) {
+        double left = rx - gx, right = (double) rx + rw + gx, top = ry - gy, bottom = (double) ry + rh + gy;
+        double rd = r + gx + gy;
         // The rounded box is the union of two crossing boxes and four corner circles; the
         // first entry into the union is the first entry into any of them. Where a box and a
         // corner circle are entered at the same moment the point is where the circle meets
         // the box's real face, so the circles go first (ties keep the first), and each box
         // puts its real faces first: the wide box's are left and right, the tall box's top
         // and bottom.
-        e.disc(cx - left, cy - top, vx, vy, r, 1);
-        e.disc(cx - right, cy - top, vx, vy, r, 1);
-        e.disc(cx - left, cy - bottom, vx, vy, r, 1);
-        e.disc(cx - right, cy - bottom, vx, vy, r, 1);
+        double cl = (double) rx, cr = (double) rx + rw, ct = ry, cb = (double) ry + rh;
+        e.disc(cx - cl, cy - ct, vx, vy, rd, 1);
+        e.disc(cx - cr, cy - ct, vx, vy, rd, 1);
+        e.disc(cx - cl, cy - cb, vx, vy, rd, 1);
+        e.disc(cx - cr, cy - cb, vx, vy, rd, 1);
         e.clip(new Slabs.Clip()
                 .slab(left - r - cx, right + r - cx, vx, 1, 0)
                 .slab(top - cy, bottom - cy, vy, 0, 1), 1);
@@ -99,14 +130,24 @@ public final class SweptPairs {
 
     public static Earliest rectSegmentEntry(float x, float y, float w, float h, float vx, float vy,
                                              float x1, float y1, float x2, float y2) {
+        return rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2, 0, 0);
+    }
+
+    /**
+     * Box against segment with the box displaced by up to gx across and gy up and down (0, 0:
+     * the exact entry): each axis's interval grown by what the displacement can move it, for
+     * the earliest time a displaced box can meet the segment (see {@link #answer}).
+     */
+    public static Earliest rectSegmentEntry(float x, float y, float w, float h, float vx, float vy,
+                                            float x1, float y1, float x2, float y2, double gx, double gy) {
         Earliest e = new Earliest();
         if (Check.notFinite(x, y, w, h, vx) || Check.notFinite(vy, x1, y1, x2, y2) || !(w > 0 && h > 0)) {
             return e;  // no entry
         }
         double left = x, right = (double) x + w, top = y, bottom = (double) y + h;
         Slabs.Clip clip = new Slabs.Clip()
-                .slab(Math.min(y1, y2) - bottom, Math.max(y1, y2) - top, vy, 0, 1)
-                .slab(Math.min(x1, x2) - right, Math.max(x1, x2) - left, vx, 1, 0);
+                .slab(Math.min(y1, y2) - bottom - gy, Math.max(y1, y2) - top + gy, vy, 0, 1)
+                .slab(Math.min(x1, x2) - right - gx, Math.max(x1, x2) - left + gx, vx, 1, 0);
         double ex = (double) x2 - x1, ey = (double) y2 - y1;
         if (ex != 0 || ey != 0) {
             // Across the segment: n = (-ey, ex). The segment projects to one value, the box
@@ -117,7 +158,8 @@ public final class SweptPairs {
             double lo = base + Math.min(0, nx * w) + Math.min(0, ny * h);
             double hi = base + Math.max(0, nx * w) + Math.max(0, ny * h);
             double len = Math.hypot(ex, ey);
-            clip.slab(s - hi, s - lo, nx * vx + ny * vy, nx / len, ny / len);
+            double g = Math.abs(nx) * gx + Math.abs(ny) * gy;
+            clip.slab(s - hi - g, s - lo + g, nx * vx + ny * vy, nx / len, ny / len);
         }
         e.clip(clip, 1);
         return e;
@@ -125,14 +167,27 @@ public final class SweptPairs {
 
     public static Earliest circleSegmentEntry(float cx, float cy, float r, float vx, float vy,
                                                float x1, float y1, float x2, float y2) {
+        return circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2, 0, 0);
+    }
+
+    /**
+     * Circle against segment with the centre displaced by up to gx across and gy up and down
+     * (0, 0: the exact entry): the end discs grown by gx + gy, the across and along slabs by
+     * what the displacement can move them, for the earliest time a displaced circle can meet
+     * the segment (see {@link #answer}).
+     */
+    public static Earliest circleSegmentEntry(float cx, float cy, float rf, float vx, float vy,
+                                              float x1, float y1, float x2, float y2, double gx, double gy) {
         Earliest e = new Earliest();
-        if (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(x1, y1, x2, y2, 0) || !(r > 0)) {
+        if (Check.notFinite(cx, cy, rf, vx, vy) || Check.notFinite(x1, y1, x2, y2, 0) || !(rf > 0)) {
             return e;  // no entry
         }
+        double r = rf;
+        double rEnds = rf + gx + gy;
         // End circles first: at a tie the point is where an end circle meets the face, and
         // the circle's normal is the true one there.
-        e.disc((double) cx - x1, (double) cy - y1, vx, vy, r, 1);
-        e.disc((double) cx - x2, (double) cy - y2, vx, vy, r, 1);
+        e.disc((double) cx - x1, (double) cy - y1, vx, vy, rEnds, 1);
+        e.disc((double) cx - x2, (double) cy - y2, vx, vy, rEnds, 1);
         double ex = (double) x2 - x1, ey = (double) y2 - y1;
         double len2 = ex * ex + ey * ey;
         if (len2 > 0) {
@@ -140,11 +195,28 @@ public final class SweptPairs {
             double px = (double) cx - x1, py = (double) cy - y1;
             double across = -ey * px + ex * py;
             double along = ex * px + ey * py;
-            double half = r * len;
+            double half = r * len + Math.abs(ey) * gx + Math.abs(ex) * gy;
+            double ga = Math.abs(ex) * gx + Math.abs(ey) * gy;
             e.clip(new Slabs.Clip()
                     .slab(-half - across, half - across, -ey * vx + ex * vy, -ey / len, ex / len)
-                    .slab(-along, len2 - along, ex * vx + ey * vy, ex / len, ey / len), 1);
+                    .slab(-along - ga, len2 - along + ga, ex * vx + ey * vy, ex / len, ey / len), 1);
         }
+        return e;
+    }
+
+    /**
+     * Box against box with the Minkowski box's intervals grown by {@code gx} and {@code gy}
+     * on both sides: the earliest time a box displaced by up to grow can overlap (see
+     * {@link #answer}); inside at the start for a start already within grow.
+     */
+    public static Earliest rectRectGrown(float x, float y, float w, float h, float vx, float vy,
+                                         float ox, float oy, float ow, float oh, double gx, double gy) {
+        Earliest e = new Earliest();
+        if (!(w >= 0 && h >= 0 && ow >= 0 && oh >= 0)) {
+            return e;
+        }
+        e.clip(Slabs.box(ox - ((double) x + w) - gx, ((double) ox + ow) - x + gx,
+                oy - ((double) y + h) - gy, ((double) oy + oh) - y + gy, vx, vy), 1);
         return e;
     }
 
@@ -172,6 +244,228 @@ public final class SweptPairs {
         double len = Math.hypot(nx, ny);
         double ux = len > 0 ? nx / len : 0, uy = len > 0 ? ny / len : 0;
         return new Hit(t, (float) ux, (float) uy, Side.ofNormal(ux, uy));
+    }
+
+    // ---------------------------------------------------------------- the float positions, visited
+
+    /** The most float positions {@link #firstOverlap} visits before it leaves the rest to {@link Search}. */
+    public static final int MAX_POSITIONS = 4096;
+
+    /**
+     * How far the float position {@code base + t * v} (t*v rounded, then the sum rounded) can
+     * be from the exact {@code base + t v}, for t in [0, 1], at most: half a float step of
+     * |v| and half one of the sum, each bounded generously by a whole step. +infinity where
+     * the sum could leave the float range.
+     */
+    public static double slack(float base, float v) {
+        if (v == 0) {
+            return 0;  // base + t * 0 is base, exactly
+        }
+        float big = 2 * (Math.abs(base) + Math.abs(v));
+        return (double) Math.ulp(Math.abs(v)) + Math.ulp(big);
+    }
+
+    /**
+     * The smallest float t' in (t, 1] at which {@code base + t' * v}, computed in float as a
+     * sketch computes it, differs from its value at t; +infinity if none does. The float
+     * position is a monotone step function of t, so a guess from the exact crossing of the
+     * rounding boundary, corrected a float at a time, finds the step (halving by the bits if
+     * the guess was far off).
+     */
+    public static float nextChange(float t, float base, float v) {
+        if (v == 0) {
+            return Float.POSITIVE_INFINITY;
+        }
+        float now = base + t * v;
+        if (base + v == now) {
+            return Float.POSITIVE_INFINITY;
+        }
+        float next = v > 0 ? Math.nextUp(now) : Math.nextDown(now);
+        float g = (float) ((((double) now + next) / 2 - base) / v);
+        g = !(g > t) ? Math.nextUp(t) : Math.min(g, 1f);
+        if (base + g * v != now) {
+            for (int i = 0; i < 64; i++) {
+                float d = Math.nextDown(g);
+                if (d <= t || base + d * v == now) {
+                    return g;
+                }
+                g = d;
+            }
+        } else {
+            for (int i = 0; i < 64; i++) {
+                g = Math.nextUp(g);
+                if (g > 1) {
+                    return Float.POSITIVE_INFINITY;
+                }
+                if (base + g * v != now) {
+                    return g;
+                }
+            }
+        }
+        int lo = Float.floatToRawIntBits(t), hi = Float.floatToRawIntBits(1f);
+        while (hi - lo > 1) {
+            int mid = (lo + hi) >>> 1;
+            if (base + Float.intBitsToFloat(mid) * v == now) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return Float.intBitsToFloat(hi);
+    }
+
+    /** Are the float positions of the (up to) four coordinates the same at t and at u? */
+    private static boolean samePosition(float t, float u, float b1, float v1, float b2, float v2,
+                                        float b3, float v3, float b4, float v4) {
+        return b1 + t * v1 == b1 + u * v1 && b2 + t * v2 == b2 + u * v2
+                && b3 + t * v3 == b3 + u * v3 && b4 + t * v4 == b4 + u * v4;
+    }
+
+    /**
+     * The first float t in [from, 1] at which the mover overlaps, visiting the float
+     * positions one by one: every coordinate {@code b + t * v} of the mover (up to four; pass
+     * 0, 0 for the unused) is a monotone step function of t, so between two steps of any of
+     * them the position, and so the answer of the overlap test, stays the same. Each
+     * position is asked about once, at the first float t that reaches it. +infinity if none
+     * up to 1 (or up to {@code until}, after which none can) overlaps; NaN if more than {@link #MAX_POSITIONS} were visited without an
+     * answer. {@code from} must be a time before which no float position can overlap (the
+     * entry of the obstacle grown by the rounding slack); should the one at {@code from}
+     * overlap after all, the first float of that position is returned.
+     */
+    public static float firstOverlap(double from, double until, OverlapAt o, float b1, float v1, float b2, float v2,
+                                     float b3, float v3, float b4, float v4) {
+        float t = (float) Math.max(from, 0);
+        if (t > from) {
+            t = Math.max(Math.nextDown(t), 0f);
+        }
+        if (t > 1) {
+            return Float.POSITIVE_INFINITY;
+        }
+        if (o.at(t)) {
+            // The first float with this position: halve on the bits between 0 and t.
+            if (samePosition(0, t, b1, v1, b2, v2, b3, v3, b4, v4)) {
+                return 0;
+            }
+            int lo = 0, hi = Float.floatToRawIntBits(t);
+            while (hi - lo > 1) {
+                int mid = (lo + hi) >>> 1;
+                if (samePosition(Float.intBitsToFloat(mid), t, b1, v1, b2, v2, b3, v3, b4, v4)) {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            return Float.intBitsToFloat(hi);
+        }
+        for (int n = 0; n < MAX_POSITIONS; n++) {
+            float next = Math.min(Math.min(nextChange(t, b1, v1), nextChange(t, b2, v2)),
+                    Math.min(nextChange(t, b3, v3), nextChange(t, b4, v4)));
+            if (next > 1 || next > until) {
+                return Float.POSITIVE_INFINITY;
+            }
+            t = next;
+            if (o.at(t)) {
+                return t;
+            }
+        }
+        return Float.NaN;
+    }
+
+    /**
+     * {@link #firstOverlap(double, double, OverlapAt, float, float, float, float, float, float,
+     * float, float)} for a mover with any number of coordinates: {@code xy} holds them in
+     * pairs, each x moving by {@code b + t * vx}, each y by {@code b + t * vy} (a shape moved
+     * by {@link Shape#translated}). +infinity if none up to {@code until} (or 1) overlaps,
+     * NaN past {@link #MAX_POSITIONS} positions.
+     */
+    public static float firstOverlap(double from, double until, OverlapAt o, float[] xy, float vx, float vy) {
+        float t = (float) Math.max(from, 0);
+        if (t > from) {
+            t = Math.max(Math.nextDown(t), 0f);
+        }
+        if (t > 1 || t > until) {
+            return Float.POSITIVE_INFINITY;
+        }
+        if (o.at(t)) {
+            return Float.NaN;  // the bound was not one: leave it to the caller's walk
+        }
+        for (int n = 0; n < MAX_POSITIONS; n++) {
+            float next = Float.POSITIVE_INFINITY;
+            for (int i = 0; i < xy.length; i += 2) {
+                next = Math.min(next, Math.min(nextChange(t, xy[i], vx), nextChange(t, xy[i + 1], vy)));
+            }
+            if (next > 1 || next > until) {
+                return Float.POSITIVE_INFINITY;
+            }
+            t = next;
+            if (o.at(t)) {
+                return t;
+            }
+        }
+        return Float.NaN;
+    }
+
+    /**
+     * The promised t (see {@link Sweep}), +infinity for no hit: 0 if the exact entry e is
+     * inside at the start or at exactly 0 (touching and moving in); else the float just below
+     * the first float position that overlaps, found by visiting the positions from the entry
+     * of the obstacle grown by the rounding slack ({@code grown}: before it no float position
+     * can overlap), so that no overlap rounding has shortened, moved or split is walked over;
+     * +infinity if the exact path has no entry (hit or not is decided exactly); 1 if no
+     * float position overlaps although the exact path enters (a graze). Where more float
+     * positions lie between than {@link #MAX_POSITIONS} (a graze near the origin, at a float
+     * step far below a pixel), the walk of {@link Search} from e decides.
+     */
+    public static float answer(Earliest e, Earliest grown, OverlapAt o, float b1, float v1, float b2, float v2,
+                               float b3, float v3, float b4, float v4) {
+        if (e.inside || e.found() && e.t == 0) {
+            return 0;
+        }
+        if (!e.found()) {
+            return Float.POSITIVE_INFINITY;  // hit or not is the exact path's decision (Sweep's class doc)
+        }
+        if (!grown.found()) {
+            return lastClear(e.t, o);  // grown not computable: the walk
+        }
+        float f = firstOverlap(grown.inside ? 0 : grown.t, grown.until, o, b1, v1, b2, v2, b3, v3, b4, v4);
+        if (Float.isNaN(f)) {
+            return e.found() ? lastClear(e.t, o) : Float.POSITIVE_INFINITY;
+        }
+        if (f <= 1) {
+            return f > 0 ? Math.nextDown(f) : 0;
+        }
+        return 1;
+    }
+
+    /**
+     * Does e alone decide {@link #answer} (no entry, inside at the start, or touching and
+     * moving in), so that the grown entry need not be worked out? Most sweeps miss.
+     */
+    public static boolean decided(Earliest e) {
+        return !e.found() || e.inside || e.t == 0;
+    }
+
+    /** {@link #answer} for a mover with two coordinates moving. */
+    public static float answer(Earliest e, Earliest grown, OverlapAt o, float bx, float vx, float by, float vy) {
+        return answer(e, grown, o, bx, vx, by, vy, 0, 0, 0, 0);
+    }
+
+    /**
+     * The hit for answer t (see {@link #answer}): null for +infinity, {@link #OVERLAPPING}
+     * if e is inside at the start, else with e's normal, or the grown entry's where the
+     * exact path has no entry (its float positions overlap all the same); the normal from
+     * the mover into the obstacle, or the mover's own outward one when {@code swapped}.
+     */
+    public static Hit hit(float t, Earliest e, Earliest grown, boolean swapped) {
+        if (t == Float.POSITIVE_INFINITY) {
+            return null;
+        }
+        if (e.inside) {
+            return OVERLAPPING;
+        }
+        Earliest n = e.found() ? e : grown;
+        double sign = swapped ? 1 : -1;
+        return hit(t, sign * n.nx, sign * n.ny);
     }
 
     /**
