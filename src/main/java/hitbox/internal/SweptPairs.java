@@ -535,11 +535,6 @@ public final class SweptPairs {
             phase = te == Slabs.INF || te == Double.NEGATIVE_INFINITY || exactEntry && te == 0 ? DONE : START;
         }
 
-        /** A search from exact entry e (see {@link #Search(double, boolean)}), for {@link #hit}. */
-        public Search(Earliest e) {
-            this(!e.found() ? Slabs.INF : e.inside ? Double.NEGATIVE_INFINITY : e.t, true);
-        }
-
         /**
          * The answer as a hit, once done, with entry e's normal (the entry searched from):
          * null for no entry, an already-overlapping hit if the shapes overlap at the start,
