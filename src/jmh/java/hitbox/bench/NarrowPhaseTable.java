@@ -565,7 +565,8 @@ public final class NarrowPhaseTable {
         s.append("Where a peer is faster on a small test it mostly computes in float: `gradle peerExactness` counts how often\n");
         s.append("such a peer answers nearly touching shapes wrongly, against exact arithmetic, and checks Hitbox answers none\n");
         s.append("wrongly (`docs/peer-exactness.md`). That exactness, and the checks behind the NaN and negative-size rules,\n");
-        s.append("are what the small rows pay for.\n\n");
+        s.append("are what the small rows pay for. What a floating-point filter saves of it is measured apart, every form on the\n");
+        s.append("same arrays (`FilterFormsBench`, [benchmarks.md](benchmarks.md#filtered-predicates-what-exactness-costs-on-the-small-tests)).\n\n");
         for (Map.Entry<String, String> row : misses.rows.entrySet()) {
             String id = row.getKey();
             s.append("- ").append(row.getValue()).append(". ").append(NarrowProfiles.why(id)).append('\n');
