@@ -68,53 +68,21 @@ class SweepFarFromOriginTest {
     /**
      * The smallest float t' in (t, 1] at which {@code base + t' * v} (in float) differs from its
      * value at t, or +infinity if none does. The float position is a monotone step function of
-     * t, so a guess from the exact crossing, corrected one float at a time, finds it.
+     * t, so halving between t (unchanged) and 1 (changed) by the floats' bits finds it: a
+     * plain search, independent of the library's own guess-and-walk for the same step.
      */
     static float nextChange(float t, float base, float v) {
-        if (v == 0) {
-            return Float.POSITIVE_INFINITY;
-        }
         float now = base + t * v;
-        if (base + 1f * v == now) {
+        if (v == 0 || base + 1f * v == now) {
             return Float.POSITIVE_INFINITY;
         }
-        float next = v > 0 ? Math.nextUp(now) : Math.nextDown(now);
-        double mid = ((double) now + next) / 2;
-        float g = (float) ((mid - base) / v);
-        if (!(g > t)) {
-            g = Math.nextUp(t);
-        }
-        if (g > 1) {
-            g = 1;
-        }
-        int steps = 0;
-        if (base + g * v != now) {
-            while (steps++ < 64) {
-                float d = Math.nextDown(g);
-                if (d <= t || base + d * v == now) {
-                    return g;
-                }
-                g = d;
-            }
-        } else {
-            while (steps++ < 64) {
-                g = Math.nextUp(g);
-                if (g > 1) {
-                    return Float.POSITIVE_INFINITY;
-                }
-                if (base + g * v != now) {
-                    return g;
-                }
-            }
-        }
-        // The guess was far off: halve between t (unchanged) and 1 (changed) by the bits.
         int lo = Float.floatToRawIntBits(t), hi = Float.floatToRawIntBits(1f);
         while (hi - lo > 1) {
-            int mid2 = (lo + hi) >>> 1;
-            if (base + Float.intBitsToFloat(mid2) * v == now) {
-                lo = mid2;
+            int mid = (lo + hi) >>> 1;
+            if (base + Float.intBitsToFloat(mid) * v == now) {
+                lo = mid;
             } else {
-                hi = mid2;
+                hi = mid;
             }
         }
         return Float.intBitsToFloat(hi);
