@@ -37,9 +37,6 @@ class ManifoldBoxClipTest {
     /** A point the oracle keeps must be this deep (relative to the scale); shallower ones are not checked. */
     private static final double CLEAR = 1e-5;
 
-    /** How far apart (in cosine) the best and the next incident face must be for the oracle to call the choice clear. */
-    private static final double CLEAR_FACE = 1e-3;
-
     /**
      * How far apart (in radians) the two shapes' faces' angles to the normal must be for the
      * oracle to call the reference face clear: far above the rounding of float corners.
@@ -144,9 +141,10 @@ class ManifoldBoxClipTest {
      * Checks the manifold of a and b against the oracle where the oracle's answer is clear (a
      * clear reference face and incident edge, each kept end clearly behind the face or in front
      * of it, at least one kept); returns the oracle's count, 0 where it did not check. With
-     * {@code mustCheck} an unclear case fails.
+     * {@code mustCheck} an unclear case fails. The reference shape must be a box (its face's
+     * side lines are its neighbouring faces); the incident one may be any convex polygon.
      */
-    private static int assertAsTheOracle(Polygon a, Polygon b, boolean mustCheck) {
+    static int assertAsTheOracle(Polygon a, Polygon b, boolean mustCheck) {
         Manifold m = Contact.manifold(a, b);
         assertNotNull(m, a + " and " + b);
         double nx = m.nx(), ny = m.ny();
@@ -166,10 +164,17 @@ class ManifoldBoxClipTest {
         double[] fr = refA ? fa : fb, fi = refA ? fb : fa;
         int f = refA ? ia : ib;
         double ux = fr[6 * f], uy = fr[6 * f + 1];
-        // The incident edge: inc's face most against u, clearly.
+        // The stretched slab below is the face's side lines only when the reference is a box.
+        assertEquals(4, ref.size(), "the oracle's reference must be a box: " + ref);
+        for (int k = 0; k < 4; k++) {
+            assertTrue(Math.abs(along(fr, k, fr[6 * ((k + 1) % 4)], fr[6 * ((k + 1) % 4) + 1])) < 1e-6,
+                    "the oracle's reference must be a box: " + ref);
+        }
+        // The incident edge: inc's face most against u, clearly, by their angles to -u (near
+        // -u the cosines differ by the angles' squares).
         int g = best(fi, -ux, -uy);
         for (int k = 0; k < fi.length / 6; k++) {
-            if (k != g && along(fi, g, -ux, -uy) - along(fi, k, -ux, -uy) < CLEAR_FACE) {
+            if (k != g && angle(fi, k, -ux, -uy) - angle(fi, g, -ux, -uy) < CLEAR_ANGLE) {
                 assertTrue(!mustCheck, "no clear incident edge for " + a + " and " + b);
                 return 0;
             }
@@ -251,6 +256,11 @@ class ManifoldBoxClipTest {
             best = along(faces, k, ux, uy) > along(faces, best, ux, uy) ? k : best;
         }
         return best;
+    }
+
+    /** The angle, in [0, pi], between face k's normal and unit (ux, uy). */
+    private static double angle(double[] faces, int k, double ux, double uy) {
+        return Math.atan2(Math.abs(faces[6 * k] * uy - faces[6 * k + 1] * ux), along(faces, k, ux, uy));
     }
 
     private static double along(double[] faces, int k, double ux, double uy) {

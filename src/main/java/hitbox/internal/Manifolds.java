@@ -26,7 +26,7 @@ import java.util.List;
  * second term is 0, and the first is Box2D's separation from the reference face when the
  * face is across the normal.
  *
- * <p>At about 820 lines this class is longer than most: the clipping, the depths, the
+ * <p>At about 830 lines this class is longer than most: the clipping, the depths, the
  * fallbacks and the one-point rule all read the same pieces, and only make sense together.
  *
  * <p>Reference: E. Catto, Box2D's {@code b2ClipPolygons} and {@code b2ClipSegments}; W.
@@ -42,9 +42,6 @@ public final class Manifolds {
 
     /** Below this cosine a side is nearly along a ray (about 0.06 degrees off). */
     private static final double ALONG = 1e-3;
-
-    /** Slack (in cosine) for "as far against the reference face" when the incident edge is chosen. */
-    private static final double FACE_TIE = 1e-6;
 
     /**
      * The manifold of two shapes with area, normal from a to b, or null when they do not
@@ -272,16 +269,9 @@ public final class Manifolds {
         if (fa < 0 || fb < 0) {
             return;
         }
-        double sa = p.faces[fa] * nx + p.faces[fa + 1] * ny, sb = -(q.faces[fb] * nx + q.faces[fb + 1] * ny);
-        // Equally along by their angles to the normal, not by their cosines, which near the
-        // normal differ by about the angles' squares (a cosine slack of 1e-6 tied faces up to
-        // 0.08 degrees apart): sin(angle a - angle b), tied within the turn that the rounding
-        // of the faces' float corners can give them.
-        double xa = Math.abs(p.faces[fa] * ny - p.faces[fa + 1] * nx), xb = Math.abs(q.faces[fb] * ny - q.faces[fb + 1] * nx);
-        double apart = xa * sb - sa * xb;
-        double rounding = AS_DEEP * scale / Math.min(faceLength(p, fa), faceLength(q, fb));
+        double apart = offBy(p.faces[fa], p.faces[fa + 1], -q.faces[fb], -q.faces[fb + 1], nx, ny);
         boolean referenceA;
-        if (Math.abs(apart) > rounding) {
+        if (Math.abs(apart) > rounding(p, fa, q, fb, scale)) {
             referenceA = apart < 0;
         } else {
             // Equally along the normal: the reference is the shape the preferred one of n and
@@ -299,7 +289,7 @@ public final class Manifolds {
         if (inc.seg) {
             e = new double[] {inc.xy[0] - inc.r * ux, inc.xy[1] - inc.r * uy, inc.xy[2] - inc.r * ux, inc.xy[3] - inc.r * uy};
         } else {
-            e = incidentEdge(inc, ux, uy);
+            e = incidentEdge(inc, ux, uy, scale);
         }
         // Clipped to the reference piece (all its half-planes but the face's own) and the
         // face's side lines.
@@ -335,19 +325,23 @@ public final class Manifolds {
 
     /**
      * The incident edge of a polygon piece against the reference face's normal (ux, uy): its
-     * face most nearly against it. Two faces as far against it (to {@link #FACE_TIE}) that
-     * meet at a corner turned straight at the reference face give that corner alone, so that a
-     * shape placed symmetrically gives symmetric points; two in line give their union.
+     * face most nearly against it. Two faces as far against it (their angles to it the same,
+     * to the {@link #rounding} of float corners) that meet at a corner turned straight at the
+     * reference face give that corner alone, so that a shape placed symmetrically gives
+     * symmetric points; two in line (to the same rounding) give their union. Both by angles,
+     * not cosines: near straight against the face the cosines differ by about the angles'
+     * squares, and a cosine slack of 1e-6 took the two faces of a corner of 179.93 degrees
+     * for one line, or for a corner turned straight at the face.
      */
-    private static double[] incidentEdge(Piece inc, double ux, double uy) {
+    private static double[] incidentEdge(Piece inc, double ux, double uy, double scale) {
         int g = bestFace(inc, -ux, -uy);
         double[] f = inc.faces;
-        double most = -(f[g] * ux + f[g + 1] * uy);
         for (int k = 0; k < f.length; k += 6) {
-            if (k == g || -(f[k] * ux + f[k + 1] * uy) < most - FACE_TIE) {
+            double slack = rounding(inc, g, inc, k, scale);
+            if (k == g || offBy(f[k], f[k + 1], f[g], f[g + 1], -ux, -uy) > slack) {
                 continue;
             }
-            if (f[k] * f[g] + f[k + 1] * f[g + 1] >= 1 - FACE_TIE) {
+            if (f[k] * f[g] + f[k + 1] * f[g + 1] > 0 && Math.abs(f[g] * f[k + 1] - f[g + 1] * f[k]) <= slack) {
                 // In line: from the nearer end to the farther, along the first face.
                 double tx = f[g + 4] - f[g + 2], ty = f[g + 5] - f[g + 3];
                 double[] ends = {f[g + 2], f[g + 3], f[g + 4], f[g + 5], f[k + 2], f[k + 3], f[k + 4], f[k + 5]};
@@ -367,6 +361,24 @@ public final class Manifolds {
             }
         }
         return new double[] {f[g + 2], f[g + 3], f[g + 4], f[g + 5]};
+    }
+
+    /**
+     * How much farther unit (ax, ay) is turned from unit (ux, uy) than unit (bx, by) is, both
+     * within a right angle of it: sin(angle a - angle b), the angles taken unsigned. Near
+     * (ux, uy) this is about the angles' difference, where the cosines' is about the squares'.
+     */
+    private static double offBy(double ax, double ay, double bx, double by, double ux, double uy) {
+        double xa = Math.abs(ax * uy - ay * ux), xb = Math.abs(bx * uy - by * ux);
+        return xa * (bx * ux + by * uy) - (ax * ux + ay * uy) * xb;
+    }
+
+    /**
+     * The turn (as a sine) that the rounding of float corners at the pair's scale can give
+     * face f of p against face g of q: their angles within it are the same angle.
+     */
+    private static double rounding(Piece p, int f, Piece q, int g, double scale) {
+        return AS_DEEP * scale / Math.min(faceLength(p, f), faceLength(q, g));
     }
 
     private static double faceLength(Piece p, int f) {
