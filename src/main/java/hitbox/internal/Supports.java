@@ -136,7 +136,7 @@ public final class Supports {
         // least is flat to the fourth order (an ellipse's end with a capsule's end at its
         // centre of curvature) the search stops anywhere within about 1e-4 radians, all
         // equally short to a double's resolution; one that near an axis, and as short there
-        // to the support sums' rounding, is taken on the axis (Contacts.onAxis).
+        // to the support sums' rounding, is taken on the axis (Golden.onAxis).
         double size = size(a, b);
         double[] f = new double[STEPS];
         for (int i = 0; i < STEPS; i++) {
@@ -147,7 +147,7 @@ public final class Supports {
             if (f[i] <= prev && f[i] <= next) {
                 double[] least = Golden.least(t -> push(a, b, t), 2 * Math.PI * (i - 1) / STEPS,
                         2 * Math.PI * (i + 1) / STEPS, 80, Tolerance.SUPPORT_ANGLE);
-                least = Contacts.onAxis(t -> push(a, b, t), least, 1e-12 * size);
+                least = Golden.onAxis(t -> push(a, b, t), least, 1e-12 * size);
                 found = candidate(found, n++, a, b, unit(least[0]));
             }
         }
