@@ -154,6 +154,54 @@ class ContactTieRuleTest {
         }
     }
 
+    @Test
+    void ellipseAgainstCapsule_flatToTheFourthOrder_theAxisBothWays_mirroredToo() {
+        // The capsule's end (-3, 0), radius 2, and the ellipse's left end (-4, 0), where the
+        // ellipse's radius of curvature is ry^2 / rx = 1: along (-cos t, sin t) the push is
+        // 3 + t^4 * 3 / 32 for small t > 0 (the segment's other end takes over for t < 0),
+        // so the least, 3 along (-1, 0), is flat to about 1e-15 over 2e-4 radians. Before,
+        // the search's stopping place decided: (-1, 2.4e-5) one way and (1, 2.4e-4) mirrored
+        // in x.
+        Ellipse e = new Ellipse(0, 0, 4, 2);
+        Capsule k = new Capsule(-3, 0, -3, 2, 2);
+        assertEveryPushOverlaps(k, e, 2.999);
+        assertFalse(k.translated(-3, 0).overlaps(e));
+        for (int mirror = 0; mirror < 3; mirror++) {
+            Shape me = mirror == 0 ? e : mirrored(e, mirror == 1), mk = mirror == 0 ? k : mirrored(k, mirror == 1);
+            float sx = mirror == 1 ? -1 : 1;
+            String what = "mirrored " + (mirror == 0 ? "not" : mirror == 1 ? "in x" : "in y");
+            assertEquals(new Contact(-sx, 0, 3), Contact.between(me, mk), what);
+            assertEquals(new Contact(sx, 0, 3), Contact.between(mk, me), "swapped, " + what);
+        }
+    }
+
+    @Test
+    void heptagonAgainstCapsule_fourEdgeNormalsEquallyShort_theRuleTakesTheMostVertical_mirroredToo() {
+        // The capsule's end is the heptagon's centre (1, -1), so every edge normal n with
+        // (4, -1) . n <= 0 (the capsule's other end not farther along -n) pushes 3 + cos(pi/7),
+        // the capsule's radius and the heptagon's apothem: those at 77, 129, 180 and 231
+        // degrees. The float corners make their depths differ by about 1.4e-8; the rule takes
+        // the largest |ny|, 77 degrees. Before: which of them won depended on the order they
+        // were offered in, (-0.623, 0.782) one way and the mirror of (0.223, 0.975) mirrored.
+        Polygon h = regular(7, 1, 1, -1, false);
+        Capsule k = new Capsule(1, -1, -3, 0, 3);
+        double depth = 3 + Math.cos(Math.PI / 7), t = 3 * Math.PI / 7;
+        float ex = (float) Math.cos(t), ey = (float) Math.sin(t);
+        assertEveryPushOverlaps(k, h, depth - 1e-3);
+        for (int mirror = 0; mirror < 3; mirror++) {
+            Shape mh = mirror == 0 ? h : mirrored(h, mirror == 1), mk = mirror == 0 ? k : mirrored(k, mirror == 1);
+            float sx = mirror == 1 ? -1 : 1, sy = mirror == 2 ? -1 : 1;
+            String what = "mirrored " + (mirror == 0 ? "not" : mirror == 1 ? "in x" : "in y");
+            Contact c = Contact.between(mh, mk);
+            assertNormal(sx * ex, sy * ey, c, what);
+            assertEquals(depth, c.depth(), 1e-6, what);
+            assertFalse(mk.translated(c.nx() * (c.depth() + 1e-4f), c.ny() * (c.depth() + 1e-4f)).overlaps(mh), what);
+            Contact s = Contact.between(mk, mh);
+            assertNormal(-sx * ex, -sy * ey, s, "swapped, " + what);
+            assertEquals(depth, s.depth(), 1e-6, "swapped, " + what);
+        }
+    }
+
     /** Moved by {@code d} along each of 3600 directions, the shape still overlaps the other. */
     private static void assertEveryPushOverlaps(Shape moving, Shape other, double d) {
         for (int i = 0; i < 3600; i++) {

@@ -49,9 +49,6 @@ public final class CurvedClearance {
      */
     private static final double CONE_STEP = 1e-4;
 
-    /** How near an axis direction (radians) a polished least is taken to lie on it, if as short ({@code polish}). */
-    private static final double AXIS_NEAR = 1e-3;
-
     /**
      * The contact of curved k and concave polygon p (they overlap); normal from the first
      * shape to the second: from k to p unless {@code polygonFirst}.
@@ -198,17 +195,9 @@ public final class CurvedClearance {
         };
         double[] s = Golden.least(out, angle - Math.PI / STEPS, angle + Math.PI / STEPS, 80, Tolerance.SUPPORT_ANGLE);
         // A least flat to the fourth order (a polygon corner at the centre of curvature of an
-        // ellipse's end) is placed by no search closer than about 1e-4 radians, all of them
-        // equally short to a double's resolution; at an unturned ellipse's end it is an axis
-        // direction, taken when it is as short, so that mirror images agree.
-        double axis = Math.rint(s[0] / (Math.PI / 2)) * (Math.PI / 2);
-        if (Math.abs(axis - s[0]) < AXIS_NEAR) {
-            double along = out.applyAsDouble(axis);
-            // As short to within the rounding of the support sums (far is the scene's size).
-            if (along <= s[1] + 1e-12 * far) {
-                s = new double[] {axis, along};
-            }
-        }
+        // ellipse's end) taken on the axis when it is as short, to within the rounding of the
+        // support sums (far is the scene's size), so that mirror images agree.
+        s = Golden.onAxis(out, s, 1e-12 * far);
         double[] m = unit(s[0]);
         if (!(Math.abs(push(round, pieces, m[0], m[1], far, null) - s[1]) <= SLACK)) {
             return false;

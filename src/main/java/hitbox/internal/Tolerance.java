@@ -126,11 +126,13 @@ public final class Tolerance {
     // ---- stopping rules of the searches ---------------------------------------------
 
     /**
-     * The tie slack of {@link Supports}' contact search, relative to the shapes' size: its
-     * candidate depths are only as good as the angle search (see {@link #SUPPORT_ANGLE}), so
-     * depths this close count as one for the tie rule.
+     * The tie slack of {@link Supports}' contact search, relative to the scene's largest
+     * coordinate: pushes within this of the least tie, and the rule of {@link Contact} picks
+     * among them. Two float steps: the float inputs are rounded to half a step of their
+     * coordinates, so pushes meant to be equal (the edge normals of a regular polygon placed
+     * by cos and sin) differ by about 1e-8 of them, and the depth is reported as a float.
      */
-    public static final double SUPPORT_TIE = 1e-9;
+    public static final double SUPPORT_TIE = 0x1p-22;
 
     /**
      * Where {@link Supports}' angle search stops, in radians: at a double's resolution of an
@@ -159,9 +161,9 @@ public final class Tolerance {
     /**
      * How close two keys of the tie rule ({@link Contacts#preferred}) must be to count as
      * equal when the candidates come from a search ({@link Supports}, {@link Clearance},
-     * {@link CircleClearance}): their normals are only placed to about 1e-6 radians where the
-     * least is flat, so mirror images must not be told apart by less. The exact pairs use
-     * {@link Contact#TIE}.
+     * {@link CircleClearance}, {@link CurvedClearance}): their normals are only placed to
+     * about 1e-6 radians where the least is flat, so mirror images must not be told apart by
+     * less. The exact pairs use {@link Contact#TIE}.
      */
     public static final double SEARCH_KEY_TIE = 1e-6;
 
