@@ -34,11 +34,11 @@ public final class ConvexPolygonSweep {
         Scratch scratch = SCRATCH.get();
         Slabs.Clip clip = scratch.clip.reset();
         // A miss often shows in the first faces: the interval, once empty, stays empty.
-        if (!faces(HiddenParts.corners(obstacle), HiddenParts.convexWinding(obstacle), HiddenParts.corners(mover), false, vx, vy, clip)) {
+        if (!faces(HiddenParts.corners(obstacle), HiddenParts.convexWinding(obstacle), HiddenParts.corners(mover), false, vx, vy, 0, 0, clip)) {
             return null;
         }
         double obstacleEntry = clip.enter;
-        if (!faces(HiddenParts.corners(mover), HiddenParts.convexWinding(mover), HiddenParts.corners(obstacle), true, vx, vy, clip)) {
+        if (!faces(HiddenParts.corners(mover), HiddenParts.convexWinding(mover), HiddenParts.corners(obstacle), true, vx, vy, 0, 0, clip)) {
             return null;
         }
         // Entered last through one of the mover's own faces? Near the entry a clear position is
@@ -58,6 +58,41 @@ public final class ConvexPolygonSweep {
     }
 
     /**
+     * A time before which no copy of the mover with each vertex moved by up to {@code sx}
+     * across and {@code sy} down (the rounding of its float positions) can overlap the
+     * obstacle, the mover moving by (vx, vy): the entry with every face pushed out by the
+     * reach of that box along its normal (a polygon that holds the Minkowski sum of the two
+     * with the box), by the same faces as {@link #timeOfImpact}; 0 if that close at the
+     * start, +infinity if not within the motion. {@link ConvexSweep}'s look-back starts its
+     * walk over the float positions here (conservative advancement, which works for any
+     * pieces, cost more than the sweep, and a disc of radius sx + sy started the walk so far
+     * back, far from the origin, that the walk gave up).
+     */
+    public static double entryWithin(Polygon mover, float vx, float vy, Polygon obstacle, double sx, double sy) {
+        Slabs.Clip clip = SCRATCH.get().clip.reset();
+        if (!faces(HiddenParts.corners(obstacle), HiddenParts.convexWinding(obstacle), HiddenParts.corners(mover), false, vx, vy,
+                sx, sy, clip)
+                || !faces(HiddenParts.corners(mover), HiddenParts.convexWinding(mover), HiddenParts.corners(obstacle), true, vx, vy,
+                sx, sy, clip)) {
+            return Slabs.INF;
+        }
+        return clip.firstTime(1);
+    }
+
+    /**
+     * The overlap test {@link #timeOfImpact} asks at each float t, the mover moved by
+     * {@code t (vx, vy)}, for a walk over the float positions ({@link SweptPairs#firstOverlap}):
+     * it moves the mover into this thread's scratch array, so a call allocates nothing (a
+     * moved {@link Polygon} per position made the look-back of {@link ConvexSweep} cost ten
+     * times the sweep).
+     */
+    public static SweptPairs.OverlapAt movedOverlapAt(Polygon mover, float vx, float vy, Polygon obstacle) {
+        float[] moved = SCRATCH.get().moved(HiddenParts.raw(mover).length);
+        boolean keeps = keepsConvex(mover, Math.max(Math.abs(vx), Math.abs(vy)));
+        return t -> movedOverlaps(mover, t * vx, t * vy, obstacle, moved, keeps, true);
+    }
+
+    /**
      * Adds to the clip the faces of the Minkowski difference {@code b - a} that come from
      * the edges of convex polygon p (winding {@code w}): b's own faces, or, for the mover a
      * ({@code mover}), a's faces turned round. Each is a half-plane of the point
@@ -73,17 +108,19 @@ public final class ConvexPolygonSweep {
      * one edge to the next the least moves on by a vertex or so (rotating calipers), so the
      * walk costs about two products an edge instead of one per vertex of q.
      */
-    private static boolean faces(double[] p, int w, double[] q, boolean mover, double vx, double vy, Slabs.Clip clip) {
+    private static boolean faces(double[] p, int w, double[] q, boolean mover, double vx, double vy, double sx,
+                                 double sy, Slabs.Clip clip) {
         int k = 0;
         for (int i = 0, j = p.length - 2; i < p.length; j = i, i += 2) {
             double nx = w * (p[i + 1] - p[j + 1]), ny = w * (p[j] - p[i]);
             k = least(q, k, nx, ny);
             double least = q[k] * nx + q[k + 1] * ny;
             double edge = p[i] * nx + p[i + 1] * ny;
+            double push = sx * Math.abs(nx) + sy * Math.abs(ny);  // the box's reach along the unscaled normal
             if (mover) {
-                clip.slab(least - edge, Slabs.INF, vx * nx + vy * ny, nx, ny);
+                clip.slab(least - edge - push, Slabs.INF, vx * nx + vy * ny, nx, ny);
             } else {
-                clip.slab(Double.NEGATIVE_INFINITY, edge - least, vx * nx + vy * ny, nx, ny);
+                clip.slab(Double.NEGATIVE_INFINITY, edge - least + push, vx * nx + vy * ny, nx, ny);
             }
             if (clip.firstTime(1) == Slabs.INF) {
                 return false;

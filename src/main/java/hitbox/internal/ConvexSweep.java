@@ -58,8 +58,15 @@ public final class ConvexSweep {
             }
             // The exact entry's walk can land past a piece of float overlap that rounding split
             // off before it (a slanted edge, each coordinate rounded on its own): look back.
-            float t = notWalkedOver(mover, Polygons.corners(mover), Polygons.corners(obstacle), vx, vy, h.t(),
-                    u -> movedOverlaps(mover, u * vx, u * vy, obstacle));
+            Polygon m = (Polygon) mover, o = (Polygon) obstacle;
+            float[] xy = HiddenParts.raw(m);
+            double gx = 0, gy = 0;
+            for (int i = 0; i < xy.length; i += 2) {
+                gx = Math.max(gx, SweptPairs.slack(xy[i], vx));
+                gy = Math.max(gy, SweptPairs.slack(xy[i + 1], vy));
+            }
+            double from = ConvexPolygonSweep.entryWithin(m, vx, vy, o, gx + TOUCH, gy + TOUCH);
+            float t = lookBack(from, h.t(), xy, vx, vy, ConvexPolygonSweep.movedOverlapAt(m, vx, vy, o));
             return t == h.t() ? h : new Hit(t, h.nx(), h.ny(), h.side());
         }
         return byPieces(mover, vx, vy, obstacle);
@@ -108,18 +115,29 @@ public final class ConvexSweep {
      * one, or be split in pieces, and the walk from the entry may land in a later piece.
      * The float positions are visited one by one from the time the pieces come within the
      * rounding slack of the mover's coordinates (before it none can overlap) up to t; the
-     * first overlapping one gives the float just below it. (Past
-     * {@link SweptPairs#MAX_POSITIONS} positions, a graze near the origin, t stands.)
+     * first overlapping one gives the float just below it. The slack is the tight one
+     * ({@link SweptPairs#slack}) for straight pieces, whose overlap tests are exact, and the
+     * generous one ({@link SweptPairs#searchedSlack}) where a piece is round. (Past
+     * {@link SweptPairs#MAX_POSITIONS} positions, a graze near the origin or a walk started
+     * far back, t stands.)
      */
     private static float notWalkedOver(Shape mover, Object a, Object b, float vx, float vy, float t,
                                        SweptPairs.OverlapAt overlapAt) {
         float[] xy = coordinates(mover);
-        double gx = 0, gy = 0;
+        boolean round = a instanceof Round || b instanceof Round;
+        double g = 0;
         for (int i = 0; i < xy.length; i += 2) {
-            gx = Math.max(gx, SweptPairs.slack(xy[i], vx));
-            gy = Math.max(gy, SweptPairs.slack(xy[i + 1], vy));
+            g = Math.max(g, round ? SweptPairs.searchedSlack(xy[i], vx) + SweptPairs.searchedSlack(xy[i + 1], vy)
+                    : SweptPairs.slack(xy[i], vx) + SweptPairs.slack(xy[i + 1], vy));
         }
-        double from = entryWithin(a, b, vx, vy, new double[2], gx + gy + TOUCH);
+        return lookBack(entryWithin(a, b, vx, vy, new double[2], g + TOUCH), t, xy, vx, vy, overlapAt);
+    }
+
+    /**
+     * {@link #notWalkedOver} once the time {@code from} is known before which no float position
+     * can overlap: the walk over the float positions from there up to t.
+     */
+    private static float lookBack(double from, float t, float[] xy, float vx, float vy, SweptPairs.OverlapAt overlapAt) {
         if (!(from < t)) {
             return t;
         }

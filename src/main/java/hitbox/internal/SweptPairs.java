@@ -254,12 +254,30 @@ public final class SweptPairs {
     /**
      * How far the float position {@code base + t * v} (t*v rounded, then the sum rounded) can
      * be from the exact {@code base + t v}, for t in [0, 1], at most: half a float step of
-     * |v| and half one of the sum, each bounded generously by a whole step. +infinity where
-     * the sum could leave the float range.
+     * |v| (t*v lies between 0 and v) plus half a float step of the larger of |base| and
+     * |base + v| (the sum lies between them). This bound sets how far back of the exact entry
+     * {@link #firstOverlap} starts, and the positions it visits grow with it, so it is the
+     * tight one rather than a generous one. +infinity where the sum could leave the float range.
      */
     public static double slack(float base, float v) {
         if (v == 0) {
             return 0;  // base + t * 0 is base, exactly
+        }
+        float end = Math.max(Math.abs(base), Math.abs(base + v));  // base + v rounded: same float step or the next up
+        return 0.5 * Math.ulp(Math.abs(v)) + 0.5 * Math.ulp(end);
+    }
+
+    /**
+     * {@link #slack} made generous, for the searched pairs (curved shapes, by pieces): a
+     * whole float step of |v| and two of |base| + |v|. Their overlap tests decide within
+     * their own rounding, which far from the origin reaches a good part of a float step at
+     * the scene's largest coordinate, so a float position they call overlapping can lie
+     * further from the exact path than the sums alone move it (an ellipse near
+     * (954292, 2447025) and one near (-487638, 2192165), pinned in SweepFarFromOriginTest).
+     */
+    public static double searchedSlack(float base, float v) {
+        if (v == 0) {
+            return 0;
         }
         float big = 2 * (Math.abs(base) + Math.abs(v));
         return (double) Math.ulp(Math.abs(v)) + Math.ulp(big);
@@ -357,9 +375,11 @@ public final class SweptPairs {
             }
             return Float.intBitsToFloat(hi);
         }
+        // Each coordinate's next step, worked out again only once the walk has reached it: a
+        // coordinate that has not stepped has the same position, so the same next step.
+        float n1 = nextChange(t, b1, v1), n2 = nextChange(t, b2, v2), n3 = nextChange(t, b3, v3), n4 = nextChange(t, b4, v4);
         for (int n = 0; n < MAX_POSITIONS; n++) {
-            float next = Math.min(Math.min(nextChange(t, b1, v1), nextChange(t, b2, v2)),
-                    Math.min(nextChange(t, b3, v3), nextChange(t, b4, v4)));
+            float next = Math.min(Math.min(n1, n2), Math.min(n3, n4));
             if (next > 1 || next > until) {
                 return Float.POSITIVE_INFINITY;
             }
@@ -367,6 +387,10 @@ public final class SweptPairs {
             if (o.at(t)) {
                 return t;
             }
+            n1 = n1 == t ? nextChange(t, b1, v1) : n1;
+            n2 = n2 == t ? nextChange(t, b2, v2) : n2;
+            n3 = n3 == t ? nextChange(t, b3, v3) : n3;
+            n4 = n4 == t ? nextChange(t, b4, v4) : n4;
         }
         return Float.NaN;
     }
@@ -389,10 +413,15 @@ public final class SweptPairs {
         if (o.at(t)) {
             return Float.NaN;  // the bound was not one: leave it to the caller's walk
         }
+        // Each coordinate's next step, worked out again only once the walk has reached it.
+        float[] steps = new float[xy.length];
+        for (int i = 0; i < xy.length; i++) {
+            steps[i] = nextChange(t, xy[i], (i & 1) == 0 ? vx : vy);
+        }
         for (int n = 0; n < MAX_POSITIONS; n++) {
             float next = Float.POSITIVE_INFINITY;
-            for (int i = 0; i < xy.length; i += 2) {
-                next = Math.min(next, Math.min(nextChange(t, xy[i], vx), nextChange(t, xy[i + 1], vy)));
+            for (float step : steps) {
+                next = Math.min(next, step);
             }
             if (next > 1 || next > until) {
                 return Float.POSITIVE_INFINITY;
@@ -400,6 +429,11 @@ public final class SweptPairs {
             t = next;
             if (o.at(t)) {
                 return t;
+            }
+            for (int i = 0; i < xy.length; i++) {
+                if (steps[i] == t) {
+                    steps[i] = nextChange(t, xy[i], (i & 1) == 0 ? vx : vy);
+                }
             }
         }
         return Float.NaN;
