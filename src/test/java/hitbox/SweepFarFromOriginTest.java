@@ -33,26 +33,50 @@ class SweepFarFromOriginTest {
     /** Does the mover at float t, moved as the library moves it, overlap the obstacle? */
     @FunctionalInterface
     interface OverlapAt {
-        /** k = 1: with every moving coordinate nudged one float further along its motion. */
+        /** k = 1: the scene near the origin and the mover moved on by {@link #nudge} of its motion. */
         boolean at(float t, int k);
     }
 
     /**
      * Where {@link #check} puts the origin for k = 1: the scene moved near the origin (each
-     * coordinate minus a float close to it, exactly), where a move of 1e-6 of the motion
-     * can be made: does the mover overlap right after the start, as the exact path does when
+     * coordinate minus a float close to it, exactly), where a small part of the motion
+     * ({@link #nudge}) can be made: does the mover overlap right after the start, as the exact path does when
      * it touches at the start and moves in? Set by check (the properties run one at a time).
      */
     static float sx, sy;
 
-    /** A mover's x as the library moves it, {@code base + t * v}; k = 1: near the origin, at t = 1e-6. */
+    /**
+     * How far on k = 1 moves the mover, as a part of its motion: 1e-6, or more where so
+     * small a move would change no coordinate near the origin (a motion of a twentieth of a
+     * pixel next to a coordinate of 9 is lost in the rounding), doubled until every moving
+     * coordinate changes (one that moved alone would tilt the mover).
+     * Set by check.
+     */
+    static float nudge;
+
+    /** A mover's x as the library moves it, {@code base + t * v}; k = 1: near the origin, at t = {@link #nudge}. */
     static float mx(float base, float t, float v, int k) {
-        return k == 0 ? base + t * v : (base - sx) + 1e-6f * v;
+        return k == 0 ? base + t * v : (base - sx) + nudge * v;
     }
 
     /** A mover's y, as {@link #mx}. */
     static float my(float base, float t, float v, int k) {
-        return k == 0 ? base + t * v : (base - sy) + 1e-6f * v;
+        return k == 0 ? base + t * v : (base - sy) + nudge * v;
+    }
+
+    /** The {@link #nudge} for a mover with these coordinates (pairs base, v; x and y by turns). */
+    static float nudgeFor(float[] coords) {
+        for (float n = 1e-6f; n < 1; n *= 2) {
+            boolean allMove = true;
+            for (int i = 0; i < coords.length; i += 2) {
+                float near = coords[i] - ((i / 2) % 2 == 0 ? sx : sy);
+                allMove &= coords[i + 1] == 0 || near + n * coords[i + 1] != near;
+            }
+            if (allMove) {
+                return n;
+            }
+        }
+        return 1e-6f;
     }
 
     /** An obstacle's x; k = 1: near the origin, as {@link #mx}. */
@@ -123,6 +147,7 @@ class SweepFarFromOriginTest {
     static void check(String what, float answer, OverlapAt o, float... coords) {
         sx = coords[0];
         sy = coords[2];
+        nudge = nudgeFor(coords);
         float[] firstChange = new float[1];
         float first = firstOverlap(o, coords, firstChange);
         String msg = what + " gave " + answer + ", first overlapping float " + first;
@@ -133,7 +158,7 @@ class SweepFarFromOriginTest {
         if (first <= 1) {
             float expected = Math.nextDown(first);
             if (answer == 0 && (first == firstChange[0] || o.at(0, 1))) {
-                return;  // touching at the start (1e-6 of the motion on overlaps) and moving in: 0, Hit's promise
+                return;  // touching at the start (the nudge on overlaps) and moving in: 0, Hit's promise
             }
             if (answer == Float.POSITIVE_INFINITY) {
                 // Hit or not is the exact path's decision (Sweep's class doc): a path that
@@ -146,7 +171,7 @@ class SweepFarFromOriginTest {
             assertFalse(o.at(answer, 0), msg);
         } else {
             // No float position overlaps: no hit, or 1 (a graze), or 0 for a start touching
-            // and moving in (1e-6 of the motion on overlaps), Hit's promise.
+            // and moving in (the nudge on overlaps), Hit's promise.
             assertTrue(answer == Float.POSITIVE_INFINITY || answer == 1f || answer == 0 && o.at(0, 1), msg);
         }
     }
@@ -311,7 +336,7 @@ class SweepFarFromOriginTest {
         }, coords);
     }
 
-    /** The polygon xy moved near the origin (see {@link #sx}) and on by 1e-6 of (vx, vy). */
+    /** The polygon xy moved near the origin (see {@link #sx}) and on by {@link #nudge} of (vx, vy). */
     static Polygon nearTheOrigin(float[] xy, float vx, float vy) {
         float[] moved = new float[xy.length];
         for (int i = 0; i < xy.length; i += 2) {
