@@ -81,15 +81,40 @@ public final class ConvexPolygonSweep {
 
     /**
      * The overlap test {@link #timeOfImpact} asks at each float t, the mover moved by
-     * {@code t (vx, vy)}, for a walk over the float positions ({@link SweptPairs#firstOverlap}):
-     * it moves the mover into this thread's scratch array, so a call allocates nothing (a
-     * moved {@link Polygon} per position made the look-back of {@link ConvexSweep} cost ten
-     * times the sweep).
+     * {@code t (vx, vy)}, for a walk over the float positions ({@link SweptPairs#firstOverlap})
+     * near the entry along (ux, uy), the hit's normal from the mover into the obstacle. A
+     * position whose moved corners all lie on the mover's side of the obstacle's least reach
+     * along that axis is clear without the full test (any outline through those corners lies
+     * there too; the margin covers the rounding of the products in double): most positions
+     * the walk visits before the entry are. The rest take the full test, the mover moved into
+     * this thread's scratch array, so a call allocates nothing (a moved {@link Polygon} per
+     * position made the look-back of {@link ConvexSweep} cost ten times the sweep).
      */
-    public static SweptPairs.OverlapAt movedOverlapAt(Polygon mover, float vx, float vy, Polygon obstacle) {
+    public static SweptPairs.OverlapAt movedOverlapAt(Polygon mover, float vx, float vy, Polygon obstacle,
+                                                      double ux, double uy) {
         float[] moved = SCRATCH.get().moved(HiddenParts.raw(mover).length);
         boolean keeps = keepsConvex(mover, Math.max(Math.abs(vx), Math.abs(vy)));
-        return t -> movedOverlaps(mover, t * vx, t * vy, obstacle, moved, keeps, true);
+        float[] xy = HiddenParts.raw(mover);
+        double[] q = HiddenParts.corners(obstacle);
+        double least = Double.POSITIVE_INFINITY, size = Math.abs(vx) + Math.abs(vy);
+        for (int i = 0; i < q.length; i += 2) {
+            least = Math.min(least, q[i] * ux + q[i + 1] * uy);
+            size = Math.max(size, Math.abs(q[i]) + Math.abs(q[i + 1]));
+        }
+        for (int i = 0; i < xy.length; i += 2) {
+            size = Math.max(size, Math.abs(xy[i]) + Math.abs(xy[i + 1]) + Math.abs(vx) + Math.abs(vy));
+        }
+        // Each projection is two products and a sum of numbers up to size: off by a few units of
+        // 2^-53 of size (|ux| + |uy| <= 1.5); the least and the corners' both.
+        double below = least - 0x1p-48 * size;
+        return t -> {
+            float dx = t * vx, dy = t * vy;
+            double most = Double.NEGATIVE_INFINITY;
+            for (int i = 0; i < xy.length; i += 2) {
+                most = Math.max(most, (xy[i] + dx) * ux + (xy[i + 1] + dy) * uy);
+            }
+            return !(most <= below) && movedOverlaps(mover, dx, dy, obstacle, moved, keeps, true);
+        };
     }
 
     /**

@@ -66,7 +66,7 @@ public final class ConvexSweep {
                 gy = Math.max(gy, SweptPairs.slack(xy[i + 1], vy));
             }
             double from = ConvexPolygonSweep.entryWithin(m, vx, vy, o, gx + TOUCH, gy + TOUCH);
-            float t = lookBack(from, h.t(), xy, vx, vy, ConvexPolygonSweep.movedOverlapAt(m, vx, vy, o));
+            float t = lookBack(from, h.t(), xy, vx, vy, ConvexPolygonSweep.movedOverlapAt(m, vx, vy, o, h.nx(), h.ny()));
             return t == h.t() ? h : new Hit(t, h.nx(), h.ny(), h.side());
         }
         return byPieces(mover, vx, vy, obstacle);
