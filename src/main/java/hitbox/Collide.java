@@ -53,9 +53,7 @@ public final class Collide {
      * @return true if the point is strictly inside the circle
      */
     public static boolean circlePoint(float cx, float cy, float r, float px, float py) {
-        double dx = (double) px - cx;
-        double dy = (double) py - cy;
-        return r > 0 && dx * dx + dy * dy < (double) r * r;
+        return circleCircle(cx, cy, r, px, py, 0);  // a point is a circle of radius 0 (and r = 0 contains none)
     }
 
     /**
@@ -78,14 +76,26 @@ public final class Collide {
      * @return true if the distance between the centres is less than the sum of the radii
      */
     public static boolean circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
-        if (!(r1 >= 0 && r2 >= 0)) {
-            return false;
+        // A filter: the squares in float decide wherever they differ by more than rounding
+        // could move them (a band of 2^-18 either way, against at most about 2^-22 of
+        // relative error in each side: two differences, two squares and a sum; the sum of the
+        // radii and its square), for a reach squared neither tiny (where subnormals lose the
+        // relative bound) nor infinite; the rest (nearly touching, NaN, a negative radius,
+        // extreme sizes) goes to Discs.centresCloser, in double with its own band and exact
+        // inside it. The same answer on every input, about a fifth faster than the double
+        // form alone (FilterFormsBench's circleCircle_floatBand against it, 1.85 against 2.29 ns).
+        float fx = x2 - x1, fy = y2 - y1, d2 = fx * fx + fy * fy, sum = r1 + r2, rr = sum * sum;
+        if ((d2 < rr * FILTER_BELOW | d2 > rr * FILTER_ABOVE) & rr > FILTER_TINY & rr <= Float.MAX_VALUE
+                & r1 >= 0 & r2 >= 0) {
+            return d2 < rr;
         }
-        double dx = (double) x2 - x1;
-        double dy = (double) y2 - y1;
-        double reach = (double) r1 + r2;
-        return dx * dx + dy * dy < reach * reach;
+        return r1 >= 0 && r2 >= 0 && Discs.centresCloser(x1, y1, r1, x2, y2, r2);
     }
+
+    /** The band of {@link #circleCircle}'s float filter: outside it the float squares decide. */
+    private static final float FILTER_BELOW = 1 - 0x1p-18f, FILTER_ABOVE = 1 + 0x1p-18f;
+    /** Below this a float square may be subnormal, where the filter's relative band does not hold. */
+    private static final float FILTER_TINY = 0x1p-100f;
 
     /**
      * Is the point inside the rectangle? A point on an edge is not inside.
@@ -517,8 +527,10 @@ public final class Collide {
         }
         double right = (double) rectX + rectW;
         double bottom = (double) rectY + rectH;
-        if (!(Math.max(x1, x2) > rectX && Math.min(x1, x2) < right
-                && Math.max(y1, y2) > rectY && Math.min(y1, y2) < bottom)) {
+        // The segment's box against the rectangle, written as comparisons: Math.max and
+        // Math.min (NaN is ruled out above) cost branches that mispredict on mixed cases.
+        if (!((x1 > rectX || x2 > rectX) && (x1 < right || x2 < right)
+                && (y1 > rectY || y2 > rectY) && (y1 < bottom || y2 < bottom))) {
             return false;
         }
         if (x1 == x2 && y1 == y2) {

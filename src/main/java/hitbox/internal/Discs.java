@@ -1,5 +1,7 @@
 package hitbox.internal;
 
+import java.math.BigDecimal;
+
 /**
  * The disc maths that {@link Sweep} and {@link Ray} share: when does a point moving along
  * {@code d + t v} enter an open disc around the origin? A moving circle against a standing
@@ -49,6 +51,27 @@ public final class Discs {
         }
         // t1 = (-b - sqrt(disc)) / a, written without cancellation.
         return Math.min(c / (Math.sqrt(disc) - b), limit);
+    }
+
+    /**
+     * Are the centres closer than {@code r1 + r2}, decided exactly for every float (radii
+     * already checked to be 0 or more)? In double first: each of the two sides, the distance
+     * squared and the reach squared, is two float sums rounded once, squared and (for the
+     * distance) added, so off by under 2^-50 of itself; outside a band of 2^-48 either way
+     * the double comparison is the exact one. Inside it (nearly touching, or sizes so far
+     * apart that the double sums rounded: a radius of 0.01 beside one of 3.4e38), the exact
+     * comparison in {@link BigDecimal}. Infinite values are compared as the formula compares
+     * them; NaN answers false.
+     */
+    public static boolean centresCloser(float x1, float y1, float r1, float x2, float y2, float r2) {
+        double dx = (double) x2 - x1, dy = (double) y2 - y1, reach = (double) r1 + r2;
+        double d2 = dx * dx + dy * dy, rr = reach * reach;
+        if (d2 < rr * (1 - 0x1p-48) || d2 > rr * (1 + 0x1p-48) || !(Math.abs(d2) + rr < Double.POSITIVE_INFINITY)) {
+            return d2 < rr;
+        }
+        BigDecimal ex = new BigDecimal(x2).subtract(new BigDecimal(x1)), ey = new BigDecimal(y2).subtract(new BigDecimal(y1));
+        BigDecimal er = new BigDecimal(r1).add(new BigDecimal(r2));
+        return ex.multiply(ex).add(ey.multiply(ey)).compareTo(er.multiply(er)) < 0;
     }
 
     /** Are both parts finite (not NaN, not infinite)? */
