@@ -80,20 +80,33 @@ public final class ConvexPolygonSweep {
     }
 
     /**
-     * The overlap test {@link #timeOfImpact} asks at each float t, the mover moved by
-     * {@code t (vx, vy)}, for a walk over the float positions ({@link SweptPairs#firstOverlap})
-     * near the entry along (ux, uy), the hit's normal from the mover into the obstacle. A
-     * position whose moved corners all lie on the mover's side of the obstacle's least reach
-     * along that axis is clear without the full test (any outline through those corners lies
-     * there too; the margin covers the rounding of the products in double): most positions
-     * the walk visits before the entry are. The rest take the full test, the mover moved into
-     * this thread's scratch array, so a call allocates nothing (a moved {@link Polygon} per
-     * position made the look-back of {@link ConvexSweep} cost ten times the sweep).
+     * The first float t in [from, until] at which the mover, moved by {@code t (vx, vy)} as a
+     * sketch moves it (each coordinate {@code x + t * vx} rounded on its own), overlaps the
+     * obstacle: +infinity if none does, NaN if the position at {@code from} overlaps already
+     * (from was no bound) or more than {@link SweptPairs#MAX_POSITIONS} runs were visited.
+     * {@link ConvexSweep}'s look-back, for two convex polygons, from the time before which no
+     * float position can overlap ({@link #entryWithin}) up to the walk's answer.
+     *
+     * <p>Visiting every float position of every coordinate (16 for an 8-gon) cost several
+     * times the sweep, so positions are certified clear in runs. (ux, uy) is the hit's normal
+     * from the mover into the obstacle: a position whose moved corners all lie on the mover's
+     * side of the obstacle's least reach along it is clear, whatever outline runs through them
+     * (the margin covers the products' rounding in double). Corners that stay on that side
+     * over the whole span, wherever rounding puts them (each coordinate moves monotonically,
+     * so the box of its first and last float positions holds them all), are left out of the
+     * certificate, so only the near corners' coordinates are walked. Where the certificate
+     * fails, every coordinate's positions are visited with the exact test until it holds
+     * again. The start and the answer are the first float t of their positions.
      */
-    public static SweptPairs.OverlapAt movedOverlapAt(Polygon mover, float vx, float vy, Polygon obstacle,
-                                                      double ux, double uy) {
-        float[] moved = SCRATCH.get().moved(HiddenParts.raw(mover).length);
-        boolean keeps = keepsConvex(mover, Math.max(Math.abs(vx), Math.abs(vy)));
+    public static float firstOverlap(Polygon mover, float vx, float vy, Polygon obstacle, double from, float until,
+                                     double ux, double uy) {
+        float t = (float) Math.max(from, 0);
+        if (t > from) {
+            t = Math.max(Math.nextDown(t), 0f);
+        }
+        if (!(t <= until)) {
+            return Float.POSITIVE_INFINITY;
+        }
         float[] xy = HiddenParts.raw(mover);
         double[] q = HiddenParts.corners(obstacle);
         double least = Double.POSITIVE_INFINITY, size = Math.abs(vx) + Math.abs(vy);
@@ -105,16 +118,66 @@ public final class ConvexPolygonSweep {
             size = Math.max(size, Math.abs(xy[i]) + Math.abs(xy[i + 1]) + Math.abs(vx) + Math.abs(vy));
         }
         // Each projection is two products and a sum of numbers up to size: off by a few units of
-        // 2^-53 of size (|ux| + |uy| <= 1.5); the least and the corners' both.
+        // 2^-53 of size (|ux| + |uy| <= 1.5), the least and the corners' both.
         double below = least - 0x1p-48 * size;
-        return t -> {
+        float a0 = t * vx, b0 = t * vy, a1 = until * vx, b1 = until * vy;
+        int n = xy.length / 2;
+        int[] near = new int[n];
+        int nearCount = 0;
+        for (int k = 0; k < n; k++) {
+            float x = xy[2 * k], y = xy[2 * k + 1];
+            double most = Math.max(ux * (x + a0), ux * (x + a1)) + Math.max(uy * (y + b0), uy * (y + b1));
+            if (!(most <= below)) {
+                near[nearCount++] = k;
+            }
+        }
+        if (nearCount == 0) {
+            return Float.POSITIVE_INFINITY;  // every corner stays clear of the obstacle over the span
+        }
+        float[] moved = SCRATCH.get().moved(xy.length);
+        boolean keeps = keepsConvex(mover, Math.max(Math.abs(vx), Math.abs(vy)));
+        // The next step of each near corner's x and y, worked out again only once reached.
+        float[] steps = new float[2 * nearCount];
+        for (int m = 0; m < nearCount; m++) {
+            steps[2 * m] = SweptPairs.nextChange(t, xy[2 * near[m]], vx);
+            steps[2 * m + 1] = SweptPairs.nextChange(t, xy[2 * near[m] + 1], vy);
+        }
+        boolean first = true;
+        for (int visits = 0; visits < SweptPairs.MAX_POSITIONS; visits++) {
             float dx = t * vx, dy = t * vy;
             double most = Double.NEGATIVE_INFINITY;
-            for (int i = 0; i < xy.length; i += 2) {
-                most = Math.max(most, (xy[i] + dx) * ux + (xy[i + 1] + dy) * uy);
+            for (int m = 0; m < nearCount; m++) {
+                int k = near[m];
+                most = Math.max(most, (xy[2 * k] + dx) * ux + (xy[2 * k + 1] + dy) * uy);
             }
-            return !(most <= below) && movedOverlaps(mover, dx, dy, obstacle, moved, keeps, true);
-        };
+            float next;
+            if (most <= below) {
+                // Clear until a near corner moves: the far ones cannot make it overlap.
+                next = Float.POSITIVE_INFINITY;
+                for (float step : steps) {
+                    next = Math.min(next, step);
+                }
+            } else {
+                if (movedOverlaps(mover, dx, dy, obstacle, moved, keeps, true)) {
+                    return first ? Float.NaN : t;
+                }
+                next = Float.POSITIVE_INFINITY;  // the next position of any corner
+                for (int i = 0; i < xy.length; i += 2) {
+                    next = Math.min(next, Math.min(SweptPairs.nextChange(t, xy[i], vx), SweptPairs.nextChange(t, xy[i + 1], vy)));
+                }
+            }
+            if (next > until) {
+                return Float.POSITIVE_INFINITY;
+            }
+            t = next;
+            first = false;
+            for (int i = 0; i < steps.length; i++) {
+                if (steps[i] <= t) {
+                    steps[i] = SweptPairs.nextChange(t, xy[2 * near[i / 2] + (i & 1)], (i & 1) == 0 ? vx : vy);
+                }
+            }
+        }
+        return Float.NaN;
     }
 
     /**

@@ -66,7 +66,9 @@ public final class ConvexSweep {
                 gy = Math.max(gy, SweptPairs.slack(xy[i + 1], vy));
             }
             double from = ConvexPolygonSweep.entryWithin(m, vx, vy, o, gx + TOUCH, gy + TOUCH);
-            float t = lookBack(from, h.t(), xy, vx, vy, ConvexPolygonSweep.movedOverlapAt(m, vx, vy, o, h.nx(), h.ny()));
+            float f = from < h.t() ? ConvexPolygonSweep.firstOverlap(m, vx, vy, o, from, Math.nextDown(h.t()), h.nx(), h.ny())
+                    : Float.POSITIVE_INFINITY;
+            float t = f > 0 && f <= h.t() ? Math.nextDown(f) : h.t();
             return t == h.t() ? h : new Hit(t, h.nx(), h.ny(), h.side());
         }
         return byPieces(mover, vx, vy, obstacle);
