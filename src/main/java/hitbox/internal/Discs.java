@@ -69,9 +69,23 @@ public final class Discs {
         if (d2 < rr * (1 - 0x1p-48) || d2 > rr * (1 + 0x1p-48) || !(Math.abs(d2) + rr < Double.POSITIVE_INFINITY)) {
             return d2 < rr;
         }
+        // Inside the band: if every sum and square above was exact (whole and half pixels
+        // touching exactly, the common case here), the comparison already is; the rest in
+        // BigDecimal.
+        if (exactSum(x2, -(double) x1, dx) && exactSum(y2, -(double) y1, dy) && exactSum(r1, r2, reach)
+                && Math.fma(dx, dx, -(dx * dx)) == 0 && Math.fma(dy, dy, -(dy * dy)) == 0
+                && Math.fma(reach, reach, -rr) == 0 && exactSum(dx * dx, dy * dy, d2)) {
+            return d2 < rr;
+        }
         BigDecimal ex = new BigDecimal(x2).subtract(new BigDecimal(x1)), ey = new BigDecimal(y2).subtract(new BigDecimal(y1));
         BigDecimal er = new BigDecimal(r1).add(new BigDecimal(r2));
         return ex.multiply(ex).add(ey.multiply(ey)).compareTo(er.multiply(er)) < 0;
+    }
+
+    /** Is s, the double sum of a and b, exact? Knuth's TwoSum: its rounding error, exactly, is 0. */
+    private static boolean exactSum(double a, double b, double s) {
+        double bb = s - a;
+        return (a - (s - bb)) + (b - bb) == 0;
     }
 
     /** Are both parts finite (not NaN, not infinite)? */
