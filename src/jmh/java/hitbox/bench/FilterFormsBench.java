@@ -29,8 +29,8 @@ import org.openjdk.jmh.annotations.State;
  *       strict comparison is exact unless the rounded sum equals the other edge; only then
  *       is the sum taken again in double (exact).</li>
  * </ul>
- * The narrow-phase table (docs/narrow-phase.md) quotes this run where it explains why a small
- * test trails libGDX. By hand: {@code gradle jmh -Pjmh.include=FilterFormsBench}. The setup
+ * docs/benchmarks.md ("Filtered predicates") has a run and what it shows; the narrow-phase
+ * table (docs/narrow-phase.md) links there where it explains why a small test trails libGDX. By hand: {@code gradle jmh -Pjmh.include=FilterFormsBench}. The setup
  * checks that every exact form answers as Hitbox's call does.
  */
 @State(Scope.Benchmark)
@@ -97,7 +97,11 @@ public class FilterFormsBench {
         return n;
     }
 
-    /** Hitbox's call: the squares in double, after the radii's signs. */
+    /**
+     * Hitbox's call: since issue 23 the float squares trusted outside a band and the exact
+     * comparison inside it, the test {@link #circleCircle_floatBand} writes out (the two
+     * differ only by the call).
+     */
     @Benchmark
     @OperationsPerInvocation(N)
     public int circleCircle_collide() {
