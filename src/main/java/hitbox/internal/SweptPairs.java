@@ -8,7 +8,7 @@ import hitbox.*;
  * entry to the float {@code t} Sweep promises: the largest float at which the mover, moved
  * as a sketch moves it, does not overlap.
  *
- * <p>This class is longer than most (about 590 lines) because it holds both halves of every
+ * <p>This class is longer than most (about 660 lines) because it holds both halves of every
  * swept pair, the exact entries (each also grown by the rounding slack of the float
  * positions) and the two ways from an entry to the promised float: visiting the float
  * positions one by one ({@link #answer}) and the walk ({@link Search}); split, each half
