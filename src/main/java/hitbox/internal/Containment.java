@@ -216,18 +216,12 @@ public final class Containment {
         }
         // Near a tie: whole numbers of modest size subtract and add without rounding, which
         // the error-free sums show, and then s is exact; otherwise exactly, allocating.
-        if (twoSumError(a1, -b1, d1) == 0 && twoSumError(a2, -b2, d2) == 0 && twoSumError(d1, d2, s) == 0) {
+        if (Lines.twoSumError(a1, -b1, d1) == 0 && Lines.twoSumError(a2, -b2, d2) == 0 && Lines.twoSumError(d1, d2, s) == 0) {
             return s >= 0;
         }
         return new BigDecimal(a1).add(new BigDecimal(a2)).subtract(new BigDecimal(b1)).subtract(new BigDecimal(b2)).signum() >= 0;
     }
 
-    /** Knuth's two-sum: the rounding error of {@code sum = x + y}, exactly (0 when exact). */
-    private static double twoSumError(double x, double y, double sum) {
-        double yv = sum - x;
-        double xv = sum - yv;
-        return (x - xv) + (y - yv);
-    }
 
     // ------------------------------------------------------------------ convex containers
 
@@ -549,28 +543,10 @@ public final class Containment {
 
     /**
      * Is the distance from p to q at most {@code reach - less} (reach at least less)? Exact for
-     * every finite float input: compared squared in double, and in {@link BigDecimal} when the
-     * two sides are within the rounding of each other.
+     * every finite float input ({@link Discs#distanceSign}).
      */
     static boolean discWithin(double px, double py, double qx, double qy, double reach, double less) {
-        double dx = px - qx, dy = py - qy, m = reach - less;
-        double xx = dx * dx, yy = dy * dy, d2 = xx + yy, m2 = m * m;
-        if (Math.abs(d2 - m2) > Tolerance.NEAR_TIE * (d2 + m2) && d2 + m2 < Double.POSITIVE_INFINITY) {
-            return d2 < m2;
-        }
-        // Near a tie: exact when every difference, square and the sum were (whole numbers of
-        // modest size, the usual touching case), checked by error-free transformations, so
-        // nothing is allocated; otherwise in BigDecimal.
-        if (twoSumError(px, -qx, dx) == 0 && twoSumError(py, -qy, dy) == 0 && twoSumError(reach, -less, m) == 0
-                && Math.fma(dx, dx, -xx) == 0 && Math.fma(dy, dy, -yy) == 0 && Math.fma(m, m, -m2) == 0
-                && twoSumError(xx, yy, d2) == 0 && d2 + m2 < Double.POSITIVE_INFINITY
-                && (xx == 0 || xx >= 0x1p-900) && (yy == 0 || yy >= 0x1p-900) && (m2 == 0 || m2 >= 0x1p-900)) {
-            return d2 <= m2;
-        }
-        BigDecimal ex = new BigDecimal(px).subtract(new BigDecimal(qx));
-        BigDecimal ey = new BigDecimal(py).subtract(new BigDecimal(qy));
-        BigDecimal em = new BigDecimal(reach).subtract(new BigDecimal(less));
-        return ex.multiply(ex).add(ey.multiply(ey)).compareTo(em.multiply(em)) <= 0;
+        return Discs.distanceSign(px, py, qx, qy, reach, less) <= 0;
     }
 
     // ------------------------------------------------------------------ a polygon

@@ -54,38 +54,38 @@ public final class Discs {
     }
 
     /**
-     * Are the centres closer than {@code r1 + r2}, decided exactly for every float (radii
-     * already checked to be 0 or more)? In double first: each of the two sides, the distance
-     * squared and the reach squared, is two float sums rounded once, squared and (for the
-     * distance) added, so off by under 2^-50 of itself; outside a band of 2^-48 either way
-     * the double comparison is the exact one. Inside it (nearly touching, or sizes so far
-     * apart that the double sums rounded: a radius of 0.01 beside one of 3.4e38), the exact
-     * comparison in {@link BigDecimal}. Infinite values are compared as the formula compares
-     * them; NaN answers false.
+     * Are the centres closer than {@code r1 + r2} (radii already checked to be 0 or more)?
+     * {@link #distanceSign} with {@code less = -r2}, so exact for every float.
      */
     public static boolean centresCloser(float x1, float y1, float r1, float x2, float y2, float r2) {
-        double dx = (double) x2 - x1, dy = (double) y2 - y1, reach = (double) r1 + r2;
-        double d2 = dx * dx + dy * dy, rr = reach * reach;
-        if (d2 < rr * (1 - 0x1p-48) || d2 > rr * (1 + 0x1p-48) || !(Math.abs(d2) + rr < Double.POSITIVE_INFINITY)) {
-            return d2 < rr;
-        }
-        // Inside the band: if every sum and square above was exact (whole and half pixels
-        // touching exactly, the common case here), the comparison already is; the rest in
-        // BigDecimal.
-        if (exactSum(x2, -(double) x1, dx) && exactSum(y2, -(double) y1, dy) && exactSum(r1, r2, reach)
-                && Math.fma(dx, dx, -(dx * dx)) == 0 && Math.fma(dy, dy, -(dy * dy)) == 0
-                && Math.fma(reach, reach, -rr) == 0 && exactSum(dx * dx, dy * dy, d2)) {
-            return d2 < rr;
-        }
-        BigDecimal ex = new BigDecimal(x2).subtract(new BigDecimal(x1)), ey = new BigDecimal(y2).subtract(new BigDecimal(y1));
-        BigDecimal er = new BigDecimal(r1).add(new BigDecimal(r2));
-        return ex.multiply(ex).add(ey.multiply(ey)).compareTo(er.multiply(er)) < 0;
+        return distanceSign(x2, y2, x1, y1, r1, -(double) r2) < 0;
     }
 
-    /** Is s, the double sum of a and b, exact? Knuth's TwoSum: its rounding error, exactly, is 0. */
-    private static boolean exactSum(double a, double b, double s) {
-        double bb = s - a;
-        return (a - (s - bb)) + (b - bb) == 0;
+    /**
+     * The sign of {@code |p - q|^2 - (reach - less)^2}: -1, 0 or 1, exact for every finite
+     * float input (given as doubles). In double first, trusted outside a band of
+     * {@link Tolerance#NEAR_TIE} of the two sides, well wider than their rounding; near a tie,
+     * the double values when every difference, square and sum was exact (checked by
+     * error-free transformations, so whole and half pixels touching exactly allocate
+     * nothing), else in {@link BigDecimal} (sizes far apart in magnitude, or fractions with
+     * many bits). Infinite input is compared as the double formula compares it; NaN gives 1.
+     */
+    public static int distanceSign(double px, double py, double qx, double qy, double reach, double less) {
+        double dx = px - qx, dy = py - qy, m = reach - less;
+        double xx = dx * dx, yy = dy * dy, d2 = xx + yy, m2 = m * m;
+        if (!(d2 + m2 < Double.POSITIVE_INFINITY) || Math.abs(d2 - m2) > Tolerance.NEAR_TIE * (d2 + m2)) {
+            return d2 < m2 ? -1 : d2 == m2 ? 0 : 1;
+        }
+        if (Lines.twoSumError(px, -qx, dx) == 0 && Lines.twoSumError(py, -qy, dy) == 0 && Lines.twoSumError(reach, -less, m) == 0
+                && Math.fma(dx, dx, -xx) == 0 && Math.fma(dy, dy, -yy) == 0 && Math.fma(m, m, -m2) == 0
+                && Lines.twoSumError(xx, yy, d2) == 0
+                && (xx == 0 || xx >= 0x1p-900) && (yy == 0 || yy >= 0x1p-900) && (m2 == 0 || m2 >= 0x1p-900)) {
+            return Double.compare(d2, m2);  // all exact (the subnormal guard: an fma residual there can round)
+        }
+        BigDecimal ex = new BigDecimal(px).subtract(new BigDecimal(qx));
+        BigDecimal ey = new BigDecimal(py).subtract(new BigDecimal(qy));
+        BigDecimal em = new BigDecimal(reach).subtract(new BigDecimal(less));
+        return Integer.signum(ex.multiply(ex).add(ey.multiply(ey)).compareTo(em.multiply(em)));
     }
 
     /** Are both parts finite (not NaN, not infinite)? */

@@ -174,6 +174,13 @@ public final class Lines {
                 || (o4 == 0 && Lines.inBox(cx, cy, dx, dy, bx, by));
     }
 
+    /** Knuth's two-sum: the rounding error of {@code sum = x + y}, exactly (0 when the sum is exact). */
+    public static double twoSumError(double x, double y, double sum) {
+        double yv = sum - x;
+        double xv = sum - yv;
+        return (x - xv) + (y - yv);
+    }
+
     /**
      * Clamps {@code v} into [lo, hi] (lo <= hi); used for the closest point of a rectangle.
      * NaN in any argument gives NaN, so a NaN rectangle edge cannot be clamped away into a
