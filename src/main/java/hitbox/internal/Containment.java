@@ -222,7 +222,6 @@ public final class Containment {
         return new BigDecimal(a1).add(new BigDecimal(a2)).subtract(new BigDecimal(b1)).subtract(new BigDecimal(b2)).signum() >= 0;
     }
 
-
     // ------------------------------------------------------------------ convex containers
 
     /**
