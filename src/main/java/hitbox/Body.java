@@ -87,6 +87,8 @@ public final class Body {
     boolean seenCrossed;
     boolean seenBlocked;
     int riderStamp;
+    /** The character this body is, or null. */
+    CharacterBody character;
 
     Body(World world, int id, int serial, Shape home, double pivotX, double pivotY, Grid grid) {
         this.world = world;

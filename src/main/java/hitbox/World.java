@@ -73,7 +73,6 @@ public final class World {
     private int size;
     private int serials;
     private int callbackDepth;
-    private int stamp;
     private int riderMark;
 
     // Candidates of a query or a leg, by id.
@@ -86,38 +85,14 @@ public final class World {
         cand[candCount++] = id;
     };
 
-    // The obstacles of one leg: a body's shape, or one cell of a grid's.
-    private Shape[] obShape = new Shape[16];
-    private Body[] obBody = new Body[16];
-    private int[] obCell = new int[16];
-    private Hit[] obHit = new Hit[16];
-    private int obCount;
-    private final ArrayList<Rect> rects = new ArrayList<>();
-
-    // The rectangles' walk's stops.
-    private final int[] stopIndex = new int[Sweep.MAX_SLIDES];
-    private final double[] stopT = new double[Sweep.MAX_SLIDES];
-    private final Side[] stopSide = new Side[Sweep.MAX_SLIDES];
-    private final float[] stopX = new float[Sweep.MAX_SLIDES];
-    private final float[] stopY = new float[Sweep.MAX_SLIDES];
-    private int stopCount;
-    private final MoveAndSlide.Stops stops = (index, t, side, x, y) -> {
-        stopIndex[stopCount] = index;
-        stopT[stopCount] = t;
-        stopSide[stopCount] = side;
-        stopX[stopCount] = x;
-        stopY[stopCount] = y;
-        stopCount++;
-    };
-
     // Contacts and the collisions of the current step.
     private final ArrayList<Collision> stepCollisions = new ArrayList<>();
     private boolean stepped;
     private Map<Long, Body[]> contacts = new HashMap<>();
 
     private final double[] scratch = new double[4];
-    /** The collisions of the move under way, copied out when it ends. */
-    private final ArrayList<Collision> found = new ArrayList<>();
+    /** The move-and-slide solver: every move walks there. */
+    private final Mover mover = new Mover(this);
 
     /** Makes an empty world with a {@link BroadPhase#grid()} inside. */
     public World() {
@@ -180,6 +155,37 @@ public final class World {
         Check.finite("angle", angle);
         checkNotInCallback("add");
         return added(shape, 0, 0, x, y, angle, null);
+    }
+
+    /**
+     * Adds a character where the shape stands: a body that walks on ground, up slopes and
+     * steps, and is carried by platforms ({@link CharacterBody}). Its position is the centre of
+     * the shape's bounding box.
+     *
+     * @param shape the character's shape, not null
+     * @return the new character, never null
+     * @throws IllegalArgumentException if {@code shape} is null
+     * @throws IllegalStateException    if called from inside a callback of this world
+     */
+    public CharacterBody addCharacter(Shape shape) {
+        return new CharacterBody(add(shape));
+    }
+
+    /**
+     * Adds a character whose shape is given in its own frame, placed at (x, y) and turned by
+     * angle, as {@link #add(Shape, float, float, float)} places a body.
+     *
+     * @param shape the shape in the character's frame, around (0, 0), not null
+     * @param x     where the frame's origin stands, x
+     * @param y     where the frame's origin stands, y
+     * @param angle how far it is turned, radians, clockwise on screen
+     * @return the new character, never null
+     * @throws IllegalArgumentException if {@code shape} is null, a number is NaN or infinite,
+     *                                  or the placed shape leaves the float range
+     * @throws IllegalStateException    if called from inside a callback of this world
+     */
+    public CharacterBody addCharacter(Shape shape, float x, float y, float angle) {
+        return new CharacterBody(add(shape, x, y, angle));
     }
 
     /**
@@ -292,11 +298,11 @@ public final class World {
      *                                  the float range
      * @throws IllegalStateException    if called from inside a callback of this world
      */
-    public List<Collision> move(Body body, float dx, float dy) {
+    public Collisions move(Body body, float dx, float dy) {
         return move(body, dx, dy, SLIDE);
     }
 
-    private static final CollisionFilter SLIDE = (m, o) -> Reaction.SLIDE;
+    static final CollisionFilter SLIDE = (m, o) -> Reaction.SLIDE;
 
     /**
      * Moves a body this frame by (dx, dy) through the others, each reacting as the filter
@@ -318,7 +324,13 @@ public final class World {
      * @throws IllegalStateException    if called from inside a callback of this world, or the
      *                                  filter tried to change the world
      */
-    public List<Collision> move(Body body, float dx, float dy, CollisionFilter filter) {
+    public Collisions move(Body body, float dx, float dy, CollisionFilter filter) {
+        checkMove(body, dx, dy, filter);
+        return body.carrier ? moveCarrier(body, dx, dy, filter) : moveOne(body, dx, dy, filter);
+    }
+
+    /** The checks of a move, before anything changes. */
+    void checkMove(Body body, float dx, float dy, CollisionFilter filter) {
         own("body", body);
         Check.finite("dx", dx);
         Check.finite("dy", dy);
@@ -333,11 +345,25 @@ public final class World {
             throw new IllegalArgumentException("dx and dy move the body out of the float range: " + body + " by ("
                     + dx + ", " + dy + ")");
         }
-        return body.carrier ? moveCarrier(body, dx, dy, filter) : moveOne(body, dx, dy, filter);
+    }
+
+    /** One body's move, a character's by its own rules. */
+    private Collisions moveOne(Body m, float dx, float dy, CollisionFilter filter) {
+        return m.character != null ? m.character.walk(mover, dx, dy, filter) : mover.move(m, dx, dy, filter);
+    }
+
+    /** The filter a carrier moves a rider with: a character's own, else sliding. */
+    private static CollisionFilter riderFilter(Body rider) {
+        return rider.character != null ? rider.character.filter() : SLIDE;
+    }
+
+    /** The move-and-slide solver (for the character bodies). */
+    Mover mover() {
+        return mover;
     }
 
     /** A carrier's move: the riders go first when it goes up, after it otherwise. */
-    private List<Collision> moveCarrier(Body p, float dx, float dy, CollisionFilter filter) {
+    private Collisions moveCarrier(Body p, float dx, float dy, CollisionFilter filter) {
         List<Body> riders = riders(p);
         int mark = ++riderMark;
         for (Body r : riders) {
@@ -353,25 +379,25 @@ public final class World {
         }
         holdFlush = true;
         try {
-            List<Collision> out;
+            Collisions out;
             float px = p.x(), py = p.y();
             if (dy < 0) {
                 for (Body r : riders) {
-                    moveOne(r, dx, dy, SLIDE);
+                    mover.move(r, dx, dy, riderFilter(r));
                 }
                 out = moveOne(p, dx, dy, filter);  // a rider a ceiling stopped stops it too
                 // Stopped short (a ceiling): the riders come back down with it.
                 float cx = p.x() - px - dx, cy = p.y() - py - dy;
                 if (cx != 0 || cy != 0) {
                     for (Body r : riders) {
-                        moveOne(r, cx, cy, SLIDE);
+                        mover.move(r, cx, cy, riderFilter(r));
                     }
                 }
             } else {
                 out = moveOne(p, dx, dy, platform);
                 float ax = p.x() - px, ay = p.y() - py;
                 for (Body r : riders) {
-                    moveOne(r, ax, ay, SLIDE);
+                    mover.move(r, ax, ay, riderFilter(r));
                 }
             }
             holdFlush = false;
@@ -399,7 +425,7 @@ public final class World {
     List<Body> riders(Body p) {
         List<Body> out = new ArrayList<>();
         Shape ps = p.shape();
-        float probe = 0.01f;
+        float probe = 2 * Mover.SKIN;
         gather(p.boxX, p.boxY - 2 * probe, (double) p.boxX + p.boxW, (double) p.boxY + p.boxH);
         for (int i = 0; i < candCount; i++) {
             Body o = byId[cand[i]];
@@ -446,248 +472,8 @@ public final class World {
         }
     }
 
-    /** One body's move; the world changes only at the end, when nothing can throw any more. */
-    private List<Collision> moveOne(Body m, float dx, float dy, CollisionFilter filter) {
-        int st = ++stamp;
-        Shape start = m.shape();
-        List<Collision> out = found;
-        out.clear();
-        if (start instanceof Rect r && !m.sensor) {
-            Rect end = rectWalk(m, r, dx, dy, filter, st, out);
-            if (end != null) {
-                return commit(m, start, end, out);
-            }
-        }
-        Shape cur = start;
-        double vx = dx, vy = dy, time = 0;
-        for (int leg = 0; leg < MAX_LEGS; leg++) {
-            float fvx = (float) vx, fvy = (float) vy;
-            if (fvx == 0 && fvy == 0) {
-                break;
-            }
-            obstacles(m, cur, fvx, fvy, filter, start, st, out);
-            int best = -1;
-            Hit bestHit = null;
-            for (int i = 0; i < obCount; i++) {
-                Hit h = Sweep.timeOfImpact(cur, fvx, fvy, obShape[i]);
-                Body o = obBody[i];
-                if (h != null && (h.alreadyOverlapping()
-                        || o.seenReaction != Reaction.CROSS && o.oneWay != Side.NONE && h.side() != o.oneWay)) {
-                    h = null;  // a one-way body met from a side that does not block
-                }
-                obHit[i] = h;
-                if (h != null && o.seenReaction != Reaction.CROSS
-                        && (best < 0 || h.t() < bestHit.t() || h.t() == bestHit.t() && o.serial < obBody[best].serial)) {
-                    best = i;
-                    bestHit = h;
-                }
-            }
-            float tb = best >= 0 ? bestHit.t() : 1;
-            crossings(m, start, cur, fvx, fvy, tb, time, out);
-            if (best < 0) {
-                cur = clearAlong(cur, fvx, fvy, 1, cur.translated(fvx, fvy));
-                break;
-            }
-            Body o = obBody[best];
-            Reaction reaction = o.seenReaction;
-            float t = bestHit.t();
-            Shape at = clearAlong(cur, fvx, fvy, t, t == 0 ? cur : cur.translated(t * fvx, t * fvy));
-            double frame = time + t * (1 - time);
-            if (o.oneWay != Side.NONE) {
-                o.seenBlocked = true;
-            }
-            out.add(new Collision(m, o, reaction, new Hit((float) Math.min(1, frame), bestHit.nx(), bestHit.ny(),
-                    bestHit.side()), poseX(m, start, at), poseY(m, start, at), obCell[best]));
-            cur = at;
-            double rx = (1 - (double) t) * vx, ry = (1 - (double) t) * vy;
-            double nx = bestHit.nx(), ny = bestHit.ny(), into = rx * nx + ry * ny;
-            switch (reaction) {
-                case TOUCH -> {
-                    rx = 0;
-                    ry = 0;
-                }
-                case BOUNCE -> {
-                    if (into > 0) {
-                        rx -= 2 * into * nx;
-                        ry -= 2 * into * ny;
-                    }
-                }
-                default -> {
-                    if (into > 0) {
-                        rx -= into * nx;
-                        ry -= into * ny;
-                    }
-                    // An axis-aligned face: the part into it is gone exactly.
-                    if (nx == 0) {
-                        ry = 0;
-                    } else if (ny == 0) {
-                        rx = 0;
-                    }
-                }
-            }
-            vx = rx;
-            vy = ry;
-            time = frame;
-        }
-        return commit(m, start, cur, out);
-    }
-
-    /** The crossed bodies met before tb in this leg, each reported once a move, in the order met. */
-    private void crossings(Body m, Shape start, Shape cur, float fvx, float fvy, float tb, double time,
-                           List<Collision> out) {
-        while (true) {
-            int first = -1;
-            for (int i = 0; i < obCount; i++) {
-                Body o = obBody[i];
-                Hit h = obHit[i];
-                if (h != null && o.seenReaction == Reaction.CROSS && !o.seenCrossed && h.t() <= tb
-                        && (first < 0 || h.t() < obHit[first].t())) {
-                    first = i;
-                }
-            }
-            if (first < 0) {
-                return;
-            }
-            Body o = obBody[first];
-            o.seenCrossed = true;
-            Hit h = obHit[first];
-            double frame = time + h.t() * (1 - time);
-            out.add(new Collision(m, o, Reaction.CROSS, new Hit((float) Math.min(1, frame), h.nx(), h.ny(), h.side()),
-                    poseX(m, start, cur) + h.t() * fvx, poseY(m, start, cur) + h.t() * fvy, obCell[first]));
-        }
-    }
-
-    /**
-     * The wanted stop if it overlaps no blocking obstacle of this leg; otherwise (only rounding
-     * can cause it) the farthest clear point before it along the leg, by halving.
-     */
-    private Shape clearAlong(Shape cur, float fvx, float fvy, float t, Shape wanted) {
-        if (clear(wanted)) {
-            return wanted;
-        }
-        Shape best = cur;
-        double lo = 0, hi = t;
-        for (int i = 0; i < 64 && lo < hi; i++) {
-            double mid = (lo + hi) / 2;
-            Shape s = cur.translated((float) (mid * fvx), (float) (mid * fvy));
-            if (clear(s)) {
-                lo = mid;
-                best = s;
-            } else {
-                hi = mid;
-            }
-            if (mid == lo && mid == hi) {
-                break;
-            }
-        }
-        return best;
-    }
-
-    private boolean clear(Shape s) {
-        for (int i = 0; i < obCount; i++) {
-            Body o = obBody[i];
-            boolean blocks = o.seenReaction != Reaction.CROSS && (o.oneWay == Side.NONE || o.seenBlocked);
-            if (blocks && s.overlaps(obShape[i])) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private float poseX(Body m, Shape start, Shape at) {
-        return (float) (m.pivotX + m.tx + (Poses.refX(at) - Poses.refX(start)));
-    }
-
-    private float poseY(Body m, Shape start, Shape at) {
-        return (float) (m.pivotY + m.ty + (Poses.refY(at) - Poses.refY(start)));
-    }
-
-    /**
-     * The obstacles of one leg: the bodies (and grid cells) whose boxes meet the leg's swept
-     * box, that the filter does not ignore, that the mover did not overlap at the start, and
-     * not crossed already. Bodies the mover overlaps at the start are reported once.
-     */
-    private void obstacles(Body m, Shape cur, float fvx, float fvy, CollisionFilter filter, Shape start, int st,
-                           List<Collision> out) {
-        double left = Math.min(cur.minX(), cur.minX() + fvx), right = Math.max(cur.maxX(), cur.maxX() + fvx);
-        double top = Math.min(cur.minY(), cur.minY() + fvy), bottom = Math.max(cur.maxY(), cur.maxY() + fvy);
-        gather(left, top, right, bottom);
-        obCount = 0;
-        for (int i = 0; i < candCount; i++) {
-            Body o = byId[cand[i]];
-            if (o == m || reaction(m, o, filter, start, st, out) == null || o.seenOverlap) {
-                continue;
-            }
-            if (o.grid != null) {
-                cells(o, left, top, right, bottom, start);
-            } else {
-                addObstacle(o.shape(), o, -1);
-            }
-        }
-    }
-
-    /** The solid cells of a grid's body under a box, row by row, not those the start overlaps. */
-    private void cells(Body o, double left, double top, double right, double bottom, Shape start) {
-        Grid g = o.grid;
-        double pad = pad(left, top, right, bottom);
-        int c0 = Math.max(0, g.colAt((float) (left - pad))), c1 = Math.min(g.cols() - 1, g.colAt((float) (right + pad)));
-        int r0 = Math.max(0, g.rowAt((float) (top - pad))), r1 = Math.min(g.rows() - 1, g.rowAt((float) (bottom + pad)));
-        if ((long) (c1 - c0 + 1) * (r1 - r0 + 1) > GridMove.MAX_CELLS) {
-            throw new IllegalArgumentException("a move over a grid of the world sweeps more than " + GridMove.MAX_CELLS
-                    + " cells: moves are made for a few cells a frame");
-        }
-        for (int row = r0; row <= r1; row++) {
-            for (int col = c0; col <= c1; col++) {
-                if (g.isSolid(col, row)) {
-                    Rect cell = g.cellRect(col, row);
-                    if (start == null || !start.overlaps(cell)) {
-                        addObstacle(cell, o, row * g.cols() + col);
-                    }
-                }
-            }
-        }
-    }
-
-    private void addObstacle(Shape s, Body o, int cell) {
-        if (obCount == obShape.length) {
-            int n = 2 * obCount;
-            obShape = java.util.Arrays.copyOf(obShape, n);
-            obBody = java.util.Arrays.copyOf(obBody, n);
-            obCell = java.util.Arrays.copyOf(obCell, n);
-            obHit = java.util.Arrays.copyOf(obHit, n);
-        }
-        obShape[obCount] = s;
-        obBody[obCount] = o;
-        obCell[obCount] = cell;
-        obCount++;
-    }
-
-    /** The reaction to another body, asked once a move: layers, then sensors, then the filter. */
-    private Reaction reaction(Body m, Body o, CollisionFilter filter, Shape start, int st, List<Collision> out) {
-        if (o.seenStamp != st) {
-            o.seenStamp = st;
-            o.seenCrossed = false;
-            o.seenBlocked = false;
-            o.seenOverlap = false;
-            Reaction r;
-            if (!m.accepts(o)) {
-                r = null;
-            } else if (m.sensor || o.sensor) {
-                r = Reaction.CROSS;
-            } else {
-                r = ask(filter, m, o);
-            }
-            o.seenReaction = r;
-            if (r != null && o.grid == null && start.overlaps(o.shape())) {
-                o.seenOverlap = true;
-                o.seenCrossed = true;
-                out.add(new Collision(m, o, r, new Hit(0, 0, 0, Side.NONE), m.x(), m.y(), -1));
-            }
-        }
-        return o.seenReaction;
-    }
-
-    private Reaction ask(CollisionFilter filter, Body m, Body o) {
+    /** Asks a filter for a pair's reaction, reporting what it throws as the world's rules say. */
+    Reaction ask(CollisionFilter filter, Body m, Body o) {
         callbackDepth++;
         try {
             return filter.react(m, o);
@@ -701,61 +487,8 @@ public final class World {
         }
     }
 
-    /**
-     * A rectangle's slide among rectangles, by {@link Sweep#move}'s own walk: the end, or null
-     * when some body met is not a rectangle that slides (then the general walk runs).
-     */
-    private Rect rectWalk(Body m, Rect r, float dx, float dy, CollisionFilter filter, int st, List<Collision> out) {
-        double left = Math.min(r.minX(), r.minX() + dx), right = Math.max(r.maxX(), r.maxX() + dx);
-        double top = Math.min(r.minY(), r.minY() + dy), bottom = Math.max(r.maxY(), r.maxY() + dy);
-        gather(left, top, right, bottom);
-        int reported = out.size();
-        for (int i = 0; i < candCount; i++) {
-            Body o = byId[cand[i]];
-            if (o == m) {
-                continue;
-            }
-            Reaction re = reaction(m, o, filter, r, st, out);
-            if (re != null && (re != Reaction.SLIDE || o.oneWay != Side.NONE
-                    || o.grid == null && !(o.shape() instanceof Rect))) {
-                return null;
-            }
-        }
-        obCount = 0;
-        rects.clear();
-        for (int i = 0; i < candCount; i++) {
-            Body o = byId[cand[i]];
-            if (o == m || o.seenReaction == null) {
-                continue;
-            }
-            if (o.grid != null) {
-                cells(o, left, top, right, bottom, null);
-            } else {
-                addObstacle(o.shape(), o, -1);
-            }
-        }
-        for (int i = 0; i < obCount; i++) {
-            rects.add((Rect) obShape[i]);
-        }
-        stopCount = 0;
-        Sweep.Move end = MoveAndSlide.move(r, dx, dy, rects, stops);
-        double time = 0;
-        for (int k = 0; k < stopCount; k++) {
-            double frame = time + stopT[k] * (1 - time);
-            Side side = stopSide[k];
-            float nx = side == Side.LEFT ? 1 : side == Side.RIGHT ? -1 : 0;
-            float ny = side == Side.TOP ? 1 : side == Side.BOTTOM ? -1 : 0;
-            int i = stopIndex[k];
-            out.add(new Collision(m, obBody[i], Reaction.SLIDE, new Hit((float) Math.min(1, frame), nx, ny, side),
-                    (float) (m.pivotX + m.tx + ((double) stopX[k] - r.x())),
-                    (float) (m.pivotY + m.ty + ((double) stopY[k] - r.y())), obCell[i]));
-            time = frame;
-        }
-        return new Rect(end.x(), end.y(), r.w(), r.h());
-    }
-
-    /** The world changes: the mover's pose, shape and box. */
-    private List<Collision> commit(Body m, Shape start, Shape end, List<Collision> out) {
+    /** The world changes: the mover's pose, shape and box; the collisions handed back. */
+    Collisions commit(Body m, Shape start, Shape end, List<Collision> out, boolean finished) {
         double ntx = m.tx + (Poses.refX(end) - Poses.refX(start)), nty = m.ty + (Poses.refY(end) - Poses.refY(start));
         float[] box = box(m.pivotX + ntx, m.pivotY + nty, m.extents, "dx and dy");
         Rect b = end.bounds();
@@ -770,12 +503,9 @@ public final class World {
             stepped = false;
         }
         stepCollisions.addAll(out);
-        if (out.isEmpty()) {
-            return Collections.emptyList();
-        }
-        List<Collision> copy = new ArrayList<>(out);
+        Collisions result = Collisions.of(out, finished);
         out.clear();
-        return copy;
+        return result;
     }
 
     // ---------------------------------------------------------------- teleports (Body calls these)
@@ -861,8 +591,9 @@ public final class World {
         double y0 = Math.max(-Float.MAX_VALUE, y - m + Math.min(0, 4 * ddy));
         double x1 = Math.min(Float.MAX_VALUE, (double) x + w + m + Math.max(0, 4 * ddx));
         double y1 = Math.min(Float.MAX_VALUE, (double) y + h + m + Math.max(0, 4 * ddy));
-        b.fatX = Math.min(x, Math.nextDown((float) x0));
-        b.fatY = Math.min(y, Math.nextDown((float) y0));
+        // Never past the float range: a body near its edge gets a fat box that ends there.
+        b.fatX = Math.min(x, Math.max(-Float.MAX_VALUE, Math.nextDown((float) x0)));
+        b.fatY = Math.min(y, Math.max(-Float.MAX_VALUE, Math.nextDown((float) y0)));
         b.fatW = (float) Math.min(Float.MAX_VALUE, Math.nextUp(x1 - b.fatX));
         b.fatH = (float) Math.min(Float.MAX_VALUE, Math.nextUp(y1 - b.fatY));
         if (b.dirtyIndex < 0) {
@@ -1369,7 +1100,7 @@ public final class World {
     }
 
     /** The ids of the bodies whose boxes meet a box (padded by a few float steps), in the order added. */
-    private void gather(double left, double top, double right, double bottom) {
+    void gather(double left, double top, double right, double bottom) {
         double pad = pad(left, top, right, bottom);
         float x0 = (float) Math.max(-Float.MAX_VALUE, left - pad), y0 = (float) Math.max(-Float.MAX_VALUE, top - pad);
         float x1 = (float) Math.min(Float.MAX_VALUE, right + pad), y1 = (float) Math.min(Float.MAX_VALUE, bottom + pad);
@@ -1393,7 +1124,7 @@ public final class World {
         sortCandidates();
     }
 
-    private static double pad(double left, double top, double right, double bottom) {
+    static double pad(double left, double top, double right, double bottom) {
         double m = Math.max(Math.max(Math.abs(left), Math.abs(right)), Math.max(Math.abs(top), Math.abs(bottom)));
         return 4 * Math.ulp((float) Math.min(m, Float.MAX_VALUE / 4)) + Float.MIN_NORMAL;
     }
@@ -1412,8 +1143,18 @@ public final class World {
         }
     }
 
+    /** How many bodies the last {@link #gather} found. */
+    int candidateCount() {
+        return candCount;
+    }
+
+    /** The i-th body the last {@link #gather} found, in the order added. */
+    Body candidate(int i) {
+        return byId[cand[i]];
+    }
+
     /** A body argument of this world, checked. */
-    private Body own(String name, Body body) {
+    Body own(String name, Body body) {
         Check.notNull(name, body);
         if (body.world == null) {
             throw new IllegalArgumentException(name + " was removed from its world: " + body);

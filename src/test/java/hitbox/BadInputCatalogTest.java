@@ -76,7 +76,10 @@ class BadInputCatalogTest {
             "BroadPhase.grid", "BroadPhase.put", "BroadPhase.query", "BroadPhase.raycast",
             // The world (issue 20): its numbers are positions, angles and moves, all refused when NaN or infinite.
             "World.add", "World.move", "World.queryPoint", "World.queryBox",
-            "Body.moveTo", "Body.moveBy", "Body.turnTo", "Body.turnBy");
+            "Body.moveTo", "Body.moveBy", "Body.turnTo", "Body.turnBy",
+            // The character (issue 28): moves, positions and settings; settings are sizes (px, degrees).
+            "World.addCharacter", "CharacterBody.move", "CharacterBody.maxSlope", "CharacterBody.stepHeight",
+            "CharacterBody.snap", "CharacterBody.up");
 
     /** The world the catalog calls World's and Body's methods on; every Body argument is a new body of it. */
     private static final World WORLD = new World();
@@ -129,7 +132,7 @@ class BadInputCatalogTest {
     /** Parameter names that are sizes: a negative value is refused by checked methods. */
     private static final Set<String> SIZES = Set.of("w", "h", "r", "radius", "width", "height", "cellSize",
             "cellWidth", "cellHeight", "maxDistance", "depth", "distance", "r1", "r2", "w1", "h1", "w2", "h2",
-            "radiusX", "radiusY", "radiusX1", "radiusY1", "radiusX2", "radiusY2");
+            "radiusX", "radiusY", "radiusX1", "radiusY1", "radiusX2", "radiusY2", "px", "degrees");
 
     /** Parameters that may be +Infinity in a checked method (documented). */
     private static final Set<String> MAY_BE_INFINITE = Set.of("Ray.new.maxDistance", "BroadPhase.raycast.maxDistance");
@@ -238,7 +241,8 @@ class BadInputCatalogTest {
             return;
         } catch (IndexOutOfBoundsException ex) {
             // A grid cell, or a manifold's point, that must name an existing one.
-            assertTrue(e.getDeclaringClass() == Grid.class || e.getDeclaringClass() == Manifold.class, key + ": " + ex);
+            assertTrue(e.getDeclaringClass() == Grid.class || e.getDeclaringClass() == Manifold.class
+                    || e.getDeclaringClass() == Collisions.class, key + ": " + ex);
             return;
         } catch (Throwable ex) {
             throw new AssertionError(key + "(" + param.getName() + " = " + bad.name() + ") threw " + ex, ex);
@@ -451,6 +455,15 @@ class BadInputCatalogTest {
         }
         if (c == Body.class) {
             return WORLD.add(new Rect(30, 30, 10, 10));
+        }
+        if (c == CharacterBody.class) {
+            return WORLD.addCharacter(new Rect(60, 30, 10, 10));
+        }
+        if (c == Collisions.class) {
+            // one collision: a box dropped onto another
+            World w = new World();
+            w.add(new Rect(0, 10, 10, 10));
+            return w.move(w.add(new Rect(0, 0, 10, 5)), 0, 10);
         }
         if (c == BodyEvent.class) {
             return new BodyEvent(BodyEvent.Kind.ENTER, WORLD.add(new Circle(0, 0, 1)), WORLD.add(new Circle(1, 0, 1)));

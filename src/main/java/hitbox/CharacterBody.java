@@ -1,0 +1,402 @@
+package hitbox;
+
+import hitbox.internal.*;
+
+/**
+ * A body that walks: it stands on ground, walks up and down slopes at the speed it is given,
+ * climbs steps, stays on the ground going down, and is carried by the platforms it stands on.
+ * Godot's {@code CharacterBody2D}, Rapier's {@code KinematicCharacterController}, Box2D 3.1's
+ * mover, on Hitbox's exact sweeps.
+ * <pre>{@code
+ * CharacterBody hero = world.addCharacter(new Rect(40, 200, 20, 30)).stepHeight(8).snap(4);
+ * vy += 0.5;                                  // gravity, every frame
+ * hero.move(vx, vy);
+ * if (hero.onGround()) vy = 0;                // landed: stop falling
+ * if (jumpPressed && hero.onGround()) vy = -9;
+ * }</pre>
+ *
+ * <h2>Ground, walls and ceilings</h2>
+ * A surface met is <em>ground</em> when it faces up within {@link #maxSlope(float)} of
+ * {@link #up(float, float) up} (45 degrees by default), a <em>ceiling</em> when it faces down
+ * within that angle, and a <em>wall</em> otherwise. On ground the character walks: the part of
+ * the move along the ground keeps its sideways length (up a slope or down it, a move of 2
+ * pixels sideways goes 2 pixels sideways), and the part into the ground (gravity) is dropped,
+ * so it stands still on any ground under any downward push. A wall it slides along, but
+ * never gains height from one it is pushed into: steeper slopes are walls, and it slides down
+ * them. {@code up(0, 0)} makes every surface a wall: a top-down game.
+ *
+ * <h2>Steps and snapping</h2>
+ * Walking into a wall while on the ground, it tries to step up: up by
+ * {@link #stepHeight(float)}, on, and down onto ground; the step is taken only if it lands on
+ * ground further on. Walking down a slope or off a step, {@link #snap(float)} keeps it on the
+ * ground below when that is no further down than the snap (and it is not moving up).
+ *
+ * <h2>State after a move</h2>
+ * {@link #onGround()} (with {@link #ground()} and {@link #groundNormal()}) says what it
+ * stands on after the move, found by a probe a few skins long straight down; {@link #onWall()}
+ * and {@link #onCeiling()} say what the move met. Spawned inside a body, or with a body
+ * teleported into it, its next move first pushes it out the shortest way.
+ *
+ * <p>It is a {@link Body} ({@link #body()}) with its layers, sensor flag, data and
+ * carrier: {@link World#move} on that body walks by these rules too. A carrier it stands on
+ * takes it along with the filter of its last move.
+ */
+public final class CharacterBody {
+
+    private final Body body;
+    private float maxSlope = 45;
+    private double cosMaxSlope = Math.cos(Math.toRadians(45));
+    private float stepHeight;
+    private float snap;
+    private double upX;
+    private double upY = -1;
+    private CollisionFilter filter = World.SLIDE;
+
+    private boolean onGround;
+    private boolean onWall;
+    private boolean onCeiling;
+    private Body ground;
+    private Vec groundNormal;
+
+    // During a move.
+    private boolean metWall;
+    private boolean metCeiling;
+    private final double[] redirected = new double[2];
+
+    /**
+     * How close to a surface's tilt limit still counts as within it: the rounding of a
+     * normal's cosine, so that a 45-degree slope is ground at {@code maxSlope(45)}.
+     */
+    private static final double SLOPE_TIE = 1e-6;
+
+    CharacterBody(Body body) {
+        this.body = body;
+        body.character = this;
+    }
+
+    // ---------------------------------------------------------------- moving
+
+    /**
+     * Walks this frame by (dx, dy), sliding along what it meets by the rules of the class
+     * notes: {@code move(dx, dy, (m, o) -> Reaction.SLIDE)}.
+     *
+     * @param dx the move this frame, x part
+     * @param dy the move this frame, y part
+     * @return what it met, in the order met, and whether the move finished; never null
+     * @throws IllegalArgumentException if dx or dy is NaN or infinite, or the move leaves the
+     *                                  float range
+     * @throws IllegalStateException    if the body was removed, or this is called from inside
+     *                                  a callback of its world
+     */
+    public Collisions move(float dx, float dy) {
+        return move(dx, dy, World.SLIDE);
+    }
+
+    /**
+     * Walks this frame by (dx, dy), each other body reacting as the filter says
+     * ({@link Reaction}); the rules of the class notes apply to the bodies it slides on.
+     * Nothing changes if it throws.
+     *
+     * @param dx     the move this frame, x part
+     * @param dy     the move this frame, y part
+     * @param filter the reaction to each other body, not null
+     * @return what it met, in the order met, and whether the move finished; never null
+     * @throws IllegalArgumentException if dx or dy is NaN or infinite, the filter is null or
+     *                                  threw, or the move leaves the float range
+     * @throws IllegalStateException    if the body was removed, or this is called from inside
+     *                                  a callback of its world
+     */
+    public Collisions move(float dx, float dy, CollisionFilter filter) {
+        return live("move").move(body, dx, dy, filter);
+    }
+
+    /** The character's move, from {@link World#move}: checked already; the world changes at the end. */
+    Collisions walk(Mover mv, float dx, float dy, CollisionFilter filter) {
+        boolean wasGround = onGround;
+        int st = mv.begin();
+        Shape start = body.shape();
+        Shape from = mv.pushOut(body, start, filter);
+        metWall = false;
+        metCeiling = false;
+        mv.walk(body, start, from, dx, dy, filter, st, this);
+        Shape cur = mv.walkEnd();
+        boolean finished = mv.walkFinished();
+        boolean rising = dx * upX + dy * upY > 0;
+        if (stepHeight > 0 && metWall && wasGround && !rising) {
+            cur = step(mv, start, from, cur, dx, dy, filter, st);
+        }
+        Hit below = groundBelow(mv, from, cur, filter, st, probeLength(cur));
+        if (below == null && snap > 0 && wasGround && !rising) {
+            float sx = (float) (-upX * snap), sy = (float) (-upY * snap);
+            if (mv.probe(body, cur, sx, sy, filter, from, st) && isGround(mv.probeHit())) {
+                cur = mv.probeStop(cur, sx, sy);
+                below = groundBelow(mv, from, cur, filter, st, probeLength(cur));
+            }
+        }
+        Collisions out = mv.end(body, start, cur, finished);
+        this.filter = filter;
+        onGround = below != null;
+        ground = onGround ? groundBody : null;
+        groundNormal = onGround ? new Vec(-below.nx(), -below.ny()) : null;
+        onWall = metWall;
+        onCeiling = metCeiling;
+        return out;
+    }
+
+    private Body groundBody;
+
+    /** The ground under a shape within a probe's length (a hit whose surface is ground), or null. */
+    private Hit groundBelow(Mover mv, Shape from, Shape cur, CollisionFilter filter, int st, double length) {
+        if (upX == 0 && upY == 0) {
+            return null;
+        }
+        float px = (float) (-upX * length), py = (float) (-upY * length);
+        if (mv.probe(body, cur, px, py, filter, from, st) && isGround(mv.probeHit())) {
+            groundBody = mv.probeBody();
+            return mv.probeHit();
+        }
+        return null;
+    }
+
+    /** Four skins: what a resting character may stand off a slanted ground, and then some. */
+    private static double probeLength(Shape cur) {
+        return 4 * Mover.skin(cur);
+    }
+
+    /**
+     * A step up: the sideways part of the move that a wall took, tried again from
+     * {@link #stepHeight} higher and then down onto ground. The end if it lands on ground
+     * further on, else {@code cur} as it was.
+     */
+    private Shape step(Mover mv, Shape start, Shape from, Shape cur, float dx, float dy, CollisionFilter filter, int st) {
+        double lx = -upY, ly = upX;
+        double want = dx * lx + dy * ly;
+        double got = (Poses.refX(cur) - Poses.refX(from)) * lx + (Poses.refY(cur) - Poses.refY(from)) * ly;
+        double left = want - got;
+        if (Math.abs(left) <= Mover.skin(cur) || Math.signum(left) != Math.signum(want)) {
+            return cur;
+        }
+        float ux = (float) (upX * stepHeight), uy = (float) (upY * stepHeight);
+        mv.probe(body, cur, ux, uy, filter, from, st);
+        Shape raised = mv.probeStop(cur, ux, uy);
+        double rose = (Poses.refX(raised) - Poses.refX(cur)) * upX + (Poses.refY(raised) - Poses.refY(cur)) * upY;
+        float fx = (float) (lx * left), fy = (float) (ly * left);
+        boolean blocked = mv.probe(body, raised, fx, fy, filter, from, st);
+        Shape on = mv.probeStop(raised, fx, fy);
+        double went = ((Poses.refX(on) - Poses.refX(raised)) * lx + (Poses.refY(on) - Poses.refY(raised)) * ly) * Math.signum(left);
+        if (went <= Mover.skin(cur)) {
+            return cur;
+        }
+        float downX = (float) (-upX * (rose + probeLength(cur))), downY = (float) (-upY * (rose + probeLength(cur)));
+        if (!mv.probe(body, on, downX, downY, filter, from, st) || !isGround(mv.probeHit())) {
+            return cur;
+        }
+        Shape landed = mv.probeStop(on, downX, downY);
+        metWall = blocked;
+        return landed;
+    }
+
+    /** Is a hit's surface ground: facing up within the tilt limit? */
+    private boolean isGround(Hit h) {
+        return -(h.nx() * upX + h.ny() * upY) >= cosMaxSlope - SLOPE_TIE && (upX != 0 || upY != 0);
+    }
+
+    /** Is a hit's surface a ceiling: facing down within the tilt limit? */
+    private boolean isCeiling(double nx, double ny) {
+        return (nx * upX + ny * upY) >= cosMaxSlope - SLOPE_TIE && (upX != 0 || upY != 0);
+    }
+
+    /** The walk met a surface it slides on (a normal from the character into it). */
+    void slid(Mover mv, Body o, double nx, double ny) {
+        double facing = -(nx * upX + ny * upY);
+        if (upX == 0 && upY == 0) {
+            metWall = true;
+        } else if (facing >= cosMaxSlope - SLOPE_TIE) {
+            return;  // ground: the probe at the end reports it
+        } else if (isCeiling(nx, ny)) {
+            metCeiling = true;
+        } else {
+            metWall = true;
+        }
+    }
+
+    /**
+     * The rest of a move after sliding into a surface: along ground at the same sideways
+     * length, off a wall without gaining height, else the nearest motion clear of the planes met.
+     */
+    double[] redirect(Mover mv, double rx, double ry, double nx, double ny) {
+        double rising = rx * upX + ry * upY;
+        boolean hasUp = upX != 0 || upY != 0;
+        double facing = -(nx * upX + ny * upY);
+        if (hasUp && rising <= 0 && facing >= cosMaxSlope - SLOPE_TIE) {
+            double lx = -upY, ly = upX;
+            double side = rx * lx + ry * ly;
+            double tx = -ny, ty = nx;
+            if (tx * lx + ty * ly < 0) {
+                tx = -tx;
+                ty = -ty;
+            }
+            double k = side / (tx * lx + ty * ly);
+            double wx = k * tx, wy = k * ty;
+            if (nx == 0) {
+                wy = 0;
+            } else if (ny == 0) {
+                wx = 0;
+            }
+            return copy(mv.clip(wx, wy));
+        }
+        double[] c = mv.clip(rx, ry);
+        if (hasUp && rising <= 0 && c[0] * upX + c[1] * upY > 0) {
+            // A wall never lifts a character pushed into it.
+            mv.addPlane(upX, upY);
+            c = mv.clip(rx, ry);
+            mv.removeLastPlane();
+        }
+        return copy(c);
+    }
+
+    private double[] copy(double[] c) {
+        redirected[0] = c[0];
+        redirected[1] = c[1];
+        return redirected;
+    }
+
+    // ---------------------------------------------------------------- state
+
+    /** @return the character's body (its position, shape, layers, data), never null */
+    public Body body() {
+        return body;
+    }
+
+    /** @return true if it stood on ground after its last move */
+    public boolean onGround() {
+        return onGround;
+    }
+
+    /** @return true if its last move met a wall */
+    public boolean onWall() {
+        return onWall;
+    }
+
+    /** @return true if its last move met a ceiling */
+    public boolean onCeiling() {
+        return onCeiling;
+    }
+
+    /** @return the body it stood on after its last move, or null if it was not on ground */
+    public Body ground() {
+        return ground;
+    }
+
+    /** @return the unit normal out of the ground it stood on after its last move, or null if it was not on ground */
+    public Vec groundNormal() {
+        return groundNormal;
+    }
+
+    /** @return the filter of its last move (sliding before the first), which a carrier moves it with */
+    CollisionFilter filter() {
+        return filter;
+    }
+
+    // ---------------------------------------------------------------- settings
+
+    /**
+     * Sets the steepest ground, in degrees from flat: it stands still on slopes up to this and
+     * walks up and down them; steeper ones are walls it slides down. 45 by default.
+     *
+     * @param degrees from 0 (only flat ground) to less than 90
+     * @return this character, for chaining, never null
+     * @throws IllegalArgumentException if degrees is NaN, infinite, negative, or 90 or more;
+     *                                  then nothing changes
+     */
+    public CharacterBody maxSlope(float degrees) {
+        Check.size("degrees", degrees);
+        if (degrees >= 90) {
+            throw new IllegalArgumentException("degrees must be less than 90 (a wall is not ground), was " + degrees);
+        }
+        maxSlope = degrees;
+        cosMaxSlope = Math.cos(Math.toRadians(degrees));
+        return this;
+    }
+
+    /** @return the steepest ground, in degrees from flat */
+    public float maxSlope() {
+        return maxSlope;
+    }
+
+    /**
+     * Sets how high a ledge it climbs by walking into it, as stairs: 0 by default (none).
+     *
+     * @param px the height, 0 or more
+     * @return this character, for chaining, never null
+     * @throws IllegalArgumentException if px is NaN, infinite or negative; then nothing changes
+     */
+    public CharacterBody stepHeight(float px) {
+        stepHeight = Check.size("px", px);
+        return this;
+    }
+
+    /** @return how high a ledge it climbs */
+    public float stepHeight() {
+        return stepHeight;
+    }
+
+    /**
+     * Sets how far down it keeps to the ground when walking down a slope or off a step,
+     * instead of leaving it: 0 by default (none).
+     *
+     * @param px the distance, 0 or more
+     * @return this character, for chaining, never null
+     * @throws IllegalArgumentException if px is NaN, infinite or negative; then nothing changes
+     */
+    public CharacterBody snap(float px) {
+        snap = Check.size("px", px);
+        return this;
+    }
+
+    /** @return how far down it keeps to the ground */
+    public float snap() {
+        return snap;
+    }
+
+    /**
+     * Sets which way is up: (0, -1) by default, up the screen. (0, 0) is a top-down game:
+     * no ground, every surface a wall. The direction's length does not matter.
+     *
+     * @param x the direction's x
+     * @param y the direction's y
+     * @return this character, for chaining, never null
+     * @throws IllegalArgumentException if x or y is NaN or infinite; then nothing changes
+     */
+    public CharacterBody up(float x, float y) {
+        Check.finite("x", x);
+        Check.finite("y", y);
+        double len = Math.hypot(x, y);
+        if (len == 0) {
+            upX = 0;
+            upY = 0;
+        } else {
+            upX = x / len;
+            upY = y / len;
+        }
+        return this;
+    }
+
+    /** @return which way is up, of length 1, or (0, 0) for a top-down game; never null */
+    public Vec up() {
+        return new Vec((float) upX, (float) upY);
+    }
+
+    private World live(String what) {
+        World w = body.world;
+        if (w == null) {
+            throw new IllegalStateException(what + ": this character's body was removed from its world");
+        }
+        return w;
+    }
+
+    @Override
+    public String toString() {
+        return "CharacterBody " + body + (onGround ? " on ground" : "");
+    }
+}

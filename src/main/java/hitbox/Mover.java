@@ -1,0 +1,729 @@
+package hitbox;
+
+import hitbox.internal.*;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The move-and-slide solver of a {@link World}: one body's move through the others, leg by
+ * leg, each leg a swept test to the first body met and a reaction to it. {@link World#move}
+ * and {@link CharacterBody#move} both walk here; the world changes only when the walk is done
+ * (nothing it calls can throw after that), through {@link World#commit}.
+ *
+ * <h2>Planes and the skin</h2>
+ * A {@link Reaction#SLIDE} adds the surface met as a plane: the rest of the move may run along
+ * it or away from it, never into it. Two planes at once (a crease, a V, a corner) leave the
+ * motion that keeps clear of both, which in two dimensions is along one of them or nothing:
+ * the nearest motion to the wanted one that breaks no plane ({@link #clip}), as Box2D 3.1's
+ * {@code b2SolvePlanes} and Quake's clip do it.
+ *
+ * <p>A leg that meets a slanted surface stops {@linkplain #skin a skin} short of it, measured
+ * along the surface's normal. Sliding along a slanted face needs that gap: the motion along the
+ * face is rounded to floats, and a position a hair inside the face (the touching rule makes
+ * that a hit) would stop the body at every step. A face whose normal is an axis needs no gap
+ * (moving along it changes only the other coordinate), so the body stops touching it exactly,
+ * as {@link Sweep#move} does. The gap is at most the skin, {@value #SKIN} pixels near the
+ * origin (four float steps of the largest coordinate far from it).
+ *
+ * <p>This class is longer than most (about 560 lines): the walk, its obstacles, its crossings,
+ * the rectangles' exact walk and the character's legs share the per-leg arrays here.
+ */
+final class Mover {
+
+    /** The gap a slanted surface keeps from a body that met it, near the origin: 1/64 pixel. */
+    static final float SKIN = 0x1p-6f;
+
+    /**
+     * A plane is broken when the motion runs into it by more than this part of its length:
+     * the rounding of a motion projected onto a plane in {@code double}.
+     */
+    private static final double PLANE_TIE = 1e-12;
+
+    /** How near an axis a surface's unit normal may be and still be taken as that axis. */
+    private static final double AXIS_TIE = 1e-6;
+
+    private final World world;
+    private int stamp;
+
+    // The obstacles of one leg: a body's shape, or one cell of a grid's.
+    private Shape[] obShape = new Shape[16];
+    private Body[] obBody = new Body[16];
+    private int[] obCell = new int[16];
+    private Hit[] obHit = new Hit[16];
+    private int obCount;
+    private final ArrayList<Rect> rects = new ArrayList<>();
+
+    // The planes of the move under way (normals from the mover into what it met).
+    private final double[] planeX = new double[World.MAX_LEGS + 4];
+    private final double[] planeY = new double[World.MAX_LEGS + 4];
+    private int planeCount;
+
+    // The rectangles' walk's stops.
+    private final int[] stopIndex = new int[Sweep.MAX_SLIDES];
+    private final double[] stopT = new double[Sweep.MAX_SLIDES];
+    private final Side[] stopSide = new Side[Sweep.MAX_SLIDES];
+    private final float[] stopX = new float[Sweep.MAX_SLIDES];
+    private final float[] stopY = new float[Sweep.MAX_SLIDES];
+    private int stopCount;
+    private final MoveAndSlide.Stops stops = (index, t, side, x, y) -> {
+        stopIndex[stopCount] = index;
+        stopT[stopCount] = t;
+        stopSide[stopCount] = side;
+        stopX[stopCount] = x;
+        stopY[stopCount] = y;
+        stopCount++;
+    };
+
+    /** The collisions of the move under way, copied out when it ends. */
+    private final ArrayList<Collision> found = new ArrayList<>();
+
+    // What the walk leaves: where it ended, the motion left, and whether it finished.
+    private Shape walkEnd;
+    private double leftX;
+    private double leftY;
+    private boolean walkFinished;
+
+    // A single sweep's answer (probe): the obstacle met, or -1.
+    private int probeIndex;
+    private Hit probeHit;
+
+    Mover(World world) {
+        this.world = world;
+    }
+
+    /**
+     * The gap a slanted surface keeps from a body near a shape: the skin, or four float steps
+     * of the shape's largest coordinate where that is more.
+     */
+    static double skin(Shape s) {
+        double m = Math.max(Math.max(Math.abs(s.minX()), Math.abs(s.maxX())), Math.max(Math.abs(s.minY()), Math.abs(s.maxY())));
+        return Math.max(SKIN, 4 * Math.ulp((float) Math.min(m, Float.MAX_VALUE / 8)));
+    }
+
+    // ---------------------------------------------------------------- a body's move
+
+    /** A body's move: the rectangles' exact walk where it applies, else the general walk. */
+    Collisions move(Body m, float dx, float dy, CollisionFilter filter) {
+        int st = ++stamp;
+        Shape start = m.shape();
+        found.clear();
+        if (start instanceof Rect r && !m.sensor) {
+            Rect end = rectWalk(m, r, dx, dy, filter, st);
+            if (end != null) {
+                return world.commit(m, start, end, found, true);
+            }
+        }
+        walk(m, start, start, dx, dy, filter, st, null);
+        return world.commit(m, start, walkEnd, found, walkFinished);
+    }
+
+    /** Starts a character's move: a new stamp and no collisions yet. */
+    int begin() {
+        found.clear();
+        return ++stamp;
+    }
+
+    /** Ends a character's move: the world changes. */
+    Collisions end(Body m, Shape start, Shape end, boolean finished) {
+        return world.commit(m, start, end, found, finished);
+    }
+
+    /** The collisions of the move under way. */
+    List<Collision> found() {
+        return found;
+    }
+
+    /** Where the last walk ended. */
+    Shape walkEnd() {
+        return walkEnd;
+    }
+
+    /** Did the last walk finish (false: it ran out of legs with motion left)? */
+    boolean walkFinished() {
+        return walkFinished;
+    }
+
+    /** The motion the last walk had left when it ended, x part (0 when it finished freely). */
+    double leftX() {
+        return leftX;
+    }
+
+    /** The motion the last walk had left when it ended, y part. */
+    double leftY() {
+        return leftY;
+    }
+
+    /**
+     * Walks a body from {@code from} by (dx, dy), leg by leg; leaves the end in
+     * {@link #walkEnd()}. The character, if any, decides how a slide redirects the motion.
+     */
+    void walk(Body m, Shape start, Shape from, double dx, double dy, CollisionFilter filter, int st, CharacterBody ch) {
+        Shape cur = from;
+        double vx = dx, vy = dy, time = 0;
+        planeCount = 0;
+        boolean finished = true;
+        int leg = 0;
+        while (true) {
+            float fvx = (float) vx, fvy = (float) vy;
+            if (fvx == 0 && fvy == 0) {
+                break;
+            }
+            if (leg++ == World.MAX_LEGS) {
+                finished = false;
+                break;
+            }
+            int best = nearest(m, cur, fvx, fvy, filter, from, st, true);
+            Hit bestHit = best >= 0 ? obHit[best] : null;
+            crossings(m, start, cur, fvx, fvy, best >= 0 ? bestHit.t() : 1, time);
+            if (best < 0) {
+                cur = clearAlong(cur, fvx, fvy, 1, cur.translated(fvx, fvy));
+                vx = 0;
+                vy = 0;
+                break;
+            }
+            Body o = obBody[best];
+            Reaction reaction = o.seenReaction;
+            // The normal in double, of length 1 there too (a float normal is only near it).
+            double len = Math.hypot(bestHit.nx(), bestHit.ny());
+            double nx = bestHit.nx() / len, ny = bestHit.ny() / len;
+            // The collision is where and when they met; a slide or a bounce off a slanted
+            // surface goes on from a skin short of it.
+            float t = bestHit.t();
+            Shape meet = clearAlong(cur, fvx, fvy, t, t == 0 ? cur : cur.translated(t * fvx, t * fvy));
+            if (o.oneWay != Side.NONE) {
+                o.seenBlocked = true;
+            }
+            report(m, start, meet, o, obCell[best], reaction,
+                    new Hit((float) Math.min(1, time + t * (1 - time)), bestHit.nx(), bestHit.ny(), bestHit.side()), meet != cur);
+            double tStop = t;
+            Shape at = meet;
+            if (reaction != Reaction.TOUCH && slanted(nx, ny)) {
+                tStop = stopAt(cur, fvx, fvy, t, nx, ny);
+                if (tStop != t) {
+                    at = clearAlong(cur, fvx, fvy, tStop, tStop == 0 ? cur : cur.translated((float) (tStop * fvx), (float) (tStop * fvy)));
+                }
+                at = keepSkin(at, fvx, fvy, t, tStop, nx, ny);
+            }
+            boolean moved = at != cur;
+            double frame = time + tStop * (1 - time);
+            cur = at;
+            double rx = (1 - tStop) * vx, ry = (1 - tStop) * vy;
+            double into = rx * nx + ry * ny;
+            switch (reaction) {
+                case TOUCH -> {
+                    rx = 0;
+                    ry = 0;
+                }
+                case BOUNCE -> {
+                    if (into > 0) {
+                        rx -= 2 * into * nx;
+                        ry -= 2 * into * ny;
+                    }
+                }
+                default -> {
+                    addPlane(nx, ny);
+                    if (ch != null) {
+                        ch.slid(this, o, nx, ny);
+                    }
+                    double[] r = ch != null ? ch.redirect(this, rx, ry, nx, ny) : clip(rx, ry);
+                    rx = r[0];
+                    ry = r[1];
+                }
+            }
+            if (!moved && rx == vx && ry == vy) {
+                // Nothing changed: rounding holds the body against this surface. Step back from
+                // it by the skin (the surface's normal, out), if that is clear, and go on.
+                double k = skin(cur);
+                Shape back = cur.translated((float) (-nx * k), (float) (-ny * k));
+                if (!clear(back)) {
+                    finished = false;
+                    break;
+                }
+                cur = back;
+            }
+            vx = rx;
+            vy = ry;
+            time = frame;
+        }
+        walkEnd = cur;
+        leftX = vx;
+        leftY = vy;
+        walkFinished = finished;
+    }
+
+    /**
+     * Is a normal slanted? One within {@link #AXIS_TIE} of an axis is taken as the axis: moving
+     * along such a face changes the other coordinate by less than rounding does.
+     */
+    private static boolean slanted(double nx, double ny) {
+        return Math.abs(nx) > AXIS_TIE && Math.abs(ny) > AXIS_TIE;
+    }
+
+    /** Where a leg stops before a slanted surface it meets at t: a skin back along the motion, as far as the leg's start. */
+    private static double stopAt(Shape cur, float fvx, float fvy, double t, double nx, double ny) {
+        double into = fvx * nx + fvy * ny;
+        return into > 0 && t > 0 ? Math.max(0, t - skin(cur) / into) : t;
+    }
+
+    /**
+     * A stop nearer a slanted surface than the skin (the leg started nearer than that) steps
+     * back out along the surface's normal to the skin, where that is clear: otherwise the
+     * float positions of the slide along it would round into it.
+     */
+    private Shape keepSkin(Shape at, float fvx, float fvy, double t, double tStop, double nx, double ny) {
+        double gap = (t - tStop) * (fvx * nx + fvy * ny), k = skin(at);
+        if (!(gap < k)) {
+            return at;
+        }
+        Shape back = at.translated((float) (-nx * (k - Math.max(0, gap))), (float) (-ny * (k - Math.max(0, gap))));
+        return clear(back) ? back : at;
+    }
+
+    /** Adds a collision, unless it repeats the last one of this move without having moved. */
+    private void report(Body m, Shape start, Shape at, Body o, int cell, Reaction reaction, Hit hit, boolean moved) {
+        if (!moved && !found.isEmpty()) {
+            Collision last = found.get(found.size() - 1);
+            if (last.other() == o && last.cell() == cell && last.nx() == hit.nx() && last.ny() == hit.ny()
+                    && last.reaction() == reaction) {
+                return;
+            }
+        }
+        found.add(new Collision(m, o, reaction, hit, poseX(m, start, at), poseY(m, start, at), cell));
+    }
+
+    // ---------------------------------------------------------------- planes
+
+    /** Forgets the planes of the move (a character's new part of the move). */
+    void clearPlanes() {
+        planeCount = 0;
+    }
+
+    /** Forgets the plane added last. */
+    void removeLastPlane() {
+        planeCount--;
+    }
+
+    /** Adds a plane (a normal from the mover into a surface it met). */
+    void addPlane(double nx, double ny) {
+        for (int i = 0; i < planeCount; i++) {
+            if (planeX[i] == nx && planeY[i] == ny) {
+                return;
+            }
+        }
+        if (planeCount == planeX.length) {
+            // The oldest plane goes: the body has slid on since.
+            System.arraycopy(planeX, 1, planeX, 0, planeCount - 1);
+            System.arraycopy(planeY, 1, planeY, 0, planeCount - 1);
+            planeCount--;
+        }
+        planeX[planeCount] = nx;
+        planeY[planeCount] = ny;
+        planeCount++;
+    }
+
+    private final double[] clipped = new double[2];
+
+    /**
+     * The motion nearest to (rx, ry) that runs into none of the planes: itself if it breaks
+     * none, else its projection onto the one plane that keeps clear of the others (the nearest
+     * such), else nothing. A plane whose normal is an axis takes its part exactly.
+     */
+    double[] clip(double rx, double ry) {
+        if (keepsClear(rx, ry)) {
+            return answer(rx, ry);
+        }
+        double bx = 0, by = 0, bestD = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < planeCount; i++) {
+            double nx = planeX[i], ny = planeY[i];
+            double d = rx * nx + ry * ny;
+            if (d <= 0) {
+                continue;
+            }
+            double px = rx - d * nx, py = ry - d * ny;
+            if (nx == 0) {
+                px = rx;
+                py = 0;
+            } else if (ny == 0) {
+                px = 0;
+                py = ry;
+            }
+            double dd = d * d;
+            if (dd < bestD && keepsClear(px, py)) {
+                bestD = dd;
+                bx = px;
+                by = py;
+            }
+        }
+        return answer(bx, by);
+    }
+
+    private double[] answer(double x, double y) {
+        clipped[0] = x;
+        clipped[1] = y;
+        return clipped;
+    }
+
+    /** Does a motion run into none of the planes (beyond rounding)? */
+    boolean keepsClear(double rx, double ry) {
+        double len = Math.abs(rx) + Math.abs(ry);
+        for (int i = 0; i < planeCount; i++) {
+            if (rx * planeX[i] + ry * planeY[i] > PLANE_TIE * len) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    // ---------------------------------------------------------------- legs
+
+    /**
+     * The first blocking obstacle a shape meets moving by (fvx, fvy), as {@link #walk} sees it:
+     * its index (then {@link #hitOf}) or -1. With {@code all}, every obstacle's hit is kept
+     * for the crossings too.
+     */
+    private int nearest(Body m, Shape cur, float fvx, float fvy, CollisionFilter filter, Shape start, int st, boolean all) {
+        obstacles(m, cur, fvx, fvy, filter, start, st);
+        int best = -1;
+        Hit bestHit = null;
+        for (int i = 0; i < obCount; i++) {
+            Body o = obBody[i];
+            if (!all && o.seenReaction == Reaction.CROSS) {
+                obHit[i] = null;
+                continue;
+            }
+            Hit h = Sweep.timeOfImpact(cur, fvx, fvy, obShape[i]);
+            if (h != null && (h.alreadyOverlapping()
+                    || o.seenReaction != Reaction.CROSS && o.oneWay != Side.NONE && h.side() != o.oneWay)) {
+                h = null;  // a one-way body met from a side that does not block
+            }
+            obHit[i] = h;
+            if (h != null && o.seenReaction != Reaction.CROSS
+                    && (best < 0 || h.t() < bestHit.t() || h.t() == bestHit.t() && o.serial < obBody[best].serial)) {
+                best = i;
+                bestHit = h;
+            }
+        }
+        return best;
+    }
+
+    /**
+     * A character's single leg that reports nothing: the first blocking obstacle met moving
+     * by (vx, vy); then {@link #probeHit()}, {@link #probeBody()} and {@link #probeStop}.
+     *
+     * @return true if one is met within the motion
+     */
+    boolean probe(Body m, Shape cur, float vx, float vy, CollisionFilter filter, Shape start, int st) {
+        if (vx == 0 && vy == 0) {
+            probeIndex = -1;
+            return false;
+        }
+        probeIndex = nearest(m, cur, vx, vy, filter, start, st, false);
+        probeHit = probeIndex >= 0 ? obHit[probeIndex] : null;
+        return probeIndex >= 0;
+    }
+
+    Hit probeHit() {
+        return probeHit;
+    }
+
+    Body probeBody() {
+        return obBody[probeIndex];
+    }
+
+    int probeCell() {
+        return obCell[probeIndex];
+    }
+
+    /** Where the last probe stops (touching, or a skin short of a slanted surface), or its end if it met nothing. */
+    Shape probeStop(Shape cur, float vx, float vy) {
+        if (probeIndex < 0) {
+            return clearAlong(cur, vx, vy, 1, cur.translated(vx, vy));
+        }
+        double len = Math.hypot(probeHit.nx(), probeHit.ny());
+        double nx = probeHit.nx() / len, ny = probeHit.ny() / len;
+        double t = slanted(nx, ny) ? stopAt(cur, vx, vy, probeHit.t(), nx, ny) : probeHit.t();
+        return clearAlong(cur, vx, vy, t, t == 0 ? cur : cur.translated((float) (t * vx), (float) (t * vy)));
+    }
+
+    /** Reports a collision a character's own leg met (a step, a snap). */
+    void reportProbe(Body m, Shape start, Shape at, float frame) {
+        Body o = obBody[probeIndex];
+        if (o.oneWay != Side.NONE) {
+            o.seenBlocked = true;
+        }
+        Hit h = probeHit;
+        report(m, start, at, o, obCell[probeIndex], o.seenReaction, new Hit(frame, h.nx(), h.ny(), h.side()), true);
+    }
+
+    /** The crossed bodies met before tb in this leg, each reported once a move, in the order met. */
+    private void crossings(Body m, Shape start, Shape cur, float fvx, float fvy, float tb, double time) {
+        while (true) {
+            int first = -1;
+            for (int i = 0; i < obCount; i++) {
+                Body o = obBody[i];
+                Hit h = obHit[i];
+                if (h != null && o.seenReaction == Reaction.CROSS && !o.seenCrossed && h.t() <= tb
+                        && (first < 0 || h.t() < obHit[first].t())) {
+                    first = i;
+                }
+            }
+            if (first < 0) {
+                return;
+            }
+            Body o = obBody[first];
+            o.seenCrossed = true;
+            Hit h = obHit[first];
+            double frame = time + h.t() * (1 - time);
+            found.add(new Collision(m, o, Reaction.CROSS, new Hit((float) Math.min(1, frame), h.nx(), h.ny(), h.side()),
+                    poseX(m, start, cur) + h.t() * fvx, poseY(m, start, cur) + h.t() * fvy, obCell[first]));
+        }
+    }
+
+    /**
+     * The wanted stop if it overlaps no blocking obstacle of this leg; otherwise (only rounding
+     * can cause it) the farthest clear point before it along the leg, by halving.
+     */
+    private Shape clearAlong(Shape cur, float fvx, float fvy, double t, Shape wanted) {
+        if (clear(wanted)) {
+            return wanted;
+        }
+        Shape best = cur;
+        double lo = 0, hi = t;
+        for (int i = 0; i < 64 && lo < hi; i++) {
+            double mid = (lo + hi) / 2;
+            Shape s = cur.translated((float) (mid * fvx), (float) (mid * fvy));
+            if (clear(s)) {
+                lo = mid;
+                best = s;
+            } else {
+                hi = mid;
+            }
+            if (mid == lo && mid == hi) {
+                break;
+            }
+        }
+        return best;
+    }
+
+    /** Does a shape overlap none of this leg's blocking obstacles? */
+    boolean clear(Shape s) {
+        for (int i = 0; i < obCount; i++) {
+            Body o = obBody[i];
+            boolean blocks = o.seenReaction != Reaction.CROSS && (o.oneWay == Side.NONE || o.seenBlocked);
+            if (blocks && s.overlaps(obShape[i])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static float poseX(Body m, Shape start, Shape at) {
+        return (float) (m.pivotX + m.tx + (Poses.refX(at) - Poses.refX(start)));
+    }
+
+    private static float poseY(Body m, Shape start, Shape at) {
+        return (float) (m.pivotY + m.ty + (Poses.refY(at) - Poses.refY(start)));
+    }
+
+    /**
+     * The obstacles of one leg: the bodies (and grid cells) whose boxes meet the leg's swept
+     * box, that the filter does not ignore, that the mover did not overlap at the start, and
+     * not crossed already. Bodies the mover overlaps at the start are reported once.
+     */
+    private void obstacles(Body m, Shape cur, float fvx, float fvy, CollisionFilter filter, Shape start, int st) {
+        double left = Math.min(cur.minX(), cur.minX() + fvx), right = Math.max(cur.maxX(), cur.maxX() + fvx);
+        double top = Math.min(cur.minY(), cur.minY() + fvy), bottom = Math.max(cur.maxY(), cur.maxY() + fvy);
+        // A skin around the swept box: a stop may step back from a slanted surface by that much.
+        double k = skin(cur);
+        left -= k;
+        top -= k;
+        right += k;
+        bottom += k;
+        world.gather(left, top, right, bottom);
+        obCount = 0;
+        for (int i = 0, n = world.candidateCount(); i < n; i++) {
+            Body o = world.candidate(i);
+            if (o == m || reaction(m, o, filter, start, st) == null || o.seenOverlap) {
+                continue;
+            }
+            if (o.grid != null) {
+                cells(o, left, top, right, bottom, start);
+            } else {
+                addObstacle(o.shape(), o, -1);
+            }
+        }
+    }
+
+    /** The solid cells of a grid's body under a box, row by row, not those the start overlaps. */
+    private void cells(Body o, double left, double top, double right, double bottom, Shape start) {
+        Grid g = o.grid;
+        double pad = World.pad(left, top, right, bottom);
+        int c0 = Math.max(0, g.colAt((float) (left - pad))), c1 = Math.min(g.cols() - 1, g.colAt((float) (right + pad)));
+        int r0 = Math.max(0, g.rowAt((float) (top - pad))), r1 = Math.min(g.rows() - 1, g.rowAt((float) (bottom + pad)));
+        if ((long) (c1 - c0 + 1) * (r1 - r0 + 1) > GridMove.MAX_CELLS) {
+            throw new IllegalArgumentException("a move over a grid of the world sweeps more than " + GridMove.MAX_CELLS
+                    + " cells: moves are made for a few cells a frame");
+        }
+        for (int row = r0; row <= r1; row++) {
+            for (int col = c0; col <= c1; col++) {
+                if (g.isSolid(col, row)) {
+                    Rect cell = g.cellRect(col, row);
+                    if (start == null || !start.overlaps(cell)) {
+                        addObstacle(cell, o, row * g.cols() + col);
+                    }
+                }
+            }
+        }
+    }
+
+    private void addObstacle(Shape s, Body o, int cell) {
+        if (obCount == obShape.length) {
+            int n = 2 * obCount;
+            obShape = java.util.Arrays.copyOf(obShape, n);
+            obBody = java.util.Arrays.copyOf(obBody, n);
+            obCell = java.util.Arrays.copyOf(obCell, n);
+            obHit = java.util.Arrays.copyOf(obHit, n);
+        }
+        obShape[obCount] = s;
+        obBody[obCount] = o;
+        obCell[obCount] = cell;
+        obCount++;
+    }
+
+    /** The reaction to another body, asked once a move: layers, then sensors, then the filter. */
+    Reaction reaction(Body m, Body o, CollisionFilter filter, Shape start, int st) {
+        if (o.seenStamp != st) {
+            o.seenStamp = st;
+            o.seenCrossed = false;
+            o.seenBlocked = false;
+            o.seenOverlap = false;
+            Reaction r = decide(m, o, filter);
+            o.seenReaction = r;
+            if (r != null && o.grid == null && start.overlaps(o.shape())) {
+                o.seenOverlap = true;
+                o.seenCrossed = true;
+                found.add(new Collision(m, o, r, new Hit(0, 0, 0, Side.NONE), m.x(), m.y(), -1));
+            }
+        }
+        return o.seenReaction;
+    }
+
+    /** The reaction to another body: null where the layers refuse, crossing for a sensor, else the filter's. */
+    private Reaction decide(Body m, Body o, CollisionFilter filter) {
+        if (!m.accepts(o)) {
+            return null;
+        }
+        if (m.sensor || o.sensor) {
+            return Reaction.CROSS;
+        }
+        return world.ask(filter, m, o);
+    }
+
+    // ---------------------------------------------------------------- a character's start
+
+    /**
+     * A shape pushed out of the bodies it overlaps that would block it (not one-way bodies,
+     * which it may stand inside while it jumps through), the deepest first, each the shortest
+     * way ({@link Shape#contact}) and a skin beyond, a few times; the shape itself when it
+     * overlaps none.
+     */
+    Shape pushOut(Body m, Shape start, CollisionFilter filter) {
+        Shape cur = start;
+        for (int round = 0; round < 4; round++) {
+            world.gather(cur.minX(), cur.minY(), cur.maxX(), cur.maxY());
+            Contact deepest = null;
+            for (int i = 0, n = world.candidateCount(); i < n; i++) {
+                Body o = world.candidate(i);
+                if (o == m || o.oneWay != Side.NONE) {
+                    continue;
+                }
+                Reaction r = decide(m, o, filter);
+                if (r == null || r == Reaction.CROSS) {
+                    continue;
+                }
+                if (o.grid != null) {
+                    Grid g = o.grid;
+                    double pad = World.pad(cur.minX(), cur.minY(), cur.maxX(), cur.maxY());
+                    int c0 = Math.max(0, g.colAt((float) (cur.minX() - pad))), c1 = Math.min(g.cols() - 1, g.colAt((float) (cur.maxX() + pad)));
+                    int r0 = Math.max(0, g.rowAt((float) (cur.minY() - pad))), r1 = Math.min(g.rows() - 1, g.rowAt((float) (cur.maxY() + pad)));
+                    for (int row = r0; row <= r1; row++) {
+                        for (int col = c0; col <= c1; col++) {
+                            if (g.isSolid(col, row)) {
+                                deepest = deeper(deepest, cur, g.cellRect(col, row));
+                            }
+                        }
+                    }
+                } else {
+                    deepest = deeper(deepest, cur, o.shape());
+                }
+            }
+            if (deepest == null) {
+                return cur;
+            }
+            double k = deepest.depth() + skin(cur);
+            cur = cur.translated((float) (-deepest.nx() * k), (float) (-deepest.ny() * k));
+        }
+        return cur;
+    }
+
+    private static Contact deeper(Contact best, Shape cur, Shape other) {
+        Contact c = cur.contact(other);
+        return c != null && (best == null || c.depth() > best.depth()) ? c : best;
+    }
+
+    // ---------------------------------------------------------------- the rectangles' walk
+
+    /**
+     * A rectangle's slide among rectangles, by {@link Sweep#move}'s own walk: the end, or null
+     * when some body met is not a rectangle that slides (then the general walk runs).
+     */
+    private Rect rectWalk(Body m, Rect r, float dx, float dy, CollisionFilter filter, int st) {
+        double left = Math.min(r.minX(), r.minX() + dx), right = Math.max(r.maxX(), r.maxX() + dx);
+        double top = Math.min(r.minY(), r.minY() + dy), bottom = Math.max(r.maxY(), r.maxY() + dy);
+        world.gather(left, top, right, bottom);
+        int n = world.candidateCount();
+        for (int i = 0; i < n; i++) {
+            Body o = world.candidate(i);
+            if (o == m) {
+                continue;
+            }
+            Reaction re = reaction(m, o, filter, r, st);
+            if (re != null && (re != Reaction.SLIDE || o.oneWay != Side.NONE
+                    || o.grid == null && !(o.shape() instanceof Rect))) {
+                return null;
+            }
+        }
+        obCount = 0;
+        rects.clear();
+        for (int i = 0; i < n; i++) {
+            Body o = world.candidate(i);
+            if (o == m || o.seenReaction == null) {
+                continue;
+            }
+            if (o.grid != null) {
+                cells(o, left, top, right, bottom, null);
+            } else {
+                addObstacle(o.shape(), o, -1);
+            }
+        }
+        for (int i = 0; i < obCount; i++) {
+            rects.add((Rect) obShape[i]);
+        }
+        stopCount = 0;
+        Sweep.Move end = MoveAndSlide.move(r, dx, dy, rects, stops);
+        double time = 0;
+        for (int k = 0; k < stopCount; k++) {
+            double frame = time + stopT[k] * (1 - time);
+            Side side = stopSide[k];
+            float nx = side == Side.LEFT ? 1 : side == Side.RIGHT ? -1 : 0;
+            float ny = side == Side.TOP ? 1 : side == Side.BOTTOM ? -1 : 0;
+            int i = stopIndex[k];
+            found.add(new Collision(m, obBody[i], Reaction.SLIDE, new Hit((float) Math.min(1, frame), nx, ny, side),
+                    (float) (m.pivotX + m.tx + ((double) stopX[k] - r.x())),
+                    (float) (m.pivotY + m.ty + ((double) stopY[k] - r.y())), obCell[i]));
+            time = frame;
+        }
+        return new Rect(end.x(), end.y(), r.w(), r.h());
+    }
+}
