@@ -161,6 +161,9 @@ final class Mover {
     void walk(Body m, Shape start, Shape from, double dx, double dy, CollisionFilter filter, int st, CharacterBody ch) {
         Shape cur = from;
         double vx = dx, vy = dy, time = 0;
+        // What the move wants, for the rest of the frame: slides clip it against every plane
+        // met (not the last leg's motion, which a crease would turn back up the other face).
+        double wantX = dx, wantY = dy;
         planeCount = 0;
         boolean finished = true;
         int leg = 0;
@@ -210,6 +213,7 @@ final class Mover {
             cur = at;
             double rx = (1 - tStop) * vx, ry = (1 - tStop) * vy;
             double into = rx * nx + ry * ny;
+            double restX = (1 - frame) * wantX, restY = (1 - frame) * wantY;
             switch (reaction) {
                 case TOUCH -> {
                     rx = 0;
@@ -219,14 +223,18 @@ final class Mover {
                     if (into > 0) {
                         rx -= 2 * into * nx;
                         ry -= 2 * into * ny;
+                        double w = wantX * nx + wantY * ny;
+                        wantX -= 2 * w * nx;
+                        wantY -= 2 * w * ny;
                     }
+                    planeCount = 0;  // a bounce starts a new motion: the planes before it are behind
                 }
                 default -> {
                     addPlane(nx, ny);
                     if (ch != null) {
                         ch.slid(this, o, nx, ny);
                     }
-                    double[] r = ch != null ? ch.redirect(this, rx, ry, nx, ny) : clip(rx, ry);
+                    double[] r = ch != null ? ch.redirect(this, restX, restY, nx, ny) : clip(restX, restY);
                     rx = r[0];
                     ry = r[1];
                 }
@@ -267,14 +275,14 @@ final class Mover {
     }
 
     /**
-     * A stop nearer a slanted surface than the skin (the leg started nearer than that) steps
-     * back out along the surface's normal to the skin, where that is clear: otherwise the
+     * A stop nearer a slanted surface than half the skin (the leg started nearer than that)
+     * steps back out along the surface's normal to the skin, where that is clear: otherwise the
      * float positions of the slide along it would round into it.
      */
     private Shape keepSkin(Shape at, float fvx, float fvy, double t, double tStop, double nx, double ny) {
         double gap = (t - tStop) * (fvx * nx + fvy * ny), k = skin(at);
-        if (!(gap < k)) {
-            return at;
+        if (!(gap < k / 2)) {
+            return at;  // half a skin or more is gap enough; stepping by less would only jitter
         }
         Shape back = at.translated((float) (-nx * (k - Math.max(0, gap))), (float) (-ny * (k - Math.max(0, gap))));
         return clear(back) ? back : at;
