@@ -122,8 +122,8 @@ public final class CharacterBody {
         Shape cur = mv.walkEnd();
         boolean finished = mv.walkFinished();
         boolean rising = dx * upX + dy * upY > 0;
-        if (stepHeight > 0 && metWall && wasGround && !rising) {
-            cur = step(mv, start, from, cur, dx, dy, filter, st);
+        if (metWall && wasGround && !rising && (upX != 0 || upY != 0)) {
+            cur = step(mv, from, cur, dx, dy, filter, st);
         }
         Hit below = groundBelow(mv, from, cur, filter, st, probeLength(cur));
         if (below == null && snap > 0 && wasGround && !rising) {
@@ -164,36 +164,56 @@ public final class CharacterBody {
     }
 
     /**
-     * A step up: the sideways part of the move that a wall took, tried again from
-     * {@link #stepHeight} higher and then down onto ground. The end if it lands on ground
-     * further on, else {@code cur} as it was.
+     * A step up: the sideways part of the move that a wall took, tried again from higher up
+     * and then down onto ground. Higher up is {@link #stepHeight}, or the rise a slope up to
+     * {@link #maxSlope} would give over that part (a wall met at the foot of a ramp, where the
+     * character's corner meets the ramp's). The end if it lands on ground further on, either a
+     * stair no higher than the step height or a slope that rises no faster than its own tilt;
+     * else {@code cur} as it was.
      */
-    private Shape step(Mover mv, Shape start, Shape from, Shape cur, float dx, float dy, CollisionFilter filter, int st) {
+    private Shape step(Mover mv, Shape from, Shape cur, float dx, float dy, CollisionFilter filter, int st) {
         double lx = -upY, ly = upX;
         double want = dx * lx + dy * ly;
         double got = (Poses.refX(cur) - Poses.refX(from)) * lx + (Poses.refY(cur) - Poses.refY(from)) * ly;
-        double left = want - got;
-        if (Math.abs(left) <= Mover.skin(cur) || Math.signum(left) != Math.signum(want)) {
+        double left = want - got, skin = Mover.skin(cur);
+        if (Math.abs(left) <= skin || Math.signum(left) != Math.signum(want)) {
             return cur;
         }
-        float ux = (float) (upX * stepHeight), uy = (float) (upY * stepHeight);
+        double height = (cur.maxX() - cur.minX()) * Math.abs(upX) + (cur.maxY() - cur.minY()) * Math.abs(upY);
+        double slopeRise = Math.min(height, Math.abs(left) * Math.tan(Math.toRadians(maxSlope)) + 2 * skin);
+        double lift = Math.max(stepHeight, slopeRise);
+        float ux = (float) (upX * lift), uy = (float) (upY * lift);
         mv.probe(body, cur, ux, uy, filter, from, st);
         Shape raised = mv.probeStop(cur, ux, uy);
-        double rose = (Poses.refX(raised) - Poses.refX(cur)) * upX + (Poses.refY(raised) - Poses.refY(cur)) * upY;
+        double rose = rise(cur, raised);
         float fx = (float) (lx * left), fy = (float) (ly * left);
         boolean blocked = mv.probe(body, raised, fx, fy, filter, from, st);
         Shape on = mv.probeStop(raised, fx, fy);
         double went = ((Poses.refX(on) - Poses.refX(raised)) * lx + (Poses.refY(on) - Poses.refY(raised)) * ly) * Math.signum(left);
-        if (went <= Mover.skin(cur)) {
+        if (went <= skin) {
             return cur;
         }
         float downX = (float) (-upX * (rose + probeLength(cur))), downY = (float) (-upY * (rose + probeLength(cur)));
         if (!mv.probe(body, on, downX, downY, filter, from, st) || !isGround(mv.probeHit())) {
             return cur;
         }
+        Hit floor = mv.probeHit();
         Shape landed = mv.probeStop(on, downX, downY);
+        double gained = rise(cur, landed);
+        double cos = -(floor.nx() * upX + floor.ny() * upY) / Math.hypot(floor.nx(), floor.ny());
+        double tan = Math.sqrt(Math.max(0, 1 - cos * cos)) / cos;
+        boolean stair = gained <= stepHeight + skin;
+        boolean slope = gained <= went * tan + 2 * skin;
+        if (!stair && !slope) {
+            return cur;
+        }
         metWall = blocked;
         return landed;
+    }
+
+    /** How much higher (along up) one shape stands than another. */
+    private double rise(Shape from, Shape to) {
+        return (Poses.refX(to) - Poses.refX(from)) * upX + (Poses.refY(to) - Poses.refY(from)) * upY;
     }
 
     /** Is a hit's surface ground: facing up within the tilt limit? */

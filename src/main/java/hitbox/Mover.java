@@ -84,6 +84,9 @@ final class Mover {
     private double leftY;
     private boolean walkFinished;
 
+    // The latest time of the frame at which the walk under way met something.
+    private double metTime;
+
     // A single sweep's answer (probe): the obstacle met, or -1.
     private int probeIndex;
     private Hit probeHit;
@@ -164,6 +167,7 @@ final class Mover {
         // What the move wants, for the rest of the frame: slides clip it against every plane
         // met (not the last leg's motion, which a crease would turn back up the other face).
         double wantX = dx, wantY = dy;
+        metTime = 0;
         planeCount = 0;
         boolean finished = true;
         int leg = 0;
@@ -197,8 +201,10 @@ final class Mover {
             if (o.oneWay != Side.NONE) {
                 o.seenBlocked = true;
             }
+            // Times never run back, though a stop a skin short of a hit starts the next leg a
+            // little before the hit's own time.
             report(m, start, meet, o, obCell[best], reaction,
-                    new Hit((float) Math.min(1, time + t * (1 - time)), bestHit.nx(), bestHit.ny(), bestHit.side()), meet != cur);
+                    new Hit(timeMet(time + t * (1 - time)), bestHit.nx(), bestHit.ny(), bestHit.side()), meet != cur);
             double tStop = t;
             Shape at = meet;
             if (reaction != Reaction.TOUCH && slanted(nx, ny)) {
@@ -286,6 +292,12 @@ final class Mover {
         }
         Shape back = at.translated((float) (-nx * (k - Math.max(0, gap))), (float) (-ny * (k - Math.max(0, gap))));
         return clear(back) ? back : at;
+    }
+
+    /** The time of the frame at which the walk met something: never before the last one met, never past 1. */
+    private float timeMet(double frame) {
+        metTime = Math.max(metTime, Math.min(1, frame));
+        return (float) metTime;
     }
 
     /** Adds a collision, unless it repeats the last one of this move without having moved. */
@@ -482,8 +494,7 @@ final class Mover {
             Body o = obBody[first];
             o.seenCrossed = true;
             Hit h = obHit[first];
-            double frame = time + h.t() * (1 - time);
-            found.add(new Collision(m, o, Reaction.CROSS, new Hit((float) Math.min(1, frame), h.nx(), h.ny(), h.side()),
+            found.add(new Collision(m, o, Reaction.CROSS, new Hit(timeMet(time + h.t() * (1 - time)), h.nx(), h.ny(), h.side()),
                     poseX(m, start, cur) + h.t() * fvx, poseY(m, start, cur) + h.t() * fvy, obCell[first]));
         }
     }
@@ -611,10 +622,20 @@ final class Mover {
             if (r != null && o.grid == null && start.overlaps(o.shape())) {
                 o.seenOverlap = true;
                 o.seenCrossed = true;
-                found.add(new Collision(m, o, r, new Hit(0, 0, 0, Side.NONE), m.x(), m.y(), -1));
+                reportStartOverlap(m, o, r);
             }
         }
         return o.seenReaction;
+    }
+
+    /** Reports a body the mover overlapped when its move began, once a move. */
+    private void reportStartOverlap(Body m, Body o, Reaction r) {
+        for (Collision c : found) {
+            if (c.other() == o && c.hit().alreadyOverlapping()) {
+                return;
+            }
+        }
+        found.add(new Collision(m, o, r, new Hit(0, 0, 0, Side.NONE), m.x(), m.y(), -1));
     }
 
     /** The reaction to another body: null where the layers refuse, crossing for a sensor, else the filter's. */
@@ -639,6 +660,7 @@ final class Mover {
     Shape pushOut(Body m, Shape start, CollisionFilter filter) {
         Shape cur = start;
         for (int round = 0; round < 4; round++) {
+            boolean first = round == 0;
             world.gather(cur.minX(), cur.minY(), cur.maxX(), cur.maxY());
             Contact deepest = null;
             for (int i = 0, n = world.candidateCount(); i < n; i++) {
@@ -647,7 +669,13 @@ final class Mover {
                     continue;
                 }
                 Reaction r = decide(m, o, filter);
-                if (r == null || r == Reaction.CROSS) {
+                if (r == null) {
+                    continue;
+                }
+                if (first && o.grid == null && cur.overlaps(o.shape())) {
+                    reportStartOverlap(m, o, r);
+                }
+                if (r == Reaction.CROSS) {
                     continue;
                 }
                 if (o.grid != null) {
