@@ -491,9 +491,9 @@ public final class World {
     Collisions commit(Body m, Shape start, Shape end, List<Collision> out, boolean finished) {
         double ntx = m.tx + (Poses.refX(end) - Poses.refX(start)), nty = m.ty + (Poses.refY(end) - Poses.refY(start));
         float[] box = box(m.pivotX + ntx, m.pivotY + nty, m.extents, "dx and dy");
-        Rect b = end.bounds();
-        float x0 = Math.min(box[0], b.x()), y0 = Math.min(box[1], b.y());
-        float x1 = Math.max(box[0] + box[2], Math.nextUp(b.x() + b.w())), y1 = Math.max(box[1] + box[3], Math.nextUp(b.y() + b.h()));
+        // The shape's own extents too (no Rect made for them: a move's only new object is its shape).
+        float x0 = Math.min(box[0], Math.nextDown((float) end.minX())), y0 = Math.min(box[1], Math.nextDown((float) end.minY()));
+        float x1 = Math.max(box[0] + box[2], Math.nextUp((float) end.maxX())), y1 = Math.max(box[1] + box[3], Math.nextUp((float) end.maxY()));
         m.tx = ntx;
         m.ty = nty;
         m.shape = end;
@@ -502,7 +502,9 @@ public final class World {
             stepCollisions.clear();
             stepped = false;
         }
-        stepCollisions.addAll(out);
+        if (!out.isEmpty()) {
+            stepCollisions.addAll(out);  // addAll copies even an empty list
+        }
         Collisions result = Collisions.of(out, finished);
         out.clear();
         return result;
