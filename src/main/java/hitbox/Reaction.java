@@ -11,7 +11,9 @@ package hitbox;
 public enum Reaction {
     /**
      * Stop against the other and slide along it with the rest of the move, the part into it
-     * dropped: walls and floors. The default of {@link World#move(Body, float, float)}.
+     * dropped: walls, floors and slopes at any angle (two at once, a crease or a V, stop the
+     * body; a slanted one is kept a skin of 1/64 pixel away, see {@link World}). The default
+     * of {@link World#move(Body, float, float)}.
      */
     SLIDE,
     /** Stop against the other and go no further this move: a dart sticking in a target. */

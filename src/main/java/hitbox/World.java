@@ -25,7 +25,13 @@ import java.util.function.Predicate;
  * {@link #move(Body, float, float, CollisionFilter)} moves a body this frame through the
  * others: it goes until it first meets one, reacts as the filter says ({@link Reaction}:
  * slide along it, stop, pass through, bounce off), and goes on with what is left of the
- * move, up to {@value #MAX_LEGS} times. It uses the exact swept tests of {@link Sweep}, so it
+ * move, up to {@value #MAX_LEGS} times. A slide keeps the part of the move along every
+ * surface met, at any angle (two surfaces at once, a crease or a V, stop it); a slanted
+ * surface is kept a skin (1/64 pixel) away so that rounding never stalls the slide, an
+ * axis-aligned one is met touching exactly. A move that gives up with motion left says so
+ * ({@link Collisions#finished()}). {@link #addCharacter} makes a body that walks on ground,
+ * climbs steps and snaps down ({@link CharacterBody}); the project's docs/character.md shows
+ * how both work. It uses the exact swept tests of {@link Sweep}, so it
  * never tunnels, for every pair of shape kinds at any speed, and at the end the mover overlaps
  * no body it slid on, touched or bounced off (except one it already overlapped at the start,
  * which never blocks it). A rectangle at angle 0 that slides among rectangles (every other it
@@ -55,10 +61,10 @@ import java.util.function.Predicate;
  * exactly as it was: every body's pose and shape and the broad phase's boxes. Not
  * thread-safe.
  *
- * <p>This class is longer than most (about 900 lines): it is the whole public face of the
- * world (bodies, moves, carrying, events, five queries) with full javadoc, and the move's
- * walk, which needs the bodies' private bookkeeping, lives here too; the shapes' placement is
- * in {@code Poses} and the rectangles' walk in {@code MoveAndSlide}.
+ * <p>This class is longer than most (about 1,180 lines): it is the whole public face of the
+ * world (bodies, moves, carrying, events, five queries) with full javadoc; the move's walk is
+ * in {@code Mover}, the character's rules in {@link CharacterBody}, the shapes' placement in
+ * {@code Poses} and the rectangles' walk in {@code MoveAndSlide}.
  */
 public final class World {
 

@@ -162,6 +162,13 @@
  *       it searches (an ellipse holding a circle, capsule or ellipse, an ellipse in a circle
  *       or capsule, anything and a turned ellipse): held within 1e-9 of the container's size
  *       of touching from inside.</li>
+ *   <li>The world's slide: a body that meets a slanted surface and slides on stops a
+ *       <em>skin</em> short of it (1/64 pixel near the origin, four float steps of its
+ *       coordinates far out; an axis-aligned face is met touching exactly), so that the float
+ *       positions of the slide never round into it; a character's ground is what faces up
+ *       within its {@code maxSlope}, to 1e-6 of the angle's cosine
+ *       (the project's docs/character.md has the whole design).
+ *       They decide where a body stops, never whether two shapes overlap.</li>
  * </ul>
  *
  * <h2 id="push-out">Which push-out to use</h2>

@@ -27,7 +27,11 @@ package hitbox.internal;
  * pixels, the same for a turning mover), {@code Ray.SAME_EVENT} (1e-12 of the ray, events
  * on a polygon's outline that are one), {@code Containment.CONTAINMENT} (1e-9 of the
  * container's size, how far a curved pair that is searched rather than decided may poke out
- * and still count as held), and the public ones above; and two proven error
+ * and still count as held), the world's slide's {@code Mover.SKIN} (1/64 pixel, the gap a
+ * slanted surface keeps from a body that slides on it), {@code Mover.PLANE_TIE} (1e-12 of a
+ * motion, how far into a plane its projection may round), {@code Mover.AXIS_TIE} (1e-6, how
+ * near an axis a normal is taken as the axis) and {@code CharacterBody.SLOPE_TIE} (1e-6 of
+ * a cosine, so that a 45-degree slope is ground at a 45-degree limit), and the public ones above; and two proven error
  * bounds of floating-point sums, {@code Lines.ORIENT_ERROR} and {@code Ellipses.SUM_ERROR}
  * (multiples of 2^-53 with their derivation beside them). The rest are here.
  *
