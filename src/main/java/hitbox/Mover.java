@@ -679,16 +679,10 @@ final class Mover {
                     continue;
                 }
                 if (o.grid != null) {
-                    Grid g = o.grid;
-                    double pad = World.pad(cur.minX(), cur.minY(), cur.maxX(), cur.maxY());
-                    int c0 = Math.max(0, g.colAt((float) (cur.minX() - pad))), c1 = Math.min(g.cols() - 1, g.colAt((float) (cur.maxX() + pad)));
-                    int r0 = Math.max(0, g.rowAt((float) (cur.minY() - pad))), r1 = Math.min(g.rows() - 1, g.rowAt((float) (cur.maxY() + pad)));
-                    for (int row = r0; row <= r1; row++) {
-                        for (int col = c0; col <= c1; col++) {
-                            if (g.isSolid(col, row)) {
-                                deepest = deeper(deepest, cur, g.cellRect(col, row));
-                            }
-                        }
+                    obCount = 0;
+                    cells(o, cur.minX(), cur.minY(), cur.maxX(), cur.maxY(), null);
+                    for (int c = 0; c < obCount; c++) {
+                        deepest = deeper(deepest, cur, obShape[c]);
                     }
                 } else {
                     deepest = deeper(deepest, cur, o.shape());

@@ -129,9 +129,8 @@ class CharacterBodyTest {
         assertEquals(60f, slopeWorld(10).addCharacter(new Rect(0, 0, 1, 1)).maxSlope(60).maxSlope());
     }
 
-    @ParameterizedTest
-    @ValueSource(floats = {4, 9.5f, 10})
-    void stepsUpToStepHeight_areClimbed(float ledge) {
+    /** A character with a step height of 10 that walks for 100 frames into a ledge at x = 300. */
+    static CharacterBody walkIntoALedge(float ledge) {
         World w = new World();
         w.add(new Rect(0, 400, 800, 40));
         w.add(new Rect(300, 400 - ledge, 500, ledge));
@@ -140,6 +139,13 @@ class CharacterBodyTest {
         for (int f = 0; f < 100; f++) {
             vy = frame(hero, 2, vy);
         }
+        return hero;
+    }
+
+    @ParameterizedTest
+    @ValueSource(floats = {4, 9.5f, 10})
+    void stepsUpToStepHeight_areClimbed(float ledge) {
+        CharacterBody hero = walkIntoALedge(ledge);
         Shape s = hero.body().shape();
         assertTrue(s.minX() > 350, ledge + " px: did not climb, at " + s);
         assertEquals(400 - ledge, s.maxY(), 1e-3, ledge + " px: not on the step's top");
@@ -149,14 +155,7 @@ class CharacterBodyTest {
     @ParameterizedTest
     @ValueSource(floats = {10.5f, 14, 30})
     void higherLedges_areWalls(float ledge) {
-        World w = new World();
-        w.add(new Rect(0, 400, 800, 40));
-        w.add(new Rect(300, 400 - ledge, 500, ledge));
-        CharacterBody hero = w.addCharacter(new Rect(200, 370, 20, 30)).stepHeight(10);
-        float vy = 0;
-        for (int f = 0; f < 100; f++) {
-            vy = frame(hero, 2, vy);
-        }
+        CharacterBody hero = walkIntoALedge(ledge);
         Shape s = hero.body().shape();
         assertEquals(300, s.maxX(), 1e-3, ledge + " px: " + s);
         assertEquals(400, s.maxY(), 1e-3);
@@ -197,6 +196,25 @@ class CharacterBodyTest {
         other.move(0, 1);
         assertFalse(other.body().shape().overlaps(plank.shape()));
         assertTrue(other.body().shape().maxY() <= 298 + 1e-3 && other.body().shape().maxY() >= 297.9, other.body().shape().toString());
+    }
+
+    @Test
+    void spawnedInsideAGridsCell_isPushedOutAndStandsOnIt() {
+        World w = new World();
+        Grid grid = new Grid(10, 10, 20);
+        for (int col = 0; col < 10; col++) {
+            grid.set(col, 5, Grid.SOLID);  // a floor of cells from y = 100 to 120
+        }
+        w.add(grid);
+        CharacterBody hero = w.addCharacter(new Rect(30, 85, 10, 20));  // 5 px into the floor
+        hero.move(0, 1);
+        assertEquals(100, hero.body().shape().maxY(), 1e-3);
+        assertTrue(hero.onGround());
+        for (int f = 0; f < 40; f++) {
+            hero.move(2, 1);
+            assertEquals(100, hero.body().shape().maxY(), 1e-3);
+        }
+        assertEquals(110, hero.body().shape().minX(), 1e-3);
     }
 
     @Test
