@@ -1137,19 +1137,39 @@ public final class World {
         return 4 * Math.ulp((float) Math.min(m, Float.MAX_VALUE / 4)) + Float.MIN_NORMAL;
     }
 
-    /** Insertion sort of the candidates by the order added: ties are met in that order. */
+    /**
+     * Sorts the candidates by the order added (ties are met in that order): insertion sort for
+     * the few of a move's leg, a sort of (serial, id) keys for the many of a large query, so a
+     * query over the whole world costs k log k, not k squared.
+     */
     private void sortCandidates() {
-        for (int i = 1; i < candCount; i++) {
-            int id = cand[i];
-            int s = byId[id].serial;
-            int j = i - 1;
-            while (j >= 0 && byId[cand[j]].serial > s) {
-                cand[j + 1] = cand[j];
-                j--;
+        if (candCount <= 32) {
+            for (int i = 1; i < candCount; i++) {
+                int id = cand[i];
+                int s = byId[id].serial;
+                int j = i - 1;
+                while (j >= 0 && byId[cand[j]].serial > s) {
+                    cand[j + 1] = cand[j];
+                    j--;
+                }
+                cand[j + 1] = id;
             }
-            cand[j + 1] = id;
+            return;
+        }
+        if (keys.length < candCount) {
+            keys = new long[Math.max(candCount, 2 * keys.length)];
+        }
+        for (int i = 0; i < candCount; i++) {
+            keys[i] = ((long) byId[cand[i]].serial << 32) | cand[i];
+        }
+        java.util.Arrays.sort(keys, 0, candCount);
+        for (int i = 0; i < candCount; i++) {
+            cand[i] = (int) keys[i];
         }
     }
+
+    /** The sort keys of a large query's candidates: serial above, id below. */
+    private long[] keys = new long[64];
 
     /** How many bodies the last {@link #gather} found. */
     int candidateCount() {
