@@ -62,6 +62,25 @@ class SweepSeparatingTest {
     }
 
     /**
+     * The other side of the rule, never tunnelling: a segment running in along a line that
+     * may be a diagonal of a concave polygon's pieces touches two pieces without entering
+     * either, yet is inside the polygon, so it hits (a line clear of each piece must not
+     * rule it out).
+     */
+    @Test
+    void segmentAlongAConcavePolygonsDiagonal_hits() {
+        Polygon l = Polygon.of(0, 0, 20, 0, 20, 10, 10, 10, 10, 20, 0, 20);
+        float[][] ends = {{0, 0}, {20, 0}, {0, 20}};
+        for (float[] e : ends) {
+            float ux = Math.signum(10 - e[0]), uy = Math.signum(10 - e[1]);
+            Segment s = new Segment(e[0] - 6 * ux, e[1] - 6 * uy, e[0] - 2 * ux, e[1] - 2 * uy);
+            Hit hit = Sweep.timeOfImpact(s, 8 * ux, 8 * uy, l);
+            assertNotNull(hit, "along the line from (" + e[0] + ", " + e[1] + ") to the reflex corner");
+            assertTrue(hit.t() >= 0.25f && hit.t() < 0.2501f, "stops at the corner: " + hit);
+        }
+    }
+
+    /**
      * The line across d separates the mover (at most its reach along d) from the obstacle (at
      * least its least along d), checked exactly, and the motion goes back along d: no hit.
      */
