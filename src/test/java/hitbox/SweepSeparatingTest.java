@@ -8,9 +8,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.math.BigDecimal;
 import java.math.MathContext;
 
+import net.jqwik.api.Arbitraries;
+import net.jqwik.api.Arbitrary;
 import net.jqwik.api.Assume;
+import net.jqwik.api.Combinators;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.DoubleRange;
 import net.jqwik.api.constraints.IntRange;
 import net.jqwik.api.statistics.Statistics;
@@ -99,19 +103,13 @@ class SweepSeparatingTest {
 
     @Property(tries = 4000)
     void touchingOrAlmost_movingApart_neverHits(
-            @ForAll Kind moverKind, @ForAll boolean moverTurned, @ForAll Kind obstacleKind, @ForAll boolean obstacleTurned,
-            @ForAll @IntRange(min = 0, max = 11) int direction, @ForAll @DoubleRange(min = 0, max = 6.3) double angle,
-            @ForAll @IntRange(min = 2, max = 60) int moverSize, @ForAll @IntRange(min = 2, max = 60) int obstacleSize,
-            @ForAll @IntRange(min = 0, max = 1_000_000) int shapeSeed, @ForAll @IntRange(min = 0, max = 2) int where,
-            @ForAll @IntRange(min = -300, max = 300) int px, @ForAll @IntRange(min = -300, max = 300) int py,
-            @ForAll @IntRange(min = 0, max = 3) int stepsApart,
+            @ForAll("setups") Setup s, @ForAll @IntRange(min = 0, max = 3) int stepsApart,
             @ForAll @DoubleRange(min = 0.02, max = 1) double away, @ForAll @DoubleRange(min = -1, max = 1) double sideways,
             @ForAll @IntRange(min = -10, max = 7) int lengthPower) {
-        Pair p = Pair.make(moverKind, moverTurned, obstacleKind, obstacleTurned, direction, angle, moverSize, obstacleSize,
-                shapeSeed, where, px, py, stepsApart);
+        Pair p = s.pair(stepsApart);
         Assume.that(p != null);
-        double length = Math.scalb(1.0, lengthPower) * (1 + (shapeSeed % 7) / 7.0);
-        float vx = (float) (length * (-away * p.ux - sideways * -p.uy));
+        double length = Math.scalb(1.0, lengthPower) * (1 + (s.seed % 7) / 7.0);
+        float vx = (float) (length * (-away * p.ux + sideways * p.uy));
         float vy = (float) (length * (-away * p.uy - sideways * p.ux));
         Assume.that(along(vx, vy, p.dx, p.dy).signum() < 0);  // exactly away from the line
         // Left out, a gap of the overlap test rather than of the sweeps: an ellipse with equal
@@ -120,8 +118,8 @@ class SweepSeparatingTest {
         // the sweep answers "already overlapping", as it must for what the overlap test says.
         Assume.that(!(p.exact && (roundEllipse(p.mover) || roundEllipse(p.obstacle))));
         Statistics.label("touch").collect(p.exact ? "exactly" : "a few float steps apart or not exactly known");
-        Statistics.label("where").collect(where == 0 ? "near the origin" : "1e4 to 1e5 out");
-        Statistics.label("pair").collect(moverKind, obstacleKind);
+        Statistics.label("where").collect(s.where == 0 ? "near the origin" : "1e4 to 1e5 out");
+        Statistics.label("pair").collect(s.kinds.mover, s.kinds.obstacle);
         Hit hit = Sweep.timeOfImpact(p.mover, vx, vy, p.obstacle);
         assertNull(hit, () -> "a separating motion is a hit: " + p + " moving by (" + vx + "f, " + vy + "f)");
         Statistics.label("touch").coverage(c -> {
@@ -140,26 +138,46 @@ class SweepSeparatingTest {
 
     @Property(tries = 2000)
     void touchingExactly_movingIn_hitsAtZero(
-            @ForAll Kind moverKind, @ForAll boolean moverTurned, @ForAll Kind obstacleKind, @ForAll boolean obstacleTurned,
-            @ForAll @IntRange(min = 0, max = 11) int direction, @ForAll @DoubleRange(min = 0, max = 6.3) double angle,
-            @ForAll @IntRange(min = 2, max = 60) int moverSize, @ForAll @IntRange(min = 2, max = 60) int obstacleSize,
-            @ForAll @IntRange(min = 0, max = 1_000_000) int shapeSeed, @ForAll @IntRange(min = 0, max = 2) int where,
-            @ForAll @IntRange(min = -300, max = 300) int px, @ForAll @IntRange(min = -300, max = 300) int py,
+            @ForAll("setups") Setup s,
             @ForAll @DoubleRange(min = 0.5, max = 1) double in, @ForAll @DoubleRange(min = -0.3, max = 0.3) double sideways,
             @ForAll @IntRange(min = 0, max = 4) int lengthPower) {
-        Assume.that(moverKind != Kind.SEGMENT || obstacleKind != Kind.SEGMENT);
-        Pair p = Pair.make(moverKind, moverTurned, obstacleKind, obstacleTurned, direction, angle, moverSize, obstacleSize,
-                shapeSeed, where, px, py, 0);
+        Assume.that(s.kinds.mover != Kind.SEGMENT || s.kinds.obstacle != Kind.SEGMENT);
+        Pair p = s.pair(0);
         Assume.that(p != null && p.exact);
         double length = Math.scalb(1.0, lengthPower);
         float vx = (float) (length * (in * p.ux - sideways * p.uy));
         float vy = (float) (length * (in * p.uy + sideways * p.ux));
         Assume.that(overlapsAfterAStep(p, vx, vy));
-        Statistics.label("pair").collect(moverKind, obstacleKind);
-        Statistics.label("where").collect(where == 0 ? "near the origin" : "1e4 to 1e5 out");
+        Statistics.label("pair").collect(s.kinds.mover, s.kinds.obstacle);
+        Statistics.label("where").collect(s.where == 0 ? "near the origin" : "1e4 to 1e5 out");
         Hit hit = Sweep.timeOfImpact(p.mover, vx, vy, p.obstacle);
         assertNotNull(hit, () -> "moving in from a touch is no hit: " + p + " moving by (" + vx + "f, " + vy + "f)");
         assertEquals(0f, hit.t(), () -> "moving in from a touch: " + p + " moving by (" + vx + "f, " + vy + "f)");
+    }
+
+    /** The shapes of a pair: kinds, turned or not, the direction they touch along, sizes. */
+    record Kinds(Kind mover, boolean moverTurned, Kind obstacle, boolean obstacleTurned, int direction, double angle,
+                 int moverSize, int obstacleSize) {
+    }
+
+    /** A pair's shapes and where they are: near the origin (where = 0, at (px, py)) or 1e4 to 1e5 out. */
+    record Setup(Kinds kinds, int seed, int where, int px, int py) {
+        Pair pair(int stepsApart) {
+            return Pair.make(kinds.mover, kinds.moverTurned, kinds.obstacle, kinds.obstacleTurned, kinds.direction,
+                    kinds.angle, kinds.moverSize, kinds.obstacleSize, seed, where, px, py, stepsApart);
+        }
+    }
+
+    @Provide
+    Arbitrary<Setup> setups() {
+        Arbitrary<Kind> kind = Arbitraries.of(Kind.class);
+        Arbitrary<Boolean> turned = Arbitraries.of(true, false);
+        Arbitrary<Integer> size = Arbitraries.integers().between(2, 60);
+        Arbitrary<Integer> near = Arbitraries.integers().between(-300, 300);
+        Arbitrary<Kinds> kinds = Combinators.combine(kind, turned, kind, turned, Arbitraries.integers().between(0, 11),
+                Arbitraries.doubles().between(0, 6.3), size, size).as(Kinds::new);
+        return Combinators.combine(kinds, Arbitraries.integers().between(0, 1_000_000), Arbitraries.integers().between(0, 2),
+                near, near).as(Setup::new);
     }
 
     /**

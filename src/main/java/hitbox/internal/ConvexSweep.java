@@ -35,7 +35,7 @@ import java.util.List;
  *
  * <p>Two convex polygons go the exact way instead, {@link ConvexPolygonSweep}.
  *
- * <p>This class is longer than most (about 490 lines) because the advancement, the line that
+ * <p>This class is longer than most (about 480 lines) because the advancement, the line that
  * decides whether a pair meets at all and the look-back over the float positions all read
  * the same pieces through the same separating-direction search; apart, each would carry a
  * copy of it.
@@ -407,20 +407,10 @@ public final class ConvexSweep {
                 by = ny;
             }
         }
-        double e = Math.hypot(ex, ey);
-        for (int sign = -1; sign <= 1 && e > 0; sign += 2) {
-            // The swept hull's sides, along the motion: the line of a path that slides along
-            // a face or past a corner.
-            double nx = sign * ey / e, ny = -sign * ex / e;
-            double g = gap(a, b, dx, dy, ex, ey, nx, ny);
-            if (g > best) {
-                best = g;
-                bx = nx;
-                by = ny;
-                ring = false;
-            }
-        }
-        for (Object piece : new Object[] {a, b}) {
+        // The pieces' edge normals, and a swept hull's sides (the motion, as an edge): the line
+        // of a path that slides along a face or past a corner.
+        Object[] outlines = ex == 0 && ey == 0 ? new Object[] {a, b} : new Object[] {a, b, new double[] {0, 0, ex, ey}};
+        for (Object piece : outlines) {
             double[] xy = edges(piece);
             int m = xy.length / 2;
             for (int i = 0; i < m && m > 1; i++) {
