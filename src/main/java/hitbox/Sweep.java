@@ -29,14 +29,23 @@ import hitbox.internal.*;
  * exact entry decides; two boxes need no visit, their float overlap is one interval), and the
  * searched pairs and two convex polygons look back the same way from the walk's answer.
  * Whether there is a hit at all is the exact path's decision: a path
- * that misses exactly is no hit, even where rounding puts a float position a hair inside.
+ * that misses exactly is no hit, even where rounding puts a float position a hair inside,
+ * so a mover that touches the obstacle (or is a hair from it) and moves away, against the
+ * contact normal or along the face, is never stopped. For the pairs found by conservative
+ * advancement (ellipses, capsules, a polygon with anything but a convex polygon) the exact
+ * path is decided by a separating line: one that keeps the obstacle on one side and every
+ * position of the mover along the motion on the other rules the hit out, a path entering
+ * less than 2^-40 of the shapes' size deep counting as clear (the rounding of that search in
+ * double; between two shapes without area, and for a shape without area against a concave
+ * polygon, the line must leave a gap that large, and closer paths are left to the float
+ * positions).
  * The one exception: a mover that touches the obstacle at the start and moves
  * into it gets {@code t = 0} exactly, as {@link Hit} promises, not the hair above 0 at which
  * its float position has not yet moved: for the exact pairs (circles, rectangles, segments,
  * two convex polygons) its exact entry is 0, which decides before any float is tried; for
- * the pairs found by conservative advancement, a start within 1e-6 pixels, closing in,
- * whose last clear float has moved the mover by no more than a float step of its largest
- * coordinate. If the float positions never overlap
+ * the pairs found by conservative advancement, a start within 1e-6 pixels whose path goes
+ * on into the obstacle, and whose last clear float has moved the mover by no more than a
+ * float step of its largest coordinate. If the float positions never overlap
  * during the motion although the exact path does (a graze thinner than a float step), the
  * hit is reported with {@code t = 1}.
  *

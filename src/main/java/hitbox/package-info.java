@@ -140,9 +140,12 @@
  * </ul>
  *
  * <h2 id="tolerances">Tolerances</h2>
- * One yes-or-no answer depends on a tolerance, and only for curved pairs whose exact answer
- * is a root of a quartic: {@link hitbox.Shape#contains(hitbox.Shape)} (see the stopping rules
- * below); no other does. The ones Hitbox has are named, and each says
+ * Two yes-or-no answers depend on a tolerance: {@link hitbox.Shape#contains(hitbox.Shape)},
+ * only for curved pairs whose exact answer is a root of a quartic (see the stopping rules
+ * below), and whether a sweep found by conservative advancement (ellipses, capsules, a
+ * polygon with anything but a convex polygon) hits at all: a path entering the obstacle
+ * less than 2^-40 of the shapes' size deep is a graze, no hit (see
+ * <a href="Sweep.html#t">what t promises</a>); no other does. The ones Hitbox has are named, and each says
  * why in the source:
  * <ul>
  *   <li>Public: {@link hitbox.Contact#UNIT_TOLERANCE} (how far from 1 a hand-made contact's

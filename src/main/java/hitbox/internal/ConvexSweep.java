@@ -22,7 +22,23 @@ import java.util.List;
  * the pair never meets. The advancement stops within {@link #TOUCH} of contact: an entry
  * time in double that is never later than the real one.
  *
+ * <p>Coming within TOUCH is not yet a hit: a path that starts touching and moves away, or
+ * slides along a face, or passes a hair from the obstacle, comes that close and never
+ * overlaps, while rounding of its float positions can still put one a hair inside. Whether
+ * the pair meets at all is the exact path's decision (Sweep's class doc), made here by a line
+ * ({@code passes}): if one keeps the obstacle's piece on one side and the mover's piece, at
+ * every time from the entry to the end, on the other, the insides never overlap and the pair
+ * is no hit; only a path that enters deeper than {@link Tolerance#SWEEP_PASSES} of the
+ * shapes' size (the rounding of the search in double) goes on to the float positions. (Where
+ * touching is meeting, between two shapes without area or for one without area against the
+ * pieces of a concave polygon, the line must leave a gap of that size instead.)
+ *
  * <p>Two convex polygons go the exact way instead, {@link ConvexPolygonSweep}.
+ *
+ * <p>This class is longer than most (about 480 lines) because the advancement, the line that
+ * decides whether a pair meets at all and the look-back over the float positions all read
+ * the same pieces through the same separating-direction search; apart, each would carry a
+ * copy of it.
  *
  * <p>From each pair's entry, {@link SweptPairs#lastClear} finds the promised float t on the
  * real shapes, moved as a sketch moves them ({@code x + t * vx} in float) and tested by
@@ -39,6 +55,14 @@ public final class ConvexSweep {
     public static final double TOUCH = 1e-6;
     private static final int MAX_STEPS = 500;
     private static final int DIRECTIONS = 32;
+    /** The golden-section steps of the advancement's direction search (each safe, so few). */
+    private static final int STEPS = 50;
+    /**
+     * The steps of {@link #passes}' search, to the width {@link Tolerance#SWEEP_ANGLE}: where
+     * a path slides along a curved face the best direction is a kink, and the clearance it
+     * gives falls off as the motion times the angle missed.
+     */
+    private static final int PASS_STEPS = 90;
 
     /** The hit of a mover moving by (vx, vy) into the obstacle (both valid), or null. */
     public static Hit timeOfImpact(Shape mover, float vx, float vy, Shape obstacle) {
@@ -83,11 +107,22 @@ public final class ConvexSweep {
         float best = Float.POSITIVE_INFINITY;
         double bx = 0, by = 0;
         double[] normal = new double[2];
-        for (Object a : pieces(mover)) {
-            for (Object b : pieces(obstacle)) {
+        List<Object> movers = pieces(mover), obstacles = pieces(obstacle);
+        // A line that keeps one pair of pieces apart rules the pair out (see passes), touching
+        // included where one shape has area (its inside is open). Not so between two shapes
+        // without (two segments that touch collide: they are closed), nor for a shape without
+        // area against the pieces of a concave polygon (it can run along the line two pieces
+        // share, inside the polygon and in neither piece): there the line must leave a gap.
+        boolean moverArea = ShapeKind.hasInside(mover), obstacleArea = ShapeKind.hasInside(obstacle);
+        boolean open = (moverArea || obstacleArea) && (obstacles.size() == 1 || moverArea)
+                && (movers.size() == 1 || obstacleArea);
+        double size = size(mover, vx, vy) + size(obstacle, 0, 0);
+        double clearance = (open ? -Tolerance.SWEEP_PASSES : Tolerance.SWEEP_PASSES) * size;
+        for (Object a : movers) {
+            for (Object b : obstacles) {
                 double te = entry(a, b, vx, vy, normal);
-                if (te > 1) {
-                    continue;
+                if (te > 1 || passes(a, b, te, vx, vy, clearance, normal)) {
+                    continue;  // never within TOUCH, or within it but the path goes on clear
                 }
                 float t = SweptPairs.lastClear(te, overlapAt);
                 if (te == 0 && t > 0 && t < 1 && withinRounding(mover, t * vx, t * vy)) {
@@ -109,6 +144,38 @@ public final class ConvexSweep {
             }
         }
         return best <= 1 ? SweptPairs.hit(best, bx, by) : null;
+    }
+
+    /**
+     * Does piece a, moving on from time te (where the advancement came within {@link #TOUCH}
+     * of piece b) to the end of the motion, stay clear of b: is there a line with b on one
+     * side and every position of a from te to 1 on the other, so that the insides never
+     * overlap? That is the exact path's decision (Sweep's class doc): a path that only comes
+     * near (a graze), or that starts touching and moves away (against the contact normal, or
+     * along a face), is no hit, however rounding moves the float positions. The line is the
+     * best separating direction of the obstacle and the mover's swept hull (a at te and at
+     * 1 and everything between, whose reach along n is a's plus the larger of the two moves
+     * along n), searched as the advancement searches, with the sweep's own sides among the
+     * candidates; clear if the gap along it is at least {@code clearance}: minus
+     * {@link Tolerance#SWEEP_PASSES} of the shapes' size (the rounding of the doubles the
+     * reaches are summed in) where touching is not meeting, plus as much where it is. Any
+     * direction gives a lower bound on the true separation, so a path that really enters the
+     * obstacle deeper than that is never passed: no tunnelling. {@code normal} is left as it
+     * was (the search's direction goes through it, so that no array is made).
+     */
+    private static boolean passes(Object a, Object b, double te, float vx, float vy, double clearance, double[] normal) {
+        double nx = normal[0], ny = normal[1];
+        double rest = 1 - te;
+        double clear = separation(a, b, te * vx, te * vy, rest * vx, rest * vy, normal, PASS_STEPS);
+        normal[0] = nx;
+        normal[1] = ny;
+        return clear >= clearance;
+    }
+
+    /** The shape's largest coordinate (by size) plus the motion's: the scale of its reaches' rounding. */
+    private static double size(Shape s, float vx, float vy) {
+        return Math.max(Math.max(Math.abs(s.minX()), Math.abs(s.maxX())), Math.max(Math.abs(s.minY()), Math.abs(s.maxY())))
+                + Math.abs(vx) + Math.abs(vy);
     }
 
     /**
@@ -298,7 +365,7 @@ public final class ConvexSweep {
         double t = 0;
         double[] n = new double[2];
         for (int step = 0; step < MAX_STEPS; step++) {
-            double gap = separation(a, b, sx + t * vx, sy + t * vy, n);
+            double gap = separation(a, b, sx + t * vx, sy + t * vy, 0, 0, n, STEPS);
             normal[0] = n[0];
             normal[1] = n[1];
             if (gap <= within) {
@@ -322,31 +389,37 @@ public final class ConvexSweep {
     /**
      * The best gap found between piece a moved by (dx, dy) and piece b: the largest
      * {@code least_b(n) - most_a(n)} over a ring of directions and both pieces' edge normals,
-     * the best ring direction refined by golden-section search. A lower bound on the distance
-     * (negative when they overlap); its direction goes into {@code n}.
+     * the best ring direction refined by golden-section search in up to {@code steps} steps.
+     * A lower bound on the distance (negative when they overlap); its direction goes into
+     * {@code n}. With (ex, ey) not 0, a is swept on from there by (ex, ey) (its hull from
+     * the one place to the other, see {@link #gap}), and the sweep's sides are candidates too.
      */
-    private static double separation(Object a, Object b, double dx, double dy, double[] n) {
+    private static double separation(Object a, Object b, double dx, double dy, double ex, double ey, double[] n,
+                                      int steps) {
         double best = Double.NEGATIVE_INFINITY, bx = 1, by = 0;
         boolean ring = true;
         for (int i = 0; i < DIRECTIONS; i++) {
             double nx = Math.cos(2 * Math.PI * i / DIRECTIONS), ny = Math.sin(2 * Math.PI * i / DIRECTIONS);
-            double g = gap(a, b, dx, dy, nx, ny);
+            double g = gap(a, b, dx, dy, ex, ey, nx, ny);
             if (g > best) {
                 best = g;
                 bx = nx;
                 by = ny;
             }
         }
-        for (Object piece : new Object[] {a, b}) {
+        // The pieces' edge normals, and a swept hull's sides (the motion, as an edge): the line
+        // of a path that slides along a face or past a corner.
+        Object[] outlines = ex == 0 && ey == 0 ? new Object[] {a, b} : new Object[] {a, b, new double[] {0, 0, ex, ey}};
+        for (Object piece : outlines) {
             double[] xy = edges(piece);
             int m = xy.length / 2;
             for (int i = 0; i < m && m > 1; i++) {
                 int j = (i + 1) % m;
-                double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = Math.hypot(ex, ey);
+                double fx = xy[2 * j] - xy[2 * i], fy = xy[2 * j + 1] - xy[2 * i + 1], len = Math.hypot(fx, fy);
                 if (len > 0) {
                     for (int sign = -1; sign <= 1; sign += 2) {
-                        double nx = sign * ey / len, ny = -sign * ex / len;
-                        double g = gap(a, b, dx, dy, nx, ny);
+                        double nx = sign * fy / len, ny = -sign * fx / len;
+                        double g = gap(a, b, dx, dy, ex, ey, nx, ny);
                         if (g > best) {
                             best = g;
                             bx = nx;
@@ -362,7 +435,8 @@ public final class ConvexSweep {
             // seldom an edge normal): still a lower bound, since every direction's gap is one.
             double lo = Math.atan2(by, bx) - 2 * Math.PI / DIRECTIONS, hi = lo + 4 * Math.PI / DIRECTIONS;
             // The largest gap is the least of its negative.
-            double[] r = Golden.least(t -> -gap(a, b, dx, dy, Math.cos(t), Math.sin(t)), lo, hi, 50, Tolerance.SWEEP_ANGLE);
+            double[] r = Golden.least(t -> -gap(a, b, dx, dy, ex, ey, Math.cos(t), Math.sin(t)), lo, hi, steps,
+                    Tolerance.SWEEP_ANGLE);
             double m = r[0], g = -r[1];
             if (g > best) {
                 best = g;
@@ -386,9 +460,13 @@ public final class ConvexSweep {
         return new double[0];
     }
 
-    /** How far apart along unit n: b's least reach minus a's greatest, a moved by (dx, dy). */
-    private static double gap(Object a, Object b, double dx, double dy, double nx, double ny) {
-        return -reach(b, -nx, -ny) - (reach(a, nx, ny) + dx * nx + dy * ny);
+    /**
+     * How far apart along unit n: b's least reach minus a's greatest, a moved by (dx, dy) and
+     * swept on from there by (ex, ey) (its reach the larger of the two places'; (0, 0): a
+     * in one place).
+     */
+    private static double gap(Object a, Object b, double dx, double dy, double ex, double ey, double nx, double ny) {
+        return -reach(b, -nx, -ny) - (reach(a, nx, ny) + dx * nx + dy * ny + Math.max(0, ex * nx + ey * ny));
     }
 
     /** How far the piece reaches along (nx, ny). */

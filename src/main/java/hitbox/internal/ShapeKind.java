@@ -38,6 +38,25 @@ public enum ShapeKind {
     POLYGON;
 
     /**
+     * Has this shape an inside (area), in the package's touching rule? Its kind's
+     * {@link #hasArea()}, and a size in every direction: a circle, rectangle, ellipse or
+     * capsule of size 0 has none.
+     *
+     * @param shape the shape, not null
+     * @return true if it has an inside
+     */
+    public static boolean hasInside(Shape shape) {
+        return switch (of(shape)) {
+            case ELLIPSE -> ((Ellipse) shape).rx() > 0 && ((Ellipse) shape).ry() > 0;
+            case CAPSULE -> ((Capsule) shape).r() > 0;
+            case CIRCLE -> ((Circle) shape).r() > 0;
+            case RECT -> ((Rect) shape).w() > 0 && ((Rect) shape).h() > 0;
+            case SEGMENT -> false;
+            case POLYGON -> true;
+        };
+    }
+
+    /**
      * The shape's kind.
      *
      * @param shape the shape, not null

@@ -7,7 +7,9 @@ package hitbox.internal;
  * <p>None of them decides a touching case but {@code Containment.CONTAINMENT}, for the curved
  * pairs of {@link Shape#contains(Shape)} whose exact answer is a quartic's root (an ellipse
  * against a circle, a capsule or an ellipse): there a pair within it of touching from
- * inside counts as held. They are of four kinds:
+ * inside counts as held; and {@link #SWEEP_PASSES}, for the sweeps found by conservative
+ * advancement: a path that enters the obstacle less deep than it counts as clear. They are
+ * of four kinds:
  * <ul>
  *   <li><b>Guard bands</b> around a double comparison whose rounding is bounded: outside the
  *       band the double answer is sure; inside it an exact (or slower, exact-enough) test
@@ -176,6 +178,17 @@ public final class Tolerance {
      * any direction gives a safe step, so this only buys a longer one.
      */
     public static final double SWEEP_ANGLE = 1e-13;
+
+    /**
+     * How far into the obstacle, relative to the shapes' size (their largest coordinate plus
+     * the motion), the swept hull of a mover found by conservative advancement may reach and
+     * still count as clear of it ({@code ConvexSweep.passes}): the rounding of the reaches,
+     * summed in double (a few units in 2^-52 of the size), and of the angle search at a kink
+     * ({@link #SWEEP_ANGLE} times the motion). A path that enters no deeper than this
+     * is a graze, no hit (about 1/100,000 of a float step of the size). Where touching is
+     * meeting (two shapes without area), the hull must keep this far off instead.
+     */
+    public static final double SWEEP_PASSES = 0x1p-40;
 
     /**
      * Where {@link CurvedClearance}'s angle search stops, in radians: far below what its

@@ -79,18 +79,6 @@ public final class TurnedEllipses {
         return new Segment((float) (e.x() - hx), (float) (e.y() - hy), (float) (e.x() + hx), (float) (e.y() + hy));
     }
 
-    /** Has the shape an inside (area)? */
-    private static boolean hasArea(Shape s) {
-        return switch (ShapeKind.of(s)) {
-            case ELLIPSE -> ((Ellipse) s).rx() > 0 && ((Ellipse) s).ry() > 0;
-            case CAPSULE -> ((Capsule) s).r() > 0;
-            case CIRCLE -> ((Circle) s).r() > 0;
-            case RECT -> ((Rect) s).w() > 0 && ((Rect) s).h() > 0;
-            case SEGMENT -> false;
-            case POLYGON -> true;
-        };
-    }
-
     /**
      * A turned ellipse (not {@link #aligned}) against any shape, or an aligned one against a
      * turned ellipse: the other shape taken into the turned one's frame in double, where the
@@ -176,7 +164,7 @@ public final class TurnedEllipses {
      * area only by crossing it properly, like two flat rectangles in a plus sign.
      */
     private static boolean flat(Segment s, Shape other) {
-        if (hasArea(other)) {
+        if (ShapeKind.hasInside(other)) {
             return Overlaps.test(s, other);
         }
         Segment o = switch (ShapeKind.of(other)) {
