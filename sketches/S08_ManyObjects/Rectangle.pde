@@ -1,17 +1,17 @@
-// The tutorial's obstacle class (its Rectangle): where an obstacle is and how big, plus how
-// long to show it red after it blocked the box.
-class Obstacle {
+// The tutorial's Rectangle class, with its field names: where an obstacle is and how big,
+// plus how long to show it red after it flipped the box's speed.
+class Rectangle {
   float x;
   float y;
-  float w;
-  float h;
+  float rectWidth;
+  float rectHeight;
   int litUntil = 0;   // red until the box has moved this many frames
 
-  Obstacle(float x, float y, float w, float h) {
+  Rectangle(float x, float y, float rectWidth, float rectHeight) {
     this.x = x;
     this.y = y;
-    this.w = w;
-    this.h = h;
+    this.rectWidth = rectWidth;
+    this.rectHeight = rectHeight;
   }
 
   // It blocked the box's move: light up for 12 frames.
@@ -23,14 +23,8 @@ class Obstacle {
     return moves < litUntil;
   }
 
-  // Does a box at (bx, by), bw x bh, overlap this obstacle? The rectangle/rectangle test.
+  // Does a box at (bx, by), bw x bh, overlap this rectangle? The rectangle/rectangle test.
   boolean overlaps(float bx, float by, float bw, float bh) {
-    return Collide.rectRect(bx, by, bw, bh, x, y, w, h);
-  }
-
-  void draw() {
-    noStroke();
-    fill(lit() ? Palette.HIT : Palette.OBSTACLE);
-    rect(x, y, w, h);
+    return Collide.rectRect(bx, by, bw, bh, x, y, rectWidth, rectHeight);
   }
 }
