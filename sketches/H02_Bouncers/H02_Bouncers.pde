@@ -11,10 +11,13 @@
  *
  * Random obstacles overlap and leave gaps narrower than one move, where a flip inside the loop
  * can send a bouncer into an obstacle (S08 shows that): the count at the bottom left says how
- * many are caught inside one now. Press l for Hitbox's loop (Hitbox.pde): each bouncer asks every obstacle
+ * many are caught inside one now. Either way that is 100 x 100 = 10,000 bouncer-obstacle
+ * pairs a frame, a few comparisons each: far below a millisecond, so no grid or other broad
+ * phase is needed.
+ *
+ * Where Hitbox differs: press l for its loop (Hitbox.pde): each bouncer asks every obstacle
  * first (Motion.rectBlocked), combines the answers, reverses once and moves only where it is
- * free. Either way that is 100 x 100 = 10,000 bouncer-obstacle pairs a frame, a few
- * comparisons each: far below a millisecond, so no grid or other broad phase is needed.
+ * free, so none is ever caught.
  *
  * Everything random comes from randomSeed, so every run is the same.
  *

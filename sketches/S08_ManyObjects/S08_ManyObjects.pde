@@ -10,9 +10,11 @@
  * It reverses a speed as soon as one rectangle blocks it, and the rectangles after it test
  * the reversed speed. Press s to put the box in the slot between two pillars, only 2 pixels
  * wider than the box: one pillar flips the speed and the other flips it back, so the box
- * moves into a pillar and stays there, flickering. Press l for Hitbox's loop (Hitbox.pde): it
- * asks every rectangle first (Motion.rectBlocked), combines the answers, reverses once, and
- * asks again before it moves, so a box with nowhere to go waits a frame.
+ * moves into a pillar and stays there, flickering.
+ *
+ * Where Hitbox differs: because of that. Press l for Hitbox's loop (Hitbox.pde): it asks
+ * every rectangle first (Motion.rectBlocked), combines the answers, reverses once, and asks
+ * again before it moves, so a box with nowhere to go waits a frame.
  *
  * Try this (the tutorial's): click to add a rectangle, mousePressed below; build another
  * narrow slot and watch both loops in it.

@@ -7,7 +7,7 @@
  * starting at 10, 10; and each arrow key has its own if: not in the edge row or column, and
  * the cell it would step into not an obstacle? No geometry at all. That code runs here.
  *
- * Press l for Hitbox's Grid instead (Hitbox.pde). It differs twice: outside the map counts as
+ * Where Hitbox differs: press l for its Grid instead (Hitbox.pde). It differs twice: outside the map counts as
  * solid, so one call, maze.canMove(column, row, dColumn, dRow), does the edge checks too; and
  * fillRandom makes exactly 20% of the cells solid and keeps the player's cell free, because
  * the tutorial's coin flip per cell gives a different count every time and can put an

@@ -15,7 +15,7 @@
  * looks at the cells under the box's next position, one axis at a time (section 6), and snaps
  * to the edge of the cell it would enter (section 7).
  *
- * Press l for Hitbox's grid.move(player, vx, vy): it sweeps the box through the cells under
+ * Where Hitbox differs: press l for its grid.move(player, vx, vy): it sweeps the box through the cells under
  * its whole path, stops it touching the first obstacle and slides it along. A look at one next
  * position lets a move longer than a platform is thick step right over it; the sweep never
  * tunnels. In both, touching is not colliding (running along a floor never catches on the
