@@ -100,7 +100,7 @@ void draw() {
   if (showMaths) {
     drawMaths(crossed);
   }
-  Overlay.hint(g, "w wrap   n next screen   g game over   s stop   space: serve   l: Hitbox's Edges / the ifs   d: show the maths");
+  Overlay.hint(g, "w wrap   n next screen   g game over   s stop   space: serve   l: Hitbox's Edges   d: the maths");
 }
 
 void keyPressed() {

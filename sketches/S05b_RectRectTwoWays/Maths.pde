@@ -132,6 +132,11 @@ void drawRectangles(boolean colliding, boolean hitboxSays) {
   }
 }
 
+/** A number as short as it can be written: 430, or 430.5. */
+String whole(float v) {
+  return v == (int) v ? str((int) v) : Overlay.number(v);
+}
+
 String says(boolean colliding) {
   return colliding ? "colliding" : "not colliding";
 }
@@ -182,7 +187,7 @@ void drawForm(int form, String title, String[] lines, String[] ops, int[] lit, b
     fill(c);
     textAlign(LEFT, TOP);
     text(lines[i], x + 8, y);
-    text(Overlay.number(left[i]) + " " + ops[i] + " " + Overlay.number(right[i]), x + 262, y);
+    text(whole(left[i]) + " " + ops[i] + " " + whole(right[i]), x + 262, y);
     textAlign(RIGHT, TOP);
     text(holds ? "true" : "false", x + panelW - 8, y);
   }

@@ -78,13 +78,7 @@ class S02_CirclePointTest {
     @ParameterizedTest(name = "l pressed {0} times")
     @CsvSource({"0", "1", "2"})
     void mouseSweep_theColourFollowsTheTutorialsIf_orCollideCirclePointAfterL_andTheyAgree(int lPresses) {
-        Script script = new Script().frames(600);
-        for (int i = 0; i < lPresses; i++) {
-            script.key(1 + i, 'l');
-        }
-        for (int f = 4; f <= 600; f++) {
-            script.mouse(f, 150 + (f * 17) % 300, 60 + (f / 20) * 11 % 280);
-        }
+        Script script = SketchPixels.lThenMouse(600, lPresses, f -> new int[] {150 + (f * 17) % 300, 60 + (f / 20) * 11 % 280});
         int[] seen = {0, 0};
         SketchRun.Result<S02_CirclePoint> r = SketchRun.of(new S02_CirclePoint()).script(script).everyFrame(s -> {
             if (s.frameCount < 5) {

@@ -55,13 +55,7 @@ class S03_CircleCircleTest {
     @ParameterizedTest(name = "l pressed {0} times")
     @CsvSource({"0", "1", "2"})
     void mouseSweep_theColourFollowsTheTutorialsIf_orCollideCircleCircleAfterL_andTheyAgree(int lPresses) {
-        Script script = new Script().frames(600);
-        for (int i = 0; i < lPresses; i++) {
-            script.key(1 + i, 'l');
-        }
-        for (int f = 4; f <= 600; f++) {
-            script.mouse(f, 40 + (f * 17) % 520, 40 + (f / 20) * 11 % 320);
-        }
+        Script script = SketchPixels.lThenMouse(600, lPresses, f -> new int[] {40 + (f * 17) % 520, 40 + (f / 20) * 11 % 320});
         int[] seen = {0, 0};
         SketchRun.Result<S03_CircleCircle> r = SketchRun.of(new S03_CircleCircle()).script(script).everyFrame(s -> {
             if (s.frameCount < 5) {

@@ -58,13 +58,7 @@ class S05_RectRectTest {
     @ParameterizedTest(name = "l pressed {0} times")
     @CsvSource({"0", "1", "2"})
     void mouseSweep_theColourFollowsTheTutorialsIf_orCollideRectRectAfterL_andTheyAgree(int lPresses) {
-        Script script = new Script().frames(700);
-        for (int i = 0; i < lPresses; i++) {
-            script.key(1 + i, 'l');
-        }
-        for (int f = 4; f <= 700; f++) {
-            script.mouse(f, (f * 13) % 400, 60 + (f / 25) * 13 % 210);
-        }
+        Script script = SketchPixels.lThenMouse(700, lPresses, f -> new int[] {(f * 13) % 400, 60 + (f / 25) * 13 % 210});
         int[] seen = {0, 0};
         SketchRun.Result<S05_RectRect> r = SketchRun.of(new S05_RectRect()).script(script).everyFrame(s -> {
             if (s.frameCount < 5) {
