@@ -5,9 +5,9 @@
  * The tutorial writes the rectangle test twice, in its names rectOne and rectTwo. First as
  * "not colliding": four comparisons joined by || (rectOneRight < rectTwoLeft, or ...); an else
  * after it would be the collision. Then reversed: four comparisons joined by && that hold when
- * they ARE colliding. The video writes the same test in x, y, width and height, && first
- * (x1 < x2 + w2 && x1 + w1 > x2 && ...), then flips it to || and calls that "a bit more
- * efficient". All four run below every frame; the tutorial's && form colours rectTwo, and
+ * they ARE colliding. The video gives the same test in x, y, width and height, && first
+ * (x1 < x2 + w2 && x1 + w1 > x2 && ...: our names for its "x of rectangle 1" and so on), then
+ * flips it to || and calls that "a bit more efficient". All four run below every frame; the tutorial's && form colours rectTwo, and
  * Collide.rectRect runs beside it (l lets it pick the colour). The panels show the tutorial's
  * pair, or the video's (v): each comparison lights up as Java evaluates it (red: it points to
  * "colliding", green: to "not colliding"); grey ones were skipped, because && stops at the
