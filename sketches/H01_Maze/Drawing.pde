@@ -50,7 +50,7 @@ void drawPanel() {
   text(route.length == 0 ? "no route to the goal"
       : "route: " + (route.length - 1) + " steps,\ncost " + Overlay.number((float) costs.costOf(grid, route)), x, 140);
   fill(Palette.NEUTRAL);
-  text("moving " + (pixelMode ? "in pixels" : "cell by cell") + "\nplayer: col " + playerCol + ", row " + playerRow, x, 180);
+  text("moving " + (pixelMode ? "in pixels" : "cell by cell") + "\nplayer: col " + playerIndexX + ", row " + playerIndexY, x, 180);
   fill(seen ? Palette.HIT : Palette.MISS);
   text(seen ? "SEEN by a guard!" : "unseen", x, 220);
   fill(Palette.NEUTRAL);

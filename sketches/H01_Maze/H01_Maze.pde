@@ -4,10 +4,12 @@
  *
  * "Create a maze application. Try basing it off a map of your town. What would the obstacles
  * be?" Here the obstacles are buildings, and the town is a picture: data/town.png, 8 x 8
- * pixels a cell, read with Maps.fromImage through a colour key (townColours). Buildings are solid; parks
- * and the river are terrain you can cross, at a price. Walk the streets with the arrow keys,
- * one cell a step (Grid.canMove), or press p to move in pixels (Grid.move slides the player
- * along the walls). Click to set a goal: the cheapest route there is drawn (Grid.path with
+ * pixels a cell, read with Maps.fromImage through a colour key (townColours). Buildings are
+ * solid; parks and the river are terrain you can cross, at a price. Walk the streets with the
+ * arrow keys, one cell a step, by section 9's four ifs (keyPressed below: not at the edge, and
+ * the next cell not solid; l hands the step to Grid.canMove, the same question in one call),
+ * or press p to move in pixels (Grid.move slides the player along the walls; section 9 only
+ * names that hybrid, S09b writes it out). Click to set a goal: the cheapest route there is drawn (Grid.path with
  * PathCosts: a street costs 1, a park 2, the river 10, so the route takes a bridge). Two
  * guards walk their beats; a guard sees you when you are near and no building is in the
  * way (Grid.lineOfSight: touching a building's corner does not block the view).
@@ -21,8 +23,8 @@
  *
  * Try this: stand behind a corner and let a guard pass; make the river cheaper than the
  * detour to a bridge; give the guards a longer view.
- * Keys: arrows move, click sets the goal, p toggles cells / pixels, m toggles the picture /
- * text map, d shows the maths (the guards' view).
+ * Keys: arrows move, click sets the goal, l Grid.canMove / section 9's ifs, p toggles cells /
+ * pixels, m toggles the picture / text map, d shows the maths (the guards' view).
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -45,8 +47,9 @@ Grid grid;
 boolean fromPicture = true;
 
 // The player: a cell when walking cell by cell, a box when moving in pixels.
-int playerCol = 0;
-int playerRow = 25;
+int playerIndexX = 0;
+int playerIndexY = 25;
+boolean hitboxDecides = false;  // l: Grid.canMove checks the steps instead of section 9's ifs
 boolean pixelMode = false;
 Rect box;
 float boxSpeed = 2;
@@ -75,27 +78,6 @@ void setup() {
   loadTown();
 }
 
-// Reads the town from the picture or the text, with cells as big as fit the map area.
-void loadTown() {
-  if (fromPicture) {
-    PImage picture = loadImage("town.png");
-    float cell = cellSize(picture.width / PIXELS_PER_CELL, picture.height / PIXELS_PER_CELL);
-    grid = Maps.fromImage(picture, PIXELS_PER_CELL, townColours, cell);
-  } else {
-    String text = join(loadStrings("town.txt"), "\n");
-    Grid sized = Grid.parse(text);
-    grid = Grid.parse(text, cellSize(sized.cols(), sized.rows()));
-  }
-  grid.passable(PARK, RIVER);
-  playerCol = constrain(playerCol, 0, grid.cols() - 1);
-  playerRow = constrain(playerRow, 0, grid.rows() - 1);
-  placeBox();
-  guards.clear();
-  for (int[][] beat : guardBeats) {
-    guards.add(new Guard(beat));
-  }
-}
-
 void draw() {
   background(Palette.BACKGROUND);
   if (pixelMode) {
@@ -112,7 +94,7 @@ void draw() {
     sightings++;
   }
   seen = seenNow;
-  route = grid.path(playerCol, playerRow, goalCol, goalRow, costs);
+  route = grid.path(playerIndexX, playerIndexY, goalCol, goalRow, costs);
 
   drawTown();
   drawRoute();
@@ -130,16 +112,32 @@ void draw() {
     drawMaths();
   }
   drawPanel();
-  Overlay.hint(g, "d: the guards' view   arrows: move   click: goal   p: " + (pixelMode ? "cells" : "pixels")
+  Overlay.hint(g, "d: the guards' view   arrows: move   click: goal   l: " + (hitboxDecides ? "the ifs" : "canMove") + "   p: " + (pixelMode ? "cells" : "pixels")
       + "   m: " + (fromPicture ? "text map" : "picture map"));
 }
 
-// Pixel mode: the arrows held move the box, and Grid.move keeps it out of the buildings.
-void moveBox() {
-  float vx = ((rightDown ? 1 : 0) - (leftDown ? 1 : 0)) * boxSpeed;
-  float vy = ((downDown ? 1 : 0) - (upDown ? 1 : 0)) * boxSpeed;
-  Sweep.Move m = grid.move(box, vx, vy);
-  box = new Rect(m.x(), m.y(), box.w(), box.h());
-  playerCol = grid.colAt(playerX());
-  playerRow = grid.rowAt(playerY());
+void keyPressed() {
+  if (key != CODED || pixelMode || hitboxDecides) {
+    otherKeys();   // Keys.pde
+    return;
+  }
+  //section 9's moves: not at the edge of the map, and the cell next door not solid
+  if (keyCode == UP) {
+    if (playerIndexY > 0 && !grid.isSolid(playerIndexX, playerIndexY - 1)) {
+      playerIndexY--;
+    }
+  } else if (keyCode == DOWN) {
+    if (playerIndexY < grid.rows() - 1 && !grid.isSolid(playerIndexX, playerIndexY + 1)) {
+      playerIndexY++;
+    }
+  } else if (keyCode == LEFT) {
+    if (playerIndexX > 0 && !grid.isSolid(playerIndexX - 1, playerIndexY)) {
+      playerIndexX--;
+    }
+  } else if (keyCode == RIGHT) {
+    if (playerIndexX < grid.cols() - 1 && !grid.isSolid(playerIndexX + 1, playerIndexY)) {
+      playerIndexX++;
+    }
+  }
+  placeBox();   // the player's box follows its cell (Player.pde)
 }

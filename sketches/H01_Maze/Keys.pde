@@ -1,4 +1,4 @@
-// The mouse sets a goal; the keys move the player and switch modes.
+// The mouse sets a goal; the keys switch modes, and move the player in pixels or with l.
 
 void mousePressed() {
   int c = grid.colAt(mouseX);
@@ -9,8 +9,12 @@ void mousePressed() {
   }
 }
 
-void keyPressed() {
-  if (key == 'd') {
+// Every key but section 9's arrows (the first tab): l, p, m, d, and the arrows in pixel mode
+// or with Grid.canMove.
+void otherKeys() {
+  if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
+  } else if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == 'p') {
     pixelMode = !pixelMode;
@@ -51,11 +55,12 @@ void setArrow(int code, boolean down) {
   }
 }
 
-// Cell mode: one step along the map, if the cell next door can be walked into.
+// Cell mode with l: one step along the map, if Grid.canMove says the cell next door can be
+// walked into.
 void step(int dc, int dr) {
-  if (grid.canMove(playerCol, playerRow, dc, dr)) {
-    playerCol += dc;
-    playerRow += dr;
+  if (grid.canMove(playerIndexX, playerIndexY, dc, dr)) {
+    playerIndexX += dc;
+    playerIndexY += dr;
     placeBox();
   }
 }

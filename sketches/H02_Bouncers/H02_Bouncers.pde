@@ -3,23 +3,27 @@
  * Homework 2: 100 obstacles, 100 bouncers
  *
  * The homework: a hundred randomly placed obstacles, a hundred random rectangles that bounce
- * off them, and a new colour for a bouncer each time it hits one. It is section 8 twice over:
- * a loop over the bouncers, and inside it section 8's loop over the obstacles.
+ * off them, and a new colour for a bouncer each time it hits one. The homework gives no code;
+ * here it is section 8's program twice over, and that runs by default: a loop over the
+ * bouncers, and inside it section 8's loop over the obstacles, which flips a speed as soon as
+ * one obstacle blocks the next move; then the window's edges, tested where the bouncer is as
+ * section 6 tests them.
  *
- * Where Hitbox differs: each bouncer asks every obstacle first, combines the answers
- * (Motion.rectBlocked, once per obstacle), then reverses once and moves only where it is
- * free. The tutorial flips a speed inside the loop instead, but random obstacles overlap and
- * leave gaps narrower than one move, where a flip inside the loop can send a bouncer into an
- * obstacle (S08 shows that). Press t for section 8's own loop, flip and all, and watch the
- * count of bouncers caught inside an obstacle. That is 100 x 100 = 10,000 bouncer-obstacle
+ * Random obstacles overlap and leave gaps narrower than one move, where a flip inside the loop
+ * can send a bouncer into an obstacle (S08 shows that): the count at the bottom left says how
+ * many are caught inside one now. Either way that is 100 x 100 = 10,000 bouncer-obstacle
  * pairs a frame, a few comparisons each: far below a millisecond, so no grid or other broad
  * phase is needed.
+ *
+ * Where Hitbox differs: press l for its loop (Hitbox.pde): each bouncer asks every obstacle
+ * first (Motion.rectBlocked), combines the answers, reverses once and moves only where it is
+ * free, so none is ever caught.
  *
  * Everything random comes from randomSeed, so every run is the same.
  *
  * Try this: make it 1,000 bouncers; make the obstacles bigger until the bouncers are trapped
  * in pockets; give every bouncer the same speed and see patterns appear.
- * Keys: t section 8's loop / Hitbox's, d shows the maths (counts, and bouncer 0's
+ * Keys: l Hitbox's loop / section 8's, d shows the maths (counts, and bouncer 0's
  * next-position boxes).
  */
 import hitbox.*;
@@ -34,7 +38,7 @@ ArrayList<Bouncer> bouncers = new ArrayList<Bouncer>();
 int[] glow;       // frames left to show each obstacle red after a hit
 int hitsThisFrame = 0;
 int totalHits = 0;
-boolean tutorialLoop = false;   // t: section 8's own loop, which flips inside the loop
+boolean hitboxDecides;  // l: Hitbox's loop (combine, reverse once) instead of section 8's
 
 void setup() {
   size(600, 400);
@@ -59,25 +63,40 @@ void draw() {
   background(Palette.BACKGROUND);
   hitsThisFrame = 0;
   for (Bouncer b : bouncers) {
-    if (tutorialLoop) {
-      tutorialStep(b);
+    if (hitboxDecides) {
+      hitboxStep(b);   // Hitbox.pde
       continue;
     }
-    // Section 8's loop for this bouncer: ask every obstacle, combine the answers.
-    int blocked = Motion.NONE;
+    boolean hit = false;
+    //iterate over the obstacles: section 8's loop, for this bouncer
     for (int i = 0; i < obstacles.size(); i++) {
       Rect o = obstacles.get(i);
-      int answer = Motion.rectBlocked(b.x, b.y, size, size, b.vx, b.vy, o.x(), o.y(), o.w(), o.h());
-      if (answer != Motion.NONE) {
+      //check X movement bounce
+      if (b.x + size + b.vx > o.x() && b.x + b.vx < o.x() + o.w() && b.y + size > o.y() && b.y < o.y() + o.h()) {
+        b.vx *= -1;
         glow[i] = 10;
+        hit = true;
       }
-      blocked |= answer;
+      //check Y movement bounce
+      if (b.x + size > o.x() && b.x < o.x() + o.w() && b.y + size + b.vy > o.y() && b.y + b.vy < o.y() + o.h()) {
+        b.vy *= -1;
+        glow[i] = 10;
+        hit = true;
+      }
     }
-    if (blocked != Motion.NONE) {
+    //bounce off the edges of the window, where the bouncer is now, as section 6 does
+    if (b.x < 0 || b.x + size > width) {
+      b.vx *= -1;
+    }
+    if (b.y < 0 || b.y + size > height) {
+      b.vy *= -1;
+    }
+    if (hit) {
       b.changeColour();   // the homework: a hit changes its colour
       hitsThisFrame++;
     }
-    b.bounce(blocked);    // reverse once, then move where it is free (Bouncer.pde)
+    b.x += b.vx;
+    b.y += b.vy;
   }
   totalHits += hitsThisFrame;
 
@@ -94,43 +113,9 @@ void draw() {
   drawMaths();   // Maths.pde: only with d
 }
 
-// Section 8's own loop for one bouncer: each obstacle that blocks the next move reverses that
-// speed there and then, and the obstacles after it test the reversed speed.
-void tutorialStep(Bouncer b) {
-  boolean hit = false;
-  for (int i = 0; i < obstacles.size(); i++) {
-    Rect o = obstacles.get(i);
-    // check X movement bounce
-    if (b.x + size + b.vx > o.x() && b.x + b.vx < o.right() && b.y + size > o.y() && b.y < o.bottom()) {
-      b.vx *= -1;
-      glow[i] = 10;
-      hit = true;
-    }
-    // check Y movement bounce
-    if (b.x + size > o.x() && b.x < o.right() && b.y + size + b.vy > o.y() && b.y + b.vy < o.bottom()) {
-      b.vy *= -1;
-      glow[i] = 10;
-      hit = true;
-    }
-  }
-  // The window's edges, as section 6 bounces off them.
-  if (b.x + b.vx < 0 || b.x + size + b.vx > width) {
-    b.vx *= -1;
-  }
-  if (b.y + b.vy < 0 || b.y + size + b.vy > height) {
-    b.vy *= -1;
-  }
-  if (hit) {
-    b.changeColour();
-    hitsThisFrame++;
-  }
-  b.x += b.vx;
-  b.y += b.vy;
-}
-
 void keyPressed() {
-  if (key == 't') {
-    tutorialLoop = !tutorialLoop;
+  if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
   } else if (key == 'd') {
     showMaths = !showMaths;
   }

@@ -3,13 +3,13 @@
 boolean showMaths = false;
 
 void drawMaths() {
-  Overlay.hint(g, "t: section 8's loop / Hitbox's   d: show the maths (counts, and bouncer 0's next-position boxes)");
-  if (tutorialLoop) {
+  Overlay.hint(g, "l: Hitbox's loop / section 8's   d: show the maths (counts, and bouncer 0's next-position boxes)");
+  if (!hitboxDecides) {
     int caught = 0;
     for (Bouncer b : bouncers) {
       caught += Hits.any(b.x, b.y, size, size, obstacles) ? 1 : 0;
     }
-    Overlay.label(g, 8, height - 48, "section 8's loop (t: Hitbox's): " + caught + " bouncers inside an obstacle now",
+    Overlay.label(g, 8, height - 48, "section 8's loop (l: Hitbox's): " + caught + " bouncers inside an obstacle now",
         caught > 0 ? Overlay.HIT : Overlay.TEXT);
   }
   if (!showMaths) {

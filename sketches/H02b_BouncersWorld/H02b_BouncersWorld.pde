@@ -12,9 +12,10 @@
  * met and the normal there; the sketch turns its speed round along that normal and changes
  * its colour.
  *
- * Layers keep the homework's rule that bouncers pass through each other: obstacles and
- * bouncers are in different categories, and a bouncer's mask takes obstacles and walls
- * only. Press b and the masks take bouncers too: they bounce off each other as well.
+ * The homework says nothing about bouncers meeting each other; H02, as section 8's loop
+ * does, lets them pass through each other, and so do the layers here: obstacles and bouncers
+ * are in different categories, and a bouncer's mask takes obstacles and walls only. Press b
+ * and the masks take bouncers too: they bounce off each other as well.
  *
  * Everything random comes from randomSeed, so every run is the same.
  *

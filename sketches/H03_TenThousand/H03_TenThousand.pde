@@ -2,8 +2,8 @@
  * 10,000 bouncers
  * Homework 2: 10,000 bouncers, through a broad phase
  *
- * Homework 2 a hundred times over: 10,000 small boxes bounce off each other, off 24 obstacles
- * and off the window. Testing every pair would be 50 million tests a frame. Instead, every
+ * Homework 2 a hundred times over: 10,000 small boxes bounce off 24 obstacles, off the window
+ * and, though the homework says nothing about bouncers meeting, off each other. Testing every pair would be 50 million tests a frame. Instead, every
  * frame each bouncer is put into a BroadPhase at its new place, and pairs() reports every
  * overlapping pair once: two bouncers coming together swap speeds (equal masses, an elastic
  * bounce), and a bouncer in an obstacle is pushed out the short way (Snap.pushOut) and turned

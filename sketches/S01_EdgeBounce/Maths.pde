@@ -34,11 +34,12 @@ void drawMaths() {
 
   float px = x < width / 2 ? width - 300 : 10;
   float py = y < height / 2 ? height - 134 : 32;
-  if (tutorialsCode) {
-    testLine(px, py, "x < left", x, "<", left, "xSpeed *= -1");
-    testLine(px, py + 22, "x > right", x, ">", right, "xSpeed *= -1");
-    testLine(px, py + 44, "y < top", y, "<", top, "ySpeed *= -1");
-    testLine(px, py + 66, "y > bottom", y, ">", bottom, "ySpeed *= -1");
+  if (!hitboxDecides) {
+    boolean window = right == width;
+    testLine(px, py, "x < " + Overlay.number(left), x, "<", left, "xSpeed *= -1");
+    testLine(px, py + 22, "x > " + (window ? "width" : Overlay.number(right)), x, ">", right, "xSpeed *= -1");
+    testLine(px, py + 44, "y < " + Overlay.number(top), y, "<", top, "ySpeed *= -1");
+    testLine(px, py + 66, "y > " + (window ? "height" : Overlay.number(bottom)), y, ">", bottom, "ySpeed *= -1");
   } else {
     testLine(px, py, "x - r < left", x - r, "<", left, "xSpeed = abs(xSpeed)");
     testLine(px, py + 22, "x + r > right", x + r, ">", right, "xSpeed = -abs(xSpeed)");

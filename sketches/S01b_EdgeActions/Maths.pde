@@ -31,6 +31,13 @@ void drawScene() {
   }
 }
 
+/** The ball went out at the left or the right: it stops, and GAME OVER is written. */
+void endGame() {
+  gameOver = true;
+  xSpeed = 0;
+  ySpeed = 0;
+}
+
 /** Serves again: the ball from the middle, to the side it did not go out of. */
 void serve() {
   gameOver = false;
@@ -56,7 +63,10 @@ void drawMaths(int crossed) {
   Overlay.guide(g, x, y - r, x, 0);
   Overlay.guide(g, x, y + r, x, height);
   String rule;
-  if (action.equals("wrap")) {
+  if (action.equals("wrap") && !hitboxDecides) {
+    rule = "the centre past the right, x > width (" + Overlay.number(x) + " > " + width + "): x = 0;\n"
+        + "past the left, x < 0: x = width; the same down the page";
+  } else if (action.equals("wrap")) {
     rule = "wholly out at the right, x - r > width (" + Overlay.number(x - r) + " > " + width + "),\n"
         + "it comes in at the left, at x = -r; the same at every edge (Edges.circleWrapX/Y)";
     // Where it is coming in (or going out) on the other side: the same ball, one loop away.
@@ -69,6 +79,9 @@ void drawMaths(int crossed) {
     rule = "the centre off the screen at the right, x > width: the next screen comes in,\n"
         + "screenX + 1, and x - width; the same at every edge. The centre now: ("
         + Overlay.number(x) + ", " + Overlay.number(y) + ")";
+  } else if (action.equals("game over") && !hitboxDecides) {
+    rule = "top, bottom: y < 0 || y > height (" + Overlay.number(y) + "): ySpeed *= -1\n"
+        + "left, right: x < 0 || x > width (" + Overlay.number(x) + "): game over";
   } else if (action.equals("game over")) {
     rule = "top, bottom: y - r < 0, y + r > height (" + Overlay.number(y - r) + ", " + Overlay.number(y + r) + "): bounce\n"
         + "left, right: x - r < 0, x + r > width (" + Overlay.number(x - r) + ", " + Overlay.number(x + r) + "): game over";

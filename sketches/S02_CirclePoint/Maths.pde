@@ -1,8 +1,14 @@
 // How close the mouse is, the answers, and the "show the maths" overlay (key d).
 
-/** One answer, written in its colour: "Collide.circlePoint: inside". */
-void answer(float x, float y, String who, boolean inside) {
-  Overlay.label(g, x, y, who + ": " + (inside ? "inside" : "outside"), inside ? Overlay.HIT : Overlay.MISS);
+/**
+ * Both answers, each in its colour, the one that picks the colour marked, and whether they
+ * agree (on the second line): "the tutorial's if: inside  (picks the colour)".
+ */
+void answers(String tutorials, boolean tutorialSays, String hitboxs, boolean hitboxSays, boolean hitboxDecides) {
+  Overlay.label(g, 8, 8, tutorials + ": " + (tutorialSays ? "inside" : "outside") + (hitboxDecides ? "" : "  (picks the colour)"),
+      tutorialSays ? Overlay.HIT : Overlay.MISS);
+  Overlay.label(g, 8, 30, hitboxs + ": " + (hitboxSays ? "inside" : "outside") + (hitboxDecides ? "  (picks the colour)" : "")
+      + (tutorialSays == hitboxSays ? ";  they agree" : ";  they DISAGREE"), hitboxSays ? Overlay.HIT : Overlay.MISS);
 }
 
 /**

@@ -3,14 +3,18 @@
  * Tutorial section 2: Circle/Point
  *
  * The tutorial says the circle/point test is useful for circular buttons. Here are four:
- * a button is under the mouse when the mouse is inside its circle, Collide.circlePoint
- * (the tutorial's dist(mouseX, mouseY, x, y) < r, compared squared). The button under the
- * mouse gets a white ring, and a click on it lights the lamp in its colour. A click in a
- * corner of a button's square misses it: that is why a round button needs the circle test.
+ * a button is under the mouse when the mouse is inside its circle, the tutorial's if,
+ * dist(mouseX, mouseY, buttonX[i], buttonY) < buttonRadius (overButton below; the tutorial
+ * gives no code for buttons, so the rest is ours). The button under the mouse gets a white
+ * ring, and a click on it lights the lamp in its colour. A click in a corner of a button's
+ * square misses it: that is why a round button needs the circle test. Hitbox's
+ * Collide.circlePoint (the same test, compared squared) runs beside it; press l and it
+ * decides instead. The top line says whether they have ever disagreed.
  *
  * Try this: give each button its own radius; make a ring-shaped button (inside the outer
  * circle and not inside the inner one); count the clicks on each button.
- * Keys: d shows the maths (each button's square, the distance to the nearest, dist < r).
+ * Keys: l Collide.circlePoint decides / the tutorial's if, d shows the maths (each button's
+ * square, the distance to the nearest, dist < r).
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -21,8 +25,10 @@ float buttonY = 300;
 float buttonRadius = 42;
 color[] buttonColour = {Palette.HIT, Palette.ACCENT, Palette.MISS, Palette.PLAYER};
 
-int picked = 3;      // the button clicked last: the lamp shows its colour
-boolean showMaths;   // d
+int picked = 3;         // the button clicked last: the lamp shows its colour
+int disagreements = 0;  // tests where the tutorial's if and Collide.circlePoint differed
+boolean hitboxDecides;  // l: Collide.circlePoint decides instead of the tutorial's if
+boolean showMaths;      // d
 
 void setup() {
   size(600, 400);
@@ -38,9 +44,7 @@ void draw() {
   circle(300, 120, 150);
 
   for (int i = 0; i < buttonX.length; i++) {
-    // Is the mouse on this button? Inside its circle: dist < r.
-    boolean over = Collide.circlePoint(buttonX[i], buttonY, buttonRadius, mouseX, mouseY);
-    if (over) {
+    if (overButton(i)) {
       stroke(Palette.NEUTRAL);
       strokeWeight(5);
     } else {
@@ -60,20 +64,34 @@ void draw() {
   if (showMaths) {
     drawMaths();
   }
-  Overlay.hint(g, "move over a button, click it to light the lamp     d: show the maths");
+  Overlay.label(g, 8, 8, (hitboxDecides ? "Collide.circlePoint decides (l: the tutorial's if)" : "the tutorial's if decides (l: Collide.circlePoint)")
+      + ";  they have disagreed " + disagreements + " times");
+  Overlay.hint(g, "move over a button, click it to light the lamp     l: who decides     d: show the maths");
+}
+
+// Is the mouse on button i? The tutorial's if: inside its circle, dist() < radius.
+boolean overButton(int i) {
+  boolean tutorialSays = dist(mouseX, mouseY, buttonX[i], buttonY) < buttonRadius;
+  boolean hitboxSays = Collide.circlePoint(buttonX[i], buttonY, buttonRadius, mouseX, mouseY);
+  if (tutorialSays != hitboxSays) {
+    disagreements++;
+  }
+  return hitboxDecides ? hitboxSays : tutorialSays;
 }
 
 void mousePressed() {
   // The same test as the ring: a click counts only inside a button's circle.
   for (int i = 0; i < buttonX.length; i++) {
-    if (Collide.circlePoint(buttonX[i], buttonY, buttonRadius, mouseX, mouseY)) {
+    if (overButton(i)) {
       picked = i;
     }
   }
 }
 
 void keyPressed() {
-  if (key == 'd') {
+  if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
+  } else if (key == 'd') {
     showMaths = !showMaths;
   }
 }

@@ -1,8 +1,14 @@
 // The answers, and the "show the maths" overlay: the line between the centres, both radii, and the test.
 
-/** One answer, written in its colour: "Collide.circleCircle: colliding". */
-void answer(float x, float y, String who, boolean colliding) {
-  Overlay.label(g, x, y, who + ": " + (colliding ? "colliding" : "not colliding"), colliding ? Overlay.HIT : Overlay.MISS);
+/**
+ * Both answers, each in its colour, the one that picks the colour marked, and whether they
+ * agree (on the second line): "the tutorial's if: colliding  (picks the colour)".
+ */
+void answers(String tutorials, boolean tutorialSays, String hitboxs, boolean hitboxSays, boolean hitboxDecides) {
+  Overlay.label(g, 8, 8, tutorials + ": " + (tutorialSays ? "colliding" : "not colliding") + (hitboxDecides ? "" : "  (picks the colour)"),
+      tutorialSays ? Overlay.HIT : Overlay.MISS);
+  Overlay.label(g, 8, 30, hitboxs + ": " + (hitboxSays ? "colliding" : "not colliding") + (hitboxDecides ? "  (picks the colour)" : "")
+      + (tutorialSays == hitboxSays ? ";  they agree" : ";  they DISAGREE"), hitboxSays ? Overlay.HIT : Overlay.MISS);
 }
 
 /** The line between the centres with its length, each radius along it, and dist < r1 + r2. */

@@ -4,19 +4,19 @@
  *
  * The tutorial's "try this" at the end of section 3: a ball that bounces off the edges of
  * the screen and also turns red when it is inside a circle at the center of the window. The
- * tutorial leaves the program to you; here it is, with two tests each frame: section 1's
- * edges, and section 3's circles, dist(x, y, circleCenterX, circleCenterY) < r +
- * circleRadius. Red here means "overlapping": the ball turns red as soon as it reaches in.
+ * tutorial leaves the program to you; here it is, with two tests each frame, both the
+ * tutorial's own and running by default: section 1's centre against the edges with the speed
+ * multiplied by -1 (the ball goes half out of the window before it turns), and section 3's
+ * circles, dist(x, y, circleCenterX, circleCenterY) < r + circleRadius. Red here means
+ * "overlapping": the ball turns red as soon as it reaches in.
  *
- * Where Hitbox differs: at the edges. By default it tests the ball's edge against the
- * window's (Edges, as in S01), sets the speed's sign and puts the ball back at the edge; the
- * circles are Collide.circleCircle, the same test compared squared. Press t for the
- * tutorial's own tests: section 1's centre against the edges with the speed multiplied by -1
- * (the ball goes half out of the window before it turns), and the dist() test written out.
+ * Where Hitbox differs: at the edges. Press l for Hitbox's tests: it tests the ball's edge
+ * against the window's (Edges, as in S01), sets the speed's sign and puts the ball back at
+ * the edge; the circles are Collide.circleCircle, the same test compared squared.
  *
  * Try this: make it red only when wholly inside (dist + r < circleRadius); make the ball
  * bigger than the circle; add a second ball and test the two balls against each other.
- * Keys: t the tutorial's tests / Hitbox's, d shows the maths (distance, both radii,
+ * Keys: l Hitbox's tests / the tutorial's, d shows the maths (distance, both radii,
  * dist < r + circleRadius, the edges crossed), space pauses, click puts the ball at the mouse.
  */
 import hitbox.*;
@@ -35,7 +35,7 @@ float xSpeed = 3.3;
 float ySpeed = 2.1;
 
 boolean inside;      // does the ball overlap the circle? It is drawn red while it does
-boolean tutorialsCode;  // t: the tutorial's tests instead of Hitbox's
+boolean hitboxDecides;  // l: Hitbox's tests instead of the tutorial's
 boolean paused;      // space
 boolean showMaths;   // d
 
@@ -51,7 +51,7 @@ void draw() {
     x += xSpeed;
     y += ySpeed;
     int crossed;
-    if (tutorialsCode) {
+    if (!hitboxDecides) {
       // Section 1 as the tutorial writes it: the centre past an edge, the speed flipped.
       if (x < 0 || x > width) {
         xSpeed *= -1;
@@ -72,7 +72,7 @@ void draw() {
   }
 
   // Section 3: does the ball overlap the circle?
-  if (tutorialsCode) {
+  if (!hitboxDecides) {
     inside = dist(x, y, circleCenterX, circleCenterY) < r + circleRadius;
   } else {
     inside = Collide.circleCircle(x, y, r, circleCenterX, circleCenterY, circleRadius);
@@ -93,7 +93,7 @@ void draw() {
   if (showMaths) {
     drawMaths();
   }
-  Overlay.hint(g, (tutorialsCode ? "the tutorial's tests (t: Hitbox's)" : "Hitbox's tests (t: the tutorial's)")
+  Overlay.hint(g, (hitboxDecides ? "Hitbox's tests (l: the tutorial's)" : "the tutorial's tests (l: Hitbox's)")
       + "     d: show the maths     space: pause     click: put the ball there");
   drawBounce();
 }
@@ -106,8 +106,8 @@ void mousePressed() {
 void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
-  } else if (key == 't') {
-    tutorialsCode = !tutorialsCode;
+  } else if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
   } else if (key == ' ') {
     paused = !paused;
   }

@@ -8,13 +8,15 @@
  * them, and the one chosen colours the button. They are the same test, even in the work they
  * do: && stops at the first comparison that is false, as the nested if does. Hitbox's
  * Collide.rectPoint is the combined if (it adds rectX + rectWidth in double, so the sum never
- * rounds); both answers are written at the top. A click counts only on the button, the
- * tutorial's "another if statement that also checks whether the mouse is pressed".
+ * rounds); it runs beside them, both answers are written at the top, and l lets it colour the
+ * button instead. The tutorial's "another if statement that also checks whether the mouse is
+ * pressed" is written out too: pressed and over the button, the button is drawn pressed, and
+ * a press there counts as a click.
  *
  * Try this: make several buttons from an array of rectangles; make the button move away
  * when hovered; change rectMode to CENTER and see which numbers have to change.
- * Keys: n nested if / combined if, d shows the maths (each comparison at its edge, the
- * ones never reached greyed). Click the button.
+ * Keys: n nested if / combined if, l Collide.rectPoint decides / the tutorial's if, d shows
+ * the maths (each comparison at its edge, the ones never reached greyed). Click the button.
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -25,9 +27,11 @@ float rectY = 150;
 float rectWidth = 200;
 float rectHeight = 100;
 
-boolean nestedIf;    // n: the tutorial's nested ifs, or its combined if
-int clicks;          // clicks that landed on the button
-boolean showMaths;   // d
+boolean nestedIf;       // n: the tutorial's nested ifs, or its combined if
+boolean hitboxDecides;  // l: Collide.rectPoint decides instead of the tutorial's if
+boolean hovered;        // the mouse is over the button, this frame
+int clicks;             // clicks that landed on the button
+boolean showMaths;      // d
 
 void setup() {
   size(600, 400);
@@ -37,24 +41,30 @@ void setup() {
 void draw() {
   background(Palette.BACKGROUND);
 
-  boolean hovered;
+  boolean tutorialSays = false;
   if (nestedIf) {
     //the tutorial's nested ifs: the second is reached only when the first holds
-    hovered = false;
     if (mouseX > rectX && mouseX < rectX + rectWidth) {
       if (mouseY > rectY && mouseY < rectY + rectHeight) {
-        hovered = true;
+        tutorialSays = true;
       }
     }
   } else {
     //the tutorial's combined if
-    hovered = mouseX > rectX && mouseX < rectX + rectWidth && mouseY > rectY && mouseY < rectY + rectHeight;
+    if (mouseX > rectX && mouseX < rectX + rectWidth && mouseY > rectY && mouseY < rectY + rectHeight) {
+      tutorialSays = true;
+    }
   }
-  //Hitbox's call: the combined if
-  boolean onButton = Collide.rectPoint(rectX, rectY, rectWidth, rectHeight, mouseX, mouseY);
+  //Hitbox's call, beside them: the combined if
+  boolean hitboxSays = Collide.rectPoint(rectX, rectY, rectWidth, rectHeight, mouseX, mouseY);
+  hovered = hitboxDecides ? hitboxSays : tutorialSays;
 
   noStroke();
   fill(hovered ? Palette.HIT : Palette.MISS);
+  //the tutorial's other if: the mouse is pressed, and inside the rectangle
+  if (mousePressed && hovered) {
+    fill(Palette.ACCENT);   // drawn pressed
+  }
   rect(rectX, rectY, rectWidth, rectHeight);
   fill(Palette.BACKGROUND);
   textAlign(CENTER, CENTER);
@@ -71,25 +81,25 @@ void draw() {
   if (showMaths) {
     drawMaths(hovered);
   } else {
-    answer(8, 8, nestedIf ? "the tutorial's nested ifs" : "the tutorial's combined if", hovered);
-    answer(8, 30, "Collide.rectPoint", onButton);
+    answer(8, 8, (nestedIf ? "the tutorial's nested ifs" : "the tutorial's combined if") + (hitboxDecides ? "" : " (decides)"), tutorialSays);
+    answer(8, 30, "Collide.rectPoint" + (hitboxDecides ? " (decides)" : "") + (tutorialSays == hitboxSays ? ", agrees" : ", DISAGREES"), hitboxSays);
   }
-  Overlay.hint(g, "hover over the button and click it     n: nested if / combined if     d: show the maths");
+  Overlay.hint(g, "hover over the button and click it     n: nested if / combined if     l: who decides     d: show the maths");
 }
 
 void mousePressed() {
-  // The tutorial's "another if statement that also checks whether the mouse is pressed":
-  // a press counts only if it lands on the button, the same test as the hover.
-  boolean onButton = Collide.rectPoint(rectX, rectY, rectWidth, rectHeight, mouseX, mouseY);
-  if (onButton) {
+  // The mouse was just pressed: a click, if it is inside the rectangle (the same if as the hover).
+  if (hovered) {
     clicks++;
   }
-  rememberClick(onButton);
+  rememberClick(hovered);
 }
 
 void keyPressed() {
   if (key == 'n') {
     nestedIf = !nestedIf;
+  } else if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
   } else if (key == 'd') {
     showMaths = !showMaths;
   }

@@ -1,8 +1,14 @@
 // The "show the maths" overlay (key d) and the drawing helpers.
 
-/** One answer, written in its colour: "the tutorial's if: colliding". */
-void answer(float x, float y, String who, boolean colliding) {
-  Overlay.label(g, x, y, who + ": " + (colliding ? "colliding" : "not colliding"), colour(colliding));
+/**
+ * Both answers, each in its colour, the one that picks the colour marked, and whether they
+ * agree (on the second line): "the tutorial's if: colliding  (picks the colour)".
+ */
+void answers(String tutorials, boolean tutorialSays, String hitboxs, boolean hitboxSays, boolean hitboxDecides) {
+  Overlay.label(g, 8, 8, tutorials + ": " + (tutorialSays ? "colliding" : "not colliding") + (hitboxDecides ? "" : "  (picks the colour)"),
+      tutorialSays ? Overlay.HIT : Overlay.MISS);
+  Overlay.label(g, 8, 30, hitboxs + ": " + (hitboxSays ? "colliding" : "not colliding") + (hitboxDecides ? "  (picks the colour)" : "")
+      + (tutorialSays == hitboxSays ? ";  they agree" : ";  they DISAGREE"), hitboxSays ? Overlay.HIT : Overlay.MISS);
 }
 
 /** The four comparisons, each drawn at the two edges it compares, and the verdict. */

@@ -1,53 +1,50 @@
 /**
- * Rectangle/Rectangle, two ways: && and the flipped ||
+ * Rectangle/Rectangle, two ways: || and &&
  * Tutorial section 5: Rectangle/Rectangle
  *
- * The tutorial writes the rectangle test twice. First as "not colliding": four comparisons
- * joined by || (r1's right edge left of r2's left edge, or ...); an else after it would be
- * the collision. Then reversed: four comparisons joined by && that hold when they ARE
- * colliding (it names the rectangles rectOne and rectTwo; here r1 and r2). The
- * video shows both and calls the || form "a bit more efficient". Here both forms run on the
- * same rectangles every frame. Each comparison lights up as Java evaluates it (red: it points
- * to "colliding", green: to "not colliding"); grey ones were skipped, because && stops at
- * the first false and || at the first true. Under each form, a running count.
+ * The tutorial writes the rectangle test twice, in its names rectOne and rectTwo. First as
+ * "not colliding": four comparisons joined by || (rectOneRight < rectTwoLeft, or ...); an else
+ * after it would be the collision. Then reversed: four comparisons joined by && that hold when
+ * they ARE colliding. The video gives the same test in x, y, width and height, && first
+ * (x1 < x2 + w2 && x1 + w1 > x2 && ...: our names for its "x of rectangle 1" and so on), then
+ * flips it to || and calls that "a bit more efficient". All four run below every frame; the tutorial's && form colours rectTwo, and
+ * Collide.rectRect runs beside it (l lets it pick the colour). The panels show the tutorial's
+ * pair, or the video's (v): each comparison lights up as Java evaluates it (red: it points to
+ * "colliding", green: to "not colliding"); grey ones were skipped, because && stops at the
+ * first false and || at the first true. Under each form, a running count.
  *
  * The counts stay equal: comparison i of the || form is the opposite of comparison i of the
- * && form, so both stop at the same place, and neither form is the more efficient (timed in
- * Java, src/jmh RectRectFormsBench, they are as fast as each other within the noise). Only
- * touching rectangles tell them apart (press t): the opposite of > is <=, not <, so with the
- * tutorial's strict comparisons the || form calls rectangles that share an edge colliding,
- * and the && form does not.
+ * && form, so both stop at the same place, and neither is the more efficient (timed in Java,
+ * src/jmh RectRectFormsBench, they are as fast as each other within the noise). Only touching
+ * rectangles tell them apart (press t): the opposite of > is <=, not <, so with these strict
+ * comparisons the || forms call rectangles that share an edge colliding, the && forms do not.
  *
  * Where Hitbox differs: Collide.rectRect is the && form, because touching is not colliding
  * everywhere in Hitbox; the || form would agree with it only with <= and >=.
  *
- * Try this: write the || form with <= and >= and press t again; reorder the comparisons so
- * the one that fails most often comes first, and watch the counts.
- * Keys: t touching (r1 snaps against r2's nearest side), r resets the counts, d shows the
- * maths (every edge's value, and why < is not the opposite of >).
+ * Try this: write the || form with <= and >= and press t again; reorder the comparisons so the
+ * one that fails most often comes first, and watch the counts.
+ * Keys: t touching (rectOne snaps against rectTwo's nearest side), v the video's forms / the
+ * tutorial's, l the library picks the colour, r resets the counts, d shows the maths.
  */
 import hitbox.*;
 import hitbox.processing.*;
 
-// r1 hangs from the mouse by its top-left corner; r2 stays in the middle.
-float r1x, r1y;
-float r1w = 100;
-float r1h = 60;
-float r2x = 370;
-float r2y = 85;
-float r2w = 100;
-float r2h = 80;
-boolean touching;     // t: r1 is snapped against r2's nearest side
-boolean showMaths;    // d
+// rectOne hangs from the mouse by its top-left corner; rectTwo stays in the middle.
+float x1, y1;
+float w1 = 100;
+float h1 = 60;
+float x2 = 370;
+float y2 = 85;
+float w2 = 100;
+float h2 = 80;
 
-// What each form did this frame: per comparison SKIPPED, TRUE or FALSE, and its answer;
-// and how many comparisons each has evaluated, this frame and since the counts were reset.
-int SKIPPED = 0, TRUE = 1, FALSE = 2;
-int[] andLit = new int[4];
-int[] orLit = new int[4];
-boolean andSays, orSays;
-int andNow, orNow;
-long andTotal, orTotal, frames;
+boolean orSays, andSays;            // the tutorial's two forms: colliding?
+boolean videoAndSays, videoOrSays;  // the video's two
+boolean hitboxDecides;  // l: Collide.rectRect picks rectTwo's colour
+boolean videoForms;     // v: the panels show the video's forms
+boolean touching;       // t: rectOne is snapped against rectTwo's nearest side
+boolean showMaths;      // d
 
 void setup() {
   size(840, 470);
@@ -55,54 +52,48 @@ void setup() {
 
 void draw() {
   background(Palette.BACKGROUND);
-  placeR1();
-  float r1Left = r1x, r1Right = r1x + r1w, r1Top = r1y, r1Bottom = r1y + r1h;
-  float r2Left = r2x, r2Right = r2x + r2w, r2Top = r2y, r2Bottom = r2y + r2h;
-  startFrame();
+  placeRectOne();   // Maths.pde
+  float rectOneLeft = x1, rectOneRight = x1 + w1, rectOneTop = y1, rectOneBottom = y1 + h1;
+  float rectTwoLeft = x2, rectTwoRight = x2 + w2, rectTwoTop = y2, rectTwoBottom = y2 + h2;
 
-  // The tutorial's && form: true when they ARE colliding. Each comparison goes through
-  // byAnd(i, ...), which lights it up and counts it; && skips the rest at the first false.
-  if (byAnd(0, r1Right > r2Left) && byAnd(1, r1Left < r2Right)
-      && byAnd(2, r1Bottom > r2Top) && byAnd(3, r1Top < r2Bottom)) {
-    andSays = true;     // colliding
+  //the tutorial's first form: true if rectOne and rectTwo are NOT colliding
+  if (rectOneRight < rectTwoLeft || rectOneLeft > rectTwoRight || rectOneBottom < rectTwoTop || rectOneTop > rectTwoBottom) {
+    orSays = false;
   } else {
-    andSays = false;    // not colliding
+    orSays = true;
+  }
+  //its reverse: true if rectOne and rectTwo are colliding
+  if (rectOneRight > rectTwoLeft && rectOneLeft < rectTwoRight && rectOneBottom > rectTwoTop && rectOneTop < rectTwoBottom) {
+    andSays = true;
+  } else {
+    andSays = false;
   }
 
-  // The flipped || form: true when they are NOT colliding; || skips the rest at the first true.
-  if (byOr(0, r1Right < r2Left) || byOr(1, r1Left > r2Right)
-      || byOr(2, r1Bottom < r2Top) || byOr(3, r1Top > r2Bottom)) {
-    orSays = false;     // not colliding
+  //the video's first form, in x, y, width and height: all four true means colliding
+  if (x1 < x2 + w2 && x1 + w1 > x2 && y1 < y2 + h2 && y1 + h1 > y2) {
+    videoAndSays = true;
   } else {
-    orSays = true;      // colliding
+    videoAndSays = false;
+  }
+  //and flipped: one true is enough to know they cannot collide
+  if (x1 > x2 + w2 || x1 + w1 < x2 || y1 > y2 + h2 || y1 + h1 < y2) {
+    videoOrSays = false;
+  } else {
+    videoOrSays = true;
   }
 
-  // Hitbox's call: the && form.
-  boolean colliding = Collide.rectRect(r1x, r1y, r1w, r1h, r2x, r2y, r2w, r2h);
+  //Hitbox's call, beside them: the && form
+  boolean hitboxSays = Collide.rectRect(x1, y1, w1, h1, x2, y2, w2, h2);
+  boolean colliding = hitboxDecides ? hitboxSays : andSays;
 
-  drawRectangles(colliding);
+  countComparisons();   // which comparisons Java evaluated, and how many (Maths.pde)
+  drawRectangles(colliding, hitboxSays);
   drawForms();
   if (showMaths) {
     drawMaths();
   }
-  Overlay.hint(g, "move r1 (the mouse holds its top-left corner)     t: touching " + (touching ? "off" : "on")
-      + "     r: reset the counts     d: show the maths");
-}
-
-/** One comparison of the && form, as Java evaluates it: lit and counted, its value passed on. */
-boolean byAnd(int i, boolean value) {
-  andLit[i] = value ? TRUE : FALSE;
-  andNow++;
-  andTotal++;
-  return value;
-}
-
-/** One comparison of the || form, as Java evaluates it. */
-boolean byOr(int i, boolean value) {
-  orLit[i] = value ? TRUE : FALSE;
-  orNow++;
-  orTotal++;
-  return value;
+  Overlay.hint(g, "move rectOne   t: touching " + (touching ? "off" : "on") + "   v: the " + (videoForms ? "tutorial's" : "video's")
+      + " forms   l: " + (hitboxDecides ? "the tutorial's &&" : "Collide.rectRect") + " colours rectTwo   r: reset   d: maths");
 }
 
 void keyPressed() {
@@ -110,9 +101,12 @@ void keyPressed() {
     showMaths = !showMaths;
   } else if (key == 't') {
     touching = !touching;
+  } else if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
+  } else if (key == 'v') {
+    videoForms = !videoForms;
+    resetCounts();
   } else if (key == 'r') {
-    andTotal = 0;
-    orTotal = 0;
-    frames = 0;
+    resetCounts();
   }
 }

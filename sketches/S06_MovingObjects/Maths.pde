@@ -48,7 +48,7 @@ void drawScene() {
   String way = library ? "Motion.rectBlocked" : "the tutorial's code";
   Overlay.label(g, 8, 8, (paused ? "paused: n steps one frame, p goes on   " : "") + way);
   Overlay.label(g, 8, 30, "frames it ended inside the center rectangle: " + framesInside, framesInside > 0 ? Overlay.HIT : Overlay.MISS);
-  Overlay.hint(g, "t: " + (library ? "the tutorial's code" : "Motion.rectBlocked")
+  Overlay.hint(g, "l: " + (library ? "the tutorial's code" : "Motion.rectBlocked")
       + "   c: aim at the corner   p: pause   n: one frame   d: show the maths");
 }
 

@@ -16,7 +16,7 @@
  * (the counter at the top). The tutorial's window check looks where the rectangle is, not
  * where it will be, so it pokes out of the window for a frame at each edge.
  *
- * Where Hitbox differs: press t for Motion.rectBlocked, which makes the same two checks,
+ * Where Hitbox differs: press l for Motion.rectBlocked, which makes the same two checks,
  * also tests the diagonal move and reports both axes for a corner hit; Edges checks the
  * window at the next position too. A check of the next position should never let it in.
  *
@@ -24,7 +24,7 @@
  * (d): when a next-position box turns red, that speed reverses. Set bouncingRectSpeedX to
  * 250: it jumps clean over now and then, because the check only looks where it lands, not
  * along the way (beyond the tutorial: Hitbox's Sweep looks at the path, see S10e).
- * Keys: t the tutorial's code / Motion.rectBlocked, c aim at the corner, p pause, n one
+ * Keys: l Motion.rectBlocked / the tutorial's code, c aim at the corner, p pause, n one
  * frame while paused, d shows the maths.
  */
 import hitbox.*;
@@ -41,7 +41,7 @@ float bouncingRectHeight = 40;
 float bouncingRectSpeedX = 3.5;
 float bouncingRectSpeedY = 2.5;
 
-boolean library = false;    // t: Motion.rectBlocked instead of the tutorial's ifs
+boolean library = false;    // l: Motion.rectBlocked instead of the tutorial's ifs
 int framesInside = 0;       // frames the rectangle ended inside the center rectangle
 boolean showMaths, paused, stepOnce;
 
@@ -111,7 +111,7 @@ void move() {
 void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
-  } else if (key == 't') {
+  } else if (key == 'l') {
     library = !library;
     framesInside = 0;
   } else if (key == 'c') {

@@ -1,7 +1,7 @@
 // The ground, the words beside the player, and the "show the maths" overlay (key d).
 
 String[] wayNames = {"", "1: speed 0 where it is (no snap)", "2: stop if the next position is in the ground",
-    "3: the tutorial's snap, playerY = groundY - playerHeight", "4: Hitbox's Snap.onGround and Snap.standY"};
+    "3: the tutorial's snap, playerY = groundY - playerHeight", "4 (or l): Hitbox's Snap.onGround and Snap.standY"};
 
 /** A new way starts with a new fall, from where the tutorial's player starts. */
 void dropAgain() {
@@ -38,7 +38,7 @@ void drawWay() {
   } else if (!jumping && gap < 20 && playerSpeedY < 5) {
     Overlay.labelBeside(g, sx, sy, 1, 0, "floating " + Overlay.number(gap) + " px above the ground", Overlay.HIT);
   }
-  Overlay.hint(g, "1 speed 0   2 next position   3 the tutorial's snap   4 Snap   d: show the maths   any other key: jump");
+  Overlay.hint(g, "1 speed 0   2 next position   3 the tutorial's snap   4 or l: Snap   d: show the maths   any other key: jump");
 }
 
 /**

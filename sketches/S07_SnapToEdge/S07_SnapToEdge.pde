@@ -9,9 +9,10 @@
  *   1: set its speed to 0 where it is: it stays "a little bit inside" the ground;
  *   2: check the next position first (section 6's logic) and stop if it is in the ground: it
  *      stops short, floating above the ground, then creeps down;
- *   3: the tutorial's code (the default): snap its bottom onto the ground,
- *      playerY = groundY - playerHeight, then playerSpeedY = 0;
- *   4: Hitbox's: Snap.onGround and Snap.standY in the same places.
+ *   3: the tutorial's code, which runs in draw() below (the default): snap its bottom onto
+ *      the ground, playerY = groundY - playerHeight, then playerSpeedY = 0;
+ *   4 (or l): Hitbox's, Snap.onGround and Snap.standY in the same places.
+ * The other three are in Ways.pde.
  *
  * Where Hitbox differs: Snap.onGround counts a player standing exactly on the ground as on
  * it (playerY + playerHeight >= groundY; the tutorial's test is >), so a standing player's
@@ -24,8 +25,8 @@
  * Try this: jump in 1 and in 2 and watch where the player stops; make gravity stronger
  * (playerSpeedY += 3) and see the gaps grow; snap to a ceiling as well (S07b snaps to every
  * side of a rectangle).
- * Keys: 1 speed 0 only, 2 next position, 3 the tutorial's snap, 4 Snap; d shows the maths;
- * any other key jumps.
+ * Keys: 1 speed 0 only, 2 next position, 3 the tutorial's snap, 4 or l Hitbox's Snap; d shows
+ * the maths; any other key jumps.
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -51,23 +52,15 @@ void draw() {
   background(Palette.BACKGROUND);
   float movedY = playerY + playerSpeedY;  // where this frame's move takes it, for the maths
 
-  if (way == 3 || way == 4) {
+  if (way != 3) {
+    otherWay();   // keys 1, 2 and 4 (Ways.pde)
+  } else {
     //move the player
     playerY += playerSpeedY;
     //is the player colliding with the ground?
-    boolean colliding;
-    if (way == 3) {
-      colliding = playerY + playerHeight > groundY;
-    } else {
-      colliding = Snap.onGround(playerY, playerHeight, groundY);  // playerY + playerHeight >= groundY
-    }
-    if (colliding) {
+    if (playerY + playerHeight > groundY) {
       //snap the player's bottom to the ground's position
-      if (way == 3) {
-        playerY = groundY - playerHeight;
-      } else {
-        playerY = Snap.standY(playerHeight, groundY);
-      }
+      playerY = groundY - playerHeight;
       //stop the player falling
       playerSpeedY = 0;
       //allow jumping again
@@ -78,10 +71,6 @@ void draw() {
       //gravity accelerates the movement speed
       playerSpeedY++;
     }
-  } else if (way == 1) {
-    stopWhereItIs();
-  } else {
-    stopAtTheNextPosition();
   }
 
   drawGround();
@@ -97,30 +86,8 @@ void draw() {
   drawWay();
 }
 
-// Wrong way 1 (the tutorial describes it; the code is ours): stop falling where it is.
-void stopWhereItIs() {
-  playerY += playerSpeedY;
-  if (playerY + playerHeight > groundY) {
-    playerSpeedY = 0;   // no snap: it stays where the move left it, a little inside
-    jumping = false;
-  } else {
-    playerSpeedY++;
-  }
-}
-
-// Wrong way 2 (described, not coded, by the tutorial): look where the player will be, and
-// do not go there if it is in the ground.
-void stopAtTheNextPosition() {
-  playerSpeedY++;
-  if (playerY + playerSpeedY + playerHeight > groundY) {
-    playerSpeedY = 0;   // the next position is in the ground: stop short, above it
-    jumping = false;
-  }
-  playerY += playerSpeedY;
-}
-
 void keyPressed() {
-  if (key == '1' || key == '2' || key == '3' || key == '4') {
+  if (key == '1' || key == '2' || key == '3' || key == '4' || key == 'l') {
     way = key == '1' ? 1 : key == '2' ? 2 : key == '3' ? 3 : 4;
     dropAgain();
   } else if (key == 'd') {

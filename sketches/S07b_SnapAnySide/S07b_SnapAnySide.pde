@@ -10,7 +10,7 @@
  * side when moving right, its right side when moving left. Then the same down the page: the
  * top when moving down, the bottom when moving up. The side it rests against lights up.
  *
- * Press t for Hitbox's Snap.pushBack, one call per axis: the move, and the speed it was made
+ * Press l for Hitbox's Snap.pushBack, one call per axis: the move, and the speed it was made
  * with, in; the snapped position and the side out.
  *
  * Where Hitbox differs: it does not move the rectangle differently (the tests run both and
@@ -19,7 +19,7 @@
  *
  * Try this: make playerSpeed 20 and watch it still stop flush; snap only when moving down
  * (a platform you can jump up through); add a second center rectangle.
- * Keys: arrow keys move, t the ifs written out / Snap.pushBack, d shows the maths.
+ * Keys: arrow keys move, l Snap.pushBack / the ifs written out, d shows the maths.
  */
 import hitbox.*;
 import hitbox.processing.*;
@@ -36,7 +36,7 @@ float playerHeight = 40;
 float playerSpeed = 5;
 
 boolean leftHeld, rightHeld, upHeld, downHeld;  // the arrow keys held down
-boolean snapCall;    // t: Snap.pushBack instead of the ifs
+boolean snapCall;    // l: Snap.pushBack instead of the ifs
 boolean showMaths;   // d
 
 void setup() {
@@ -101,11 +101,11 @@ void draw() {
   if (showMaths) {
     drawMaths(playerSpeedX, playerSpeedY);
   }
-  Overlay.hint(g, "arrow keys: move     t: " + (snapCall ? "the ifs" : "Snap.pushBack") + "     d: show the maths");
+  Overlay.hint(g, "arrow keys: move     l: " + (snapCall ? "the ifs" : "Snap.pushBack") + "     d: show the maths");
 }
 
 void keyPressed() {
-  if (key == 't') {
+  if (key == 'l') {
     snapCall = !snapCall;
   } else if (key == 'd') {
     showMaths = !showMaths;

@@ -37,14 +37,14 @@ void drawBox() {
     stroke(Palette.HIT);
     strokeWeight(3);
   }
-  rect(x, y, w, h);
+  rect(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight);
   noStroke();
 }
 
 // The first obstacle the box overlaps now, or -1.
 int insideWhich() {
-  for (int i = 0; i < obstacles.size(); i++) {
-    if (obstacles.get(i).overlaps(x, y, w, h)) {
+  for (int i = 0; i < rectangles.size(); i++) {
+    if (rectangles.get(i).overlaps(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight)) {
       return i;
     }
   }
@@ -56,65 +56,69 @@ void drawMathsAndLabels() {
     drawMaths();
   }
   int inside = insideWhich();
-  String mode = tutorialLoop ? "the tutorial's loop (t: Hitbox's)" : "Hitbox's loop (t: the tutorial's)";
+  String mode = hitboxDecides ? "Hitbox's loop (l: the tutorial's)" : "the tutorial's loop (l: Hitbox's)";
   if (messageFrames > 0) {
     Overlay.label(g, 24, 24, message, message.startsWith("not") ? Overlay.HIT : Overlay.TEXT);
   } else if (inside >= 0) {
-    Overlay.label(g, 24, 24, mode + ":  the box is inside obstacle " + inside + "!", Overlay.HIT);
+    Overlay.label(g, 24, 24, mode + ":  the box is inside rectangle " + inside + "!", Overlay.HIT);
   } else {
-    Overlay.label(g, 24, 24, mode + ",  " + obstacles.size() + " obstacles" + (paused ? ",  paused: n steps" : ""));
+    Overlay.label(g, 24, 24, mode + ",  " + rectangles.size() + " rectangles" + (paused ? ",  paused: n steps" : ""));
   }
-  Overlay.hint(g, "t: tutorial's loop / Hitbox's   d: show the maths   click: add an obstacle   p: pause   n: one frame");
+  Overlay.hint(g, "l: Hitbox's loop / the tutorial's   s: into the slot   d: show the maths   click: add a rectangle   p: pause   n: one frame");
 }
 
-// This frame's checks, before the box moves: the two next-position boxes, and what each loop
-// is about to do with them.
+// The next frame's checks, from where the box is now: the two next-position boxes, and what
+// the loop that moves the box will do with them.
 void drawMaths() {
-  for (int i = 0; i < obstacles.size(); i++) {
-    Obstacle o = obstacles.get(i);
-    Overlay.labelCentered(g, o.x + o.w / 2, o.y + min(o.h, 40) / 2, "" + i, o.lit() ? Overlay.HIT : Overlay.TEXT);
+  for (int i = 0; i < rectangles.size(); i++) {
+    Rectangle o = rectangles.get(i);
+    Overlay.labelCentered(g, o.x + o.rectWidth / 2, o.y + min(o.rectHeight, 40) / 2, "" + i, o.lit() ? Overlay.HIT : Overlay.TEXT);
   }
-  String text = tutorialLoop ? tutorialPreview() : hitboxPreview();
+  String text = hitboxDecides ? hitboxPreview() : tutorialPreview();
   // The free one first, so a blocked one's red is on top where they overlap.
-  boolean blockedX = blocksAny(x + vx, y);
-  boolean blockedY = blocksAny(x, y + vy);
+  boolean blockedX = blocksAny(bouncingRectX + bouncingRectSpeedX, bouncingRectY);
+  boolean blockedY = blocksAny(bouncingRectX, bouncingRectY + bouncingRectSpeedY);
   if (blockedX) {
-    nextBox(x, y + vy, blockedY);
-    nextBox(x + vx, y, true);
+    nextBox(bouncingRectX, bouncingRectY + bouncingRectSpeedY, blockedY);
+    nextBox(bouncingRectX + bouncingRectSpeedX, bouncingRectY, true);
   } else {
-    nextBox(x + vx, y, false);
-    nextBox(x, y + vy, blockedY);
+    nextBox(bouncingRectX + bouncingRectSpeedX, bouncingRectY, false);
+    nextBox(bouncingRectX, bouncingRectY + bouncingRectSpeedY, blockedY);
   }
   stroke(Overlay.GUIDE);
   strokeWeight(2);
-  Draw.arrow(g, x + w / 2, y + h / 2, vx * 8, vy * 8);
+  Draw.arrow(g, bouncingRectX + bouncingRectWidth / 2, bouncingRectY + bouncingRectHeight / 2,
+      bouncingRectSpeedX * 8, bouncingRectSpeedY * 8);
   // Below the box, on the side with more room.
-  float lx = x + w / 2 < width / 2 ? x + w + 12 : x - 12 - labelWidth(text);
-  Overlay.label(g, lx, y + h + 8, text, text.contains("!") ? Overlay.HIT : Overlay.TEXT);
+  float lx = bouncingRectX + bouncingRectWidth / 2 < width / 2 ? bouncingRectX + bouncingRectWidth + 12
+      : bouncingRectX - 12 - labelWidth(text);
+  Overlay.label(g, lx, bouncingRectY + bouncingRectHeight + 8, text, text.contains("!") ? Overlay.HIT : Overlay.TEXT);
 }
 
-// The tutorial's loop, run on copies of the speeds: the same two tests as tutorialStep, in
-// the same order, so it says which obstacles will flip which speed.
+// The tutorial's loop, run ahead on copies of the speeds: the same two tests as the loop in
+// draw(), in the same order, so it says which rectangles will flip which speed.
 String tutorialPreview() {
-  float sx = vx;
-  float sy = vy;
+  float sx = bouncingRectSpeedX;
+  float sy = bouncingRectSpeedY;
   IntList byX = new IntList();
   IntList byY = new IntList();
-  for (int i = 0; i < obstacles.size(); i++) {
-    Obstacle o = obstacles.get(i);
-    if (x + w + sx > o.x && x + sx < o.x + o.w && y + h > o.y && y < o.y + o.h) {
+  for (int i = 0; i < rectangles.size(); i++) {
+    Rectangle o = rectangles.get(i);
+    if (bouncingRectX + bouncingRectWidth + sx > o.x && bouncingRectX + sx < o.x + o.rectWidth
+        && bouncingRectY + bouncingRectHeight > o.y && bouncingRectY < o.y + o.rectHeight) {
       sx *= -1;
       byX.append(i);
     }
-    if (x + w > o.x && x < o.x + o.w && y + h + sy > o.y && y + sy < o.y + o.h) {
+    if (bouncingRectX + bouncingRectWidth > o.x && bouncingRectX < o.x + o.rectWidth
+        && bouncingRectY + bouncingRectHeight + sy > o.y && bouncingRectY + sy < o.y + o.rectHeight) {
       sy *= -1;
       byY.append(i);
     }
   }
-  String text = "the tutorial's loop, this frame:\n" + flips("vx", byX) + "\n" + flips("vy", byY);
+  String text = "the tutorial's loop, next frame:\n" + flips("vx", byX) + "\n" + flips("vy", byY);
   int landsIn = -1;
-  for (int i = 0; i < obstacles.size() && landsIn < 0; i++) {
-    landsIn = obstacles.get(i).overlaps(x + sx, y + sy, w, h) ? i : -1;
+  for (int i = 0; i < rectangles.size() && landsIn < 0; i++) {
+    landsIn = rectangles.get(i).overlaps(bouncingRectX + sx, bouncingRectY + sy, bouncingRectWidth, bouncingRectHeight) ? i : -1;
   }
   return text + "\nthen x += vx, y += vy" + (landsIn >= 0 ? ": it lands inside " + landsIn + "!" : "");
 }
@@ -134,24 +138,25 @@ String flips(String speed, IntList by) {
 String hitboxPreview() {
   String said = "";
   int blocked = Motion.NONE;
-  for (int i = 0; i < obstacles.size(); i++) {
-    Obstacle o = obstacles.get(i);
-    int answer = Motion.rectBlocked(x, y, w, h, vx, vy, o.x, o.y, o.w, o.h);
+  for (int i = 0; i < rectangles.size(); i++) {
+    Rectangle o = rectangles.get(i);
+    int answer = Motion.rectBlocked(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight,
+        bouncingRectSpeedX, bouncingRectSpeedY, o.x, o.y, o.rectWidth, o.rectHeight);
     if (answer != Motion.NONE) {
       said += (said.isEmpty() ? "" : ", ") + i + " says " + Side.describe(answer);
     }
     blocked |= answer;
   }
-  String text = "Hitbox's loop, this frame:\nMotion.rectBlocked: " + (said.isEmpty() ? "nobody blocks" : said)
+  String text = "Hitbox's loop, next frame:\nMotion.rectBlocked: " + (said.isEmpty() ? "nobody blocks" : said)
       + "\ncombined: " + Side.describe(blocked);
   if (blocked == Motion.NONE) {
     return text + ", so it moves";
   }
-  float sx = Motion.reverseX(blocked, vx);
-  float sy = Motion.reverseY(blocked, vy);
   int still = Motion.NONE;
-  for (Obstacle o : obstacles) {
-    still |= Motion.rectBlocked(x, y, w, h, sx, sy, o.x, o.y, o.w, o.h);
+  for (Rectangle o : rectangles) {
+    still |= Motion.rectBlocked(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight,
+        Motion.reverseX(blocked, bouncingRectSpeedX), Motion.reverseY(blocked, bouncingRectSpeedY),
+        o.x, o.y, o.rectWidth, o.rectHeight);
   }
   return text + ", reversed once\nasked again: " + Side.describe(still)
       + (Side.hasAny(still, Side.LEFT_RIGHT) ? ", waits across" : "") + (Side.hasAny(still, Side.TOP_BOTTOM) ? ", waits down" : "");
@@ -170,8 +175,8 @@ float labelWidth(String text) {
 }
 
 boolean blocksAny(float bx, float by) {
-  for (Obstacle o : obstacles) {
-    if (o.overlaps(bx, by, w, h)) {
+  for (Rectangle o : rectangles) {
+    if (o.overlaps(bx, by, bouncingRectWidth, bouncingRectHeight)) {
       return true;
     }
   }
@@ -185,14 +190,23 @@ void nextBox(float bx, float by, boolean colliding) {
   fill(colour, 60);
   strokeWeight(2);
   stroke(colour);
-  rect(bx, by, w, h);
+  rect(bx, by, bouncingRectWidth, bouncingRectHeight);
   popStyle();
 }
 
+// s: the box in the slot between pillars 5 and 6, 1 pixel from each, going left and down.
+void intoTheSlot() {
+  bouncingRectX = 271;
+  bouncingRectY = 70;
+  bouncingRectSpeedX = -3.3;
+  bouncingRectSpeedY = 2.7;
+}
+
 void keyPressed() {
-  if (key == 't') {
-    tutorialLoop = !tutorialLoop;
-    startAgain();
+  if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
+  } else if (key == 's') {
+    intoTheSlot();
   } else if (key == 'd') {
     showMaths = !showMaths;
   } else if (key == 'p') {

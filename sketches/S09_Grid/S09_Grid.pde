@@ -2,35 +2,39 @@
  * Grids: a maze of cells
  * Tutorial section 9: Grids
  *
- * The tutorial's grid is a 2D boolean array, grid[row][column], true where a cell is an
- * obstacle. The player is a column and a row in it, and before each step it checks the cell
- * it would step into: inside the grid, and not an obstacle? No geometry at all.
+ * The tutorial's program: the grid is a 2D boolean array, grid[row][column], true where a cell
+ * is an obstacle, each cell given a 20% chance; the player is a column and a row in it,
+ * starting at 10, 10; and each arrow key has its own if: not in the edge row or column, and
+ * the cell it would step into not an obstacle? No geometry at all. That code runs here.
  *
- * Press t to switch between the tutorial's array and Hitbox's Grid. Hitbox differs twice:
- * outside the map counts as solid, so one call, maze.canMove(col, row, dCol, dRow), does the
- * edge checks too; and fillRandom makes exactly 20% of the cells solid and keeps the
- * player's cell free, because the tutorial's coin flip per cell (random(1) < 0.2) gives a
- * different count every time and can put an obstacle right under the player.
+ * Where Hitbox differs: press l for its Grid instead (Hitbox.pde). It differs twice: outside the map counts as
+ * solid, so one call, maze.canMove(column, row, dColumn, dRow), does the edge checks too; and
+ * fillRandom makes exactly 20% of the cells solid and keeps the player's cell free, because
+ * the tutorial's coin flip per cell gives a different count every time and can put an
+ * obstacle right under the player. Its cells are copied into grid, so the tutorial's drawing
+ * loop draws them.
  *
- * Try this: walk somewhere and press r for new mazes, in both modes, until the tutorial's
- * drops an obstacle on the player; change the 0.2 to 0.4 and see how quickly the maze closes.
- * Keys: arrows move, t the tutorial's array / Hitbox's Grid, r a new maze, d shows the maths
+ * Try this: press r for new mazes, in both modes, until the tutorial's drops an obstacle on
+ * the player; change the .2 to .4 and see how quickly the maze closes.
+ * Keys: arrows move, l Hitbox's Grid / the tutorial's array, r a new maze, d shows the maths
  * (the mouse's cell too).
  */
 import hitbox.*;
 import hitbox.processing.*;
 
+//build a grid
 int rows = 20;
 int columns = 20;
-float cellSize = 20;
-// The tutorial's grid: if a cell is true it's an obstacle.
+//if a cell is true it's an obstacle
 boolean[][] grid = new boolean[rows][columns];
-// Hitbox's grid of the same size.
-Grid maze = new Grid(columns, rows, cellSize);
-boolean tutorialGrid = false;   // t switches
-int playerIndexX = 0;           // the player's column...
-int playerIndexY = 0;           // ...and row
-long seed = 1;                  // the same seed makes the same mazes
+//where the player is in the grid
+int playerIndexX = 10;
+int playerIndexY = 10;
+
+float cellWidth;
+float cellHeight;
+long seed = 1;          // the same seed makes the same mazes (r: the next seed)
+boolean hitboxDecides;  // l: Hitbox's Grid fills the maze and checks the moves
 
 void setup() {
   size(600, 420);  // the 400 x 400 grid, a panel on the right, the key hint below
@@ -38,69 +42,72 @@ void setup() {
 }
 
 void newMaze() {
-  // The tutorial's fill: each cell has a 20% chance of being an obstacle (seeded here, so
-  // a seed always makes the same maze).
+  if (hitboxDecides) {
+    hitboxMaze();   // Hitbox.pde
+    return;
+  }
   randomSeed(seed);
-  for (int row = 0; row < rows; row++) {
-    for (int column = 0; column < columns; column++) {
-      grid[row][column] = random(1) < 0.2;
+  //randomly place obstacles in the grid
+  for (int row = 0; row < grid.length; row++) {
+    for (int column = 0; column < grid[row].length; column++) {
+      grid[row][column] = false;
+      //each cell has a 20% chance of being an obstacle
+      if (random(1) < .2) {
+        grid[row][column] = true;
+      }
     }
   }
-  // Hitbox's fill: exactly 20% of the cells, never the player's.
-  maze.fillRandom(0.2, seed, playerIndexX, playerIndexY);
-}
-
-// Is this cell an obstacle, in the grid shown now?
-boolean obstacle(int column, int row) {
-  return tutorialGrid ? grid[row][column] : maze.isSolid(column, row);
 }
 
 void draw() {
   background(Palette.BACKGROUND);
+  cellWidth = 400 / columns;   // the tutorial's width / columns: here the grid is 400 wide
+  cellHeight = 400 / rows;
   stroke(Palette.LINE);
   for (int row = 0; row < rows; row++) {
     for (int column = 0; column < columns; column++) {
-      fill(obstacle(column, row) ? Palette.OBSTACLE : Palette.BACKGROUND);
-      rect(column * cellSize, row * cellSize, cellSize, cellSize);
+      float cellX = cellWidth * column;
+      float cellY = cellHeight * row;
+      //fill the obstacles in with red
+      if (grid[row][column]) {
+        fill(Palette.OBSTACLE);
+      } else {
+        noFill();
+      }
+      rect(cellX, cellY, cellWidth, cellHeight);
     }
   }
   drawPlayer();       // the rest is in Maths.pde
   drawPanel();
-  if (showMaths) {
-    drawMaths();
-  }
 }
 
 void keyPressed() {
-  if (keyCode == UP) {
-    step(0, -1);
+  int wasX = playerIndexX;
+  int wasY = playerIndexY;
+  if (hitboxDecides && key == CODED) {
+    hitboxStep();   // Hitbox.pde
+  } else if (keyCode == UP) {
+    //if we aren't in the top row and the cell above us doesn't contain an obstacle
+    if (playerIndexY > 0 && !grid[playerIndexY - 1][playerIndexX]) {
+      playerIndexY--;
+    }
   } else if (keyCode == DOWN) {
-    step(0, 1);
+    //if we aren't in the bottom row and the cell below us doesn't contain an obstacle
+    if (playerIndexY < rows - 1 && !grid[playerIndexY + 1][playerIndexX]) {
+      playerIndexY++;
+    }
   } else if (keyCode == LEFT) {
-    step(-1, 0);
+    //if we aren't in the left-most column and the cell to our left doesn't contain an obstacle
+    if (playerIndexX > 0 && !grid[playerIndexY][playerIndexX - 1]) {
+      playerIndexX--;
+    }
   } else if (keyCode == RIGHT) {
-    step(1, 0);
+    //if we aren't in the right-most column and the cell to our right doesn't contain an obstacle
+    if (playerIndexX < columns - 1 && !grid[playerIndexY][playerIndexX + 1]) {
+      playerIndexX++;
+    }
   } else {
     otherKeys();
   }
-}
-
-// Before the player steps by (dx, dy): is the cell it would step into free?
-void step(int dx, int dy) {
-  int x = playerIndexX + dx;
-  int y = playerIndexY + dy;
-  boolean free;
-  if (tutorialGrid) {
-    // The tutorial's check, which it writes once per arrow key: not past that edge of the
-    // grid, and not an obstacle.
-    free = x >= 0 && x < columns && y >= 0 && y < rows && !grid[y][x];
-  } else {
-    // Hitbox's: outside the grid counts as solid, so one call checks both.
-    free = maze.canMove(playerIndexX, playerIndexY, dx, dy);
-  }
-  if (free) {
-    playerIndexX = x;
-    playerIndexY = y;
-  }
-  describeStep(dx, dy, free);
+  describeStep(wasX, wasY);
 }

@@ -1,10 +1,10 @@
-// The keys: LEFT / RIGHT run while held, UP or SPACE jumps, t and d switch.
+// The keys: LEFT / RIGHT run while held, UP or SPACE jumps, l and d switch.
 
 void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
-  } else if (key == 't') {
-    tutorialWay = !tutorialWay;
+  } else if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
   } else if (key == ' ') {
     jumpPressed = true;
   } else if (key == CODED) {

@@ -16,12 +16,12 @@ void remember(Rect from, float speedX, float speedY) {
   checked = grid.moveObstacles(from, speedX, speedY);
 }
 
-// Hitbox's way: the box the move swept, turned into cells by dividing by the cell size; the
-// obstacle cells among them, the only ones the move checked; and the sides it hit. The
-// tutorial's way: the cells under the two next positions it looked at.
+// Hitbox's grid.move: the box the move swept, turned into cells by dividing by the cell size;
+// the obstacle cells among them, the only ones the move checked; and the sides it hit. The
+// default, cellsMove: the cells under the two next positions it looked at.
 void drawMaths() {
-  if (tutorialWay) {
-    drawTutorialMaths();
+  if (!hitboxDecides) {
+    drawCellsMaths();
     return;
   }
   float left = min(before.x(), before.x() + movedX);
@@ -86,9 +86,9 @@ void drawMaths() {
   Overlay.label(g, 8, 30, text, last.hitAnything() ? Overlay.HIT : Overlay.MISS);
 }
 
-// The tutorial's look: the box one step across, then one step down, and the cells under each
+// cellsMove's look: the box one step across, then one step down, and the cells under each
 // (floor of its corners divided by the cell size); an obstacle cell among them is red.
-void drawTutorialMaths() {
+void drawCellsMaths() {
   float nextX = before.x() + movedX;
   float nextY = before.y() + movedY;
   pushStyle();

@@ -1,5 +1,9 @@
 // Drawing the terrain, the two routes and the legend (the maths overlay is in Maths.pde).
 
+color grassColour = #5FA84F;
+color waterColour = #3D78C8;
+color forestColour = #2C5E34;
+
 void drawMap() {
   noStroke();
   for (int r = 0; r < grid.rows(); r++) {

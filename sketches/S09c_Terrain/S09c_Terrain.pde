@@ -62,12 +62,6 @@ Grid grid = Grid.parse(join(map, "\n"), cell).passable(FOREST);   // Hitbox's co
 
 float grassSpeed = 3;
 float forestSpeed = 1;
-PathCosts costs = PathCosts.byTerrain(1, Float.POSITIVE_INFINITY, 3);  // the time to cross a cell
-boolean diagonals = false;
-
-color grassColour = #5FA84F;
-color waterColour = #3D78C8;
-color forestColour = #2C5E34;
 
 Rect player = new Rect(24, 64, 12, 12);
 boolean leftDown = false;
@@ -75,10 +69,6 @@ boolean rightDown = false;
 boolean upDown = false;
 boolean downDown = false;
 float speed = grassSpeed;
-int goalCol = 28;
-int goalRow = 3;
-int[] shortest = new int[0];
-int[] cheapest = new int[0];
 boolean showMaths = false;
 
 void setup() {
@@ -153,10 +143,4 @@ void pickUpCoins() {
       }
     }
   }
-}
-
-void findRoutes() {
-  PathCosts steps = diagonals ? PathCosts.steps().withDiagonals() : PathCosts.steps();
-  shortest = grid.path(playerCol(), playerRow(), goalCol, goalRow, steps);
-  cheapest = grid.path(playerCol(), playerRow(), goalCol, goalRow, diagonals ? costs.withDiagonals() : costs);
 }

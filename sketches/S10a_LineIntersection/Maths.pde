@@ -47,10 +47,10 @@ void drawMaths() {
   // Each segment's four side tests, in a row along the top, above its segment.
   for (int i = 0; i < segments.length; i++) {
     Segment s = segments[i];
-    String a1 = side(s.x1(), s.y1(), s.x2(), s.y2(), ax, ay);
-    String a2 = side(s.x1(), s.y1(), s.x2(), s.y2(), bx, by);
-    String s1 = side(ax, ay, bx, by, s.x1(), s.y1());
-    String s2 = side(ax, ay, bx, by, s.x2(), s.y2());
+    String a1 = sideWord(s.x1(), s.y1(), s.x2(), s.y2(), ax, ay);
+    String a2 = sideWord(s.x1(), s.y1(), s.x2(), s.y2(), bx, by);
+    String s1 = sideWord(ax, ay, bx, by, s.x1(), s.y1());
+    String s2 = sideWord(ax, ay, bx, by, s.x2(), s.y2());
     String text = "lineLine(A, " + names[i] + "): " + segmentHit[i] + "\n"
         + "A1, A2 vs " + names[i] + ": " + a1 + " | " + a2 + "\n"
         + names[i] + "'s ends vs A: " + s1 + " | " + s2;
@@ -91,7 +91,7 @@ void drawMaths() {
  * end to the second, in the overlay's words: Collide.lineSide, the sign that
  * Collide.lineLine compares.
  */
-String side(float x1, float y1, float x2, float y2, float px, float py) {
+String sideWord(float x1, float y1, float x2, float y2, float px, float py) {
   int side = Collide.lineSide(x1, y1, x2, y2, px, py);
   return side > 0 ? "right" : side < 0 ? "left" : "on it";
 }

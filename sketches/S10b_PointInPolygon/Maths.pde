@@ -113,7 +113,7 @@ void drawMaths() {
   String text = "an edge counts when one end is below the ray and the other at or above it\n"
       + "the ray crosses: " + (list.isEmpty() ? "none" : list) + "  ->  " + crossings
       + (crossings % 2 == 1 ? ": odd" : ": even")
-      + "\nCollide.polygonPoint: " + inside;
+      + "\nCollide.polygonPoint: " + hitboxSays;
   Overlay.label(g, 8, py > height - 110 ? 46 : height - 72, text, inside ? Overlay.HIT : Overlay.MISS);
   for (RayHit t : touched) {
     Overlay.labelBeside(g, t.x(), t.y() + 8, 0, 1, "corner: not crossed", Overlay.GUIDE);

@@ -3,30 +3,33 @@
  * Tutorial section 10: More advanced collision detection
  *
  * Is the mouse inside this concave polygon? The tutorial leaves shapes beyond points,
- * rectangles and circles to the maths you find; the rectangle video names this trick for
- * concave polygons: project a line from the point and count how many edges it crosses, odd
- * means inside, even outside. Here the line is a ray to the right, and crosses() below
+ * rectangles and circles to the maths you find; the rectangle video names this trick among
+ * those for convex and concave polygons: project a line from the point and check whether the
+ * number of edges it crosses is odd or even. It does not say which is which: odd means
+ * inside, even outside. Here the line is a ray to the right, and crosses() below
  * decides for one edge: the edge must reach the ray's level, one end below it and the other
  * at or above it, and meet it right of the point. Only one end may count as "at", because a
  * ray through a corner would otherwise count that corner twice (once per edge): a corner the
- * outline just touches counts 0 or 2 times, one it passes through once. Collide.polygonPoint
- * is the whole count in one call (Collide.rayCrossesEdge the rule for one edge). Yellow dots
- * are the crossings; hollow rings are corners touched, not crossed.
+ * outline just touches counts 0 or 2 times, one it passes through once. The count decides the
+ * crown's colour. Collide.polygonPoint, the whole count in one call (Collide.rayCrossesEdge
+ * the rule for one edge), runs beside it; press l and it decides. Yellow dots are the
+ * crossings; hollow rings are corners touched, not crossed.
  *
  * Press b and the mouse carries a ball: a shape against the concave polygon, which the video
  * says becomes more complex. They overlap when an edge of the crown cuts into the ball, or
  * when the ball's centre is inside (the crossing count again), for a ball wholly inside
  * touches no edge; crown.overlaps(ball) is the library's answer.
  *
- * Where Hitbox differs: neither source writes the count out, so there is no tutorial's
- * version to switch to. Collide.polygonPoint counts as crosses() does; a point on the
- * outline is not inside, and a ball that only touches an edge does not overlap, because
- * touching is not colliding for every pair.
+ * Where Hitbox differs: neither source writes the count out; the code here is ours.
+ * Collide.polygonPoint counts as crosses() does, but first asks whether the point is on the
+ * outline: there it is not inside, whatever the count, and a ball that only touches an edge
+ * does not overlap, because touching is not colliding for every pair. The count alone cannot
+ * see the outline: put the mouse on an edge and the two can disagree.
  *
  * Try this: put the mouse level with a corner of the crown (y = 140 or y = 70); put it in
  * the notch at the bottom; with the ball, slide it into the notch until it touches both
  * sides; make your own polygon with Polygon.of(x0, y0, x1, y1, ...).
- * Keys: b a ball instead of a point, d shows the maths (each edge's number, which ones
+ * Keys: b a ball instead of a point, l Collide.polygonPoint decides / the count, d shows the maths (each edge's number, which ones
  * count and why).
  */
 import hitbox.*;
@@ -40,6 +43,8 @@ Polygon crown = Polygon.of(
 float px, py;         // the point: the mouse
 int crossings;        // edges the ray to the right crosses: written out below the crown
 boolean inside;       // the crown is red while the point is inside
+boolean hitboxSays;   // Collide.polygonPoint, beside the count
+boolean hitboxDecides;  // l
 boolean showMaths;    // d
 boolean ballMode;     // b: the mouse carries a ball
 float ballRadius = 28;
@@ -64,7 +69,8 @@ void draw() {
     }
   }
   // Collide.polygonPoint is that count in one call (a point on an edge is not inside).
-  inside = Collide.polygonPoint(crown.coordinates(), px, py);
+  hitboxSays = Collide.polygonPoint(crown.coordinates(), px, py);
+  inside = hitboxDecides ? hitboxSays : crossings % 2 == 1;
 
   // The ball: an edge cutting into it, or its centre inside.
   ballHits = false;
@@ -99,14 +105,16 @@ void draw() {
   circle(px, py, 10);
   drawCrossings();
 
-  String verdict = onOutline ? "on the outline: not inside (touching does not count)"
+  String verdict = onOutline ? "on the outline: the count says " + (crossings % 2 == 1 ? "inside" : "outside")
+      + ", Collide.polygonPoint not inside (touching does not count)"
       : crossings + (crossings == 1 ? " crossing: " : " crossings: ") + (crossings % 2 == 1 ? "odd, inside" : "even, outside");
   if (ballMode) {
     verdict = "the ball: " + (ballHits ? "overlaps the crown" : "apart") + ";  its centre: " + verdict;
   }
   boolean red = ballMode ? ballHits : inside;
   Overlay.labelCentered(g, width / 2, py < 60 ? height - 40 : 22, verdict, red ? Overlay.HIT : Overlay.MISS);
-  Overlay.hint(g, "move the mouse in and out of the crown   b: " + (ballMode ? "a point" : "a ball") + "   d: show the maths");
+  Overlay.hint(g, "move the mouse in and out of the crown   b: " + (ballMode ? "a point" : "a ball") + "   l: "
+      + (hitboxDecides ? "the count" : "Collide.polygonPoint") + " decides   d: show the maths");
 }
 
 // Does the ray from the point (px, py) to the right cross the edge from (ax, ay) to (bx, by)?
@@ -126,5 +134,7 @@ void keyPressed() {
     showMaths = !showMaths;
   } else if (key == 'b') {
     ballMode = !ballMode;
+  } else if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
   }
 }

@@ -9,23 +9,27 @@
  * overlap on some axis, that axis separates the shapes; if they overlap on every axis, the
  * shapes overlap. A shadow is a projection: each corner (x, y) lands on the axis (nx, ny) at
  * the dot product x * nx + y * ny, and the shadow runs from the smallest to the largest
- * (shadow() below). The loop looks for the gap; SeparatingAxis.axes(a, b) gives each axis
- * with both shadows worked out the same way (the panel on the right lists and draws them),
- * SeparatingAxis.overlaps(a, b) the answer. The rectangle turns (Polygon.rotatedRect); the triangle follows the mouse. The
- * axis drawn beside the shapes is the one with the widest gap, or, while they overlap, the
- * one with the least overlap: the shortest way out.
+ * (shadow() below). The axes are written out too (addAxes below): one per edge, along its
+ * normal, the edge's (dx, dy) turned a quarter to (dy, -dx) and divided by its length. The
+ * loop looks for the gap, and its answer colours the rectangle; the panel on the right lists
+ * and draws the axes. The rectangle turns (Polygon.rotatedRect); the triangle follows the
+ * mouse. The axis drawn beside the shapes is the one with the widest gap, or, while they
+ * overlap, the one with the least overlap: the shortest way out.
  *
- * Where Hitbox differs: neither source writes the test out. Hitbox's SeparatingAxis counts
- * shadows that only touch as a gap, because touching is not colliding for every pair.
+ * Where Hitbox differs: neither source writes the test out; this code is ours. Hitbox's
+ * SeparatingAxis.overlaps(a, b) runs beside it (l lets it decide) and projects in double, so
+ * it stays exact where these floats could round; it too counts shadows that only touch as a
+ * gap, because touching is not colliding for every pair.
  *
  * Try this: bring a corner of the triangle close to a corner of the rectangle and watch
  * which axes still find a gap; press 4, 5 or 6 for more sides (more axes); press space to
  * stop the turning.
- * Keys: 3-6 the mouse shape's sides, space stops the turning, d shows the maths (the
- * shadows' numbers, the light that casts them).
+ * Keys: 3-6 the mouse shape's sides, space stops the turning, l SeparatingAxis.overlaps
+ * decides / the loop, d shows the maths (the shadows' numbers, the light that casts them).
  */
 import hitbox.*;
 import hitbox.processing.*;
+import java.util.ArrayList;
 import java.util.List;
 
 float cx = 280, cy = 215;     // the rectangle's centre
@@ -35,7 +39,9 @@ int sides = 3;
 
 Polygon box, mover;
 List<SeparatingAxis.Axis> axes;
-boolean overlapping;          // the library's answer this frame
+boolean overlapping;          // this frame's answer: the loop's, or the library's after l
+boolean hitboxSays;           // SeparatingAxis.overlaps, beside the loop
+boolean hitboxDecides;        // l
 int separating = -1;          // the axis with the widest gap, or -1 if there is none
 int shown = -1;               // the axis drawn beside the shapes: that one, or the least overlap
 boolean showMaths;
@@ -55,19 +61,20 @@ void draw() {
 
   // The theorem as a loop: on each axis, the two shadows [minA, maxA] and [minB, maxB];
   // a gap between them on any one axis means apart (shadows that only touch count as a gap).
-  axes = SeparatingAxis.axes(box, mover);   // every edge's normal, from both shapes
+  axes = new ArrayList<SeparatingAxis.Axis>();
+  addAxes(box);     // every edge's normal, from both shapes
+  addAxes(mover);
   separating = -1;
   for (int i = 0; i < axes.size(); i++) {
     SeparatingAxis.Axis a = axes.get(i);
-    float[] shadowA = shadow(box, a.nx(), a.ny());     // a.minA(), a.maxA()
-    float[] shadowB = shadow(mover, a.nx(), a.ny());   // a.minB(), a.maxB()
-    boolean gap = shadowA[1] <= shadowB[0] || shadowB[1] <= shadowA[0];
+    boolean gap = a.maxA() <= a.minB() || a.maxB() <= a.minA();
     if (gap && (separating < 0 || a.overlap() < axes.get(separating).overlap())) {
       separating = i;   // the widest gap so far
     }
   }
-  // The library's call: the same answer.
-  overlapping = SeparatingAxis.overlaps(box, mover);
+  // No gap on any axis: overlapping. Hitbox's call beside it: the same question.
+  hitboxSays = SeparatingAxis.overlaps(box, mover);
+  overlapping = hitboxDecides ? hitboxSays : separating < 0;
   shown = separating >= 0 ? separating : leastOverlap();
 
   noStroke();
@@ -86,7 +93,25 @@ void draw() {
       : "axis " + (separating + 1) + " separates them: apart";
   Overlay.labelCentered(g, panelX / 2, mouseY > height - 90 ? 18 : height - 36, verdict, overlapping ? Overlay.HIT : Overlay.MISS);
   Overlay.hint(g, "move the triangle     3-6: sides     space: " + (turning ? "stop" : "start")
-      + " turning     d: show the maths");
+      + " turning     l: " + (hitboxDecides ? "the loop" : "SeparatingAxis.overlaps") + " decides     d: show the maths");
+}
+
+// One axis per edge of p: the edge (dx, dy) turned a quarter, (dy, -dx), made length 1; on
+// it, both shapes' shadows.
+void addAxes(Polygon p) {
+  for (int i = 0; i < p.size(); i++) {
+    int next = (i + 1) % p.size();
+    float dx = p.x(next) - p.x(i);
+    float dy = p.y(next) - p.y(i);
+    float length = sqrt(dx * dx + dy * dy);
+    if (length > 0) {
+      float nx = dy / length;
+      float ny = -dx / length;
+      float[] shadowA = shadow(box, nx, ny);
+      float[] shadowB = shadow(mover, nx, ny);
+      axes.add(new SeparatingAxis.Axis(nx, ny, shadowA[0], shadowA[1], shadowB[0], shadowB[1]));
+    }
+  }
 }
 
 // A shape's shadow on the axis (nx, ny): each corner projected onto it with the dot product,
@@ -105,6 +130,8 @@ float[] shadow(Polygon p, float nx, float ny) {
 void keyPressed() {
   if (key == 'd') {
     showMaths = !showMaths;
+  } else if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
   } else if (key >= '3' && key <= '6') {
     sides = key - '0';
   } else if (key == ' ') {

@@ -33,7 +33,7 @@ void drawPair() {
 // This frame's runs of each stage, and stage 3's time.
 String thisFrame() {
   return "this frame the stages ran " + ran[0] + ", " + ran[1] + " and " + ran[2] + " times; stage 3 ("
-      + (plainLoop ? "pixel loop" : "PixelMask") + ") took " + nf(pixelNanos / 1e6, 0, 3) + " ms";
+      + (hitboxDecides ? "PixelMask" : "pixel loop") + ") took " + nf(pixelNanos / 1e6, 0, 3) + " ms";
 }
 
 void drawCrowd() {

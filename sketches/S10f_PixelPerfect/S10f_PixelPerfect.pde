@@ -9,19 +9,20 @@
  * specific or even pixel-perfect collision detection." hybrid() below is those three stages,
  * one after another, each counted as it runs: 1) the circles around the sprites' boxes,
  * 2) the boxes, 3) the pixels (PixelMask, made from each sprite's alpha). The first stage
- * that can say "apart" decides; only stage 3 can say "colliding". Hitbox's Hybrid.check
- * runs the same three stages in one call, with the same answers. The big star is coloured by
- * the stage that decided; the first pixel the two share is marked.
+ * that can say "apart" decides; only stage 3 can say "colliding". The big star is coloured by
+ * the stage that decided; the first pixel the two share is marked. The tutorial gives no code
+ * for these stages: the code here is ours, written out, stage 3 as a plain loop over the
+ * pixels, and that loop is what makes pixel-perfect slow.
  *
- * Where Hitbox differs: in stage 3. The tutorial gives no code for these stages. Stage 3 can
- * be a plain loop over the pixels (press p), and that loop is what makes pixel-perfect slow;
- * Hitbox's PixelMask.overlaps keeps each row of a sprite as bits, 64 pixels to a long, and
- * compares 64 pixels in one step. The time stage 3 took this frame is on screen for both.
+ * Where Hitbox differs: in stage 3. Press l for Hitbox's PixelMask.overlaps: it keeps each row
+ * of a sprite as bits, 64 pixels to a long, and compares 64 pixels in one step. The time stage
+ * 3 took this frame is on screen for both. (Hitbox's Hybrid.check runs the same three stages
+ * in one call, with the same answers.)
  *
  * Try this: put the ring between two of the star's points (the boxes overlap, the pixels
  * do not); press c and sweep the ring through a crowd to see how rarely the pixel test has
  * to run; make the sprites from your own PNGs with loadImage.
- * Keys: c crowd of stars, p stage 3 as a plain pixel loop / PixelMask, d shows the maths
+ * Keys: c crowd of stars, l stage 3 as PixelMask / a plain pixel loop, d shows the maths
  * (circles, boxes and the comparisons).
  */
 import hitbox.*;
@@ -40,7 +41,7 @@ Hybrid.Counter counter = new Hybrid.Counter();      // every check since the sta
 
 int[] ran = new int[3];               // how many times each stage ran this frame
 long pixelNanos;                      // and how long stage 3 took, in nanoseconds
-boolean plainLoop = false;            // p: stage 3 as a plain loop over the pixels
+boolean hitboxDecides;                // l: stage 3 as Hitbox's PixelMask.overlaps, not the pixel loop
 
 boolean crowdMode;                    // c: a crowd of small stars instead
 int[] crowdX = new int[48];
@@ -79,7 +80,7 @@ void draw() {
     drawPair();    // Maths.pde
   }
   Overlay.hint(g, "move the ring   c: " + (crowdMode ? "one big star" : "a crowd of stars")
-      + "   p: stage 3 " + (plainLoop ? "as PixelMask" : "as a pixel loop") + "   d: show the maths");
+      + "   l: stage 3 " + (hitboxDecides ? "as a pixel loop" : "as PixelMask") + "   d: show the maths");
 }
 
 // Distance, then hit boxes, then pixels: section 10's stages in its order, each run only if
@@ -97,15 +98,16 @@ Hybrid.Result hybrid(PixelMask a, int ax, int ay, PixelMask b, int bx, int by) {
   if (centres > radii) {
     return new Hybrid.Result(false, Hybrid.Stage.CIRCLES);
   }
-  // 2. Hit boxes: section 5's rectangle/rectangle test.
+  // 2. Hit boxes: section 5's rectangle/rectangle if (Collide.rectRect asks the same).
   ran[1]++;
-  if (!Collide.rectRect(boxA.x(), boxA.y(), boxA.w(), boxA.h(), boxB.x(), boxB.y(), boxB.w(), boxB.h())) {
+  if (!(boxA.x() + boxA.w() > boxB.x() && boxA.x() < boxB.x() + boxB.w()
+      && boxA.y() + boxA.h() > boxB.y() && boxA.y() < boxB.y() + boxB.h())) {
     return new Hybrid.Result(false, Hybrid.Stage.BOXES);
   }
   // 3. Pixels: is some pixel solid in both sprites?
   ran[2]++;
   long start = System.nanoTime();
-  boolean shared = plainLoop ? pixelLoop(a, ax, ay, b, bx, by) : a.overlaps(b, bx - ax, by - ay);
+  boolean shared = hitboxDecides ? a.overlaps(b, bx - ax, by - ay) : pixelLoop(a, ax, ay, b, bx, by);
   pixelNanos += System.nanoTime() - start;
   return new Hybrid.Result(shared, Hybrid.Stage.PRECISE);
 }
@@ -128,7 +130,7 @@ void keyPressed() {
     showMaths = !showMaths;
   } else if (key == 'c') {
     crowdMode = !crowdMode;
-  } else if (key == 'p') {
-    plainLoop = !plainLoop;
+  } else if (key == 'l') {
+    hitboxDecides = !hitboxDecides;
   }
 }

@@ -16,6 +16,8 @@ import javax.imageio.ImageIO;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import hitbox.Grid;
 import hitbox.PathCosts;
@@ -57,10 +59,16 @@ class H01_MazeTest {
         assertEquals(r.sketch().townColours.colorOf(1), r.lastFrame().get(30, 30), "a building drawn in its key colour");
     }
 
-    @Test
-    void walkingCellByCell_onlyWhereCanMoveAllows_neverIntoABuilding() {
+    @ParameterizedTest(name = "l pressed: {0}")
+    @ValueSource(booleans = {false, true})
+    void walkingCellByCell_sectionNinesIfs_orCanMoveAfterL_onlyIntoCellsThatAreNotSolid(boolean l) {
+        // Section 9's ifs by default, Grid.canMove after l: the same steps, checked here
+        // against the grid's cells (not at the edge, and the next cell not solid).
         Random random = new Random(6);
         Script script = new Script().frames(1803);
+        if (l) {
+            script.key(1, 'l');
+        }
         int[] pressed = new int[601];
         for (int i = 1; i <= 600; i++) {
             pressed[i] = random.nextInt(4);
@@ -69,8 +77,9 @@ class H01_MazeTest {
         List<int[]> at = new ArrayList<>();
         at.add(null);
         SketchRun.Result<H01_Maze> r = SketchRun.of(new H01_Maze()).script(script).everyFrame(s -> {
-            assertFalse(s.grid.isSolid(s.playerCol, s.playerRow), "in a building at " + s.playerCol + ", " + s.playerRow);
-            at.add(new int[] {s.playerCol, s.playerRow});
+            assertEquals(l, s.hitboxDecides);
+            assertFalse(s.grid.isSolid(s.playerIndexX, s.playerIndexY), "in a building at " + s.playerIndexX + ", " + s.playerIndexY);
+            at.add(new int[] {s.playerIndexX, s.playerIndexY});
         }).run();
         Grid g = r.sketch().grid;
         int[][] steps = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}};
@@ -79,7 +88,10 @@ class H01_MazeTest {
         for (int i = 1; i <= 600; i++) {
             int[] before = at.get(3 * i - 1);
             int[] after = at.get(3 * i + 1);
-            boolean free = g.canMove(before[0], before[1], steps[pressed[i]][0], steps[pressed[i]][1]);
+            int c = before[0] + steps[pressed[i]][0];
+            int row = before[1] + steps[pressed[i]][1];
+            boolean free = c >= 0 && c < g.cols() && row >= 0 && row < g.rows() && !g.isSolid(c, row);
+            assertEquals(g.canMove(before[0], before[1], steps[pressed[i]][0], steps[pressed[i]][1]), free, "canMove asks the same");
             assertEquals(free ? before[0] + steps[pressed[i]][0] : before[0], after[0], "press " + i);
             assertEquals(free ? before[1] + steps[pressed[i]][1] : before[1], after[1], "press " + i);
             moved += free ? 1 : 0;
@@ -157,7 +169,7 @@ class H01_MazeTest {
         SketchRun.Result<H01_Maze> r = SketchRun.of(new H01_Maze()).script(script).everyFrame(s -> {
             Rect b = s.box;
             assertFalse(s.grid.rectOverlapsSolid(b.x(), b.y(), b.w(), b.h()), "the box overlaps a building at " + b);
-            assertEquals(s.grid.colAt(s.playerX()), s.playerCol);
+            assertEquals(s.grid.colAt(s.playerX()), s.playerIndexX);
             if (s.frameCount == 3) {
                 start[0] = b.x();
                 start[1] = b.y();

@@ -16,15 +16,22 @@ import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
 /**
- * 100 bouncers among 100 obstacles: never inside one, a new colour on every hit, the same run
- * every time. With t, section 8's own loop (a flip inside the loop) lets bouncers into
- * obstacles, which the header says it can.
+ * 100 bouncers among 100 obstacles, the same run every time. By default section 8's loop (a
+ * flip inside the loop) moves them, a new colour on every flip, and lets some into obstacles,
+ * as the header says it can. With l, Hitbox's loop: never inside one, a new colour on every hit.
  */
 class H02_BouncersTest {
 
     @BeforeAll
     static void needsDisplay() {
         assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
+    }
+
+    /** The sketch with Hitbox's loop on from the first frame, as l gives it. */
+    private static H02_Bouncers hitboxLoop() {
+        H02_Bouncers s = new H02_Bouncers();
+        s.hitboxDecides = true;
+        return s;
     }
 
     @Test
@@ -35,9 +42,9 @@ class H02_BouncersTest {
     }
 
     @Test
-    void threeThousandFrames_noBouncerEndsAFrameInsideAnObstacle_orOutsideTheWindow() {
+    void hitboxLoop_threeThousandFrames_noBouncerEndsAFrameInsideAnObstacle_orOutsideTheWindow() {
         int[] moving = new int[1];
-        SketchRun.of(new H02_Bouncers()).frames(3000).everyFrame(s -> {
+        SketchRun.of(hitboxLoop()).frames(3000).everyFrame(s -> {
             for (int i = 0; i < s.bouncers.size(); i++) {
                 H02_Bouncers.Bouncer b = s.bouncers.get(i);
                 int inside = Hits.first(b.x, b.y, s.size, s.size, s.obstacles);
@@ -55,13 +62,13 @@ class H02_BouncersTest {
     }
 
     @Test
-    void colour_changesExactlyOnHits() {
+    void hitboxLoop_colour_changesExactlyOnHits() {
         // A hit is what Motion says about the bouncer's next move from where it was: asked
         // here afresh, from the previous frame's positions and speeds.
         float[][] before = new float[100][];
         int[] colours = new int[100];
         int[] changes = new int[1];
-        SketchRun.of(new H02_Bouncers()).frames(1000).everyFrame(s -> {
+        SketchRun.of(hitboxLoop()).frames(1000).everyFrame(s -> {
             int counted = 0;
             for (int i = 0; i < s.bouncers.size(); i++) {
                 H02_Bouncers.Bouncer b = s.bouncers.get(i);
@@ -85,15 +92,17 @@ class H02_BouncersTest {
     }
 
     @Test
-    void theSketchesLoop_movesEachBouncerAsMotionBounceDoes() {
-        // The loop in the first tab (ask every obstacle, combine, reverse once, window edges,
-        // move where free) is Motion.bounce's frame, written out: check it bouncer by bouncer.
+    void lKey_hitboxLoop_movesEachBouncerAsMotionBounceDoes() {
+        // Hitbox's loop (ask every obstacle, combine, reverse once, window edges, move where
+        // free) is Motion.bounce's frame, written out: check it bouncer by bouncer from frame 2,
+        // the first after l.
         float[][] before = new float[100][];
         int[] compared = new int[1];
-        SketchRun.of(new H02_Bouncers()).frames(600).everyFrame(s -> {
+        SketchRun.of(new H02_Bouncers()).script(new Script().frames(600).key(1, 'l')).everyFrame(s -> {
             for (int i = 0; i < s.bouncers.size(); i++) {
                 H02_Bouncers.Bouncer b = s.bouncers.get(i);
                 if (before[i] != null) {
+                    assertTrue(s.hitboxDecides);
                     float[] p = before[i];
                     Motion.Step step = Motion.bounce(p[0], p[1], s.size, s.size, p[2], p[3], s.obstacles, s.width, s.height);
                     String what = "frame " + s.frameCount + ", bouncer " + i;
@@ -143,33 +152,59 @@ class H02_BouncersTest {
         assertEquals(0, SketchPixels.differing(a, onOff.lastFrame(), 0, 0, 599, 380), "d again hides it");
     }
 
-
-
     @Test
-    void tKey_sectionEightsLoop_flipsInsideTheLoop_andSomeBouncersEndUpInsideObstacles() {
+    void byDefault_sectionEightsLoop_flipByFlip_aColourPerHit_andSomeBouncersEndUpInsideObstacles() {
+        // Each frame, section 8's loop (and section 6's window edges) run here on every bouncer
+        // as it was: the sketch must match it exactly, speeds, positions and colours.
         int[] caughtFrames = new int[1];
         int[] hits = new int[1];
         float[][] before = new float[100][];
-        SketchRun.of(new H02_Bouncers()).script(new Script().frames(1500).key(1, 't')).everyFrame(s -> {
-            if (s.frameCount >= 2) {
-                assertTrue(s.tutorialLoop);
-                hits[0] += s.hitsThisFrame;
-                for (int i = 0; i < 100; i++) {
-                    H02_Bouncers.Bouncer b = s.bouncers.get(i);
-                    // The tutorial's loop always moves by the speed it ends with: no waiting.
-                    assertEquals(before[i][0] + b.vx, b.x, 1e-4f, "frame " + s.frameCount + ", bouncer " + i + " x");
-                    assertEquals(before[i][1] + b.vy, b.y, 1e-4f, "frame " + s.frameCount + ", bouncer " + i + " y");
-                }
-                boolean anyInside = false;
-                for (H02_Bouncers.Bouncer b : s.bouncers) {
-                    anyInside |= Hits.any(b.x, b.y, s.size, s.size, s.obstacles);
-                }
-                caughtFrames[0] += anyInside ? 1 : 0;
-            }
+        int[] colours = new int[100];
+        SketchRun.of(new H02_Bouncers()).frames(1500).everyFrame(s -> {
+            assertFalse(s.hitboxDecides);
+            int counted = 0;
             for (int i = 0; i < 100; i++) {
                 H02_Bouncers.Bouncer b = s.bouncers.get(i);
-                before[i] = new float[] {b.x, b.y};
+                if (before[i] != null) {
+                    float x = before[i][0], y = before[i][1], vx = before[i][2], vy = before[i][3];
+                    float size = s.size;
+                    boolean hit = false;
+                    for (hitbox.Rect o : s.obstacles) {
+                        if (x + size + vx > o.x() && x + vx < o.x() + o.w() && y + size > o.y() && y < o.y() + o.h()) {
+                            vx *= -1;
+                            hit = true;
+                        }
+                        if (x + size > o.x() && x < o.x() + o.w() && y + size + vy > o.y() && y + vy < o.y() + o.h()) {
+                            vy *= -1;
+                            hit = true;
+                        }
+                    }
+                    if (x < 0 || x + size > s.width) {
+                        vx *= -1;
+                    }
+                    if (y < 0 || y + size > s.height) {
+                        vy *= -1;
+                    }
+                    String what = "frame " + s.frameCount + ", bouncer " + i;
+                    assertEquals(vx, b.vx, what + " vx");
+                    assertEquals(vy, b.vy, what + " vy");
+                    assertEquals(x + vx, b.x, what + " x");
+                    assertEquals(y + vy, b.y, what + " y");
+                    assertEquals(hit, b.colour != colours[i], what + ": a new colour exactly when an obstacle flipped it");
+                    counted += hit ? 1 : 0;
+                }
+                before[i] = new float[] {b.x, b.y, b.vx, b.vy};
+                colours[i] = b.colour;
             }
+            if (s.frameCount > 1) {
+                assertEquals(counted, s.hitsThisFrame, "hits this frame");
+                hits[0] += counted;
+            }
+            boolean anyInside = false;
+            for (H02_Bouncers.Bouncer b : s.bouncers) {
+                anyInside |= Hits.any(b.x, b.y, s.size, s.size, s.obstacles);
+            }
+            caughtFrames[0] += anyInside ? 1 : 0;
         }).run();
         assertTrue(hits[0] > 100, "the bouncers bounce off obstacles: " + hits[0] + " hits");
         assertTrue(caughtFrames[0] > 0, "some frame ends with a bouncer inside an obstacle: " + caughtFrames[0]);

@@ -16,9 +16,10 @@ import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
 /**
- * S01_EdgeBounce: Hitbox's way (the ball's edge tested, the speed's sign set) and the
- * tutorial's (the centre tested, the speed flipped), against the window's edges or a box's
- * (150..450 across, 100..300 down, after e). The ball is red on the frames an edge test fires.
+ * S01_EdgeBounce: the tutorial's code by default (the centre tested against 0, width, 0 and
+ * height, the speed flipped) and Hitbox's after l (the ball's edge tested, the speed's sign
+ * set), against the window's edges or a box's (150..450 across, 100..300 down, after e). The
+ * ball is red on the frames an edge test fires.
  */
 class S01_EdgeBounceTest {
 
@@ -37,8 +38,11 @@ class S01_EdgeBounceTest {
     void hitboxWay_bouncesOffAllFourEdges_neverPastOneForTwoFramesRunning() {
         int[] edgesCrossed = {0};
         int[] previous = {Edges.NONE};
-        SketchRun.of(new S01_EdgeBounce()).frames(5000)
+        SketchRun.of(new S01_EdgeBounce()).script(new Script().frames(5000).key(1, 'l'))
                 .everyFrame(s -> {
+                    if (s.frameCount < 2) {
+                        return;
+                    }
                     int crossed = Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height);
                     assertEquals(Edges.NONE, crossed & previous[0],
                             "ball at (" + s.x + ", " + s.y + ") is past the same edge two frames running");
@@ -55,10 +59,27 @@ class S01_EdgeBounceTest {
     }
 
     @Test
-    void tutorialsCode_testsTheCentre_soTheBallGoesHalfOutBeforeItTurns() {
+    void byDefault_theTutorialsCode_testsTheCentre_soTheBallGoesHalfOutBeforeItTurns() {
         float[] furthest = {0};
-        SketchRun.of(new S01_EdgeBounce()).script(new Script().frames(400).key(1, 't'))
-                .everyFrame(s -> furthest[0] = Math.max(furthest[0], s.x + s.r - s.width))
+        int[] previousSign = {1};
+        SketchRun.of(new S01_EdgeBounce()).frames(2000)
+                .everyFrame(s -> {
+                    furthest[0] = Math.max(furthest[0], s.x + s.r - s.width);
+                    // The tutorial's ifs, as section 1 writes them, on where the ball is now.
+                    boolean xIf = s.x < 0 || s.x > s.width;
+                    boolean yIf = s.y < 0 || s.y > s.height;
+                    int sign = s.xSpeed > 0 ? 1 : -1;
+                    assertEquals(xIf, sign != previousSign[0], "xSpeed flips exactly when x < 0 || x > width, x = " + s.x);
+                    previousSign[0] = sign;
+                    // A pixel of the ball inside the window (its centre may be past the edge), off the labels.
+                    int px = Math.round(Math.max(3, Math.min(s.width - 4, s.x)));
+                    int py = Math.round(Math.max(3, Math.min(s.height - 4, s.y + (s.y < s.height / 2 ? s.r / 2 : -s.r / 2))));
+                    if ((py < 30 && px < 420) || py > s.height - 30) {
+                        return;
+                    }
+                    assertEquals(Integer.toHexString(xIf || yIf ? Palette.HIT : Palette.PLAYER),
+                            Integer.toHexString(s.get(px, py) | 0xFF000000), "red exactly on the frames the tutorial's ifs fire");
+                })
                 .run();
         // Hitbox's way turns it within a step (4.5) of the edge; the tutorial's when the centre is past it.
         assertTrue(furthest[0] > 24, "the ball reached " + furthest[0] + " past the right edge");
@@ -67,7 +88,7 @@ class S01_EdgeBounceTest {
     @Test
     void tutorialsCode_aBallDroppedInTheWall_staysStuckThere_flippingEveryFrame() {
         // Dropped left of the box (its left edge is at 150), then the box's edges swapped in.
-        Script script = new Script().frames(200).key(1, 't').click(4, 90, 190).key(6, 'e');
+        Script script = new Script().frames(200).click(4, 90, 190).key(6, 'e');
         float[] lastSpeed = {Float.NaN};
         float[] stuckAt = {Float.NaN};
         SketchRun.Result<S01_EdgeBounce> r = SketchRun.of(new S01_EdgeBounce()).script(script).everyFrame(s -> {
@@ -87,7 +108,7 @@ class S01_EdgeBounceTest {
 
     @Test
     void hitboxWay_theSameDrop_comesBackInsideTheBox_andBouncesThere() {
-        Script script = new Script().frames(400).click(4, 90, 190).key(6, 'e');
+        Script script = new Script().frames(400).key(1, 'l').click(4, 90, 190).key(6, 'e');
         boolean[] inside = {false};
         SketchRun.Result<S01_EdgeBounce> r = SketchRun.of(new S01_EdgeBounce()).script(script).everyFrame(s -> {
             if (s.frameCount == 40) {

@@ -27,10 +27,36 @@ class S01b_EdgeActionsTest {
     }
 
     @Test
-    void wrap_ballLeavesOneSideAndComesBackOnTheOther() {
+    void byDefault_wrap_theWrittenOutIfs_teleportTheCentrePastAnEdge_toTheOtherSide() {
+        boolean[] wrapped = new boolean[2];
+        float[] previous = {Float.NaN, Float.NaN};
+        SketchRun.of(new S01b_EdgeActions()).script(new Script().frames(400).key(1, 'w'))
+                .everyFrame(s -> {
+                    assertFalse(s.hitboxDecides);
+                    if (!Float.isNaN(previous[0])) {
+                        // The if statements, run here on where the ball was, moved by its speed.
+                        float x = previous[0] + s.xSpeed;
+                        float y = previous[1] + s.ySpeed;
+                        float expectedX = x > s.width ? 0 : x < 0 ? s.width : x;
+                        float expectedY = y > s.height ? 0 : y < 0 ? s.height : y;
+                        assertEquals(expectedX, s.x, 1e-3f, "frame " + s.frameCount + ": x");
+                        assertEquals(expectedY, s.y, 1e-3f, "frame " + s.frameCount + ": y");
+                        wrapped[0] |= x > s.width;
+                        wrapped[1] |= y > s.height;
+                    }
+                    previous[0] = s.x;
+                    previous[1] = s.y;
+                    assertTrue(s.x >= 0 && s.x <= s.width && s.y >= 0 && s.y <= s.height, "the centre stays in the window");
+                })
+                .run();
+        assertTrue(wrapped[0] && wrapped[1], "the ball wrapped around, across and down");
+    }
+
+    @Test
+    void lKey_wrap_ballWhollyLeavesOneSideAndComesBackOnTheOther() {
         boolean[] wrapped = new boolean[1];
         float[] previousX = {Float.NaN};
-        SketchRun.of(new S01b_EdgeActions()).script(new Script().frames(400).key(1, 'w'))
+        SketchRun.of(new S01b_EdgeActions()).script(new Script().frames(400).key(1, 'w').key(1, 'l'))
                 .everyFrame(s -> {
                     // Moving right at 4.5 a frame, x only ever falls when it wraps to the left.
                     if (s.x < previousX[0]) {
@@ -65,7 +91,7 @@ class S01b_EdgeActionsTest {
     }
 
     @Test
-    void gameOver_bouncesOffTheBottom_thenEndsAtTheRight_andSpaceServesAgain() {
+    void gameOver_theWrittenOutIfs_bounceOffTheBottom_thenEndWithTheCentrePastTheRight_andSpaceServesAgain() {
         boolean[] bouncedOffBottom = {false};
         float[] lastYSpeed = {3.2f};
         SketchRun.Result<S01b_EdgeActions> over = SketchRun.of(new S01b_EdgeActions())
@@ -82,7 +108,7 @@ class S01b_EdgeActionsTest {
         S01b_EdgeActions s = over.sketch();
         assertTrue(bouncedOffBottom[0], "bounced off the bottom wall");
         assertTrue(s.gameOver, "the ball went out at the right: game over");
-        assertTrue(Side.has(Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height), Side.RIGHT));
+        assertTrue(s.x > s.width, "the centre went past the right edge: " + s.x);
         assertEquals(0f, s.xSpeed);
         assertEquals(0f, s.ySpeed);
         int banner = SketchPixels.count(over.lastFrame(), 150, 150, 450, 200, Palette.NEUTRAL);
@@ -92,6 +118,15 @@ class S01b_EdgeActionsTest {
                 .script(new Script().frames(120).key(1, 'g').key(100, ' ')).run().sketch();
         assertFalse(again.gameOver, "space serves again");
         assertEquals(300 - 20 * 4.5f, again.x, 1e-3f, "from the middle, away from the side it went out");
+    }
+
+    @Test
+    void lKey_gameOver_endsAsSoonAsTheBallsEdgeCrossesTheRight() {
+        S01b_EdgeActions s = SketchRun.of(new S01b_EdgeActions())
+                .script(new Script().frames(90).key(1, 'g').key(1, 'l')).run().sketch();
+        assertTrue(s.gameOver);
+        assertTrue(Side.has(Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height), Side.RIGHT));
+        assertTrue(s.x <= s.width, "over before the centre got past: " + s.x);
     }
 
     @Test

@@ -6,7 +6,10 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.ParameterizedTest;
 
+import hitbox.Collide;
 import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
@@ -70,6 +73,32 @@ class S02_CirclePointTest {
         assertEquals(0, SketchPixels.count(far.lastFrame(), 0, 0, 599, 380, Palette.ACCENT), "nothing far away");
         assertEquals(0, SketchPixels.count(inside.lastFrame(), 0, 0, 599, 380, Palette.ACCENT), "nothing inside");
         assertEquals(0, SketchPixels.count(beyond.lastFrame(), 0, 0, 599, 380, Palette.ACCENT), "nothing 80 px away");
+    }
+
+    @ParameterizedTest(name = "l pressed {0} times")
+    @CsvSource({"0", "1", "2"})
+    void mouseSweep_theColourFollowsTheTutorialsIf_orCollideCirclePointAfterL_andTheyAgree(int lPresses) {
+        Script script = SketchPixels.lThenMouse(600, lPresses, f -> new int[] {150 + (f * 17) % 300, 60 + (f / 20) * 11 % 280});
+        int[] seen = {0, 0};
+        SketchRun.Result<S02_CirclePoint> r = SketchRun.of(new S02_CirclePoint()).script(script).everyFrame(s -> {
+            if (s.frameCount < 5) {
+                return;
+            }
+            // The tutorial's if, as its section writes it.
+            boolean tutorialsIf = processing.core.PApplet.dist(s.mouseX, s.mouseY, s.circleCenterX, s.circleCenterY) < s.circleRadius;
+            boolean library = Collide.circlePoint(300, 200, 100, s.mouseX, s.mouseY);
+            assertEquals(library, tutorialsIf, "mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+            boolean inside = s.hitboxDecides ? library : tutorialsIf;
+            for (int[] p : INSIDE) {
+                if (Math.abs(p[0] - s.mouseX) > 8 || Math.abs(p[1] - s.mouseY) > 8) {
+                    assertEquals(Integer.toHexString(inside ? Palette.HIT : Palette.MISS), Integer.toHexString(s.get(p[0], p[1]) | 0xFF000000),
+                            "the circle at (" + p[0] + ", " + p[1] + ") with the mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+                }
+            }
+            seen[inside ? 1 : 0]++;
+        }).run();
+        assertEquals(lPresses % 2 == 1, r.sketch().hitboxDecides, "l hands the colour to Collide.circlePoint and back");
+        assertTrue(seen[0] > 50 && seen[1] > 50, "frames outside and inside: " + seen[0] + ", " + seen[1]);
     }
 
     @Test

@@ -1,6 +1,7 @@
 package sketches;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -48,10 +49,20 @@ class S02b_CircleButtonsTest {
             "480, 341, 3",
             "300, 120, -1",   // the lamp is not a button
     })
-    void theButtonUnderTheMouse_getsTheRing_andOnlyIt(int mx, int my, int hovered) {
+    void theButtonUnderTheMouse_getsTheRing_andOnlyIt_byTheTutorialsIf_andByCollideCirclePointAfterL(int mx, int my, int hovered) {
+        for (int i = 0; i < 4; i++) {
+            // The tutorial's if, as section 2 writes it, with this button's numbers.
+            assertEquals(i == hovered, processing.core.PApplet.dist(mx, my, BUTTON_X[i], 300) < 42, "dist() < buttonRadius, button " + i);
+        }
         SketchRun.Result<S02b_CircleButtons> r = SketchRun.of(new S02b_CircleButtons())
                 .script(new Script().frames(4).mouse(1, mx, my)).run();
+        assertFalse(r.sketch().hitboxDecides);
         assertRings(r.lastFrame(), hovered);
+        SketchRun.Result<S02b_CircleButtons> l = SketchRun.of(new S02b_CircleButtons())
+                .script(new Script().frames(4).mouse(1, mx, my).key(1, 'l')).run();
+        assertTrue(l.sketch().hitboxDecides);
+        assertRings(l.lastFrame(), hovered);
+        assertEquals(0, r.sketch().disagreements + l.sketch().disagreements, "the two tests agree");
     }
 
     @Test

@@ -52,6 +52,38 @@ class S03_CircleCircleTest {
                 "inside the big circle: not filled (unless the mouse circle covers it)");
     }
 
+    @ParameterizedTest(name = "l pressed {0} times")
+    @CsvSource({"0", "1", "2"})
+    void mouseSweep_theColourFollowsTheTutorialsIf_orCollideCircleCircleAfterL_andTheyAgree(int lPresses) {
+        Script script = SketchPixels.lThenMouse(600, lPresses, f -> new int[] {40 + (f * 17) % 520, 40 + (f / 20) * 11 % 320});
+        int[] seen = {0, 0};
+        SketchRun.Result<S03_CircleCircle> r = SketchRun.of(new S03_CircleCircle()).script(script).everyFrame(s -> {
+            if (s.frameCount < 5) {
+                return;
+            }
+            float d = processing.core.PApplet.dist(s.mouseX, s.mouseY, 300, 200);
+            // The tutorial's if, as its section writes it.
+            boolean tutorialsIf = d < s.bigCircleRadius + s.smallCircleRadius;
+            boolean library = Collide.circleCircle(s.mouseX, s.mouseY, s.smallCircleRadius, 300, 200, s.bigCircleRadius);
+            assertEquals(library, tutorialsIf, "mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+            if (d < 1 || Math.abs(d + 60 - s.bigCircleRadius) < 5) {
+                return;  // the pixel read below would sit on the big circle's outline
+            }
+            // A pixel of the small circle, 60 from its centre on the side away from the big one.
+            int px = Math.round(s.mouseX + 60 * (s.mouseX - 300) / d);
+            int py = Math.round(s.mouseY + 60 * (s.mouseY - 200) / d);
+            if (px < 0 || py < 60 || px >= s.width || py >= 380) {
+                return;  // off the window, or under the labels
+            }
+            boolean colliding = s.hitboxDecides ? library : tutorialsIf;
+            assertEquals(Integer.toHexString(colliding ? Palette.HIT : Palette.MISS), Integer.toHexString(s.get(px, py) | 0xFF000000),
+                    "the small circle at (" + px + ", " + py + ") with the mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+            seen[colliding ? 1 : 0]++;
+        }).run();
+        assertEquals(lPresses % 2 == 1, r.sketch().hitboxDecides, "l hands the colour to Collide.circleCircle and back");
+        assertTrue(seen[0] > 50 && seen[1] > 50, "frames apart and overlapping: " + seen[0] + ", " + seen[1]);
+    }
+
     @Test
     void overlayKey_changesWhatIsDrawn_andPressingAgainHidesIt() {
         Script script = new Script().frames(12).mouse(1, 180, 290).key(3, 'd').key(8, 'd');

@@ -1,6 +1,7 @@
 package sketches;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -28,14 +29,18 @@ class S03b_BallInCircleTest {
     }
 
     @Test
-    void ball_staysInTheWindow_andIsRedExactlyWhileItOverlapsTheCircle() {
+    void lKey_hitboxsTests_ballStaysInTheWindow_andIsRedExactlyWhileItOverlapsTheCircle() {
         int[] insideFrames = {0};
         int[] outsideFrames = {0};
         int[] bounces = new int[4];  // left, right, top, bottom
         float[] lastSpeed = {Float.NaN, Float.NaN};
         // Two clicks put the ball in the corners: the clamp must keep it in the window.
-        Script script = new Script().frames(3000).click(1000, 2, 2).click(2000, 599, 399);
+        Script script = new Script().frames(3000).key(1, 'l').click(1000, 2, 2).click(2000, 599, 399);
         SketchRun.of(new S03b_BallInCircle()).script(script).everyFrame(s -> {
+            if (s.frameCount < 2) {
+                return;   // frame 1 ran the tutorial's tests, before l
+            }
+            assertTrue(s.hitboxDecides);
             assertTrue(s.x - s.r >= 0 && s.x + s.r <= s.width, "ball inside the window across, x = " + s.x);
             assertTrue(s.y - s.r >= 0 && s.y + s.r <= s.height, "ball inside the window down, y = " + s.y);
             boolean overlaps = Collide.circleCircle(s.x, s.y, s.r, s.circleCenterX, s.circleCenterY, s.circleRadius);
@@ -87,18 +92,20 @@ class S03b_BallInCircleTest {
     }
 
     @Test
-    void tKey_runsTheTutorialsTests_theCentreGoesToTheEdge_andDistSaysInside() {
+    void byDefault_theTutorialsTests_theCentreGoesToTheEdge_andDistSaysInside_andTheColourFollows() {
         boolean[] halfOut = {false};
         int[] insideFrames = {0};
-        SketchRun.of(new S03b_BallInCircle()).script(new Script().frames(1500).key(1, 't')).everyFrame(s -> {
-            if (s.frameCount < 2) {
-                return;
-            }
+        SketchRun.of(new S03b_BallInCircle()).script(new Script().frames(1500)).everyFrame(s -> {
+            assertFalse(s.hitboxDecides);
             // Section 1's test looks at the centre: the ball goes half out before it turns.
             halfOut[0] |= s.x - s.r < 0 || s.x + s.r > s.width || s.y - s.r < 0 || s.y + s.r > s.height;
             assertTrue(s.x > -Math.abs(s.xSpeed) && s.x < s.width + Math.abs(s.xSpeed), "the centre turns back at the edge, x = " + s.x);
             boolean dist = Math.hypot(s.x - s.circleCenterX, s.y - s.circleCenterY) < s.r + s.circleRadius;
             assertEquals(dist, s.inside, "the tutorial's dist() test, frame " + s.frameCount);
+            if (s.x - s.r > 10 && s.x + s.r < s.width - 10 && s.y - s.r > 10 && s.y + s.r < s.height - 30) {   // away from the edges' marks
+                assertEquals(Integer.toHexString(dist ? Palette.HIT : Palette.MISS),
+                        Integer.toHexString(s.get(Math.round(s.x), Math.round(s.y)) | 0xFF000000), "ball colour, frame " + s.frameCount);
+            }
             insideFrames[0] += s.inside ? 1 : 0;
         }).run();
         assertTrue(halfOut[0], "with the tutorial's edges the ball goes half out of the window");

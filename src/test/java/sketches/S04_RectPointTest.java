@@ -39,15 +39,19 @@ class S04_RectPointTest {
             "300, 260, false",   // below
     })
     void button_isRedOnlyWhileHovered(int mx, int my, boolean hovered) {
-        // The combined if (Collide.rectPoint), then the nested ifs (n): the same answers.
-        for (boolean nested : new boolean[] {false, true}) {
+        // The tutorial's combined if, its nested ifs (n), and Collide.rectPoint (l): the same answers.
+        assertEquals(hovered, mx > 200 && mx < 200 + 200 && my > 150 && my < 150 + 100, "the tutorial's if, with the button's numbers");
+        for (int way = 0; way < 3; way++) {
             Script script = new Script().frames(5).mouse(1, mx, my);
-            if (nested) {
+            if (way == 1) {
                 script.key(1, 'n');
+            } else if (way == 2) {
+                script.key(1, 'l');
             }
             SketchRun.Result<S04_RectPoint> r = SketchRun.of(new S04_RectPoint()).script(script).run();
-            assertEquals(nested, r.sketch().nestedIf);
-            String form = nested ? "nested ifs" : "combined if";
+            assertEquals(way == 1, r.sketch().nestedIf);
+            assertEquals(way == 2, r.sketch().hitboxDecides);
+            String form = way == 0 ? "combined if" : way == 1 ? "nested ifs" : "Collide.rectPoint";
             // A pixel of the button away from the mouse dot, the edges and the counter's text.
             int px = mx < 300 ? 380 : 220;
             SketchPixels.assertColour(r.lastFrame(), px, 235, hovered ? Palette.HIT : Palette.MISS, "button, " + form);
@@ -98,6 +102,19 @@ class S04_RectPointTest {
                 .mouse(45, 50, 50);
         SketchRun.Result<S04_RectPoint> r = SketchRun.of(new S04_RectPoint()).script(script).run();
         assertEquals(3, r.sketch().clicks, "clicks counted");
+    }
+
+    @Test
+    void theTutorialsOtherIf_pressedOverTheButton_drawsItPressed_andNotPressedElsewhere() {
+        // A press after frame 2, released after frame 3: frame 3 is drawn with the mouse down.
+        SketchRun.Result<S04_RectPoint> on = SketchRun.of(new S04_RectPoint())
+                .script(new Script().frames(6).click(2, 250, 200)).capture(2).capture(3).capture(5).run();
+        SketchPixels.assertColour(on.frame(2), 380, 235, Palette.HIT, "hovered, not pressed yet");
+        SketchPixels.assertColour(on.frame(3), 380, 235, Palette.ACCENT, "pressed over the button");
+        SketchPixels.assertColour(on.frame(5), 380, 235, Palette.HIT, "released");
+        SketchRun.Result<S04_RectPoint> off = SketchRun.of(new S04_RectPoint())
+                .script(new Script().frames(6).click(2, 100, 100)).capture(3).run();
+        SketchPixels.assertColour(off.frame(3), 380, 235, Palette.MISS, "pressed away from the button: not drawn pressed");
     }
 
     @Test

@@ -55,18 +55,21 @@ class S05_RectRectTest {
         }
     }
 
-    @Test
-    void mouseSweep_theColourIsTheLibrarysAnswer_andTheTutorialsIfAgrees() {
-        Script script = new Script().frames(700);
-        for (int f = 1; f <= 700; f++) {
-            script.mouse(f, (f * 13) % 400, 60 + (f / 25) * 13 % 210);
-        }
+    @ParameterizedTest(name = "l pressed {0} times")
+    @CsvSource({"0", "1", "2"})
+    void mouseSweep_theColourFollowsTheTutorialsIf_orCollideRectRectAfterL_andTheyAgree(int lPresses) {
+        Script script = SketchPixels.lThenMouse(700, lPresses, f -> new int[] {(f * 13) % 400, 60 + (f / 25) * 13 % 210});
         int[] seen = {0, 0};
-        SketchRun.of(new S05_RectRect()).script(script).everyFrame(s -> {
-            boolean colliding = Collide.rectRect(s.mouseX, s.mouseY, 200, 100, 250, 100, 100, 200);
+        SketchRun.Result<S05_RectRect> r = SketchRun.of(new S05_RectRect()).script(script).everyFrame(s -> {
+            if (s.frameCount < 5) {
+                return;
+            }
+            boolean library = Collide.rectRect(s.mouseX, s.mouseY, 200, 100, 250, 100, 100, 200);
+            // The tutorial's if, as its section writes it, with the sketch's variables.
             boolean tutorialsIf = s.mouseX + s.mouseRectWidth > s.centerRectX && s.mouseX < s.centerRectX + s.centerRectWidth
                     && s.mouseY + s.mouseRectHeight > s.centerRectY && s.mouseY < s.centerRectY + s.centerRectHeight;
-            assertEquals(colliding, tutorialsIf, "the tutorial's if and Collide.rectRect, mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+            assertEquals(library, tutorialsIf, "the tutorial's if and Collide.rectRect, mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+            boolean colliding = s.hitboxDecides ? library : tutorialsIf;
             // The mouse rectangle's corner farthest from the center rectangle is never on its outline.
             int cx = s.mouseX + 100 < 300 ? s.mouseX + 3 : s.mouseX + 197;
             int cy = s.mouseY + 50 < 200 ? s.mouseY + 3 : s.mouseY + 97;
@@ -74,6 +77,7 @@ class S05_RectRectTest {
                     "the mouse rectangle at (" + cx + ", " + cy + ") with the mouse at (" + s.mouseX + ", " + s.mouseY + ")");
             seen[colliding ? 1 : 0]++;
         }).run();
+        assertEquals(lPresses % 2 == 1, r.sketch().hitboxDecides, "l hands the colour to Collide.rectRect and back");
         assertTrue(seen[0] > 100 && seen[1] > 50, "frames apart and overlapping: " + seen[0] + ", " + seen[1]);
     }
 

@@ -18,7 +18,7 @@ import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
 /**
- * S05b_RectRectTwoWays: r1 (100 x 60, its corner at the mouse) against r2 (370, 85, 100 x 80),
+ * S05b_RectRectTwoWays: rectOne (x1, y1, 100 x 60, its corner at the mouse) against rectTwo (370, 85, 100 x 80),
  * tested by the tutorial's && form and by the flipped || form; each comparison is lit as it
  * is evaluated (1 true, 2 false) or left grey (0 skipped), and the forms' counts add up.
  */
@@ -59,7 +59,7 @@ class S05b_RectRectTwoWaysTest {
         int evaluated = and.replace("S", "").length();
         assertEquals(evaluated, s.andNow);
         assertEquals(evaluated, s.orNow, "the same count: comparison i of || is the opposite of comparison i of &&");
-        SketchPixels.assertColour(r.lastFrame(), 375, 160, colliding ? Palette.HIT : Palette.MISS, "r2, coloured by Collide.rectRect");
+        SketchPixels.assertColour(r.lastFrame(), 375, 160, colliding ? Palette.HIT : Palette.MISS, "rectTwo, coloured by the tutorial's && form");
         // The rows as drawn: a skipped row has grey text and nothing red or green.
         PImage frame = r.lastFrame();
         for (int form = 0; form < 2; form++) {
@@ -91,14 +91,72 @@ class S05b_RectRectTwoWaysTest {
         SketchRun.Result<S05b_RectRectTwoWays> r = SketchRun.of(new S05b_RectRectTwoWays())
                 .script(new Script().frames(5).mouse(1, mx, my).key(1, 't')).run();
         S05b_RectRectTwoWays s = r.sketch();
-        assertEquals(false, Collide.rectRect(s.r1x, s.r1y, s.r1w, s.r1h, s.r2x, s.r2y, s.r2w, s.r2h), "the library: not colliding");
-        float ix = Math.min(s.r1x + s.r1w, s.r2x + s.r2w) - Math.max(s.r1x, s.r2x);
-        float iy = Math.min(s.r1y + s.r1h, s.r2y + s.r2h) - Math.max(s.r1y, s.r2y);
+        assertEquals(false, Collide.rectRect(s.x1, s.y1, s.w1, s.h1, s.x2, s.y2, s.w2, s.h2), "the library: not colliding");
+        float ix = Math.min(s.x1 + s.w1, s.x2 + s.w2) - Math.max(s.x1, s.x2);
+        float iy = Math.min(s.y1 + s.h1, s.y2 + s.h2) - Math.max(s.y1, s.y2);
         assertTrue(ix >= 0 && iy >= 0 && (ix == 0 || iy == 0), "r1 touches r2: shared edge " + ix + " x " + iy);
         assertEquals(false, s.andSays, "&& says not colliding");
         assertEquals(true, s.orSays, "|| (its else) says colliding");
         assertEquals(4, s.orNow, "|| finds no true comparison, so it evaluates all four");
-        SketchPixels.assertColour(r.lastFrame(), 375, 160, Palette.MISS, "r2, coloured by Collide.rectRect");
+        assertEquals(false, s.videoAndSays, "the video's && says not colliding");
+        assertEquals(true, s.videoOrSays, "the video's flipped || (its else) says colliding");
+        SketchPixels.assertColour(r.lastFrame(), 375, 160, Palette.MISS, "rectTwo, coloured by the tutorial's && form");
+    }
+
+    @ParameterizedTest(name = "the video''s forms, mouse ({0}, {1}): && {2}, || {3}")
+    @CsvSource({
+            // the video's order: x1 < x2 + w2, x1 + w1 > x2, y1 < y2 + h2, y1 + h1 > y2
+            "100, 100, TFSS, FTSS, false",   // rectOne left of rectTwo: the second comparison decides
+            "600, 100, FSSS, TSSS, false",   // right of it: the first
+            "400, 200, TTFS, FFTS, false",   // below: the third
+            "400, 5,   TTTF, FFFT, false",   // above: the fourth
+            "400, 100, TTTT, FFFF, true",    // overlapping: all four
+    })
+    void vKey_theVideosForms_inXYWidthAndHeight_litAsJavaEvaluatesThem(int mx, int my, String and, String or, boolean colliding) {
+        SketchRun.Result<S05b_RectRectTwoWays> r = SketchRun.of(new S05b_RectRectTwoWays())
+                .script(new Script().frames(4).mouse(1, mx, my).key(1, 'v')).run();
+        S05b_RectRectTwoWays s = r.sketch();
+        assertTrue(s.videoForms);
+        assertArrayEquals(lit(and), s.andLit, "the video's && form's comparisons");
+        assertArrayEquals(lit(or), s.orLit, "the video's || form's comparisons");
+        assertEquals(colliding, s.videoAndSays, "the video's &&");
+        assertEquals(colliding, s.videoOrSays, "the video's ||");
+        assertEquals(colliding, s.andSays, "the tutorial's && agrees");
+        assertEquals(and.replace("S", "").length(), s.andNow);
+        assertEquals(s.andNow, s.orNow);
+    }
+
+    @ParameterizedTest(name = "l pressed {0} times")
+    @CsvSource({"0", "1"})
+    void mouseSweep_rectTwosColour_followsTheTutorialsAnd_orCollideRectRectAfterL(int lPresses) {
+        Script script = new Script().frames(400);
+        if (lPresses == 1) {
+            script.key(1, 'l');
+        }
+        for (int f = 3; f <= 400; f++) {
+            script.mouse(f, 250 + (f * 17) % 260, (f * 7) % 200);
+        }
+        int[] seen = {0, 0};
+        SketchRun.of(new S05b_RectRectTwoWays()).script(script).everyFrame(s -> {
+            if (s.frameCount < 3) {
+                return;
+            }
+            // The tutorial's && form, as section 5 writes it, on the sketch's rectangles.
+            boolean tutorials = s.x1 + s.w1 > s.x2 && s.x1 < s.x2 + s.w2 && s.y1 + s.h1 > s.y2 && s.y1 < s.y2 + s.h2;
+            boolean library = Collide.rectRect(s.x1, s.y1, s.w1, s.h1, s.x2, s.y2, s.w2, s.h2);
+            assertEquals(tutorials, library, "mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+            boolean colliding = s.hitboxDecides ? library : tutorials;
+            // A pixel near rectTwo's lower right corner, when rectOne does not cover it.
+            int px = 466;
+            int py = 162;
+            if (s.x1 - 3 <= px && px <= s.x1 + s.w1 + 3 && s.y1 - 3 <= py && py <= s.y1 + s.h1 + 3) {   // under rectOne or its outline
+                return;
+            }
+            assertEquals(Integer.toHexString(colliding ? Palette.HIT : Palette.MISS), Integer.toHexString(s.get(px, py) | 0xFF000000),
+                    "rectTwo with the mouse at (" + s.mouseX + ", " + s.mouseY + ")");
+            seen[colliding ? 1 : 0]++;
+        }).run();
+        assertTrue(seen[0] > 30 && seen[1] > 30, "frames apart and overlapping: " + seen[0] + ", " + seen[1]);
     }
 
     @Test
@@ -109,9 +167,9 @@ class S05b_RectRectTwoWaysTest {
         }
         long[] touchingFrames = {0};
         SketchRun.of(new S05b_RectRectTwoWays()).script(script).everyFrame(s -> {
-            boolean touching = s.r1x + s.r1w == s.r2x || s.r1x == s.r2x + s.r2w
-                    || s.r1y + s.r1h == s.r2y || s.r1y == s.r2y + s.r2h;
-            boolean library = Collide.rectRect(s.r1x, s.r1y, s.r1w, s.r1h, s.r2x, s.r2y, s.r2w, s.r2h);
+            boolean touching = s.x1 + s.w1 == s.x2 || s.x1 == s.x2 + s.w2
+                    || s.y1 + s.h1 == s.y2 || s.y1 == s.y2 + s.h2;
+            boolean library = Collide.rectRect(s.x1, s.y1, s.w1, s.h1, s.x2, s.y2, s.w2, s.h2);
             assertEquals(library, s.andSays, "the && form is the library's test");
             if (touching) {
                 touchingFrames[0]++;

@@ -27,14 +27,48 @@ class S05c_HitboxesTest {
 
     private static S05c_Hitboxes rain(Script script) {
         return SketchRun.of(new S05c_Hitboxes()).script(script).everyFrame(s -> {
-            // Every rock's colour is what the two tests say about it this frame.
+            // Every rock's colour is what the two tests say about it this frame: the box as the
+            // sketch's shape is, the rocket's outline exactly.
             for (S05c_Hitboxes.Rock rock : s.rocks) {
-                boolean box = Collide.rectRect(rock.x, rock.y, rock.size, rock.size, s.ship.x - s.boxW / 2, s.ship.y - s.boxH / 2, s.boxW, s.boxH);
+                boolean box = switch (s.boxShape) {
+                    case "rectangle" -> Collide.rectRect(rock.x, rock.y, rock.size, rock.size, s.ship.x - s.boxW / 2, s.ship.y - s.boxH / 2, s.boxW, s.boxH);
+                    case "circle" -> Collide.circleRect(s.ship.x, s.ship.y, s.boxH / 2, rock.x, rock.y, rock.size, rock.size);
+                    default -> s.hitBox().overlaps(new Rect(rock.x, rock.y, rock.size, rock.size));
+                };
                 boolean ship = s.ship.touches(new Rect(rock.x, rock.y, rock.size, rock.size));
                 int expected = box && ship ? s.HIT : box ? s.FALSE_HIT : ship ? s.MISS : s.NOTHING;
                 assertEquals(expected, rock.verdict, "the rock at (" + rock.x + ", " + rock.y + ")");
             }
+            // Boxes first: the exact test ran once for every box hit, and never otherwise.
+            assertEquals(s.hits + s.falseHits, s.exactTests, "exact tests only after a box hit");
         }).run().sketch();
+    }
+
+    @Test
+    void byDefault_theWrittenOutRectangleIf_andWithL_CollideRectRect_giveTheSameTally() {
+        S05c_Hitboxes ifs = rain(new Script().frames(600));
+        S05c_Hitboxes library = rain(new Script().frames(600).key(1, 'l'));
+        assertTrue(library.hitboxDecides && !ifs.hitboxDecides);
+        assertEquals(ifs.hits, library.hits);
+        assertEquals(ifs.falseHits, library.falseHits);
+        assertEquals(ifs.misses, library.misses);
+        assertTrue(ifs.exactTests < ifs.rockTests / 4, "most rocks never reach the exact test: "
+                + ifs.exactTests + " of " + ifs.rockTests);
+    }
+
+    @Test
+    void circleAndPolygonBoxes_theVideos_countTheirOwnMistakes_andLAgreesOnTheCircle() {
+        S05c_Hitboxes circle = rain(new Script().frames(900).key(1, 'b'));
+        assertEquals("circle", circle.boxShape);
+        assertTrue(circle.hits > 50 && circle.falseHits > 20, "hits " + circle.hits + ", false hits " + circle.falseHits);
+        S05c_Hitboxes circleLibrary = rain(new Script().frames(900).key(1, 'b').key(1, 'l'));
+        assertEquals(circle.hits, circleLibrary.hits, "dist() to the nearest point and Collide.circleRect agree");
+        assertEquals(circle.falseHits, circleLibrary.falseHits);
+        S05c_Hitboxes polygon = rain(new Script().frames(900).key(1, 'b').key(2, 'b'));
+        assertEquals("polygon", polygon.boxShape);
+        assertTrue(polygon.hits > 50, "hits " + polygon.hits);
+        assertTrue(polygon.falseHits < circle.falseHits, "the rocket-shaped polygon hits falsely less often than the circle: "
+                + polygon.falseHits + " and " + circle.falseHits);
     }
 
     @Test

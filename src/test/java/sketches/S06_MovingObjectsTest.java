@@ -33,7 +33,7 @@ class S06_MovingObjectsTest {
 
     @Test
     void library_tenThousandFrames_neverOverlapsTheCenterRectangle_andStaysInTheWindow() {
-        SketchRun.of(new S06_MovingObjects()).script(new Script().frames(10_000).key(1, 't')).everyFrame(s -> {
+        SketchRun.of(new S06_MovingObjects()).script(new Script().frames(10_000).key(1, 'l')).everyFrame(s -> {
             assertFalse(Collide.rectRect(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight,
                     s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight),
                     "it overlaps the center rectangle at (" + s.bouncingRectX + ", " + s.bouncingRectY + ")");
@@ -53,7 +53,7 @@ class S06_MovingObjectsTest {
         int[] bounces = new int[2];   // off a left/right side, off the top/bottom
         Script script = new Script().frames(3000);
         if (library) {
-            script.key(1, 't');
+            script.key(1, 'l');
         }
         SketchRun.of(new S06_MovingObjects()).script(script).everyFrame(s -> {
             float w = s.bouncingRectWidth, h = s.bouncingRectHeight;
@@ -128,7 +128,7 @@ class S06_MovingObjectsTest {
 
     @Test
     void library_aimedAtTheCorner_bouncesBackWithoutGoingIn() {
-        List<float[]> states = track(new Script().frames(20).key(1, 't').key(10, 'c'));
+        List<float[]> states = track(new Script().frames(20).key(1, 'l').key(10, 'c'));
         for (int f = 1; f <= 20; f++) {
             assertFalse(inside(states.get(f)), "frame " + f);
         }

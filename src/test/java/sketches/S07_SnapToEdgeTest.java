@@ -84,6 +84,16 @@ class S07_SnapToEdgeTest {
     }
 
     @Test
+    void lKey_isSnap_likeKey4_frameForFrame() {
+        List<State> four = record(jumps('4'));
+        List<State> l = record(jumps('l'));
+        assertEquals(four, l, "l runs Hitbox's Snap, as 4 does");
+        S07_SnapToEdge s = SketchRun.of(new S07_SnapToEdge()).script(new Script().frames(3).key(1, 'l')).run().sketch();
+        assertEquals(4, s.way);
+        assertEquals(3, SketchRun.of(new S07_SnapToEdge()).frames(2).run().sketch().way, "the tutorial's snap by default");
+    }
+
+    @Test
     void theTutorialsSnap_andSnap_putThePlayerInTheSamePlace_everyFrame() {
         List<State> tutorial = record(jumps('3'));
         List<State> library = record(jumps('4'));

@@ -39,7 +39,7 @@ class S07b_SnapAnySideTest {
         Random random = new Random(11);
         Script script = new Script().frames(6000);
         if (snapCall) {
-            script.key(1, 't');
+            script.key(1, 'l');
         }
         for (int f = 3; f < 5900; ) {
             int length = 10 + random.nextInt(80);
@@ -62,7 +62,7 @@ class S07b_SnapAnySideTest {
     private static Script tour(boolean snapCall) {
         Script script = new Script().frames(400);
         if (snapCall) {
-            script.key(1, 't');
+            script.key(1, 'l');
         }
         String[] moves = {"RIGHT 40", "DOWN 20",                // onto the top
                           "RIGHT 30", "DOWN 30", "LEFT 20",     // against the right side

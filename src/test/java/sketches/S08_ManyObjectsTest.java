@@ -22,10 +22,10 @@ import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
 /**
- * One box among a list of Obstacle objects (four walls, eight blocks; 5 and 6 are pillars
- * with a 32 px slot, where the box starts). Hitbox's loop (combine, reverse once, ask again)
- * never lets the box into an obstacle; the tutorial's loop (t) flips inside the loop and
- * moves the box into a pillar.
+ * One box among the tutorial's list of Rectangle objects (four walls, eight blocks; 5 and 6 are
+ * pillars with a 32 px slot, where s puts the box). The tutorial's loop moves the box by
+ * default: it flips inside the loop, and in the slot moves the box into a pillar. Hitbox's loop
+ * (l: combine, reverse once, ask again) never lets the box into a rectangle.
  */
 class S08_ManyObjectsTest {
 
@@ -36,9 +36,9 @@ class S08_ManyObjectsTest {
 
     /** The obstacle the box overlaps, or -1. */
     private static int inside(S08_ManyObjects s) {
-        for (int i = 0; i < s.obstacles.size(); i++) {
-            S08_ManyObjects.Obstacle o = s.obstacles.get(i);
-            if (Collide.rectRect(s.x, s.y, s.w, s.h, o.x, o.y, o.w, o.h)) {
+        for (int i = 0; i < s.rectangles.size(); i++) {
+            S08_ManyObjects.Rectangle o = s.rectangles.get(i);
+            if (Collide.rectRect(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight, o.x, o.y, o.rectWidth, o.rectHeight)) {
                 return i;
             }
         }
@@ -46,14 +46,55 @@ class S08_ManyObjectsTest {
     }
 
     @Test
-    void setup_isTheTutorialsFourWallsAndBlocks_withTheBoxInTheSlot() {
+    void setup_isTheTutorialsFourWallsAndBlocks_andSPutsTheBoxInTheSlot() {
         S08_ManyObjects s = SketchRun.of(new S08_ManyObjects()).frames(1).run().sketch();
-        assertEquals(12, s.obstacles.size(), "4 walls and 8 blocks");
-        S08_ManyObjects.Obstacle left = s.obstacles.get(5);
-        S08_ManyObjects.Obstacle right = s.obstacles.get(6);
-        float slot = right.x - (left.x + left.w);
-        assertTrue(slot > s.w && slot - s.w < Math.abs(s.vx), "the slot is wider than the box by less than one move: " + slot);
-        assertTrue(s.x >= left.x + left.w && s.x + s.w <= right.x, "the box is in the slot");
+        assertEquals(12, s.rectangles.size(), "4 walls and 8 blocks");
+        assertFalse(s.hitboxDecides, "the tutorial's loop moves the box");
+        assertEquals(-1, inside(s), "the box starts in the open");
+        S08_ManyObjects t = SketchRun.of(new S08_ManyObjects()).script(new Script().frames(1).key(1, 's')).run().sketch();
+        S08_ManyObjects.Rectangle left = t.rectangles.get(5);
+        S08_ManyObjects.Rectangle right = t.rectangles.get(6);
+        float slot = right.x - (left.x + left.rectWidth);
+        assertTrue(slot > t.bouncingRectWidth && slot - t.bouncingRectWidth < Math.abs(t.bouncingRectSpeedX),
+                "the slot is wider than the box by less than one move: " + slot);
+        assertTrue(t.bouncingRectX >= left.x + left.rectWidth && t.bouncingRectX + t.bouncingRectWidth <= right.x, "s put the box in the slot");
+    }
+
+    @Test
+    void byDefault_theTutorialsLoop_movesTheBox_flipByFlip_andDrawsIt() {
+        // Each frame, the tutorial's loop as section 8 writes it, run here on the box as it was:
+        // the sketch must land exactly where it says, with the speeds it says.
+        float[] was = new float[4];
+        int[] flips = new int[1];
+        SketchRun.of(new S08_ManyObjects()).script(new Script().frames(1500).click(600, 430, 300)).everyFrame(s -> {
+            if (s.frameCount > 1) {
+                float x = was[0], y = was[1], vx = was[2], vy = was[3];
+                for (S08_ManyObjects.Rectangle o : s.rectangles) {
+                    if (x + 30 + vx > o.x && x + vx < o.x + o.rectWidth && y + 30 > o.y && y < o.y + o.rectHeight) {
+                        vx *= -1;
+                    }
+                    if (x + 30 > o.x && x < o.x + o.rectWidth && y + 30 + vy > o.y && y + vy < o.y + o.rectHeight) {
+                        vy *= -1;
+                    }
+                }
+                flips[0] += (vx != was[2] ? 1 : 0) + (vy != was[3] ? 1 : 0);
+                assertEquals(vx, s.bouncingRectSpeedX, "frame " + s.frameCount + ": the speed across");
+                assertEquals(vy, s.bouncingRectSpeedY, "frame " + s.frameCount + ": the speed down");
+                assertEquals(x + vx, s.bouncingRectX, "frame " + s.frameCount + ": x");
+                assertEquals(y + vy, s.bouncingRectY, "frame " + s.frameCount + ": y");
+                if (inside(s) < 0 && s.bouncingRectY > 40) {   // not under the label at the top
+                    int px = Math.round(s.bouncingRectX + 15);
+                    int py = Math.round(s.bouncingRectY + 15);
+                    assertEquals(Integer.toHexString(Palette.PLAYER), Integer.toHexString(s.get(px, py) | 0xFF000000),
+                            "frame " + s.frameCount + ": the box, drawn where the tutorial's loop put it");
+                }
+            }
+            was[0] = s.bouncingRectX;
+            was[1] = s.bouncingRectY;
+            was[2] = s.bouncingRectSpeedX;
+            was[3] = s.bouncingRectSpeedY;
+        }).run();
+        assertTrue(flips[0] > 20, "it bounced: " + flips[0] + " flips");
     }
 
     @Test
@@ -61,46 +102,46 @@ class S08_ManyObjectsTest {
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
                 .script(new Script().frames(5).click(2, 520, 40)).run();
         S08_ManyObjects s = r.sketch();
-        assertEquals(13, s.obstacles.size(), "12 obstacles, then 13");
-        S08_ManyObjects.Obstacle added = s.obstacles.get(12);
-        assertEquals(520, added.x + added.w / 2, "centred on the mouse across");
-        assertEquals(40, added.y + added.h / 2, "and down");
+        assertEquals(13, s.rectangles.size(), "12 obstacles, then 13");
+        S08_ManyObjects.Rectangle added = s.rectangles.get(12);
+        assertEquals(520, added.x + added.rectWidth / 2, "centred on the mouse across");
+        assertEquals(40, added.y + added.rectHeight / 2, "and down");
         SketchPixels.assertColour(r.lastFrame(), 520, 40, Palette.OBSTACLE, "the new obstacle is drawn");
     }
 
     @Test
     void clickOnTheBox_isRefused() {
-        // The box starts at (271, 70), 30 x 30, and slides down the slot about 3 px a frame.
+        // The box starts at (150, 150), 30 x 30, and moves (3.3, 2.7) a frame.
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
-                .script(new Script().frames(5).click(2, 286, 90)).run();
-        assertEquals(12, r.sketch().obstacles.size(), "no obstacle on top of the box");
+                .script(new Script().frames(5).click(2, 170, 170)).run();
+        assertEquals(12, r.sketch().rectangles.size(), "no obstacle on top of the box");
         assertTrue(r.sketch().message.startsWith("not added"), "and it says so: " + r.sketch().message);
     }
 
     @Test
     void hitboxLoop_tenThousandFrames_withAddedObstacles_neverOverlapsAny() {
         // Clicks that squeeze gaps narrower than one move next to the blocks.
-        Script script = new Script().frames(10_000)
+        Script script = new Script().frames(10_000).key(1, 'l').key(1, 's')
                 .click(300, 130, 135).click(1300, 330, 95).click(2300, 160, 285).click(3300, 440, 160)
                 .click(4300, 540, 345).click(5300, 215, 180);
         Set<Integer> lit = new HashSet<>();
         int[] moves = new int[1];
         float[] last = new float[2];
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects()).script(script).everyFrame(s -> {
-            assertEquals(-1, inside(s), "the box at (" + s.x + ", " + s.y + ") overlaps an obstacle");
-            assertEquals(Edges.NONE, Edges.rectCrossed(s.x, s.y, s.w, s.h, s.width, s.height), "inside the window");
-            for (int i = 0; i < s.obstacles.size(); i++) {
-                if (s.obstacles.get(i).lit()) {
+            assertEquals(-1, inside(s), "the box at (" + s.bouncingRectX + ", " + s.bouncingRectY + ") overlaps an obstacle");
+            assertEquals(Edges.NONE, Edges.rectCrossed(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight, s.width, s.height), "inside the window");
+            for (int i = 0; i < s.rectangles.size(); i++) {
+                if (s.rectangles.get(i).lit()) {
                     lit.add(i);
                 }
             }
-            if (s.x != last[0] || s.y != last[1]) {
+            if (s.bouncingRectX != last[0] || s.bouncingRectY != last[1]) {
                 moves[0]++;
             }
-            last[0] = s.x;
-            last[1] = s.y;
+            last[0] = s.bouncingRectX;
+            last[1] = s.bouncingRectY;
         }).run();
-        assertTrue(r.sketch().obstacles.size() > 12, "the clicks added obstacles");
+        assertTrue(r.sketch().rectangles.size() > 12, "the clicks added obstacles");
         assertTrue(moves[0] > 9000, "it kept moving: " + moves[0] + " frames of 10,000");
         assertTrue(lit.size() >= 12, "it bounced off many different obstacles: " + lit);
     }
@@ -108,9 +149,12 @@ class S08_ManyObjectsTest {
     @Test
     void hitboxLoop_inTheSlot_waitsAcrossAndSlidesOut() {
         List<float[]> at = new ArrayList<>();
-        SketchRun.of(new S08_ManyObjects()).frames(120).everyFrame(s -> {
-            assertEquals(-1, inside(s), "the box at (" + s.x + ", " + s.y + ") overlaps an obstacle");
-            at.add(new float[] {s.x, s.y});
+        SketchRun.of(new S08_ManyObjects()).script(new Script().frames(120).key(1, 'l').key(1, 's')).everyFrame(s -> {
+            assertEquals(-1, inside(s), "the box at (" + s.bouncingRectX + ", " + s.bouncingRectY + ") overlaps an obstacle");
+            if (s.frameCount < 2) {
+                return;
+            }
+            at.add(new float[] {s.bouncingRectX, s.bouncingRectY});
         }).run();
         // While it is between the pillars (y + 30 < 240), it never moves across, only down.
         int slid = 0;
@@ -128,37 +172,38 @@ class S08_ManyObjectsTest {
         // Where the box is after frame 300; then the same run with two obstacles clicked in
         // beside it, each 2 to 3 px away: less than one move (3.3 px), so reversing off
         // one points it straight into the other.
-        S08_ManyObjects before = SketchRun.of(new S08_ManyObjects()).frames(300).run().sketch();
-        int cy = Math.round(before.y + before.h / 2);
-        int left = (int) Math.floor(before.x) - 32;                 // right edge 2 to 3 px left of the box
-        int right = (int) Math.ceil(before.x + before.w) + 32;      // left edge 2 to 3 px right of it
+        S08_ManyObjects before = SketchRun.of(new S08_ManyObjects()).script(new Script().frames(300).key(1, 'l').key(1, 's'))
+                .run().sketch();
+        int cy = Math.round(before.bouncingRectY + before.bouncingRectHeight / 2);
+        int left = (int) Math.floor(before.bouncingRectX) - 32;                 // right edge 2 to 3 px left of the box
+        int right = (int) Math.ceil(before.bouncingRectX + before.bouncingRectWidth) + 32;      // left edge 2 to 3 px right of it
         int[] waited = new int[1];
         float[] last = new float[2];
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
-                .script(new Script().frames(500).click(300, left, cy).click(300, right, cy))
+                .script(new Script().frames(500).key(1, 'l').key(1, 's').click(300, left, cy).click(300, right, cy))
                 .everyFrame(s -> {
-                    assertEquals(-1, inside(s), "the box at (" + s.x + ", " + s.y + ") overlaps an obstacle");
-                    if (s.frameCount > 301 && s.x == last[0] && s.y != last[1]) {
+                    assertEquals(-1, inside(s), "the box at (" + s.bouncingRectX + ", " + s.bouncingRectY + ") overlaps an obstacle");
+                    if (s.frameCount > 301 && s.bouncingRectX == last[0] && s.bouncingRectY != last[1]) {
                         waited[0]++;
                     }
-                    last[0] = s.x;
-                    last[1] = s.y;
+                    last[0] = s.bouncingRectX;
+                    last[1] = s.bouncingRectY;
                 }).run();
-        assertEquals(14, r.sketch().obstacles.size(), "both clicks added an obstacle");
+        assertEquals(14, r.sketch().rectangles.size(), "both clicks added an obstacle");
         assertTrue(waited[0] > 0, "it waited across (moving only down) while squeezed");
     }
 
     @Test
     void tutorialLoop_flipsTwiceInTheSlot_andTheBoxMovesIntoAPillar_andStaysThere() {
-        // t after frame 1: the tutorial's loop, the box back at its start in the slot.
+        // s after frame 1: the box in the slot; the tutorial's loop (the default) moves it.
         float[][] at = new float[62][];
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
-                .script(new Script().frames(61).key(1, 't'))
-                .capture(3)
-                .everyFrame(s -> at[s.frameCount] = new float[] {s.x, s.y, s.vx, inside(s)})
+                .script(new Script().frames(61).key(1, 's'))
+                .capture(2)
+                .everyFrame(s -> at[s.frameCount] = new float[] {s.bouncingRectX, s.bouncingRectY, s.bouncingRectSpeedX, inside(s)})
                 .run();
         S08_ManyObjects s = r.sketch();
-        assertTrue(s.tutorialLoop);
+        assertFalse(s.hitboxDecides);
         // Frame 2 starts at (271, 70) going left: pillar 5 flips vx, pillar 6 flips it back.
         assertEquals(-3.3f, at[2][2], 1e-6, "vx flipped twice: as it was");
         assertEquals(5, (int) at[2][3], "so the box moved into pillar 5, at x = " + at[2][0]);
@@ -169,8 +214,8 @@ class S08_ManyObjectsTest {
                     "frame " + f + ": stuck in the slot, flickering, at (" + at[f][0] + ", " + at[f][1] + ")");
         }
         assertEquals(30, insideFrames, "inside pillar 5 every other frame");
-        // Drawn as a learner sees it: frame 3 shows the box inside, ringed red.
-        PImage frame = r.frame(3);
+        // Drawn as a learner sees it: frame 2 shows the box inside, ringed red.
+        PImage frame = r.frame(2);
         SketchPixels.assertColour(frame, Math.round(at[2][0]) + 15, Math.round(at[2][1]), Palette.HIT,
                 "the red ring on the box's top edge");
     }
@@ -182,7 +227,7 @@ class S08_ManyObjectsTest {
         boolean[] predicted = new boolean[1];
         int[] checked = new int[2];
         SketchRun.of(new S08_ManyObjects())
-                .script(new Script().frames(200).key(1, 't'))
+                .script(new Script().frames(200).key(1, 's'))
                 .everyFrame(s -> {
                     if (s.frameCount >= 3) {
                         assertEquals(predicted[0], inside(s) >= 0, "frame " + s.frameCount + ": the preview said "
@@ -196,10 +241,11 @@ class S08_ManyObjectsTest {
 
     @Test
     void hitboxLoop_theBlockingObstaclesLightUp() {
-        // Frame 1: pillar 5 blocks the move across, and pillar 6 the move back.
-        SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects()).frames(3).run();
+        // Frame 2, in the slot: pillar 5 blocks the move across, and pillar 6 the move back.
+        SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects())
+                .script(new Script().frames(3).key(1, 'l').key(1, 's')).run();
         S08_ManyObjects s = r.sketch();
-        assertTrue(s.obstacles.get(5).lit() && s.obstacles.get(6).lit(), "both pillars lit");
+        assertTrue(s.rectangles.get(5).lit() && s.rectangles.get(6).lit(), "both pillars lit");
         SketchPixels.assertColour(r.lastFrame(), 250, 200, Palette.HIT, "pillar 5 is red");
         SketchPixels.assertColour(r.lastFrame(), 322, 200, Palette.HIT, "pillar 6 is red");
         SketchPixels.assertColour(r.lastFrame(), 475, 95, Palette.OBSTACLE, "obstacle 7 is not");

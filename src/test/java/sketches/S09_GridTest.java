@@ -39,29 +39,36 @@ class S09_GridTest {
 
     /** Is this cell solid in the grid the sketch shows, read from its own data. */
     private static boolean solid(S09_Grid s, int column, int row) {
-        return s.tutorialGrid ? s.grid[row][column] : s.maze.isSolid(column, row);
+        if (s.hitboxDecides) {
+            assertEquals(s.maze.isSolid(column, row), s.grid[row][column], "Hitbox's Grid is copied into grid");
+        }
+        return s.grid[row][column];
     }
 
     @Test
     void hitboxGrid_hasEightySolidCellsOfFourHundred_andThePlayerStartsOnAFreeOne() {
-        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).frames(3).run();
+        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).script(new Script().frames(3).key(1, 'l')).run();
         S09_Grid s = r.sketch();
         Grid maze = s.maze;
-        assertFalse(s.tutorialGrid);
+        assertTrue(s.hitboxDecides);
         assertEquals(20, maze.cols());
         assertEquals(20, maze.rows());
         assertEquals(80, maze.countSolid(), "20% of 400");
-        assertEquals(0, s.playerIndexX);
-        assertEquals(0, s.playerIndexY);
-        assertFalse(maze.isSolid(0, 0), "the start cell is kept free");
+        assertEquals(10, s.playerIndexX);
+        assertEquals(10, s.playerIndexY);
+        assertFalse(maze.isSolid(10, 10), "the start cell is kept free");
         assertDrawnAsTheGrid(r.lastFrame(), s);
     }
 
     @Test
-    void tutorialGrid_isTheTutorialsFill_aTwentyPercentChancePerCell_rowByRow() {
-        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).script(new Script().frames(4).key(1, 't')).run();
+    void byDefault_theTutorialsFill_aTwentyPercentChancePerCell_rowByRow_andItsStartAt10_10() {
+        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).frames(4).run();
         S09_Grid s = r.sketch();
-        assertTrue(s.tutorialGrid);
+        assertFalse(s.hitboxDecides);
+        assertEquals(10, s.playerIndexX, "the tutorial's start");
+        assertEquals(10, s.playerIndexY);
+        assertEquals(20f, s.cellWidth);
+        assertEquals(20f, s.cellHeight);
         // randomSeed(1), then random(1) < 0.2 for each cell, rows outside, columns inside.
         Random random = new Random(1);
         int count = 0;
@@ -95,14 +102,14 @@ class S09_GridTest {
         SketchPixels.assertColour(frame, s.playerIndexX * 20 + 10, s.playerIndexY * 20 + 10, Palette.PLAYER, "the player");
     }
 
-    @ParameterizedTest(name = "the tutorial''s array: {0}")
-    @ValueSource(booleans = {false, true})
+    @ParameterizedTest(name = "the tutorial''s ifs: {0}")
+    @ValueSource(booleans = {true, false})
     void arrows_moveOnlyIntoFreeCells_neverOffTheMap(boolean tutorial) {
-        // 600 random arrow presses, three frames apart.
+        // 600 random arrow presses, three frames apart; l hands the moves to Hitbox's Grid.
         Random random = new Random(3);
         Script script = new Script().frames(1805);
-        if (tutorial) {
-            script.key(1, 't');
+        if (!tutorial) {
+            script.key(1, 'l');
         }
         int[] pressed = new int[601];
         for (int i = 1; i <= 600; i++) {
@@ -118,7 +125,7 @@ class S09_GridTest {
             at.add(new int[] {s.playerIndexX, s.playerIndexY});
         }).run();
         S09_Grid s = r.sketch();
-        assertEquals(tutorial, s.tutorialGrid);
+        assertEquals(!tutorial, s.hitboxDecides);
         int moved = 0;
         int refusedSolid = 0;
         int refusedEdge = 0;
@@ -150,40 +157,41 @@ class S09_GridTest {
         assertTrue(refusedEdge > 0, "the map's edge stopped it: " + refusedEdge);
     }
 
-    /** Four steps down to (0, 4), then r: seed 2, whose coin flip for cell (0, 4) comes up "obstacle". */
-    private static Script walkDownThenNewMaze(boolean tutorial) {
-        Script script = new Script().frames(20).hold(2, "DOWN", 1).hold(4, "DOWN", 1).hold(6, "DOWN", 1)
-                .hold(8, "DOWN", 1).key(12, 'r');
-        return tutorial ? script.key(1, 't') : script;
+    /** r four times: seed 5, whose coin flip for the player's cell (10, 10) comes up "obstacle". */
+    private static Script newMazes(boolean tutorial) {
+        Script script = new Script().frames(14).key(2, 'r').key(4, 'r').key(6, 'r').key(8, 'r');
+        return tutorial ? script : script.key(1, 'l');
     }
 
     @Test
     void r_hitboxGrid_makesANewMaze_keepingThePlayersCellFree() {
-        SketchRun.Result<S09_Grid> before = SketchRun.of(new S09_Grid()).script(walkDownThenNewMaze(false)).frames(10).run();
-        SketchRun.Result<S09_Grid> after = SketchRun.of(new S09_Grid()).script(walkDownThenNewMaze(false)).run();
+        SketchRun.Result<S09_Grid> before = SketchRun.of(new S09_Grid()).script(newMazes(false)).frames(5).run();
+        SketchRun.Result<S09_Grid> after = SketchRun.of(new S09_Grid()).script(newMazes(false)).run();
         S09_Grid s = after.sketch();
-        assertEquals(4, s.playerIndexY, "the player stays where it was");
+        assertEquals(5, s.seed);
+        assertEquals(10, s.playerIndexY, "the player stays where it was");
         assertNotEquals(before.sketch().maze.toMap(), s.maze.toMap(), "a different maze");
         assertEquals(80, s.maze.countSolid(), "still 20%");
-        assertFalse(s.maze.isSolid(0, 4), "with the player's cell free");
-        assertEquals(0, SketchPixels.count(after.lastFrame(), 0, 80, 19, 99, Palette.HIT), "no red ring");
+        assertFalse(s.maze.isSolid(10, 10), "with the player's cell free");
+        assertFalse(s.grid[10][10], "and so is the array drawn");
+        assertEquals(0, SketchPixels.count(after.lastFrame(), 200, 200, 219, 219, Palette.HIT), "no red ring");
     }
 
     @Test
     void r_tutorialGrid_canDropAnObstacleOnThePlayer_andSaysSo() {
-        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).script(walkDownThenNewMaze(true)).run();
+        SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).script(newMazes(true)).run();
         S09_Grid s = r.sketch();
-        assertEquals(2, s.seed);
-        assertEquals(0, s.playerIndexX);
-        assertEquals(4, s.playerIndexY);
-        assertTrue(s.grid[4][0], "the tutorial's fill does not keep the player's cell free");
-        // The player is ringed red on its cell, (0, 80) to (20, 100).
-        assertTrue(SketchPixels.count(r.lastFrame(), 0, 80, 19, 99, Palette.HIT) > 40, "a red ring round the player");
+        assertEquals(5, s.seed);
+        assertEquals(10, s.playerIndexX);
+        assertEquals(10, s.playerIndexY);
+        assertTrue(s.grid[10][10], "the tutorial's fill does not keep the player's cell free");
+        // The player is ringed red on its cell, (200, 200) to (220, 220).
+        assertTrue(SketchPixels.count(r.lastFrame(), 200, 200, 219, 219, Palette.HIT) > 40, "a red ring round the player");
     }
 
     @Test
     void overlay_writesTheMouseCellAndMarksTheNeighbours_andPressingAgainHidesIt() {
-        // Player at (0, 0): up and left are the map's edge, right and down free with seed 1.
+        // Player at (10, 10): its right neighbour (11, 10) is free with seed 1.
         Script script = new Script().frames(8).mouse(1, 254, 172).key(2, 'd').key(5, 'd');
         SketchRun.Result<S09_Grid> r = SketchRun.of(new S09_Grid()).script(script).capture(2).capture(4).run();
         PImage off = r.frame(2);
@@ -192,10 +200,10 @@ class S09_GridTest {
         // The mouse's cell, (12, 8), is outlined; its left edge is at x 240.
         assertTrue(SketchPixels.count(on, 238, 165, 243, 175, Overlay.GUIDE) > 0, "the mouse's cell is outlined");
         assertEquals(0, SketchPixels.count(off, 238, 165, 243, 175, Overlay.GUIDE), "not without the overlay");
-        // The right neighbour of (0, 0) is free: outlined green.
-        assertTrue(r.sketch().maze.canMove(0, 0, 1, 0));
-        assertTrue(SketchPixels.count(on, 37, 5, 43, 15, Overlay.MISS) > 0, "the free neighbour (1, 0) is outlined green");
-        assertEquals(0, SketchPixels.count(off, 37, 5, 43, 15, Overlay.MISS), "not without the overlay");
+        // The right neighbour of (10, 10) is free: outlined green (its right side at x 240).
+        assertFalse(r.sketch().grid[10][11]);
+        assertTrue(SketchPixels.count(on, 237, 205, 243, 215, Overlay.MISS) > 0, "the free neighbour (11, 10) is outlined green");
+        assertEquals(0, SketchPixels.count(off, 237, 205, 243, 215, Overlay.MISS), "not without the overlay");
         assertEquals(0, SketchPixels.differing(off, r.lastFrame()), "d again hides it");
     }
 }

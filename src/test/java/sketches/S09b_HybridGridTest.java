@@ -22,10 +22,10 @@ import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 
 /**
- * A pixel player on a tile map, moved by Grid.move every frame: it lands, jumps, stops at
- * walls, and is never inside a tile. With t, the tutorial's way: the pixel turned into a cell
- * by floor(x / cellWidth), the cells at the next position looked up, and a snap to the cell's
- * edge; it keeps out of the tiles too, but steps over a thin platform when it falls fast.
+ * A pixel player on a tile map. By default, the section's hybrid written out: the pixel turned
+ * into a cell by floor(x / cellWidth), the cells at the next position looked up, and a snap to
+ * the cell's edge; it lands, jumps, stops at walls and keeps out of the tiles, but steps over
+ * a thin platform when it falls fast. With l, Grid.move every frame, which never tunnels.
  */
 class S09b_HybridGridTest {
 
@@ -57,10 +57,10 @@ class S09b_HybridGridTest {
     }
 
     @Test
-    void longRunWithJumps_neverEndsAFrameInsideATile_andEveryStepIsGridMove() {
+    void lKey_longRunWithJumps_neverEndsAFrameInsideATile_andEveryStepIsGridMove() {
         Random random = new Random(5);
-        Script script = new Script().frames(6000);
-        for (int f = 1; f < 5900; ) {
+        Script script = new Script().frames(6000).key(1, 'l');
+        for (int f = 2; f < 5900; ) {
             int length = 5 + random.nextInt(70);
             script.hold(f, random.nextBoolean() ? "LEFT" : "RIGHT", length);
             if (random.nextInt(3) > 0) {
@@ -75,6 +75,11 @@ class S09b_HybridGridTest {
         SketchRun.of(new S09b_HybridGrid()).script(script).everyFrame(s -> {
             Grid g = s.grid;
             Rect p = s.player;
+            if (s.frameCount < 2) {
+                previous[0] = p;
+                return;   // frame 1 ran the default, before l
+            }
+            assertTrue(s.hitboxDecides);
             assertFalse(g.rectOverlapsSolid(p.x(), p.y(), p.w(), p.h()), "frame " + s.frameCount + ": inside a tile at " + p);
             // The frame's move is exactly Grid.move from where the player was.
             Sweep.Move expected = g.move(s.before, s.movedX, s.movedY);
@@ -97,9 +102,10 @@ class S09b_HybridGridTest {
     }
 
     @Test
-    void fastFall_neverTunnels() {
+    void gridMove_fastFall_neverTunnels() {
         // A fall of up to 60 px a frame, more than two tiles: still lands on the first floor below.
         S09b_HybridGrid s = new S09b_HybridGrid();
+        s.hitboxDecides = true;
         s.maxFall = 60;
         s.gravity = 6;
         s.player = new Rect(400, 0, 18, 28);
@@ -110,9 +116,9 @@ class S09b_HybridGridTest {
     }
 
     @Test
-    void overlay_outlinesTheCheckedTiles() {
-        Script plain = new Script().frames(60);
-        Script maths = new Script().frames(60).key(2, 'd');
+    void gridMoveOverlay_outlinesTheCheckedTiles() {
+        Script plain = new Script().frames(60).key(1, 'l');
+        Script maths = new Script().frames(60).key(1, 'l').key(2, 'd');
         SketchRun.Result<S09b_HybridGrid> off = SketchRun.of(new S09b_HybridGrid()).script(plain).run();
         SketchRun.Result<S09b_HybridGrid> on = SketchRun.of(new S09b_HybridGrid()).script(maths).run();
         assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame()) > 1000, "the overlay changes what is drawn");
@@ -143,9 +149,9 @@ class S09b_HybridGridTest {
     }
 
     @Test
-    void tutorialWay_longRunWithJumps_landsOnRowLines_stopsAtWalls_andIsNeverInsideATile() {
+    void byDefault_cellsMove_longRunWithJumps_landsOnRowLines_stopsAtWalls_andIsNeverInsideATile() {
         Random random = new Random(6);
-        Script script = new Script().frames(4000).key(1, 't');
+        Script script = new Script().frames(4000);
         for (int f = 2; f < 3900; ) {
             int length = 5 + random.nextInt(70);
             script.hold(f, random.nextBoolean() ? "LEFT" : "RIGHT", length);
@@ -158,14 +164,11 @@ class S09b_HybridGridTest {
         int[] walls = new int[1];
         int[] heads = new int[1];
         SketchRun.of(new S09b_HybridGrid()).script(script).everyFrame(s -> {
-            if (s.frameCount < 2) {
-                return;
-            }
-            assertTrue(s.tutorialWay);
+            assertFalse(s.hitboxDecides);
             Grid g = s.grid;
             Rect p = s.player;
             assertFalse(g.rectOverlapsSolid(p.x(), p.y(), p.w(), p.h()), "frame " + s.frameCount + ": inside a tile at " + p);
-            assertEquals(s.tutorialMove(s.before, s.movedX, s.movedY), s.last, "frame " + s.frameCount + ": the tutorial's move");
+            assertEquals(s.cellsMove(s.before, s.movedX, s.movedY), s.last, "frame " + s.frameCount + ": the cells' move");
             if (s.onGround) {
                 assertEquals(p.bottom(), g.cellY(g.rowAt(p.bottom())), "frame " + s.frameCount + ": snapped onto a row line");
                 rowsStoodOn.add(g.rowAt(p.bottom()));
@@ -179,20 +182,20 @@ class S09b_HybridGridTest {
     }
 
     @Test
-    void tutorialWay_fastFall_stepsOverAThinPlatform_butGridMoveLands() {
+    void byDefault_fastFall_stepsOverAThinPlatform_butGridMoveLands() {
         // 60 px a frame onto the one-cell-thick platform of row 8 (x 400): the next position
-        // the tutorial looks at is already below it.
+        // the default looks at is already below it.
         S09b_HybridGrid tutorial = new S09b_HybridGrid();
         tutorial.maxFall = 60;
         tutorial.gravity = 60;
         tutorial.player = new Rect(400, 8 * 24 - 28 - 1, 18, 28);
-        tutorial.tutorialWay = true;
         SketchRun.of(tutorial).frames(1).run();
         assertTrue(tutorial.player.y() > 9 * 24, "it went through row 8: " + tutorial.player);
         S09b_HybridGrid sweep = new S09b_HybridGrid();
         sweep.maxFall = 60;
         sweep.gravity = 60;
         sweep.player = new Rect(400, 8 * 24 - 28 - 1, 18, 28);
+        sweep.hitboxDecides = true;
         SketchRun.of(sweep).frames(1).run();
         assertEquals(8 * 24f, sweep.player.bottom(), "grid.move stops on row 8's top");
     }

@@ -1,6 +1,7 @@
 package sketches;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -64,16 +65,34 @@ class S10a_LineIntersectionTest {
         boolean[] expected = {s1, s2, s3};
         for (int i = 0; i < 3; i++) {
             Segment g = s.segments[i];
+            assertEquals(s.lineLine(s.startX, s.startY, s.mouseX, s.mouseY, g.x1(), g.y1(), g.x2(), g.y2()), s.segmentHit[i],
+                    "the colour is the written-out lineLine's answer");
             assertEquals(Collide.lineLine(s.startX, s.startY, s.mouseX, s.mouseY, g.x1(), g.y1(), g.x2(), g.y2()), s.segmentHit[i],
-                    "the sketch's answer is the library's");
+                    "and the library agrees");
             assertEquals(expected[i], s.segmentHit[i], s.names[i]);
         }
         assertEquals(rect, s.boxHit, "rectangle");
         assertEquals(circle, s.ballHit, "circle");
+        assertEquals(0, s.disagreements, "the written-out maths and Hitbox agree here");
         PImage frame = r.lastFrame();
         SketchPixels.assertColour(frame, 300, 90, s2 ? Palette.HIT : Palette.MISS, "s2");
         SketchPixels.assertColour(frame, 530, 262, rect ? Palette.HIT : Palette.MISS, "rectangle");
         SketchPixels.assertColour(frame, 250, 270, circle ? Palette.HIT : Palette.MISS, "circle");
+    }
+
+    @Test
+    void throughTwoCorners_theWrittenOutLineRectMissesIt_CollideLineRectAfterLDoesNot() {
+        // From (372, 232) to (568, 358): through the rectangle's corners (400, 250) and (540, 340).
+        Script script = new Script().frames(5).click(1, 372, 232).mouse(3, 568, 358);
+        SketchRun.Result<S10a_LineIntersection> r = SketchRun.of(new S10a_LineIntersection()).script(script).run();
+        assertFalse(r.sketch().boxHit, "no end inside, no side crossed properly");
+        assertEquals(1, r.sketch().disagreements, "Collide.lineRect says it goes inside");
+        SketchPixels.assertColour(r.lastFrame(), 530, 262, Palette.MISS, "the rectangle, by the written-out maths");
+        SketchRun.Result<S10a_LineIntersection> l = SketchRun.of(new S10a_LineIntersection())
+                .script(new Script().frames(5).click(1, 372, 232).mouse(3, 568, 358).key(3, 'l')).run();
+        assertTrue(l.sketch().hitboxDecides);
+        assertTrue(l.sketch().boxHit, "Collide.lineRect: through the inside");
+        SketchPixels.assertColour(l.lastFrame(), 530, 262, Palette.HIT, "the rectangle, by Hitbox's call");
     }
 
     @Test

@@ -45,7 +45,8 @@ class S10b_PointInPolygonTest {
         SketchRun.Result<S10b_PointInPolygon> r = SketchRun.of(new S10b_PointInPolygon())
                 .script(new Script().frames(4).mouse(1, mx, my)).run();
         S10b_PointInPolygon s = r.sketch();
-        assertEquals(Collide.polygonPoint(s.crown.coordinates(), mx, my), s.inside, "the sketch's answer is the library's");
+        assertEquals(s.crossings % 2 == 1, s.inside, "the colour is the count's answer: odd means inside");
+        assertEquals(Collide.polygonPoint(s.crown.coordinates(), mx, my), s.inside, "and the library agrees");
         assertEquals(inside, s.inside, "inside");
         assertEquals(crossings, s.crossings, "crossings");
         assertEquals(touched, s.touched.size(), "corners touched");
@@ -59,11 +60,15 @@ class S10b_PointInPolygonTest {
             "90,  190",   // the left corner
             "170, 105",   // the middle of edge e0, from (120, 70) to (220, 140)
     })
-    void pointOnTheOutline_isNotInside(int mx, int my) {
+    void pointOnTheOutline_theCountAloneCannotSeeIt_CollidePolygonPointAfterL_saysNotInside(int mx, int my) {
         S10b_PointInPolygon s = SketchRun.of(new S10b_PointInPolygon())
                 .script(new Script().frames(3).mouse(1, mx, my)).run().sketch();
-        assertFalse(s.inside, "polygons are open: the outline is not inside");
         assertTrue(s.onOutline, "the ray starts on an edge");
+        assertEquals(s.crossings % 2 == 1, s.inside, "by default the count decides, even on the outline");
+        assertFalse(s.hitboxSays, "polygons are open: the outline is not inside");
+        S10b_PointInPolygon l = SketchRun.of(new S10b_PointInPolygon())
+                .script(new Script().frames(3).mouse(1, mx, my).key(1, 'l')).run().sketch();
+        assertFalse(l.inside, "with l, Collide.polygonPoint decides: not inside");
     }
 
     @Test
@@ -78,9 +83,10 @@ class S10b_PointInPolygonTest {
         // The row y = 5 + 9 * 15 = 140 is level with the two valley corners.
         int[] checked = {0, 0};
         SketchRun.of(new S10b_PointInPolygon()).script(script.frames(frame - 1)).everyFrame(s -> {
+            assertEquals(s.crossings % 2 == 1, s.inside, "the count decides the colour");
             if (!s.onOutline) {
-                assertEquals(s.inside, s.crossings % 2 == 1,
-                        "at (" + s.px + ", " + s.py + "): " + s.crossings + " crossings, inside " + s.inside);
+                assertEquals(s.hitboxSays, s.crossings % 2 == 1,
+                        "off the outline, Collide.polygonPoint agrees, at (" + s.px + ", " + s.py + "): " + s.crossings + " crossings");
                 checked[s.inside ? 1 : 0]++;
             }
         }).run();

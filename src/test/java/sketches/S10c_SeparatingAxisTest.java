@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import java.util.List;
+
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -65,7 +67,20 @@ class S10c_SeparatingAxisTest {
             boolean anySeparates = s.axes.stream().anyMatch(SeparatingAxis.Axis::separates);
             assertEquals(!s.overlapping, anySeparates, "some axis separates exactly when apart");
             assertEquals(!s.overlapping, s.separating >= 0, "the highlighted axis");
-            // The first tab's projections are the shadows the library lists.
+            assertEquals(SeparatingAxis.overlaps(s.box, s.mover), s.hitboxSays);
+            assertEquals(s.hitboxSays, s.overlapping, "the written-out loop and SeparatingAxis.overlaps agree");
+            // The first tab's axes, written out, are the ones the library lists, in its order.
+            List<SeparatingAxis.Axis> libraryAxes = SeparatingAxis.axes(s.box, s.mover);
+            assertEquals(libraryAxes.size(), s.axes.size());
+            for (int i = 0; i < libraryAxes.size(); i++) {
+                SeparatingAxis.Axis mine = s.axes.get(i);
+                SeparatingAxis.Axis theirs = libraryAxes.get(i);
+                assertEquals(theirs.nx(), mine.nx(), 1e-5f, "axis " + i + " nx");
+                assertEquals(theirs.ny(), mine.ny(), 1e-5f, "axis " + i + " ny");
+                assertEquals(theirs.minA(), mine.minA(), 1e-3f, "axis " + i + ": box's shadow starts");
+                assertEquals(theirs.maxB(), mine.maxB(), 1e-3f, "axis " + i + ": mover's shadow ends");
+            }
+            // And its projections are the shadows it stores.
             for (SeparatingAxis.Axis a : s.axes) {
                 float[] shadowA = s.shadow(s.box, a.nx(), a.ny());
                 float[] shadowB = s.shadow(s.mover, a.nx(), a.ny());
@@ -83,6 +98,16 @@ class S10c_SeparatingAxisTest {
             seen[s.overlapping ? 1 : 0]++;
         }).run();
         assertTrue(seen[0] > 100 && seen[1] > 100, "frames apart and overlapping: " + seen[0] + ", " + seen[1]);
+    }
+
+    @ParameterizedTest(name = "mouse ({0}, {1}) with l: overlapping {2}")
+    @CsvSource({"430, 110, false", "340, 230, true"})
+    void lKey_separatingAxisOverlapsDecides_theSameColours(int mx, int my, boolean overlapping) {
+        SketchRun.Result<S10c_SeparatingAxis> r = SketchRun.of(new S10c_SeparatingAxis())
+                .script(new Script().frames(4).mouse(1, mx, my).key(1, ' ').key(1, 'l')).run();
+        assertTrue(r.sketch().hitboxDecides);
+        assertEquals(overlapping, r.sketch().overlapping);
+        SketchPixels.assertColour(r.lastFrame(), 224, 194, overlapping ? Palette.HIT : Palette.MISS, "the rectangle");
     }
 
     @Test

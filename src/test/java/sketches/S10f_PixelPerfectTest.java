@@ -1,6 +1,7 @@
 package sketches;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -135,14 +136,13 @@ class S10f_PixelPerfectTest {
         }
     }
 
-
     @Test
     void writtenOutStages_agreeWithHybridCheck_everywhere_inBothPixelWays() {
         S10f_PixelPerfect s = SketchRun.of(new S10f_PixelPerfect()).frames(1).run().sketch();
         java.util.Random random = new java.util.Random(4);
         int[] byStage = new int[3];
-        for (boolean loop : new boolean[] {false, true}) {
-            s.plainLoop = loop;
+        for (boolean loop : new boolean[] {true, false}) {
+            s.hitboxDecides = !loop;
             for (int i = 0; i < 3000; i++) {
                 int rx = 100 + random.nextInt(400);
                 int ry = 20 + random.nextInt(360);
@@ -163,16 +163,20 @@ class S10f_PixelPerfectTest {
     }
 
     @Test
-    void countsPerFrame_matchTheCrowdsStages_andPKeyTimesThePixelLoop() {
+    void countsPerFrame_matchTheCrowdsStages_andTheDefaultTimesThePixelLoop() {
         SketchRun.Result<S10f_PixelPerfect> r = SketchRun.of(new S10f_PixelPerfect())
-                .script(new Script().frames(5).mouse(1, 330, 200).key(1, 'c').key(2, 'p')).run();
+                .script(new Script().frames(5).mouse(1, 330, 200).key(1, 'c')).run();
         S10f_PixelPerfect s = r.sketch();
-        assertTrue(s.plainLoop, "p: the plain loop");
+        assertFalse(s.hitboxDecides, "by default, stage 3 is the plain pixel loop");
         Hybrid.Counter c = s.crowdCounter;
         assertEquals(c.total(), s.ran[0], "stage 1 runs for every star");
         assertEquals(c.total() - c.decidedBy(Stage.CIRCLES), s.ran[1], "stage 2 for those the circles did not dismiss");
         assertEquals(c.decidedBy(Stage.PRECISE), s.ran[2], "stage 3 for those the boxes did not dismiss");
         assertTrue(s.ran[2] >= 1 && s.pixelNanos > 0, "stage 3 ran and was timed");
         assertTrue(s.thisFrame().contains("pixel loop"), s.thisFrame());
+        SketchRun.Result<S10f_PixelPerfect> l = SketchRun.of(new S10f_PixelPerfect())
+                .script(new Script().frames(5).mouse(1, 330, 200).key(1, 'c').key(2, 'l')).run();
+        assertTrue(l.sketch().hitboxDecides, "l: PixelMask.overlaps");
+        assertTrue(l.sketch().thisFrame().contains("PixelMask"), l.sketch().thisFrame());
     }
 }

@@ -2,11 +2,35 @@ package sketches;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import java.util.function.IntFunction;
+
+import hitbox.sketchkit.Script;
 import processing.core.PImage;
 
 /** Pixel checks the sketch display tests share. */
 final class SketchPixels {
     private SketchPixels() {
+    }
+
+    /**
+     * A script that presses l on frames 1, 2, ... (handing the decision to the library and
+     * back), then moves the mouse every frame from frame 4 on.
+     *
+     * @param frames   how many frames
+     * @param lPresses how many times l is pressed
+     * @param mouseAt  where the mouse is on frame f: {x, y}
+     * @return the script
+     */
+    static Script lThenMouse(int frames, int lPresses, IntFunction<int[]> mouseAt) {
+        Script script = new Script().frames(frames);
+        for (int i = 0; i < lPresses; i++) {
+            script.key(1 + i, 'l');
+        }
+        for (int f = 4; f <= frames; f++) {
+            int[] at = mouseAt.apply(f);
+            script.mouse(f, at[0], at[1]);
+        }
+        return script;
     }
 
     /**
