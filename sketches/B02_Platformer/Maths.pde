@@ -24,7 +24,7 @@ void drawMaths() {
   text += "\non the ground: " + player.onGround();
   if (player.onGround()) {
     Vec n = player.groundNormal();
-    text += ", on " + name(player.ground()) + ", its normal (" + Overlay.number(n.x()) + ", " + Overlay.number(n.y()) + ")";
+    text += ", on " + name(player.ground()) + ", its normal (" + Overlay.number(n.x() + 0) + ", " + Overlay.number(n.y() + 0) + ")";   // + 0: no -0.0
   }
   text += "\n" + world;
   Overlay.label(g, 8, 34, text, Overlay.GUIDE);
