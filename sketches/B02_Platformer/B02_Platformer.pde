@@ -17,8 +17,8 @@
  *
  * With no key pressed, a demo plays the level; the first arrow key hands the player to you.
  *
- * Try this: make the slope steeper than maxSlope (45 degrees) and watch the player slide down
- * it; set stepHeight(0) and the stairs are walls; make the tiles 10 pixels wide and run along
+ * Try this: make the slope steeper than maxSlope (45 degrees), starting it at (0, 200), and
+ * watch the player slide down it; set stepHeight(0) and the stairs are walls; make the tiles 10 pixels wide and run along
  * them (no snag at any seam); make a platform oneWay(Side.NONE) and jump into it from below.
  * Keys: LEFT and RIGHT run, UP or SPACE jumps, d shows the maths (every body's box, the grid's
  * cells, this frame's contacts and their normals, what the player stands on).
@@ -33,6 +33,7 @@ float runSpeed = 3;
 World world = new World();
 CharacterBody player;                          // a body that walks: slopes, steps, ground
 Body lift;                                     // the moving platform
+Body slope;
 ArrayList<Body> tiles = new ArrayList<Body>();
 ArrayList<Body> platforms = new ArrayList<Body>();
 ArrayList<Body> coins = new ArrayList<Body>();
@@ -47,12 +48,13 @@ boolean demo = true;                           // until an arrow key is pressed
 void setup() {
   size(600, 400);
   textFont(createFont("SansSerif", 14));
-  // The floor: a row of tiles, each its own body, and two on top of it at the right.
+  // The floor: a row of tiles, each its own body.
   for (int x = 0; x < width; x += 40) {
     tiles.add(world.add(new Rect(x, 360, 40, 40)));
   }
   // The slope at the left, and the stairs at the right: four steps 10 pixels high.
-  tiles.add(world.add(Polygon.of(0, 310, 130, 360, 0, 360)));
+  slope = world.add(Polygon.of(0, 310, 130, 360, 0, 360));
+  tiles.add(slope);
   for (int i = 0; i < 4; i++) {
     tiles.add(world.add(new Rect(450 + 25 * i, 350 - 10 * i, 150 - 25 * i, 10)));
   }

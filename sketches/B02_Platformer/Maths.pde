@@ -31,10 +31,10 @@ void drawMaths() {
 }
 
 String name(Body b) {
-  if (tiles.indexOf(b) == 15) {
+  if (b == slope) {
     return "the slope";
-  } else if (tiles.indexOf(b) > 15) {
-    return "step " + (tiles.indexOf(b) - 15);
+  } else if (tiles.indexOf(b) > tiles.indexOf(slope)) {
+    return "step " + (tiles.indexOf(b) - tiles.indexOf(slope));
   } else if (tiles.contains(b)) {
     return "tile " + tiles.indexOf(b);
   } else if (platforms.contains(b)) {

@@ -19,9 +19,9 @@
  * With no key pressed, the ship flies a demo circle; the first arrow key hands it to you.
  *
  * Try this: hide the ship behind a rock or a wall from the sentry; fly along a wall and round
- * a rock; make the rocks turn ten times faster and watch their boxes with d; answer
- * Reaction.BOUNCE for the rocks (ship.move(vx, vy, filter)) and bounce the velocity with
- * Response.bounce instead of sliding.
+ * a rock; make the rocks turn ten times faster and watch their boxes with d; write
+ * Response.bounce(vx, vy, c.nx(), c.ny(), 0.8) for Response.slide and the ship glances off
+ * what it meets instead of gliding along it.
  * Keys: LEFT and RIGHT turn, UP thrusts, d shows the maths (every body's box, which grows
  * and shrinks as it turns, the grid's cells, the ship's contacts with their normals, and the
  * ray's answer).

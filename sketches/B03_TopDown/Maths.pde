@@ -25,7 +25,8 @@ void drawMaths() {
       + Overlay.number(b.angle()) + ")\nworld.raycastFirst(sentry to ship): " + answer;
   for (Collision c : met) {
     text += "\nthe ship met " + name(c.other()) + ": " + c.reaction() + ", normal ("
-        + Overlay.number(c.nx()) + ", " + Overlay.number(c.ny()) + ")";
+        + Overlay.number(c.nx()) + ", " + Overlay.number(c.ny()) + ")"
+        + (c.hit().alreadyOverlapping() ? ": turned into it, pushed out" : "");
   }
   Overlay.label(g, 8, 48, text, Overlay.GUIDE);
 }

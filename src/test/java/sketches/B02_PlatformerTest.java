@@ -165,7 +165,7 @@ class B02_PlatformerTest {
         SketchRun.Result<B02_Platformer> r = SketchRun.of(new B02_Platformer()).script(script).capture(40).everyFrame(s -> {
             Shape p = s.player.body().shape();
             if (s.player.onGround()) {
-                assertEquals(s.tiles.get(15), s.player.ground(), "frame " + s.frameCount + ": it stands on the slope");
+                assertEquals(s.slope, s.player.ground(), "frame " + s.frameCount + ": it stands on the slope");
                 // Its lower left corner rests on the slope's line, within a skin.
                 assertEquals(slopeY(p.minX()), p.maxY(), 0.1, "frame " + s.frameCount + ": the corner on the slope");
                 if (!Float.isNaN(last[0])) {
@@ -195,7 +195,7 @@ class B02_PlatformerTest {
         int[] up = {0};
         SketchRun.Result<B02_Platformer> r = SketchRun.of(new B02_Platformer()).script(script).everyFrame(s -> {
             Shape p = s.player.body().shape();
-            boolean onSlope = s.player.onGround() && s.player.ground() == s.tiles.get(15) && p.minX() > 1;
+            boolean onSlope = s.player.onGround() && s.player.ground() == s.slope && p.minX() > 1;
             if (onSlope && !Float.isNaN(last[0]) && last[2] != 0) {
                 float dx = s.player.body().x() - last[0];
                 float dy = s.player.body().y() - last[1];
@@ -228,7 +228,7 @@ class B02_PlatformerTest {
             if (s.frameCount > 20) {
                 assertTrue(s.player.onGround(), "frame " + s.frameCount + ": on the ground all the way");
             }
-            int step = s.tiles.indexOf(s.player.ground()) - 15;
+            int step = s.tiles.indexOf(s.player.ground()) - s.tiles.indexOf(s.slope);
             if (step >= 1) {
                 assertEquals(360 - 10 * step, s.player.body().shape().maxY(), 1e-3f, "frame " + s.frameCount + ": on step " + step);
                 heights.add((double) Math.round(s.player.body().shape().maxY()));
