@@ -4,21 +4,22 @@
 // {kind, x}: kind 0 walk to x, 1 jump (holding the direction to x), 2 wait until the moving
 // platform's middle is within 10 pixels of x.
 float[][] demoSteps = {
-  {0, 70}, {1, 70}, {0, 112},      // up through the low platform; its coin
+  {0, 70}, {1, 70}, {0, 112},      // down the slope, up through the low platform; its coin
   {2, 203}, {0, 215},              // wait for the moving platform, step down onto it
   {2, 380}, {1, 450}, {0, 470},    // ride it (its coin), jump to the right platform; its coin
-  {0, 560},                        // off its end onto the step; its coin
-  {0, 300},                        // down to the floor; its coin
+  {0, 560},                        // off its end onto the stairs, up to the top; its coin
+  {0, 300},                        // down the stairs to the floor; its coin
   {2, 300}, {1, 300},              // wait for the moving platform, jump up through it
   {2, 260}, {1, 262},              // ride it under the high platform, up through that; its coin
-  {0, 40}                          // off its end, back to the start
+  {0, 40}                          // off its end, up the slope, back to the start
 };
 int demoStep = 0;
 boolean demoAirborne = false;
 
 void playDemo() {
   float[] s = demoSteps[demoStep];
-  float x = player.x();
+  float x = player.body().x();
+  boolean onGround = player.onGround();
   left = false;
   right = false;
   jump = false;
@@ -27,7 +28,7 @@ void playDemo() {
     right = x < s[1] - 1.5;
     left = x > s[1] + 1.5;
     done = !left && !right && onGround;
-    jump = onGround && (left || right) && againstAWall();
+    jump = onGround && (left || right) && player.onWall();
   } else if (s[0] == 1) {
     right = x < s[1] - 1.5;
     left = x > s[1] + 1.5;
@@ -44,14 +45,4 @@ void playDemo() {
   if (done) {
     demoStep = (demoStep + 1) % demoSteps.length;
   }
-}
-
-// Did the player's last move stop against something at its side?
-boolean againstAWall() {
-  for (Collision c : met) {
-    if (c.reaction() == Reaction.SLIDE && c.nx() != 0) {
-      return true;
-    }
-  }
-  return false;
 }

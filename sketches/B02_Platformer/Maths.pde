@@ -1,5 +1,6 @@
 // The "show the maths" overlay (d): what the world sees (the grid's cells, every body's box,
-// this frame's contacts with their normals), and the player's collisions written out.
+// this frame's contacts with their normals), the player's collisions written out, and what
+// it stands on.
 
 boolean showMaths = false;
 
@@ -20,12 +21,21 @@ void drawMaths() {
     text += "\n  " + name(c.other()) + ": " + c.reaction() + ", normal (" + Overlay.number(c.nx()) + ", "
         + Overlay.number(c.ny()) + ")" + (c.landed() ? ", landed" : "");
   }
-  text += "\non the ground: " + onGround + "   " + world;
+  text += "\non the ground: " + player.onGround();
+  if (player.onGround()) {
+    Vec n = player.groundNormal();
+    text += ", on " + name(player.ground()) + ", its normal (" + Overlay.number(n.x() + 0) + ", " + Overlay.number(n.y() + 0) + ")";   // + 0: no -0.0
+  }
+  text += "\n" + world;
   Overlay.label(g, 8, 34, text, Overlay.GUIDE);
 }
 
 String name(Body b) {
-  if (tiles.contains(b)) {
+  if (b == slope) {
+    return "the slope";
+  } else if (tiles.indexOf(b) > tiles.indexOf(slope)) {
+    return "step " + (tiles.indexOf(b) - tiles.indexOf(slope));
+  } else if (tiles.contains(b)) {
     return "tile " + tiles.indexOf(b);
   } else if (platforms.contains(b)) {
     return "one-way platform " + platforms.indexOf(b);

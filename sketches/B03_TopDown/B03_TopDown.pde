@@ -1,24 +1,27 @@
 /**
- * Turning rocks, a ship, and a sentry's line of sight
+ * Turning rocks, turned walls, a ship, and a sentry's line of sight
  * Beyond the tutorial: the world, turning bodies and sight
  *
- * Asteroids-like: rocks that drift and turn, and a ship that turns and thrusts. A sketch
- * draws a turning thing with pushMatrix(); translate(x, y); rotate(angle); and its shape
+ * Seen from above: rocks that turn, walls set at angles, and a ship that turns and thrusts. A
+ * sketch draws a turning thing with pushMatrix(); translate(x, y); rotate(angle); and its shape
  * around (0, 0), and world.add(shape, x, y, angle) makes the body that stands exactly there,
- * so the collision tests test what you see: body.turnBy and body.moveBy turn and move it,
- * body.x(), body.y() and body.angle() are what translate and rotate take, and body.shape() is
- * the turned outline on the screen. The ship moves with world.move and bounces off the
- * rocks; the rocks ignore each other (a category and a mask); world.step() reports each
- * time the ship comes into contact with a rock.
+ * so the collision tests test what you see: body.turnBy turns it, body.x(), body.y() and
+ * body.angle() are what translate and rotate take, and body.shape() is the turned outline on
+ * the screen. The ship is a CharacterBody with up(0, 0): seen from above there is no ground,
+ * every surface is a wall, and ship.move(vx, vy) slides it along the walls and round the rocks
+ * (Response.slide then drops the part of its velocity that went into them). The rocks and
+ * walls ignore each other (a category and a mask); world.step() reports each time the ship
+ * comes into contact with one.
  *
  * The sentry in the corner looks at the ship: world.raycastFirst casts a ray from it
  * towards the ship and answers the nearest body in the way. If that is the ship, it is seen.
  *
  * With no key pressed, the ship flies a demo circle; the first arrow key hands it to you.
  *
- * Try this: hide the ship behind a rock from the sentry; make the rocks turn ten times faster
- * and watch their boxes with d; answer Reaction.SLIDE for the rocks and the ship slides along
- * them instead of bouncing off.
+ * Try this: hide the ship behind a rock or a wall from the sentry; fly along a wall and round
+ * a rock; make the rocks turn ten times faster and watch their boxes with d; write
+ * Response.bounce(vx, vy, c.nx(), c.ny(), 0.8) for Response.slide and the ship glances off
+ * what it meets instead of gliding along it.
  * Keys: LEFT and RIGHT turn, UP thrusts, d shows the maths (every body's box, which grows
  * and shrinks as it turns, the grid's cells, the ship's contacts with their normals, and the
  * ray's answer).
@@ -26,16 +29,16 @@
 import hitbox.*;
 import hitbox.processing.*;
 
-int SHIP = 1, ROCK = 2;
+int SHIP = 1, ROCK = 2, WALL = 4;
 
 World world = new World();
-Body ship;
+CharacterBody ship;      // a body that slides: seen from above, every surface a wall
 float vx = 0, vy = 0;
 ArrayList<Body> rocks = new ArrayList<Body>();
-ArrayList<PVector> drift = new ArrayList<PVector>();   // each rock's move a frame
-FloatList spin = new FloatList();                      // and its turn a frame
+FloatList spin = new FloatList();                      // each rock's turn a frame
+ArrayList<Body> walls = new ArrayList<Body>();
 ArrayList<Collision> met = new ArrayList<Collision>(); // the ship's collisions this frame
-int hits = 0;            // times the ship came into contact with a rock
+int hits = 0;            // times the ship came into contact with a rock or a wall
 int flash = 0;           // frames left to show the ship red
 
 float sentryX = 40, sentryY = 360;
@@ -51,13 +54,18 @@ void setup() {
   randomSeed(7);
   // The ship, nose along +x in its own frame, placed and turned to point up.
   Polygon shipShape = Polygon.of(16, 0, -10, -10, -5, 0, -10, 10);
-  ship = world.add(shipShape, 300, 200, -HALF_PI).layers(SHIP, ROCK);
-  float[][] at = {{110, 90}, {470, 100}, {500, 300}, {270, 310}, {150, 240}, {340, 110}, {560, 190}};
+  ship = world.addCharacter(shipShape, 300, 200, -HALF_PI).up(0, 0);
+  ship.body().layers(SHIP, ROCK | WALL);
+  float[][] at = {{110, 90}, {470, 110}, {490, 300}, {250, 320}, {140, 230}, {320, 100}};
   for (float[] p : at) {
-    Body rock = world.add(rockShape(random(30, 46)), p[0], p[1], random(TWO_PI)).layers(ROCK, SHIP);
+    Body rock = world.add(rockShape(random(30, 42)), p[0], p[1], random(TWO_PI)).layers(ROCK, SHIP);
     rocks.add(rock);
-    drift.add(PVector.fromAngle(random(TWO_PI)).mult(random(0.2, 0.7)));
-    spin.append(random(-0.03, 0.03));
+    spin.append(random(-0.01, 0.01));
+  }
+  // The walls: long thin rects, each turned about its middle.
+  float[][] wallAt = {{400, 210, 1.0}, {560, 60, 0.7}, {380, 360, -0.25}, {40, 180, 1.3}};
+  for (float[] w : wallAt) {
+    walls.add(world.add(new Rect(-60, -7, 120, 14), w[0], w[1], w[2]).layers(WALL, SHIP));
   }
 }
 
@@ -66,7 +74,7 @@ Polygon rockShape(float r) {
   float[] xy = new float[18];
   for (int i = 0; i < 9; i++) {
     float a = TWO_PI * i / 9;
-    float d = r * random(0.7, 1.0);
+    float d = r * random(0.85, 1.0);
     xy[2 * i] = d * cos(a);
     xy[2 * i + 1] = d * sin(a);
   }
@@ -74,28 +82,26 @@ Polygon rockShape(float r) {
 }
 
 void draw() {
-  // The rocks drift and turn: teleports, nothing in their way is asked.
+  // The rocks turn where they stand: a teleport, nothing in their way is asked (a rock that
+  // turns into the ship pushes it out on its next move).
   for (int i = 0; i < rocks.size(); i++) {
-    Body rock = rocks.get(i);
-    rock.moveBy(drift.get(i).x, drift.get(i).y);
-    rock.turnBy(spin.get(i));
-    wrap(rock, 40);
+    rocks.get(i).turnBy(spin.get(i));
   }
   if (demo) {
     left = false;
     right = frameCount % 120 < 50;   // the demo: a wide circle, thrusting out of the turns
     thrust = frameCount % 120 > 40;
   }
-  // The ship turns and thrusts, then the world moves it through the rocks.
+  // The ship turns and thrusts, then slides through the rocks and walls.
   if (left) {
-    ship.turnBy(-0.08);
+    ship.body().turnBy(-0.08);
   }
   if (right) {
-    ship.turnBy(0.08);
+    ship.body().turnBy(0.08);
   }
   if (thrust) {
-    vx += 0.12 * cos(ship.angle());
-    vy += 0.12 * sin(ship.angle());
+    vx += 0.12 * cos(ship.body().angle());
+    vy += 0.12 * sin(ship.body().angle());
   }
   float speed = dist(0, 0, vx, vy);
   if (speed > 4) {
@@ -103,17 +109,15 @@ void draw() {
     vy *= 4 / speed;
   }
   met.clear();
-  met.addAll(world.move(ship, vx, vy, (me, other) -> Reaction.BOUNCE));
+  met.addAll(ship.move(vx, vy));
   for (Collision c : met) {
-    if (c.reaction() == Reaction.BOUNCE) {
-      Vec v = Response.bounce(vx, vy, c.nx(), c.ny(), 0.8);   // off the rock, a little slower
-      vx = v.x();
-      vy = v.y();
-    }
+    Vec v = Response.slide(vx, vy, c.nx(), c.ny());   // keep only the part along the surface
+    vx = v.x();
+    vy = v.y();
   }
-  wrap(ship, 20);
+  wrap(ship.body(), 20);
   for (BodyEvent e : world.step()) {
-    if (e.kind() == BodyEvent.Kind.ENTER && e.involves(ship)) {
+    if (e.kind() == BodyEvent.Kind.ENTER && e.involves(ship.body())) {
       hits++;
       flash = 12;
     }
@@ -126,12 +130,13 @@ void draw() {
 void lookForTheShip() {
   sight = null;
   seen = false;
-  if (dist(sentryX, sentryY, ship.x(), ship.y()) < 1) {
+  float x = ship.body().x(), y = ship.body().y();
+  if (dist(sentryX, sentryY, x, y) < 1) {
     return;
   }
-  Ray ray = Ray.between(sentryX, sentryY, ship.x(), ship.y());
+  Ray ray = Ray.between(sentryX, sentryY, x, y);
   sight = world.raycastFirst(ray, body -> true);
-  seen = sight != null && sight.body() == ship;
+  seen = sight != null && sight.body() == ship.body();
 }
 
 // Off one edge of the window, on at the other.
@@ -153,8 +158,12 @@ void drawScene() {
   for (Body rock : rocks) {
     drawTurned(rock);
   }
+  fill(Palette.NEUTRAL);
+  for (Body wall : walls) {
+    drawTurned(wall);
+  }
   fill(flash > 0 ? Palette.HIT : Palette.PLAYER);
-  drawTurned(ship);
+  drawTurned(ship.body());
   flash = max(0, flash - 1);
   drawSentry();
   drawMaths();   // Maths.pde
@@ -171,8 +180,8 @@ void drawTurned(Body b) {
 }
 
 void drawSentry() {
-  float endX = seen || sight == null ? ship.x() : sight.hit().x();
-  float endY = seen || sight == null ? ship.y() : sight.hit().y();
+  float endX = seen || sight == null ? ship.body().x() : sight.hit().x();
+  float endY = seen || sight == null ? ship.body().y() : sight.hit().y();
   stroke(seen ? Palette.HIT : Palette.MISS);
   strokeWeight(2);
   line(sentryX, sentryY, endX, endY);

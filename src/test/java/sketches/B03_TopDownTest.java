@@ -17,6 +17,7 @@ import hitbox.Circle;
 import hitbox.Collision;
 import hitbox.Polygon;
 import hitbox.Ray;
+import hitbox.Reaction;
 import hitbox.RayHit;
 import hitbox.Segment;
 import hitbox.Shape;
@@ -28,9 +29,10 @@ import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
 
 /**
- * Turning rocks and a ship drawn with translate and rotate, tested as drawn; the ship moved by
- * the world and bounced off the rocks; the sentry's line of sight by a ray cast through the
- * world, checked against every body by hand.
+ * Turning rocks, turned walls and a ship drawn with translate and rotate, tested as drawn; the
+ * ship a character body seen from above (up(0, 0)), sliding along the walls and round the
+ * rocks; the sentry's line of sight by a ray cast through the world, checked against every
+ * body by hand.
  */
 class B03_TopDownTest {
 
@@ -62,13 +64,17 @@ class B03_TopDownTest {
         for (Body rock : s.rocks) {
             all.add(rock.shape());
         }
-        all.add(s.ship.shape());
-        Segment line = new Segment(s.sentryX, s.sentryY, s.ship.x(), s.ship.y());
+        for (Body wall : s.walls) {
+            all.add(wall.shape());
+        }
+        all.add(s.ship.body().shape());
+        Segment line = new Segment(s.sentryX, s.sentryY, s.ship.body().x(), s.ship.body().y());
         for (Body b : s.world.bodies()) {
             Shape shape = b.shape();
             assertTrue(b.angle() != 0 && shape instanceof Polygon, "a turned body stands as a polygon: " + b);
             // The ship is red for a few frames after a contact, blue otherwise.
-            List<Integer> colours = b == s.ship ? List.of(Palette.PLAYER, Palette.HIT) : List.of(Palette.OBSTACLE);
+            List<Integer> colours = b == s.ship.body() ? List.of(Palette.PLAYER, Palette.HIT)
+                    : s.walls.contains(b) ? List.of(Palette.NEUTRAL) : List.of(Palette.OBSTACLE);
             for (int y = (int) shape.minY() - 3; y <= shape.maxY() + 3; y += 2) {
                 for (int x = (int) shape.minX() - 3; x <= shape.maxX() + 3; x += 2) {
                     float px = x + 0.5f, py = y + 0.5f;
@@ -122,16 +128,17 @@ class B03_TopDownTest {
         float[] last = {Float.NaN};
         int[] turned = {0};
         SketchRun.of(new B03_TopDown()).script(script).everyFrame(s -> {
+            Body ship = s.ship.body();
             if (s.left && !Float.isNaN(last[0])) {
-                assertEquals(last[0] - 0.08f, s.ship.angle(), 1e-5f, "frame " + s.frameCount);
+                assertEquals(last[0] - 0.08f, ship.angle(), 1e-5f, "frame " + s.frameCount);
                 turned[0]++;
             }
-            last[0] = s.ship.angle();
+            last[0] = ship.angle();
             // The nose, (16, 0) in the ship's own frame, is the first corner of its shape now.
-            Polygon p = (Polygon) s.ship.shape();
-            float a = s.ship.angle();
-            assertEquals(s.ship.x() + 16 * (float) Math.cos(a), p.x(0), 1e-3f, "the nose x");
-            assertEquals(s.ship.y() + 16 * (float) Math.sin(a), p.y(0), 1e-3f, "the nose y");
+            Polygon p = (Polygon) ship.shape();
+            float a = ship.angle();
+            assertEquals(ship.x() + 16 * (float) Math.cos(a), p.x(0), 1e-3f, "the nose x");
+            assertEquals(ship.y() + 16 * (float) Math.sin(a), p.y(0), 1e-3f, "the nose y");
         }).run();
         assertTrue(turned[0] >= 15, "frames turned left: " + turned[0]);
     }
@@ -144,20 +151,22 @@ class B03_TopDownTest {
             if (s.sight == null && !s.seen) {
                 return;   // the ship right on the sentry: no ray
             }
-            Ray ray = Ray.between(s.sentryX, s.sentryY, s.ship.x(), s.ship.y());
-            RayHit toShip = ray.cast(s.ship.shape());
+            Ray ray = Ray.between(s.sentryX, s.sentryY, s.ship.body().x(), s.ship.body().y());
+            RayHit toShip = ray.cast(s.ship.body().shape());
             assertNotNull(toShip, "the ray towards the ship's position reaches its outline");
-            float nearestRock = Float.POSITIVE_INFINITY;
-            for (Body rock : s.rocks) {
+            float nearestRock = Float.POSITIVE_INFINITY;   // or wall
+            List<Body> inTheWay = new ArrayList<>(s.rocks);
+            inTheWay.addAll(s.walls);
+            for (Body rock : inTheWay) {
                 RayHit h = ray.cast(rock.shape());
                 if (h != null) {
                     nearestRock = Math.min(nearestRock, h.distance());
                 }
             }
             boolean expected = toShip.distance() < nearestRock;
-            assertEquals(expected, s.seen, "frame " + s.frameCount + ": ship at " + toShip.distance() + ", nearest rock at " + nearestRock);
+            assertEquals(expected, s.seen, "frame " + s.frameCount + ": ship at " + toShip.distance() + ", nearest rock or wall at " + nearestRock);
             if (!s.seen) {
-                assertEquals(nearestRock, s.sight.distance(), 1e-3f, "the ray stops at the nearest rock");
+                assertEquals(nearestRock, s.sight.distance(), 1e-3f, "the ray stops at the nearest rock or wall");
             }
             seen[0] += s.seen ? 1 : 0;
             hidden[0] += s.seen ? 0 : 1;
@@ -166,28 +175,103 @@ class B03_TopDownTest {
     }
 
     @Test
-    void ship_bouncesOffTheRocks_andEndsEachMoveOutsideThose_itMet() {
-        int[] bounces = {0};
+    void ship_slidesAlongRocksAndWalls_andEndsEachMoveOutsideThose_itMet() {
+        int[] slides = {0};
+        boolean[] metAWall = {false};
         SketchRun.of(new B03_TopDown()).frames(900).everyFrame(s -> {
             for (Collision c : s.met) {
-                assertTrue(s.rocks.contains(c.other()), "the ship meets rocks only");
+                assertTrue(s.rocks.contains(c.other()) || s.walls.contains(c.other()), "the ship meets rocks and walls only");
+                assertEquals(Reaction.SLIDE, c.reaction(), "it slides along them");
                 if (!c.hit().alreadyOverlapping()) {
-                    bounces[0]++;
-                    Shape ship = s.ship.shape();
-                    assertFalse(ship.overlaps(c.other().shape()), "frame " + s.frameCount + ": the ship ends clear of the rock it bounced off");
+                    slides[0]++;
+                    metAWall[0] |= s.walls.contains(c.other());
+                    Shape ship = s.ship.body().shape();
+                    assertFalse(ship.overlaps(c.other().shape()), "frame " + s.frameCount + ": the ship ends clear of what it slid along");
                 }
             }
         }).run();
-        assertTrue(bounces[0] > 0, "the demo bounces off a rock: " + bounces[0]);
+        assertTrue(slides[0] > 0 && metAWall[0], "the demo slides along rocks and a wall: " + slides[0]);
+    }
+
+    @Test
+    void ship_thrustingStraightAtARockOffCentre_getsRoundIt() {
+        // Pointing up from (300, 200), it thrusts at rock 5 (at (320, 100)), 20 pixels left of
+        // the rock's middle: it meets the rock's underside, slides left along it and round its
+        // flank, never stopping, and goes on up past it.
+        Script script = new Script().frames(92).hold(1, "UP", 91);
+        int[] met = {-1};
+        int[] past = {-1};
+        float[] last = {Float.NaN, Float.NaN};
+        SketchRun.Result<B03_TopDown> r = SketchRun.of(new B03_TopDown()).script(script).everyFrame(s -> {
+            Body rock = s.rocks.get(5);
+            Body ship = s.ship.body();
+            assertFalse(ship.shape().overlaps(rock.shape()), "frame " + s.frameCount + ": never inside the rock");
+            for (Collision c : s.met) {
+                if (c.other() == rock && met[0] < 0) {
+                    met[0] = s.frameCount;
+                    assertTrue(ship.shape().minY() > rock.y(), "it meets the rock's lower half");
+                }
+            }
+            if (met[0] > 0 && past[0] < 0 && ship.shape().maxY() < rock.shape().minY()) {
+                past[0] = s.frameCount;
+            }
+            if (met[0] > 0 && met[0] < s.frameCount && past[0] < 0) {
+                float moved = (float) Math.hypot(ship.x() - last[0], ship.y() - last[1]);
+                assertTrue(moved > 0.5f, "frame " + s.frameCount + ": round the rock, it never stops: moved " + moved);
+            }
+            last[0] = ship.x();
+            last[1] = ship.y();
+        }).run();
+        assertTrue(met[0] > 0, "the ship met the rock");
+        assertTrue(past[0] > met[0], "and got round it, above it: frames " + met[0] + ", " + past[0]);
+        // What is drawn: the ship's colour on its body, above the rock.
+        B03_TopDown s = r.sketch();
+        Body ship = s.ship.body();
+        int x = Math.round(ship.x() + 4 * (float) Math.cos(ship.angle()));
+        int y = Math.round(ship.y() + 4 * (float) Math.sin(ship.angle()));
+        if (ship.y() > 0) {
+            assertTrue(List.of(Palette.PLAYER, Palette.HIT).contains(r.lastFrame().get(x, y)), "the ship drawn at (" + x + ", " + y + ")");
+        }
+    }
+
+    @Test
+    void ship_flownIntoATurnedWall_slidesAlongIt_neverStopping() {
+        // It turns right to point along +x, thrusts, and meets wall 0 (at (400, 210), turned
+        // by 1 radian) at a slant: from then on it slides down along the wall, every frame.
+        Script script = new Script().frames(90).hold(1, "RIGHT", 20).hold(22, "UP", 67);
+        int[] along = {0};
+        float[] last = {Float.NaN, Float.NaN};
+        SketchRun.of(new B03_TopDown()).script(script).everyFrame(s -> {
+            Body wall = s.walls.get(0);
+            Body ship = s.ship.body();
+            assertFalse(ship.shape().overlaps(wall.shape()), "frame " + s.frameCount + ": never inside the wall");
+            boolean touching = false;
+            for (Collision c : s.met) {
+                touching |= c.other() == wall;
+            }
+            if (touching && !Float.isNaN(last[0])) {
+                float dx = ship.x() - last[0], dy = ship.y() - last[1];
+                float alongWall = dx * (float) Math.cos(1.0) + dy * (float) Math.sin(1.0);
+                assertTrue(alongWall > 0.5f, "frame " + s.frameCount + ": slides along the wall: (" + dx + ", " + dy + ")");
+                along[0]++;
+            }
+            last[0] = ship.x();
+            last[1] = ship.y();
+        }).run();
+        assertTrue(along[0] > 10, "frames sliding along the wall: " + along[0]);
     }
 
     @Test
     void rocks_ignoreEachOther_byTheirLayers() {
         B03_TopDown s = SketchRun.of(new B03_TopDown()).frames(1).run().sketch();
         for (Body a : s.rocks) {
-            assertTrue(a.accepts(s.ship) && s.ship.accepts(a), "rock and ship meet");
+            assertTrue(a.accepts(s.ship.body()) && s.ship.body().accepts(a), "rock and ship meet");
             for (Body b : s.rocks) {
                 assertFalse(a.accepts(b), "rocks do not meet rocks");
+            }
+            for (Body w : s.walls) {
+                assertTrue(w.accepts(s.ship.body()) && s.ship.body().accepts(w), "wall and ship meet");
+                assertFalse(a.accepts(w) || w.accepts(a), "rocks and walls do not meet");
             }
         }
     }

@@ -19,12 +19,14 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import hitbox.Body;
+import hitbox.CharacterBody;
 import processing.core.PApplet;
 
 /**
  * The README's Processing code blocks are sketches that really build, through Processing's own
  * preprocessor as the IDE builds them, each exactly as the README prints it; and its platformer
- * on the world runs: the player falls onto the floor, runs along it and jumps.
+ * on the world runs: the player falls onto the floor, runs along it, jumps, and walks up the
+ * slope.
  */
 class ReadmeSketchTest {
     private static final File README = new File("README.md");
@@ -99,20 +101,26 @@ class ReadmeSketchTest {
                 .getDeclaredConstructor().newInstance();
     }
 
-    private static Body player(PApplet sketch) throws ReflectiveOperationException {
+    private static CharacterBody character(PApplet sketch) throws ReflectiveOperationException {
         java.lang.reflect.Field field = sketch.getClass().getDeclaredField("player");
         field.setAccessible(true);   // a sketch's globals are package-private fields
-        return (Body) field.get(sketch);
+        return (CharacterBody) field.get(sketch);
+    }
+
+    private static Body player(PApplet sketch) throws ReflectiveOperationException {
+        return character(sketch).body();
     }
 
     @Test
-    void thePlatformer_playerLandsOnTheFloor_runsRight_andJumps() throws Exception {
+    void thePlatformer_playerLandsOnTheFloor_runsRight_jumps_andWalksUpTheSlope() throws Exception {
         assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
-        // Falls and lands, then runs right, then jumps.
+        // Falls and lands, then runs right, then jumps, then runs right up the slope.
         double[] startX = new double[1];
         double[] top = {Double.MAX_VALUE};
         double[] landed = new double[1];
-        Script script = new Script().frames(200).hold(80, "RIGHT", 40).key(150, ' ');
+        double[] last = {Double.NaN, Double.NaN};
+        int[] upTheSlope = {0};
+        Script script = new Script().frames(310).hold(80, "RIGHT", 40).key(150, ' ').hold(200, "RIGHT", 110);
         SketchRun.of(newPlatformer()).script(script).everyFrame(s -> {
             try {
                 Body p = player(s);
@@ -125,8 +133,20 @@ class ReadmeSketchTest {
                     assertEquals(landed[0], bottom, 1e-3, "runs along the floor, at the same height");
                     assertTrue(p.shape().minX() > startX[0] + 40, "ran right: from " + startX[0] + " to " + p.shape().minX());
                 }
-                if (s.frameCount > 150) {
+                if (s.frameCount > 150 && s.frameCount < 200) {
                     top[0] = Math.min(top[0], bottom);
+                }
+                // Up the slope: on the ground every frame, three pixels sideways, rising.
+                if (s.frameCount > 202 && p.shape().maxX() > 430) {
+                    assertTrue(character(s).onGround(), "frame " + s.frameCount + ": on the ground up the slope");
+                    assertEquals(3, p.shape().minX() - last[0], 1e-3, "frame " + s.frameCount + ": three pixels sideways");
+                    assertTrue(bottom < last[1], "frame " + s.frameCount + ": and up: " + last[1] + " to " + bottom);
+                    upTheSlope[0]++;
+                }
+                last[0] = p.shape().minX();
+                last[1] = bottom;
+                if (s.frameCount == 310) {
+                    assertTrue(bottom < landed[0] - 25, "walked up the slope: from " + landed[0] + " to " + bottom);
                 }
             } catch (ReflectiveOperationException e) {
                 throw new AssertionError(e);
@@ -134,5 +154,6 @@ class ReadmeSketchTest {
         }).run();
         assertTrue(landed[0] > 300 && landed[0] < 400, "stands on the floor near the bottom: " + landed[0]);
         assertTrue(top[0] < landed[0] - 40, "the jump goes up: from " + landed[0] + " to " + top[0]);
+        assertTrue(upTheSlope[0] > 20, "frames walking up the slope: " + upTheSlope[0]);
     }
 }
