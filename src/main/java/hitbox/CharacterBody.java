@@ -115,7 +115,11 @@ public final class CharacterBody {
         boolean wasGround = onGround;
         int st = mv.begin();
         Shape start = body.shape();
-        Shape from = mv.pushOut(body, start, filter);
+        Shape from = start;
+        if (mv.blockedAtStart(body, start, filter, st)) {
+            from = mv.pushOut(body, start, filter);
+            st = mv.restamp();
+        }
         metWall = false;
         metCeiling = false;
         mv.walk(body, start, from, dx, dy, filter, st, this);

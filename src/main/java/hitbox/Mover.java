@@ -652,6 +652,45 @@ final class Mover {
     // ---------------------------------------------------------------- a character's start
 
     /**
+     * Does the shape a move starts from overlap a body that would block it (not a one-way
+     * body)? Asked through {@link #reaction}, so the walk that follows with the same stamp
+     * reuses each answer and the filter is asked once.
+     */
+    boolean blockedAtStart(Body m, Shape start, CollisionFilter filter, int st) {
+        world.gather(start.minX(), start.minY(), start.maxX(), start.maxY());
+        for (int i = 0, n = world.candidateCount(); i < n; i++) {
+            Body o = world.candidate(i);
+            if (o == m) {
+                continue;
+            }
+            Reaction r = reaction(m, o, filter, start, st);
+            if (r == null || r == Reaction.CROSS || o.oneWay != Side.NONE) {
+                continue;
+            }
+            if (o.grid == null ? o.seenOverlap : gridOverlaps(o, start)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private boolean gridOverlaps(Body o, Shape s) {
+        obCount = 0;
+        cells(o, s.minX(), s.minY(), s.maxX(), s.maxY(), null);
+        for (int c = 0; c < obCount; c++) {
+            if (s.overlaps(obShape[c])) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** A new stamp for the same move: every reaction is asked again (after a push out). */
+    int restamp() {
+        return ++stamp;
+    }
+
+    /**
      * A shape pushed out of the bodies it overlaps that would block it (not one-way bodies,
      * which it may stand inside while it jumps through), the deepest first, each the shortest
      * way ({@link Shape#contact}) and a skin beyond, a few times; the shape itself when it
