@@ -119,7 +119,7 @@ final class Browser implements AutoCloseable {
                 "--hide-scrollbars", "--window-size=800,600", "--user-data-dir=" + profile, url)
                 .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         try {
-            CompletableFuture<Object> all = CompletableFuture.allOf(wanted.toArray(new CompletableFuture[0]))
+            CompletableFuture<Object> all = CompletableFuture.allOf(wanted.toArray(new CompletableFuture<?>[0]))
                     .thenApply(v -> (Object) v);
             Object first = CompletableFuture.anyOf(all, error).get(timeout.toMillis(), TimeUnit.MILLISECONDS);
             if (error.isDone()) {
