@@ -15,9 +15,10 @@
 //   <script src="p5.min.js"></script>
 //   <script type="module" src="p5.hitbox.js"></script>
 //   <script type="module" src="sketch.js"></script>      (or a classic script: see below)
-// p5 2.x: it registers itself with p5.registerAddon; p5 1.x: it adds to p5.prototype. A global
-// sketch as a classic script works too: the add-on holds p5's start (p5 1.x: a preload count;
-// p5 2.x: an async presetup) until the WebAssembly module has loaded.
+// p5 2.x: it registers itself with p5.registerAddon; p5 1.x: it adds to p5.prototype; and it
+// sets each function on window for a global sketch. A global sketch given as a classic script
+// (<script src="sketch.js">) runs too: p5 starts it on the page's load event, which waits for
+// the add-on's module and its WebAssembly (tested in Chromium with p5 2.x).
 import * as H from './hitbox.js';
 
 const C = H.Collide;

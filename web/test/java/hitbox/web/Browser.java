@@ -66,6 +66,20 @@ final class Browser implements AutoCloseable {
     }
 
     /**
+     * A server for another folder (a page outside the build's web folder); skips the calling
+     * test when the machine has no Chromium.
+     *
+     * @param root the folder to serve
+     * @return a server on the loopback address, to close after use
+     * @throws IOException if the server cannot start
+     */
+    static Browser start(Path root) throws IOException {
+        Assumptions.assumeTrue(chromium() != null,
+                "No Chromium on this machine: the browser tests are skipped (on Debian: apt-get install chromium)");
+        return new Browser(root);
+    }
+
+    /**
      * Chromium's binary, or null when the machine has none.
      *
      * @return the path of the binary, or null
