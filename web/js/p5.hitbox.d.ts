@@ -43,3 +43,5 @@ export interface CollideFunctions {
 export const functions: CollideFunctions;
 export function hitboxAddon(p5: any, fn: any): void;
 export function addTo(target: object): void;
+/** Resolves to the Hitbox module once its WebAssembly has loaded. */
+export const ready: Promise<typeof import('./hitbox.js')>;

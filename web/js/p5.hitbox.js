@@ -16,20 +16,30 @@
 //   <script type="module" src="p5.hitbox.js"></script>
 //   <script type="module" src="sketch.js"></script>      (or a classic script: see below)
 // p5 2.x: it registers itself with p5.registerAddon; p5 1.x: it adds to p5.prototype; and it
-// sets each function on window for a global sketch. A global sketch given as a classic script
-// (<script src="sketch.js">) runs too: p5 starts it on the page's load event, which waits for
-// the add-on's module and its WebAssembly (tested in Chromium with p5 2.x).
-import * as H from './hitbox.js';
-
-const C = H.Collide;
+// sets each function on window for a global sketch given as a classic script. It registers at
+// once and loads the WebAssembly module beside it; until that is ready it holds the sketch's
+// start (p5 2.x: an async presetup hook; p5 1.x: a preload count), so setup() may call it.
+// `hitbox` (the whole module: hitbox.Collide, hitbox.circle, hitbox.World, ...) is set on
+// window once loaded.
+let H = null;
+let C = null;
+/** Resolves to the module (hitbox.js) once it has loaded. */
+export const ready = import('./hitbox.js').then((m) => {
+  H = m;
+  C = m.Collide;
+  if (typeof window !== 'undefined') window.hitbox = m;
+  return m;
+});
 const PIE = 3;
 
-function xy(v) {
-  return [v.x, v.y];
-}
-
-function polyXY(vertices) {
-  return H.flat(vertices);
+function polyXY(points) {
+  if (points.length === 0 || typeof points[0] === 'number') return Array.from(points);
+  const out = [];
+  for (const p of points) {
+    if (Array.isArray(p)) out.push(p[0], p[1]);
+    else out.push(p.x, p.y);
+  }
+  return out;
 }
 
 /** Where the lines (x1, y1)-(x2, y2) and (x3, y3)-(x4, y4) cross, in doubles, as p5.collide2D returns it. */
@@ -175,16 +185,17 @@ Object.assign(functions, {
     functions.collidePointArc(p.x, p.y, a.x, a.y, r, heading, angle, buffer),
 });
 
-/** The add-on for p5 2.x: p5.registerAddon(hitboxAddon). The module has loaded by the time this runs. */
-export function hitboxAddon(p5, fn) {
+/** The add-on for p5 2.x: p5.registerAddon(hitboxAddon). Setup waits for the module. */
+export function hitboxAddon(p5, fn, lifecycles) {
   Object.assign(fn, functions);
-  fn.hitbox = H;
+  lifecycles.presetup = async function () {
+    await ready;
+  };
 }
 
 /** Adds the functions to a p5 1.x prototype (or any object). */
 export function addTo(target) {
   Object.assign(target, functions);
-  target.hitbox = H;
 }
 
 const P5 = globalThis.p5;
@@ -193,6 +204,14 @@ if (P5) {
     P5.registerAddon(hitboxAddon);
   } else {
     addTo(P5.prototype);
+    // p5 1.x waits for preload() calls before setup: hold it with one more until the module is in.
+    P5.prototype.registerMethod('init', function () {
+      if (H) return;
+      const context = this._isGlobal ? window : this;
+      if (typeof context.preload !== 'function') context.preload = function () {};
+      this._incrementPreload();
+      ready.then(() => this._decrementPreload());
+    });
   }
 }
 // A global sketch given as a classic script may already be running: give it the functions too.
@@ -200,4 +219,5 @@ if (typeof window !== 'undefined') {
   for (const [name, f] of Object.entries(functions)) {
     if (!(name in window)) window[name] = f;
   }
+
 }

@@ -4,6 +4,7 @@
 (function () {
   const q = new URLSearchParams(location.search);
   if (!q.has('test')) return;
+  window.scriptedRun = true;   // sketches that read keys move on their own under test
   const report = (name, body) => fetch('/report/' + name, { method: 'POST', body });
   window.addEventListener('error', (e) => report('error', String((e.error && e.error.stack) || e.message)));
   window.addEventListener('unhandledrejection', (e) => report('error', String((e.reason && e.reason.stack) || e.reason)));
