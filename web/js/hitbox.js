@@ -8,6 +8,7 @@
 // touching is not overlapping. Needs a browser with WebAssembly GC (Chrome 119, Firefox 120,
 // Safari 18.2 and later).
 import { load } from './teavm-runtime.js';
+import { flat } from './points.js';
 
 const started = performance.now();
 const teavm = await load(new URL('./hitbox.wasm', import.meta.url).href);
@@ -23,16 +24,7 @@ export const World = x.World;
 /** A grid of cells: terrain, moves that slide along solid cells, line of sight, paths. */
 export const Grid = x.Grid;
 
-/** Corners as [x0, y0, x1, y1, ...], [[x, y], ...] or [{x, y}, ...] (p5.Vector), as a flat array. */
-export function flat(points) {
-  if (points.length === 0 || typeof points[0] === 'number') return Array.from(points);
-  const out = [];
-  for (const p of points) {
-    if (Array.isArray(p)) out.push(p[0], p[1]);
-    else out.push(p.x, p.y);
-  }
-  return out;
-}
+export { flat };
 
 /** A circle from its centre and radius. */
 export const circle = (cx, cy, r) => x.circle(cx, cy, r);

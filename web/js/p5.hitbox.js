@@ -21,6 +21,8 @@
 // start (p5 2.x: an async presetup hook; p5 1.x: a preload count), so setup() may call it.
 // `hitbox` (the whole module: hitbox.Collide, hitbox.circle, hitbox.World, ...) is set on
 // window once loaded.
+import { flat } from './points.js';
+
 let H = null;
 let C = null;
 /** Resolves to the module (hitbox.js) once it has loaded. */
@@ -32,15 +34,7 @@ export const ready = import('./hitbox.js').then((m) => {
 });
 const PIE = 3;
 
-function polyXY(points) {
-  if (points.length === 0 || typeof points[0] === 'number') return Array.from(points);
-  const out = [];
-  for (const p of points) {
-    if (Array.isArray(p)) out.push(p[0], p[1]);
-    else out.push(p.x, p.y);
-  }
-  return out;
-}
+const polyXY = flat;
 
 /** Where the lines (x1, y1)-(x2, y2) and (x3, y3)-(x4, y4) cross, in doubles, as p5.collide2D returns it. */
 function crossing(x1, y1, x2, y2, x3, y3, x4, y4) {
