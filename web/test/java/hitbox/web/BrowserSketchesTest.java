@@ -30,6 +30,9 @@ class BrowserSketchesTest {
         "S03_CircleCircle |     50,50;420,260 |   true",
         "S04_RectPoint |        50,50;300,200 |   true",
         "S05_RectRect |         50,50;320,220 |   true",
+        "S06_MovingObjects |    300,200 |        false",
+        "S08_ManyObjects |      50,50;300,200 |   false",
+        "S09_Grid |             50,50;130,75 |    true",
         "S10d_ContactResponse | 50,50;230,190 |   true",
         "B02_Platformer |       300,200;300,200;300,200;300,200;300,200;300,200;300,200;300,200 | false",
     })
