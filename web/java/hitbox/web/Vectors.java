@@ -1,0 +1,567 @@
+package hitbox.web;
+
+import hitbox.Body;
+import hitbox.Capsule;
+import hitbox.Circle;
+import hitbox.Collide;
+import hitbox.Collision;
+import hitbox.Contact;
+import hitbox.Ellipse;
+import hitbox.Grid;
+import hitbox.Hit;
+import hitbox.Polygon;
+import hitbox.Ray;
+import hitbox.RayHit;
+import hitbox.Rect;
+import hitbox.Segment;
+import hitbox.Separation;
+import hitbox.Shape;
+import hitbox.Sweep;
+import hitbox.World;
+import java.util.List;
+
+/**
+ * The test vectors that the JVM and the browser both answer, to be compared bit for bit
+ * (docs/browser.md): cases made from a seed by a generator of its own (SplitMix64, long
+ * arithmetic only, so both platforms make the same cases), each run through the library and
+ * its answers written as ints: floats by their bits (every NaN as the one canonical NaN),
+ * booleans as 0 or 1, no answer as a mark, an exception as a mark and its kind.
+ *
+ * <p>The cases go over every ordered pair of the six shape kinds for {@code overlaps},
+ * {@code contact}, {@code separation}, {@code contains} and the sweep, a ray at each kind,
+ * the tutorial's raw-float tests ({@link Collide}), the grid, and moves in a world of bodies.
+ * Coordinates are drawn from half-integers (touching cases are common), nearby floats one ulp
+ * off them, plain random floats and, rarely, values the library refuses (NaN, infinity, a
+ * negative size), whose exceptions are compared by kind.
+ */
+public final class Vectors {
+    /** Before a record of an answer that may be absent: the answer is null. */
+    static final int NONE = 0x6e6f6e65;
+    /** Before an exception's kind. */
+    static final int THROWN = 0x7468726f;
+    /** How many kinds of case {@link #runCase} cycles through. */
+    static final int CASE_KINDS = 12;
+
+    private long state;
+    private int[] out = new int[1 << 16];
+    private int size;
+    private int[] ends;
+    /** Does the case being made reach Math.sin or Math.cos (a turned ellipse, a sweep, a world move)? */
+    private boolean turning;
+    private boolean[] turned;
+
+    private Vectors(long seed) {
+        this.state = seed;
+    }
+
+    /**
+     * Runs {@code count} cases made from {@code seed} and returns every answer's record.
+     *
+     * @param seed  the generator's seed
+     * @param count how many cases
+     * @return the records, case after case
+     */
+    public static int[] run(long seed, int count) {
+        Vectors v = new Vectors(seed);
+        v.ends = new int[count];
+        for (int i = 0; i < count; i++) {
+            v.runCase(i);
+            v.ends[i] = v.size;
+        }
+        int[] result = new int[v.size];
+        System.arraycopy(v.out, 0, result, 0, v.size);
+        return result;
+    }
+
+    /**
+     * Where each case's records end in {@link #run}'s answer (for naming the case of a difference).
+     *
+     * @param seed  the generator's seed
+     * @param count how many cases
+     * @return for each case, the index just past its last record
+     */
+    public static int[] caseEnds(long seed, int count) {
+        return layout(seed, count).ends;
+    }
+
+    /**
+     * Which cases reach {@code Math.sin} and {@code Math.cos}: those with a turned ellipse, and
+     * the sweeps and world moves (the curved sweeps search directions by angle). The JVM
+     * answers those from its own intrinsics, the browser from its JavaScript engine's, and the
+     * Java specification lets either differ from the correctly rounded value by an ulp.
+     *
+     * @param seed  the generator's seed
+     * @param count how many cases
+     * @return for each case, whether it drew one
+     */
+    public static boolean[] turnedCases(long seed, int count) {
+        return layout(seed, count).turned;
+    }
+
+    private static Vectors layout(long seed, int count) {
+        Vectors v = new Vectors(seed);
+        v.ends = new int[count];
+        v.turned = new boolean[count];
+        for (int i = 0; i < count; i++) {
+            v.turning = i % CASE_KINDS == 5 || i % CASE_KINDS == 10;
+            v.runCase(i);
+            v.ends[i] = v.size;
+            v.turned[i] = v.turning;
+        }
+        return v;
+    }
+
+    /**
+     * What case {@code index} of a seed asks, in words, for a failure message.
+     *
+     * @param seed  the generator's seed
+     * @param index the case
+     * @return its kind and shapes
+     */
+    public static String describe(long seed, int index) {
+        Vectors v = new Vectors(seed);
+        for (int i = 0; i < index; i++) {
+            v.runCase(i);
+        }
+        long before = v.state;
+        v.describing = new StringBuilder();
+        v.runCase(index);
+        v.state = before;
+        return "case " + index + " (" + kindName(index % CASE_KINDS) + "): " + v.describing;
+    }
+
+    private StringBuilder describing;
+
+    private static String kindName(int kind) {
+        String[] names = {"overlaps", "contact", "separation", "contains shape", "contains point", "sweep",
+            "ray", "Collide", "Collide polygons", "grid", "world move", "bounds"};
+        return names[kind];
+    }
+
+    // ---------------------------------------------------------------- the generator
+
+    /** SplitMix64 (Steele, Lea, Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014). */
+    private long next() {
+        long z = state += 0x9E3779B97F4A7C15L;
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
+    }
+
+    private int below(int n) {
+        return (int) ((next() >>> 33) % n);
+    }
+
+    /** A float in [0, 1) from 24 random bits: exact, the same on every platform. */
+    private float unit() {
+        return (next() >>> 40) * 0x1p-24f;
+    }
+
+    private float coord() {
+        int r = below(64);
+        float lattice = (below(33) - 16) * 0.5f;
+        if (r < 32) {
+            return lattice;
+        } else if (r < 40) {
+            return (r & 1) == 0 ? Math.nextUp(lattice) : Math.nextDown(lattice);
+        } else if (r < 63) {
+            return unit() * 32 - 16;
+        }
+        float[] odd = {Float.NaN, Float.POSITIVE_INFINITY, -0.0f, 1e-30f, 3e30f};
+        return odd[below(odd.length)];
+    }
+
+    private float size() {
+        int r = below(64);
+        if (r < 36) {
+            return (below(16) + 1) * 0.5f;
+        } else if (r < 62) {
+            return unit() * 8 + 0x1p-10f;
+        }
+        float[] odd = {0f, -1f, Float.NaN, 0x1p-20f};
+        return odd[below(odd.length)];
+    }
+
+    private Shape shape(int kind) {
+        float x = coord(), y = coord();
+        Shape s;
+        switch (kind) {
+            case 0:
+                s = new Circle(x, y, size());
+                break;
+            case 1:
+                s = new Rect(x, y, size(), size());
+                break;
+            case 2:
+                s = new Segment(x, y, coord(), coord());
+                break;
+            case 3:
+                s = polygon(x, y);
+                break;
+            case 4:
+                float angle = below(2) == 0 ? 0 : unit() * 7 - 3.5f;
+                turning |= angle != 0;
+                s = new Ellipse(x, y, size(), size(), angle);
+                break;
+            default:
+                s = new Capsule(x, y, coord(), coord(), size());
+                break;
+        }
+        if (describing != null) {
+            describing.append(s).append(' ');
+        }
+        return s;
+    }
+
+    private Polygon polygon(float x, float y) {
+        switch (below(4)) {
+            case 0:
+                return Polygon.triangle(x, y, coord(), coord(), coord(), coord());
+            case 1:
+                return Polygon.regular(x, y, size(), 3 + below(6), unit() * 6);
+            case 2:
+                return Polygon.rotatedRect(x, y, size(), size(), unit() * 6);
+            default:
+                int n = 3 + below(5);
+                float[] xy = new float[2 * n];
+                for (int i = 0; i < n; i++) {
+                    float r = size();
+                    // Any vertices: a self-crossing polygon is refused by kind on both platforms.
+                    xy[2 * i] = x + r * (below(3) - 1);
+                    xy[2 * i + 1] = y + r * (below(3) - 1) + i * 0.25f;
+                }
+                return Polygon.of(xy);
+        }
+    }
+
+    // ---------------------------------------------------------------- the records
+
+    private void put(int value) {
+        if (size == out.length) {
+            int[] grown = new int[out.length * 2];
+            System.arraycopy(out, 0, grown, 0, size);
+            out = grown;
+        }
+        out[size++] = value;
+    }
+
+    private void put(float value) {
+        put(Float.floatToIntBits(value));
+    }
+
+    private void put(double value) {
+        long bits = Double.doubleToLongBits(value);
+        put((int) (bits >>> 32));
+        put((int) bits);
+    }
+
+    private void put(boolean value) {
+        put(value ? 1 : 0);
+    }
+
+    private void thrown(RuntimeException e) {
+        put(THROWN);
+        put(kindOf(e));
+    }
+
+    /**
+     * An exception's kind as a number: compared by kind, not by message.
+     *
+     * @param e the exception
+     * @return its kind
+     */
+    static int kindOf(RuntimeException e) {
+        if (e instanceof IllegalArgumentException) {
+            return 1;
+        } else if (e instanceof NullPointerException) {
+            return 2;
+        } else if (e instanceof IndexOutOfBoundsException) {
+            return 3;
+        } else if (e instanceof ArithmeticException) {
+            return 4;
+        } else if (e instanceof IllegalStateException) {
+            return 5;
+        } else if (e instanceof UnsupportedOperationException) {
+            return 6;
+        }
+        return 9;
+    }
+
+    private void contact(Contact c) {
+        if (c == null) {
+            put(NONE);
+        } else {
+            put(c.nx());
+            put(c.ny());
+            put(c.depth());
+        }
+    }
+
+    private void hit(Hit h) {
+        if (h == null) {
+            put(NONE);
+        } else {
+            put(h.t());
+            put(h.nx());
+            put(h.ny());
+            put(h.side().ordinal());
+        }
+    }
+
+    // ---------------------------------------------------------------- the cases
+
+    private void runCase(int index) {
+        int kind = index % CASE_KINDS;
+        int pair = (index / CASE_KINDS) % 36;
+        int ka = pair / 6, kb = pair % 6;
+        // A refused shape or question ends the case with its exception's kind: the draws
+        // made so far are the same on both platforms, so the next case starts alike.
+        try {
+            switch (kind) {
+                case 0: {
+                    Shape a = shape(ka), b = shape(kb);
+                    put(a.overlaps(b));
+                    put(b.overlaps(a));
+                    break;
+                }
+                case 1: {
+                    Shape a = shape(ka), b = shape(kb);
+                    contact(a.contact(b));
+                    break;
+                }
+                case 2: {
+                    Shape a = shape(ka), b = shape(kb);
+                    Separation s = a.separation(b);
+                    put(s.distance());
+                    put(s.ax());
+                    put(s.ay());
+                    put(s.bx());
+                    put(s.by());
+                    break;
+                }
+                case 3: {
+                    Shape a = shape(ka), b = shape(kb);
+                    put(a.contains(b));
+                    break;
+                }
+                case 4: {
+                    Shape a = shape(ka);
+                    float px = coord(), py = coord();
+                    if (describing != null) {
+                        describing.append("point ").append(px).append(", ").append(py);
+                    }
+                    put(a.contains(px, py));
+                    break;
+                }
+                case 5: {
+                    Shape a = shape(ka), b = shape(kb);
+                    float vx = coord() * 2, vy = coord() * 2;
+                    if (describing != null) {
+                        describing.append("velocity ").append(vx).append(", ").append(vy);
+                    }
+                    hit(Sweep.timeOfImpact(a, vx, vy, b));
+                    break;
+                }
+                case 6: {
+                    Shape a = shape(ka);
+                    float ox = coord(), oy = coord(), dx = coord(), dy = coord();
+                    float max = below(2) == 0 ? Float.POSITIVE_INFINITY : size() * 4;
+                    if (describing != null) {
+                        describing.append("ray ").append(ox).append(", ").append(oy).append(" dir ")
+                                .append(dx).append(", ").append(dy).append(" max ").append(max);
+                    }
+                    RayHit h = new Ray(ox, oy, dx, dy, max).cast(a);
+                    if (h == null) {
+                        put(NONE);
+                    } else {
+                        put(h.distance());
+                        put(h.x());
+                        put(h.y());
+                        put(h.nx());
+                        put(h.ny());
+                    }
+                    break;
+                }
+                case 7:
+                    collide();
+                    break;
+                case 8:
+                    collidePolygons();
+                    break;
+                case 9:
+                    grid();
+                    break;
+                case 10:
+                    world();
+                    break;
+                default: {
+                    Shape a = shape(ka);
+                    put(a.minX());
+                    put(a.minY());
+                    put(a.maxX());
+                    put(a.maxY());
+                    Rect r = a.bounds();
+                    put(r.x());
+                    put(r.y());
+                    put(r.w());
+                    put(r.h());
+                    break;
+                }
+            }
+        } catch (RuntimeException e) {
+            thrown(e);
+        }
+    }
+
+    private void collide() {
+        float x1 = coord(), y1 = coord(), a = size(), b = size();
+        float x2 = coord(), y2 = coord(), c = size(), d = size();
+        float x3 = coord(), y3 = coord();
+        if (describing != null) {
+            describing.append(x1).append(' ').append(y1).append(' ').append(a).append(' ').append(b).append(' ')
+                    .append(x2).append(' ').append(y2).append(' ').append(c).append(' ').append(d).append(' ')
+                    .append(x3).append(' ').append(y3);
+        }
+        int which = below(12);
+        try {
+            switch (which) {
+                case 0 -> put(Collide.circlePoint(x1, y1, a, x2, y2));
+                case 1 -> put(Collide.circleCircle(x1, y1, a, x2, y2, c));
+                case 2 -> put(Collide.rectPoint(x1, y1, a, b, x2, y2));
+                case 3 -> put(Collide.rectRect(x1, y1, a, b, x2, y2, c, d));
+                case 4 -> put(Collide.circleRect(x1, y1, a, x2, y2, c, d));
+                case 5 -> put(Collide.lineLine(x1, y1, x2, y2, x3, y3, a, b));
+                case 6 -> put(Collide.lineCircle(x1, y1, x2, y2, x3, y3, a));
+                case 7 -> put(Collide.lineRect(x1, y1, x2, y2, x3, y3, a, b));
+                case 8 -> put(Collide.ellipsePoint(x1, y1, a, b, x2, y2));
+                case 9 -> put(Collide.trianglePoint(x1, y1, x2, y2, x3, y3, a, b));
+                case 10 -> put(Collide.lineSide(x1, y1, x2, y2, x3, y3));
+                default -> put(Collide.ellipseEllipse(x1, y1, a, b, x2, y2, c, d));
+            }
+        } finally {
+            put(which);
+        }
+    }
+
+    private void collidePolygons() {
+        int n = 3 + below(4);
+        float[] p = new float[2 * n];
+        float[] q = new float[2 * n];
+        for (int i = 0; i < 2 * n; i++) {
+            p[i] = coord();
+            q[i] = coord();
+        }
+        float x = coord(), y = coord(), r = size();
+        if (describing != null) {
+            describing.append(java.util.Arrays.toString(p)).append(' ').append(java.util.Arrays.toString(q))
+                    .append(' ').append(x).append(' ').append(y).append(' ').append(r);
+        }
+        put(Collide.polygonPoint(p, x, y));
+        put(Collide.polygonCircle(p, x, y, r));
+        put(Collide.polygonRect(p, x, y, r, r));
+        put(Collide.polygonLine(p, x, y, q[0], q[1]));
+        put(Collide.polygonPolygon(p, q));
+    }
+
+    private void grid() {
+        int cols = 2 + below(10), rows = 2 + below(10);
+        float cell = size();
+        Grid g = new Grid(cols, rows, cell).fillRandom(unit(), next());
+        float x = coord() + 8, y = coord() + 8, w = size(), h = size(), vx = coord(), vy = coord();
+        if (describing != null) {
+            describing.append(g.toMap().replace('\n', '/')).append(" cell ").append(cell).append(" rect ")
+                    .append(x).append(' ').append(y).append(' ').append(w).append(' ').append(h)
+                    .append(" velocity ").append(vx).append(' ').append(vy);
+        }
+        put(g.countSolid());
+        put(g.rectOverlapsSolid(x, y, w, h));
+        put(g.circleOverlapsSolid(x, y, w));
+        put(g.lineOfSight(x, y, vx + 8, vy + 8));
+        Sweep.Move m = g.move(new Rect(x, y, w, h), vx, vy);
+        put(m.x());
+        put(m.y());
+        int[] path = g.path(0, 0, cols - 1, rows - 1);
+        put(path == null ? -1 : path.length);
+        if (path != null) {
+            for (int p : path) {
+                put(p);
+            }
+        }
+    }
+
+    private void world() {
+        World world = new World();
+        int n = 3 + below(8);
+        Body[] bodies = new Body[n];
+        for (int i = 0; i < n; i++) {
+            bodies[i] = world.add(shape(below(6)));
+            bodies[i].data(i);
+        }
+        for (int step = 0; step < 4; step++) {
+            Body mover = bodies[below(n)];
+            float dx = coord(), dy = coord();
+            if (describing != null) {
+                describing.append("move ").append(mover.data()).append(" by ").append(dx).append(", ").append(dy)
+                        .append("; ");
+            }
+            try {
+                List<Collision> met = world.move(mover, dx, dy);
+                put(met.size());
+                for (Collision c : met) {
+                    put((Integer) c.other().data());
+                    put(c.reaction().ordinal());
+                    hit(c.hit());
+                    put(c.x());
+                    put(c.y());
+                }
+            } catch (RuntimeException e) {
+                thrown(e);
+            }
+            put(mover.x());
+            put(mover.y());
+        }
+        put(world.step().size());
+        for (Body b : bodies) {
+            put(world.overlapping(b).size());
+        }
+    }
+
+    /**
+     * Exact products and sums (the cases of {@link ExactFma}): {@code count} triples made from
+     * {@code seed}, each answered by {@code Math.fma}, as the bits of the answers.
+     *
+     * @param seed  the generator's seed
+     * @param count how many triples
+     * @return two ints per triple, the high and low halves of the answer's bits
+     */
+    public static int[] fmaCases(long seed, int count) {
+        Vectors v = new Vectors(seed);
+        for (int i = 0; i < count; i++) {
+            double a = v.fmaOperand(), b = v.fmaOperand();
+            double c = v.below(2) == 0 ? -(a * b) : v.fmaOperand();
+            v.put(Math.fma(a, b, c));
+        }
+        int[] result = new int[v.size];
+        System.arraycopy(v.out, 0, result, 0, v.size);
+        return result;
+    }
+
+    private double fmaOperand() {
+        int r = below(16);
+        if (r == 0) {
+            double[] odd = {0.0, -0.0, Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY,
+                Double.MIN_VALUE, Double.MAX_VALUE, 0x1p-1022, 1.0};
+            return odd[below(odd.length)];
+        }
+        long bits = next();
+        if (r < 8) {
+            // exponents near 0 (the library's sizes), any mantissa, either sign
+            bits = (bits & 0x800FFFFFFFFFFFFFL) | ((long) (1023 - 40 + below(80)) << 52);
+        } else if (r < 10) {
+            // few mantissa bits: exact products and ties
+            bits &= 0xFFFFFF0000000000L;
+        }
+        double d = Double.longBitsToDouble(bits);
+        return Double.isNaN(d) ? 1.5 : d;
+    }
+}
