@@ -26,7 +26,7 @@ import java.util.List;
  * as {@link Sweep#move} does. The gap is at most the skin, {@value #SKIN} pixels near the
  * origin (four float steps of the largest coordinate far from it).
  *
- * <p>This class is longer than most (about 770 lines): the walk, its obstacles, its crossings,
+ * <p>This class is longer than most (about 800 lines): the walk, its obstacles, its crossings,
  * the rectangles' exact walk and the character's legs share the per-leg arrays here.
  */
 final class Mover {

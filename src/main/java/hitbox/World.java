@@ -61,7 +61,7 @@ import java.util.function.Predicate;
  * exactly as it was: every body's pose and shape and the broad phase's boxes. Not
  * thread-safe.
  *
- * <p>This class is longer than most (about 1,180 lines): it is the whole public face of the
+ * <p>This class is longer than most (about 1,200 lines): it is the whole public face of the
  * world (bodies, moves, carrying, events, five queries) with full javadoc; the move's walk is
  * in {@code Mover}, the character's rules in {@link CharacterBody}, the shapes' placement in
  * {@code Poses} and the rectangles' walk in {@code MoveAndSlide}.
