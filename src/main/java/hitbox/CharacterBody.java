@@ -137,17 +137,16 @@ public final class CharacterBody {
                 below = groundBelow(mv, from, cur, filter, st, probeLength(cur));
             }
         }
+        Body standsOn = below != null ? mv.probeBody() : null;  // the last probe found it
         Collisions out = mv.end(body, start, cur, finished);
         this.filter = filter;
         onGround = below != null;
-        ground = onGround ? groundBody : null;
+        ground = standsOn;
         groundNormal = onGround ? new Vec(-below.nx(), -below.ny()) : null;
         onWall = metWall;
         onCeiling = metCeiling;
         return out;
     }
-
-    private Body groundBody;
 
     /** The ground under a shape within a probe's length (a hit whose surface is ground), or null. */
     private Hit groundBelow(Mover mv, Shape from, Shape cur, CollisionFilter filter, int st, double length) {
@@ -156,7 +155,6 @@ public final class CharacterBody {
         }
         float px = (float) (-upX * length), py = (float) (-upY * length);
         if (mv.probe(body, cur, px, py, filter, from, st) && isGround(mv.probeHit())) {
-            groundBody = mv.probeBody();
             return mv.probeHit();
         }
         return null;
@@ -231,7 +229,7 @@ public final class CharacterBody {
     }
 
     /** The walk met a surface it slides on (a normal from the character into it). */
-    void slid(Mover mv, Body o, double nx, double ny) {
+    void slid(double nx, double ny) {
         double facing = -(nx * upX + ny * upY);
         if (upX == 0 && upY == 0) {
             metWall = true;

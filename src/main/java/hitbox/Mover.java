@@ -3,7 +3,6 @@ package hitbox;
 import hitbox.internal.*;
 
 import java.util.ArrayList;
-import java.util.List;
 
 /**
  * The move-and-slide solver of a {@link World}: one body's move through the others, leg by
@@ -78,10 +77,8 @@ final class Mover {
     /** The collisions of the move under way, copied out when it ends. */
     private final ArrayList<Collision> found = new ArrayList<>();
 
-    // What the walk leaves: where it ended, the motion left, and whether it finished.
+    // What the walk leaves: where it ended, and whether it finished.
     private Shape walkEnd;
-    private double leftX;
-    private double leftY;
     private boolean walkFinished;
 
     // The latest time of the frame at which the walk under way met something.
@@ -132,11 +129,6 @@ final class Mover {
         return world.commit(m, start, end, found, finished);
     }
 
-    /** The collisions of the move under way. */
-    List<Collision> found() {
-        return found;
-    }
-
     /** Where the last walk ended. */
     Shape walkEnd() {
         return walkEnd;
@@ -145,16 +137,6 @@ final class Mover {
     /** Did the last walk finish (false: it ran out of legs with motion left)? */
     boolean walkFinished() {
         return walkFinished;
-    }
-
-    /** The motion the last walk had left when it ended, x part (0 when it finished freely). */
-    double leftX() {
-        return leftX;
-    }
-
-    /** The motion the last walk had left when it ended, y part. */
-    double leftY() {
-        return leftY;
     }
 
     /**
@@ -238,7 +220,7 @@ final class Mover {
                 default -> {
                     addPlane(nx, ny);
                     if (ch != null) {
-                        ch.slid(this, o, nx, ny);
+                        ch.slid(nx, ny);
                     }
                     double[] r = ch != null ? ch.redirect(this, restX, restY, nx, ny) : clip(restX, restY);
                     rx = r[0];
@@ -261,8 +243,6 @@ final class Mover {
             time = frame;
         }
         walkEnd = cur;
-        leftX = vx;
-        leftY = vy;
         walkFinished = finished;
     }
 
@@ -313,11 +293,6 @@ final class Mover {
     }
 
     // ---------------------------------------------------------------- planes
-
-    /** Forgets the planes of the move (a character's new part of the move). */
-    void clearPlanes() {
-        planeCount = 0;
-    }
 
     /** Forgets the plane added last. */
     void removeLastPlane() {
@@ -451,10 +426,6 @@ final class Mover {
         return obBody[probeIndex];
     }
 
-    int probeCell() {
-        return obCell[probeIndex];
-    }
-
     /** Where the last probe stops (touching, or a skin short of a slanted surface), or its end if it met nothing. */
     Shape probeStop(Shape cur, float vx, float vy) {
         if (probeIndex < 0) {
@@ -464,16 +435,6 @@ final class Mover {
         double nx = probeHit.nx() / len, ny = probeHit.ny() / len;
         double t = slanted(nx, ny) ? stopAt(cur, vx, vy, probeHit.t(), nx, ny) : probeHit.t();
         return clearAlong(cur, vx, vy, t, t == 0 ? cur : cur.translated((float) (t * vx), (float) (t * vy)));
-    }
-
-    /** Reports a collision a character's own leg met (a step, a snap). */
-    void reportProbe(Body m, Shape start, Shape at, float frame) {
-        Body o = obBody[probeIndex];
-        if (o.oneWay != Side.NONE) {
-            o.seenBlocked = true;
-        }
-        Hit h = probeHit;
-        report(m, start, at, o, obCell[probeIndex], o.seenReaction, new Hit(frame, h.nx(), h.ny(), h.side()), true);
     }
 
     /** The crossed bodies met before tb in this leg, each reported once a move, in the order met. */

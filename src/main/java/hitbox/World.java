@@ -363,11 +363,6 @@ public final class World {
         return rider.character != null ? rider.character.filter() : SLIDE;
     }
 
-    /** The move-and-slide solver (for the character bodies). */
-    Mover mover() {
-        return mover;
-    }
-
     /** A carrier's move: the riders go first when it goes up, after it otherwise. */
     private Collisions moveCarrier(Body p, float dx, float dy, CollisionFilter filter) {
         List<Body> riders = riders(p);
