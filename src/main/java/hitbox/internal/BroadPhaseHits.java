@@ -48,7 +48,7 @@ public final class BroadPhaseHits {
         int[][] found = {new int[8]};
         int[] n = {0};
         candidates(obstacles, x, y, w, h, id -> {
-            if (Collide.rectRect(x, y, w, h, obstacles.x(id), obstacles.y(id), obstacles.w(id), obstacles.h(id))) {
+            if (RawTests.rectRect(x, y, w, h, obstacles.x(id), obstacles.y(id), obstacles.w(id), obstacles.h(id))) {
                 if (n[0] == found[0].length) {
                     found[0] = Arrays.copyOf(found[0], 2 * n[0]);
                 }

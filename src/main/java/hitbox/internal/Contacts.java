@@ -4,7 +4,12 @@ import hitbox.*;
 
 /**
  * The table behind {@link Contact#between}: every pair of shape kinds routed to the code for
- * that pair, plus the one tie rule every contact uses.
+ * that pair, plus the one tie rule every contact uses, and the bodies of
+ * {@code Contact}'s raw-float forms.
+ *
+ * <p>This class is longer than most (about 470 lines): it is the whole table, one small
+ * method per pair of kinds so that the JIT can inline each into a caller's loop, and the
+ * pairs that need more than a call (a circle or a polygon against a rectangle) in full.
  */
 public final class Contacts {
     private Contacts() {
@@ -165,7 +170,7 @@ public final class Contacts {
             case ELLIPSE, CAPSULE -> curved(c, b, kb);
             case CIRCLE -> {
                 Circle d = (Circle) b;
-                yield Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
+                yield circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
             }
             case RECT -> {
                 Rect r = (Rect) b;
@@ -189,7 +194,7 @@ public final class Contacts {
             }
             case RECT -> {
                 Rect q = (Rect) b;
-                yield Contact.rectRect(r.x(), r.y(), r.w(), r.h(), q.x(), q.y(), q.w(), q.h());
+                yield rectRect(r.x(), r.y(), r.w(), r.h(), q.x(), q.y(), q.w(), q.h());
             }
             case POLYGON -> polygonal(r, false, b, true);
         };
@@ -248,7 +253,7 @@ public final class Contacts {
      * rectangle, or from the rectangle to the circle if {@code flip}.
      */
     public static Contact circleRect(float cx, float cy, float r, float rx, float ry, float rw, float rh, boolean flip) {
-        if (!Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
+        if (!RawTests.circleRect(cx, cy, r, rx, ry, rw, rh)) {
             return null;
         }
         double right = (double) rx + rw;
@@ -291,7 +296,7 @@ public final class Contacts {
         if (convexA && convexB) {
             // Boxes that do not overlap are apart (touching ones too: the shapes are open).
             Rect r = a.bounds(), s = b.bounds();
-            if (!Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h())) {
+            if (!RawTests.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h())) {
                 return null;
             }
             // A polygon's cached corners, or a rectangle's written into this thread's scratch
@@ -352,7 +357,7 @@ public final class Contacts {
         for (int i = 0; i < n; i++) {
             min = Math.min(min, partDistance2(xy, i, cx, cy, nearestPart(xy, i, cx, cy)));
         }
-        boolean inside = Collide.polygonPoint(xy, cx, cy);
+        boolean inside = RawTests.polygonPoint(xy, cx, cy);
         double dist = Math.sqrt(min);
         double depth = inside ? r + dist : r - dist;
         if (!(depth > 0)) {

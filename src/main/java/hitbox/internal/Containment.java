@@ -54,6 +54,20 @@ public final class Containment {
      */
     public static final double CONTAINMENT = 1e-9;
 
+    /**
+     * A proven bound on the rounding of {@code (a1 - b1) + (a2 - b2)} in double, relative to
+     * {@code |a1| + |a2| + |b1| + |b2|}: three additions, each off by at most a unit of 2^-53
+     * of its size, with a unit to spare ({@code atLeast}). Beyond it the double sign is sure.
+     */
+    private static final double SUM_ROUNDING = 4 * 0x1p-53;
+
+    /**
+     * Where the golden-section search for how far a curved shape pokes out of its container
+     * stops (radians of the outline's angle): the depth found is then as deep as it gets to
+     * well within {@link #CONTAINMENT}.
+     */
+    private static final double SEARCH_STOP = 1e-9;
+
     /** How many points of the held outline the search samples before refining each peak. */
     private static final int SAMPLES = 64;
 
@@ -210,7 +224,7 @@ public final class Containment {
      */
     static boolean atLeast(double a1, double a2, double b1, double b2) {
         double d1 = a1 - b1, d2 = a2 - b2, s = d1 + d2;
-        double bound = 4 * 0x1p-53 * (Math.abs(a1) + Math.abs(a2) + Math.abs(b1) + Math.abs(b2));
+        double bound = SUM_ROUNDING * (Math.abs(a1) + Math.abs(a2) + Math.abs(b1) + Math.abs(b2));
         if (s > bound || -s > bound || !(bound < Double.POSITIVE_INFINITY)) {
             return s >= 0;
         }
@@ -299,7 +313,7 @@ public final class Containment {
             for (int i = 0; i < SAMPLES; i++) {
                 double here = g[i], before = g[(i + SAMPLES - 1) % SAMPLES], after = g[(i + 1) % SAMPLES];
                 if (here <= before && here <= after) {
-                    double[] best = Golden.least(minus, (i - 1) * step, (i + 1) * step, 60, 1e-9);
+                    double[] best = Golden.least(minus, (i - 1) * step, (i + 1) * step, 60, SEARCH_STOP);
                     if (-best[1] > 1 + CONTAINMENT) {
                         return false;
                     }
@@ -614,7 +628,7 @@ public final class Containment {
                 }
                 int n = xy.length / 2;
                 for (int i = 0, h = n - 1; i < n; h = i++) {
-                    if (Collide.lineCircle(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], c.x(), c.y(), c.r())) {
+                    if (RawTests.lineCircle(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], c.x(), c.y(), c.r())) {
                         yield false;
                     }
                 }

@@ -10,7 +10,7 @@ import java.util.List;
  * ("store your obstacles in a grid, but your player's position in terms of pixels"), behind
  * {@link Grid#move}.
  *
- * <p>{@link Sweep#move} does the moving, against the rectangles of the solid cells the move
+ * <p>{@link MoveAndSlide} (the walk behind {@link Sweep#move}) does the moving, against the rectangles of the solid cells the move
  * can reach. It slides only towards where the motion goes, so the box never leaves the box
  * spanned by where it starts and where the whole motion would take it; the solid cells under
  * that box (widened by two float steps for rounding), in and beyond the grid, taken row by row,
@@ -28,7 +28,7 @@ public final class GridMove {
 
     /** See {@link Grid#move}. */
     public static Sweep.Move move(Grid grid, Rect mover, float vx, float vy) {
-        return Sweep.move(mover, vx, vy, obstacles(grid, mover, vx, vy));
+        return MoveAndSlide.move(mover, vx, vy, obstacles(grid, mover, vx, vy));
     }
 
     /** See {@link Grid#moveObstacles}. */

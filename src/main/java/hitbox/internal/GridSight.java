@@ -14,7 +14,7 @@ import hitbox.*;
  * the cells the traversal of Amanatides and Woo visits; each height is widened by a float
  * step, so that where the segment meets a grid line or passes through a corner the cells on
  * both sides are candidates too. Every candidate that is solid is then tested with
- * {@code Collide.lineRect} itself, so the walk decides only which cells to look at, never the
+ * {@code RawTests.lineRect} itself, so the walk decides only which cells to look at, never the
  * answer.
  *
  * <p>Reference: John Amanatides and Andrew Woo, "A Fast Voxel Traversal Algorithm for Ray
@@ -76,7 +76,7 @@ public final class GridSight {
             for (int row = r0; row <= r1; row++) {
                 if (grid.isSolid(col, row)) {
                     float top = grid.cellY(row);
-                    if (Collide.lineRect(x0, y0, x1, y1, left, top, w, grid.cellY(row + 1) - top)) {
+                    if (RawTests.lineRect(x0, y0, x1, y1, left, top, w, grid.cellY(row + 1) - top)) {
                         return false;
                     }
                 }

@@ -36,7 +36,7 @@ public final class MoveAndSlide {
             Rect hitRect = null;
             int index = 0, hitIndex = -1;
             for (Rect o : obstacles) {
-                if (!Collide.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
+                if (!RawTests.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
                     double t = SweptPairs.rectRectTime(x, y, w, h, mx, my, o.x(), o.y(), o.w(), o.h());
                     if (t < first) {
                         first = t;
@@ -111,8 +111,8 @@ public final class MoveAndSlide {
 
     private static boolean clear(float x, float y, float w, float h, float x0, float y0, Iterable<Rect> obstacles) {
         for (Rect o : obstacles) {
-            if (Collide.rectRect(x, y, w, h, o.x(), o.y(), o.w(), o.h())
-                    && !Collide.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
+            if (RawTests.rectRect(x, y, w, h, o.x(), o.y(), o.w(), o.h())
+                    && !RawTests.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
                 return false;
             }
         }

@@ -65,25 +65,25 @@ public final class Overlaps {
         return switch (k) {
             case ELLIPSE -> {
                 Ellipse f = (Ellipse) other;
-                yield Collide.ellipseEllipse(x, y, a, b, f.x(), f.y(), f.rx(), f.ry());
+                yield RawTests.ellipseEllipse(x, y, a, b, f.x(), f.y(), f.rx(), f.ry());
             }
             case CAPSULE -> {
                 Capsule c = (Capsule) other;
-                yield Collide.ellipseCapsule(x, y, a, b, c.x1(), c.y1(), c.x2(), c.y2(), c.r());
+                yield RawTests.ellipseCapsule(x, y, a, b, c.x1(), c.y1(), c.x2(), c.y2(), c.r());
             }
             case CIRCLE -> {
                 Circle c = (Circle) other;
-                yield Collide.ellipseCircle(x, y, a, b, c.x(), c.y(), c.r());
+                yield RawTests.ellipseCircle(x, y, a, b, c.x(), c.y(), c.r());
             }
             case RECT -> {
                 Rect r = (Rect) other;
-                yield Collide.ellipseRect(x, y, a, b, r.x(), r.y(), r.w(), r.h());
+                yield RawTests.ellipseRect(x, y, a, b, r.x(), r.y(), r.w(), r.h());
             }
             case SEGMENT -> {
                 Segment s = (Segment) other;
-                yield Collide.ellipseLine(x, y, a, b, s.x1(), s.y1(), s.x2(), s.y2());
+                yield RawTests.ellipseLine(x, y, a, b, s.x1(), s.y1(), s.x2(), s.y2());
             }
-            case POLYGON -> Collide.polygonEllipse(HiddenParts.raw((Polygon) other), x, y, a, b);
+            case POLYGON -> RawTests.polygonEllipse(HiddenParts.raw((Polygon) other), x, y, a, b);
         };
     }
 
@@ -94,21 +94,21 @@ public final class Overlaps {
             case ELLIPSE -> ellipseWith((Ellipse) other, k);
             case CAPSULE -> {
                 Capsule o = (Capsule) other;
-                yield Collide.capsuleCapsule(x1, y1, x2, y2, r, o.x1(), o.y1(), o.x2(), o.y2(), o.r());
+                yield RawTests.capsuleCapsule(x1, y1, x2, y2, r, o.x1(), o.y1(), o.x2(), o.y2(), o.r());
             }
             case CIRCLE -> {
                 Circle c = (Circle) other;
-                yield Collide.capsuleCircle(x1, y1, x2, y2, r, c.x(), c.y(), c.r());
+                yield RawTests.capsuleCircle(x1, y1, x2, y2, r, c.x(), c.y(), c.r());
             }
             case RECT -> {
                 Rect q = (Rect) other;
-                yield Collide.capsuleRect(x1, y1, x2, y2, r, q.x(), q.y(), q.w(), q.h());
+                yield RawTests.capsuleRect(x1, y1, x2, y2, r, q.x(), q.y(), q.w(), q.h());
             }
             case SEGMENT -> {
                 Segment s = (Segment) other;
-                yield Collide.capsuleLine(x1, y1, x2, y2, r, s.x1(), s.y1(), s.x2(), s.y2());
+                yield RawTests.capsuleLine(x1, y1, x2, y2, r, s.x1(), s.y1(), s.x2(), s.y2());
             }
-            case POLYGON -> Collide.polygonCapsule(HiddenParts.raw((Polygon) other), x1, y1, x2, y2, r);
+            case POLYGON -> RawTests.polygonCapsule(HiddenParts.raw((Polygon) other), x1, y1, x2, y2, r);
         };
     }
 
@@ -136,18 +136,18 @@ public final class Overlaps {
             case RECT -> circleRect(c, (Rect) other);
             case SEGMENT -> {
                 Segment s = (Segment) other;
-                yield Collide.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
+                yield RawTests.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
             }
-            case POLYGON -> Collide.polygonCircle(HiddenParts.raw((Polygon) other), c.x(), c.y(), c.r());
+            case POLYGON -> RawTests.polygonCircle(HiddenParts.raw((Polygon) other), c.x(), c.y(), c.r());
         };
     }
 
     private static boolean circleCircle(Circle c, Circle d) {
-        return Collide.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
+        return RawTests.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
     }
 
     private static boolean circleRect(Circle c, Rect r) {
-        return Collide.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
+        return RawTests.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
     }
 
     /** A rectangle with anything: a circle, a capsule or an ellipse takes the pair swapped. */
@@ -158,13 +158,13 @@ public final class Overlaps {
             case CIRCLE -> circleWith((Circle) other, r);
             case RECT -> {
                 Rect s = (Rect) other;
-                yield Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
+                yield RawTests.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
             }
             case SEGMENT -> {
                 Segment s = (Segment) other;
-                yield Collide.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), r.x(), r.y(), r.w(), r.h());
+                yield RawTests.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), r.x(), r.y(), r.w(), r.h());
             }
-            case POLYGON -> Collide.polygonRect(HiddenParts.raw((Polygon) other), r.x(), r.y(), r.w(), r.h());
+            case POLYGON -> RawTests.polygonRect(HiddenParts.raw((Polygon) other), r.x(), r.y(), r.w(), r.h());
         };
     }
 
@@ -177,9 +177,9 @@ public final class Overlaps {
             case RECT -> rectWith((Rect) other, s);
             case SEGMENT -> {
                 Segment t = (Segment) other;
-                yield Collide.lineLine(s.x1(), s.y1(), s.x2(), s.y2(), t.x1(), t.y1(), t.x2(), t.y2());
+                yield RawTests.lineLine(s.x1(), s.y1(), s.x2(), s.y2(), t.x1(), t.y1(), t.x2(), t.y2());
             }
-            case POLYGON -> Collide.polygonLine(HiddenParts.raw((Polygon) other), s.x1(), s.y1(), s.x2(), s.y2());
+            case POLYGON -> RawTests.polygonLine(HiddenParts.raw((Polygon) other), s.x1(), s.y1(), s.x2(), s.y2());
         };
     }
 

@@ -18,7 +18,7 @@ import java.math.BigDecimal;
  * inside the polygon"; the edge tests and the one-point test below are exact, so the whole
  * answer is.
  *
- * <p>This class is longer than most (about 670 lines) because every piece of it is one idea
+ * <p>This class is longer than most (about 750 lines) because every piece of it is one idea
  * used by many pairs (the even-odd test, an edge reaching into a polygon, the convex fast
  * path, the exact areas and corners), kept in one home so that {@link Collide}, {@link Polygon}, {@link Contact} and
  * the sweeps never copy it.
@@ -26,6 +26,13 @@ import java.math.BigDecimal;
 public final class Polygons {
     private Polygons() {
     }
+
+    /**
+     * How much a distance from a point to an edge, found in double with a square root, may be
+     * off relative to the coordinates' size: a few units of 2^-53 of it, with room to spare.
+     * Subtracted so that the distance returned is never more than the true one.
+     */
+    private static final double DISTANCE_ROUNDING = 1e-13;
 
     /**
      * Throws with a learner's message if {@code xy} is not a valid simple polygon: pairs of
@@ -351,14 +358,14 @@ public final class Polygons {
      */
     public static boolean overlap(Polygon p, Polygon q) {
         Rect r = p.bounds(), s = q.bounds();
-        if (!Collide.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h())) {
+        if (!RawTests.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h())) {
             return false;
         }
         int wp = HiddenParts.convexWinding(p), wq = HiddenParts.convexWinding(q);
         if (wp != 0 && wq != 0) {
             return convexOverlap(HiddenParts.raw(p), wp, HiddenParts.raw(q), wq);
         }
-        return Collide.polygonPolygon(HiddenParts.raw(p), HiddenParts.raw(q));
+        return RawTests.polygonPolygon(HiddenParts.raw(p), HiddenParts.raw(q));
     }
 
     /**
@@ -565,7 +572,7 @@ public final class Polygons {
 
     /** Do the closed edges a-b and c-d (given by vertex indices) have a point in common? */
     private static boolean segmentsMeet(float[] xy, int a, int b, int c, int d) {
-        return Collide.lineLine(xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1],
+        return RawTests.lineLine(xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1],
                 xy[2 * c], xy[2 * c + 1], xy[2 * d], xy[2 * d + 1]);
     }
 
@@ -659,7 +666,7 @@ public final class Polygons {
             }
         }
         // Each distance above is off by a few units of 2^-53 of the coordinates' size.
-        return min - 1e-13 * big;
+        return min - DISTANCE_ROUNDING * big;
     }
 
     /**

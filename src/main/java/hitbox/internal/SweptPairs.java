@@ -32,13 +32,13 @@ public final class SweptPairs {
         if (!(w >= 0 && h >= 0 && ow >= 0 && oh >= 0)) {
             return Slabs.INF;  // a negative size (or NaN) is no box: no hit, as documented
         }
-        if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
+        if (RawTests.rectRect(x, y, w, h, ox, oy, ow, oh)) {
             return 0;
         }
         if (!Discs.finite(vx, vy)) {
             return Slabs.INF;
         }
-        // The same sums as Collide.rectRect, so the signs agree exactly with it.
+        // The same sums as RawTests.rectRect, so the signs agree exactly with it.
         return Slabs.boxTime(ox - ((double) x + w), ((double) ox + ow) - x,
                 oy - ((double) y + h), ((double) oy + oh) - y, vx, vy, 1);
     }
@@ -50,7 +50,7 @@ public final class SweptPairs {
         if (!(w >= 0 && h >= 0 && ow >= 0 && oh >= 0)) {
             return e;  // a negative size (or NaN) is no box: no entry, as documented
         }
-        if (Collide.rectRect(x, y, w, h, ox, oy, ow, oh)) {
+        if (RawTests.rectRect(x, y, w, h, ox, oy, ow, oh)) {
             e.inside = true;
         } else if (Discs.finite(vx, vy)) {
             e.clip(Slabs.box(ox - ((double) x + w), ((double) ox + ow) - x,
@@ -65,7 +65,7 @@ public final class SweptPairs {
         if (Check.notFinite(x, y, r, vx, vy) || Check.notFinite(ox, oy, or, 0, 0) || r < 0 || or < 0) {
             return e;  // no entry (a negative radius is no circle, as documented)
         }
-        if (Collide.circleCircle(x, y, r, ox, oy, or)) {
+        if (RawTests.circleCircle(x, y, r, ox, oy, or)) {
             e.inside = true;
         } else {
             e.disc((double) x - ox, (double) y - oy, vx, vy, (double) r + or, 1);
@@ -91,7 +91,7 @@ public final class SweptPairs {
         if (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(rx, ry, rw, rh, 0) || r < 0 || rw < 0 || rh < 0) {
             return e;  // no entry (a negative size is no shape, as documented)
         }
-        if (Collide.circleRect(cx, cy, r, rx, ry, rw, rh)) {
+        if (RawTests.circleRect(cx, cy, r, rx, ry, rw, rh)) {
             e.inside = true;
             return e;
         }

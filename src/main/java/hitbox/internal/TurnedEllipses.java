@@ -128,7 +128,7 @@ public final class TurnedEllipses {
                     yield segmentIn(fr, a, b, r.x(), r.y(), right, bottom, false);
                 }
                 double[] xy = {r.x(), r.y(), right, r.y(), right, bottom, r.x(), bottom};
-                yield outlineIn(fr, a, b, xy) || Collide.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
+                yield outlineIn(fr, a, b, xy) || RawTests.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
             }
             case SEGMENT -> {
                 Segment g = (Segment) other;
