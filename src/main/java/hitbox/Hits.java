@@ -43,7 +43,7 @@ import java.util.function.IntConsumer;
  * raw-float rectangle against a {@link BroadPhase} for thousands. The raw-float rectangle
  * against an array of {@code Rect}s is deprecated (kept one release).
  *
- * <p>This class is longer than most (about 520 lines) because it is the public face of five
+ * <p>This class is longer than most (about 590 lines) because it is the public face of five
  * questions for three kinds of obstacle list (shapes, raw rectangles, a broad phase), in list
  * and array forms, each overload with its full javadoc; each answer is a few lines, every
  * array overload hands a view to the list one, and the broad-phase work is in

@@ -26,6 +26,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -65,6 +66,8 @@ import org.junit.jupiter.api.Test;
  * A record whose canonical constructor is implicit is held to these rules in its class doc.
  * A class over {@value #MAX_LINES} lines must give its reason in its class doc, in the fixed
  * words "longer than most" (or "over the usual size", the words the first such notes used).
+ * A class doc that states the class's size ("about 1,200 lines") states it within
+ * {@value #SIZE_SLACK_PERCENT}% of the file's line count, so the reason cannot outlive the size.
  * Methods marked {@code @Override} are left to the method they override (the
  * {@link Shape} and {@link BroadPhase} methods are checked where they are declared). The
  * fixture tests show that a method without the sentences is reported, so the rules cannot
@@ -74,6 +77,12 @@ class JavadocContractTest {
 
     /** The length above which a class must say why it is long. */
     static final int MAX_LINES = 450;
+
+    /** How far a size stated in a class doc may be from the file's line count, in percent. */
+    static final int SIZE_SLACK_PERCENT = 10;
+
+    /** A size stated in a class doc: "about 1,200 lines", "(590 lines)". */
+    private static final Pattern STATED_SIZE = Pattern.compile("\\b(\\d{1,3}(?:,\\d{3})*|\\d+) lines\\b");
 
     /** The phrase a long class's doc uses to give its reason. */
     private static final Pattern LONG_REASON = Pattern.compile("longer than most|over the usual size");
@@ -114,6 +123,12 @@ class JavadocContractTest {
     @Test
     void everyLongClass_saysWhyInItsClassDoc() {
         List<String> problems = longClasses(parse(sources(ALL_ROOTS)));
+        assertTrue(problems.isEmpty(), String.join("\n", problems));
+    }
+
+    @Test
+    void everySizeAClassDocStates_isWithinTenPercentOfTheFile() {
+        List<String> problems = staleSizes(parse(sources(ALL_ROOTS)));
         assertTrue(problems.isEmpty(), String.join("\n", problems));
     }
 
@@ -235,7 +250,39 @@ class JavadocContractTest {
         assertTrue(problems.get(0).startsWith("Quiet.java: " + (MAX_LINES + 4) + " lines"), problems.get(0));
     }
 
+    @Test
+    void aStaleStatedSize_isReported() {
+        String body = "    // filler\n".repeat(100);
+        String stale = "package hitbox;\n/** Long (about 1,200 lines): a reason. */\nfinal class Stale {\n" + body + "}\n";
+        String near = "package hitbox;\n/** Long (about 100 lines): a reason. */\nfinal class Near {\n" + body + "}\n";
+        List<String> problems = staleSizes(parse(List.of(new Source("Stale.java", stale), new Source("Near.java", near))));
+        assertEquals(List.of("Stale.java: its class doc says 1,200 lines, the file has 104"), problems);
+    }
+
     // ------------------------------------------------------------------ the checks
+
+    /** Class docs whose stated size is more than {@link #SIZE_SLACK_PERCENT}% off the file's. */
+    private static List<String> staleSizes(Parsed parsed) {
+        List<String> out = new ArrayList<>();
+        for (CompilationUnitTree unit : parsed.units) {
+            long lines = parsed.lines(unit);
+            for (Tree t : unit.getTypeDecls()) {
+                String doc = parsed.docs.getDocComment(new TreePath(new TreePath(unit), t));
+                if (doc == null) {
+                    continue;
+                }
+                Matcher m = STATED_SIZE.matcher(doc);
+                while (m.find()) {
+                    long said = Long.parseLong(m.group(1).replace(",", ""));
+                    if (Math.abs(said - lines) * 100 > SIZE_SLACK_PERCENT * lines) {
+                        out.add(Path.of(unit.getSourceFile().getName()).getFileName() + ": its class doc says "
+                                + m.group(1) + " lines, the file has " + lines);
+                    }
+                }
+            }
+        }
+        return out;
+    }
 
     /** One rule per line: "Class#method(params): what is missing". */
     private static List<String> problems(Parsed parsed, Catalog catalog) {

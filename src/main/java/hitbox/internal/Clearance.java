@@ -40,7 +40,7 @@ import java.util.List;
  * <p>The cutting into convex pieces is {@link Triangulation}'s.
  *
  * <p>The circle half of the search, whose pieces are round, is {@link CircleClearance}'s;
- * the tolerance and the small geometry here are shared by both. At about 490 lines this is
+ * the tolerance and the small geometry here are shared by both. At about 560 lines this is
  * a little over the usual size: the polygon search's candidates, regions and lines of moves
  * only make sense together.
  *

@@ -446,4 +446,32 @@ public final class Contacts {
         return new Contact((float) nx, (float) ny, Math.max(Check.held(depth), Float.MIN_VALUE));
     }
 
+    /** {@code Contact.circleCircle}: null unless the circles overlap, by the contract there. */
+    public static Contact circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
+        if (Check.notFinite(x1, y1, r1, x2, y2) || Check.notFinite(r2, 0, 0, 0, 0) || r1 < 0 || r2 < 0
+                || !RawTests.circleCircle(x1, y1, r1, x2, y2, r2)) {
+            return null;
+        }
+        double dx = (double) x2 - x1;
+        double dy = (double) y2 - y1;
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        double reach = (double) r1 + r2;
+        if (dist == 0) {
+            return of(0, 1, reach);
+        }
+        return of(dx / dist, dy / dist, reach - dist);
+    }
+
+    /** {@code Contact.rectRect}: null unless the rectangles overlap, by the contract there. */
+    public static Contact rectRect(float x1, float y1, float w1, float h1,
+                                   float x2, float y2, float w2, float h2) {
+        if (Check.notFinite(x1, y1, w1, h1, x2) || Check.notFinite(y2, w2, h2, 0, 0)
+                || w1 < 0 || h1 < 0 || w2 < 0 || h2 < 0 || !RawTests.rectRect(x1, y1, w1, h1, x2, y2, w2, h2)) {
+            return null;
+        }
+        // The first rectangle's shortest way out of the second (exact depths, exact ties in
+        // the tie rule's order): the same push Snap.pushOut makes.
+        Side side = RectPush.leastOverlap(x1, y1, w1, h1, x2, y2, w2, h2);
+        return of(RectPush.normalX(side), RectPush.normalY(side), RectPush.depth(side, x1, y1, w1, h1, x2, y2, w2, h2));
+    }
 }

@@ -29,6 +29,13 @@ public final class ConvexPolygonSweep {
     private ConvexPolygonSweep() {
     }
 
+    /**
+     * The rounding of a corner's projection onto the sweep's direction, relative to the size of
+     * the coordinates and the move: two products and a sum, each off by a unit of 2^-53, and
+     * {@code |ux| + |uy| <= 1.5}; 2^-48 leaves a factor of ten to spare.
+     */
+    private static final double PROJECTION_ROUNDING = 0x1p-48;
+
     /** The hit of convex mover moving by (vx, vy) into convex obstacle, the two apart at the start; or null. */
     public static Hit timeOfImpact(Polygon mover, float vx, float vy, Polygon obstacle) {
         Scratch scratch = SCRATCH.get();
@@ -119,7 +126,7 @@ public final class ConvexPolygonSweep {
         }
         // Each projection is two products and a sum of numbers up to size: off by a few units of
         // 2^-53 of size (|ux| + |uy| <= 1.5), the least and the corners' both.
-        double below = least - 0x1p-48 * size;
+        double below = least - PROJECTION_ROUNDING * size;
         float a0 = t * vx, b0 = t * vy, a1 = until * vx, b1 = until * vy;
         int n = xy.length / 2;
         int[] near = new int[n];

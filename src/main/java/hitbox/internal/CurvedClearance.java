@@ -197,7 +197,7 @@ public final class CurvedClearance {
         // A least flat to the fourth order (a polygon corner at the centre of curvature of an
         // ellipse's end) taken on the axis when it is as short, to within the rounding of the
         // support sums (far is the scene's size), so that mirror images agree.
-        s = Golden.onAxis(out, s, 1e-12 * far);
+        s = Golden.onAxis(out, s, Tolerance.SUPPORT_SUM_ROUNDING * far);
         double[] m = unit(s[0]);
         if (!(Math.abs(push(round, pieces, m[0], m[1], far, null) - s[1]) <= SLACK)) {
             return false;

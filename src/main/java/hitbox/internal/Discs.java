@@ -79,7 +79,8 @@ public final class Discs {
         if (Lines.twoSumError(px, -qx, dx) == 0 && Lines.twoSumError(py, -qy, dy) == 0 && Lines.twoSumError(reach, -less, m) == 0
                 && Math.fma(dx, dx, -xx) == 0 && Math.fma(dy, dy, -yy) == 0 && Math.fma(m, m, -m2) == 0
                 && Lines.twoSumError(xx, yy, d2) == 0
-                && (xx == 0 || xx >= 0x1p-900) && (yy == 0 || yy >= 0x1p-900) && (m2 == 0 || m2 >= 0x1p-900)) {
+                && (xx == 0 || xx >= Lines.UNDERFLOW_GUARD) && (yy == 0 || yy >= Lines.UNDERFLOW_GUARD)
+                && (m2 == 0 || m2 >= Lines.UNDERFLOW_GUARD)) {
             return Double.compare(d2, m2);  // all exact (the subnormal guard: an fma residual there can round)
         }
         BigDecimal ex = new BigDecimal(px).subtract(new BigDecimal(qx));

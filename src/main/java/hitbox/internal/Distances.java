@@ -47,6 +47,14 @@ public final class Distances {
     private Distances() {
     }
 
+    /**
+     * The relative rounding of an edge's reach along the direction between the chains' boxes
+     * (two products and a sum in double, of coordinates up to the largest seen): a few units
+     * of 2^-53 of it, with room to spare. {@code chains} stops its sorted loops only when the
+     * gap along that direction beats the best distance by more than this.
+     */
+    private static final double PROJECTION_ROUNDING = 1e-12;
+
     /** How many points of a second ellipse's outline are sampled before refining (see the class doc). */
     static final int ELLIPSE_SAMPLES = 128;
 
@@ -208,8 +216,8 @@ public final class Distances {
      * many sides) the edges are taken in order of their reach along the direction from a's
      * box centre to b's: a's from the furthest-reaching, b's from the least, and a loop
      * stops once the gap along that direction (a lower bound of the distance, as a
-     * projection) exceeds the best so far, with a slack of 1e-12 of the coordinates over
-     * its rounding. The least is the same; only pairs that cannot beat it are skipped.
+     * projection) exceeds the best so far, with a slack of {@link #PROJECTION_ROUNDING} of the
+     * coordinates over its rounding. The least is the same; only pairs that cannot beat it are skipped.
      */
     public static double chains(double[] a, boolean closedA, double[] b, boolean closedB, double[] q) {
         int na = a.length / 2, nb = b.length / 2;
@@ -234,7 +242,7 @@ public final class Distances {
             for (double v : bb) {
                 slack = Math.max(slack, Math.abs(v));
             }
-            slack *= 1e-12;
+            slack *= PROJECTION_ROUNDING;
         }
         double best = Double.POSITIVE_INFINITY;
         double[] t = new double[4], feet = new double[2];

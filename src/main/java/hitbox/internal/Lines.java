@@ -14,6 +14,13 @@ public final class Lines {
     }
 
     /**
+     * Products at least this large (in magnitude) are far enough from underflow that an
+     * {@code fma} error term of 0 means the product is exact: a residual below about 2^-1074
+     * could itself have rounded to 0. Floats' differences and their squares never come near it.
+     */
+    static final double UNDERFLOW_GUARD = 0x1p-900;
+
+    /**
      * The orientation of c seen from the line a to b: positive for one turn, negative for the
      * other, 0 when the three points are collinear. It is the cross product (b - a) x (c - a),
      * twice the signed area of the triangle abc.
@@ -65,7 +72,7 @@ public final class Lines {
      * itself have underflowed to 0: floats' differences never come near that.
      */
     private static boolean exactProduct(double x, double y, double p) {
-        return p == 0 ? x == 0 || y == 0 : Math.abs(p) >= 0x1p-900 && Math.fma(x, y, -p) == 0;
+        return p == 0 ? x == 0 || y == 0 : Math.abs(p) >= UNDERFLOW_GUARD && Math.fma(x, y, -p) == 0;
     }
 
     /** Is {@code d}, the rounded {@code b - a}, exact? (Knuth's Two-Sum error term is 0.) */
@@ -187,7 +194,7 @@ public final class Lines {
      * false "collision": a NaN fails both comparisons and lands on {@code lo + v}, or on hi
      * when hi is the NaN. Written with comparisons rather than {@code Math.max(lo,
      * Math.min(v, hi))}, which gives the same values (a zero's sign aside) but which the JIT
-     * here compiles to branches that mispredict on mixed inputs: {@code Collide.circleRect}
+     * here compiles to branches that mispredict on mixed inputs: {@code RawTests.circleRect}
      * took 7.8 ns a case with it and 3.3 without (a scratch loop on the table's kind of cases).
      */
     public static double clamp(double v, double lo, double hi) {

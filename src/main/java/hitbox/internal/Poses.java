@@ -20,6 +20,13 @@ public final class Poses {
     }
 
     /**
+     * How much a turned ellipse's box is widened, relative to its larger radius: the box's
+     * half-widths come from a cosine, a sine and a hypot, each off by about 2^-53 of the
+     * radius, so the box is widened far past that and never cuts the ellipse.
+     */
+    private static final double ELLIPSE_BOX_WIDEN = 1e-6;
+
+    /**
      * The extents of the home shape turned by (cos, sin) about the pivot, relative to the
      * pivot: out[0..3] = min x, min y, max x, max y.
      */
@@ -81,7 +88,7 @@ public final class Poses {
                 maxX = x + hx;
                 minY = y - hy;
                 maxY = y + hy;
-                grow = 1e-6 * Math.max(e.rx(), e.ry());
+                grow = ELLIPSE_BOX_WIDEN * Math.max(e.rx(), e.ry());
             }
             case POLYGON -> {
                 float[] xy = HiddenParts.raw((Polygon) home);

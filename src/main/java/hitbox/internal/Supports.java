@@ -147,7 +147,7 @@ public final class Supports {
             if (f[i] <= prev && f[i] <= next) {
                 double[] least = Golden.least(t -> push(a, b, t), 2 * Math.PI * (i - 1) / STEPS,
                         2 * Math.PI * (i + 1) / STEPS, 80, Tolerance.SUPPORT_ANGLE);
-                least = Golden.onAxis(t -> push(a, b, t), least, 1e-12 * size);
+                least = Golden.onAxis(t -> push(a, b, t), least, Tolerance.SUPPORT_SUM_ROUNDING * size);
                 found = candidate(found, n++, a, b, unit(least[0]));
             }
         }

@@ -23,19 +23,47 @@ package hitbox.internal;
  *       tie rule's {@link Contact#TIE}; {@link Hybrid#CIRCLE_SLACK}, a public guard band.</li>
  * </ul>
  *
- * <p>Named next to their one use, with their reasons there: {@code Clearance.TOLERANCE}
- * (1e-9, how close a search's point must be to the overlap set), {@code ConvexSweep.TOUCH}
- * (1e-6 pixels, where conservative advancement stops), {@code TurningSweep.TOUCH} (1e-3
- * pixels, the same for a turning mover), {@code Ray.SAME_EVENT} (1e-12 of the ray, events
- * on a polygon's outline that are one), {@code Containment.CONTAINMENT} (1e-9 of the
- * container's size, how far a curved pair that is searched rather than decided may poke out
- * and still count as held), the world's slide's {@code Mover.SKIN} (1/64 pixel, the gap a
- * slanted surface keeps from a body that slides on it), {@code Mover.PLANE_TIE} (1e-12 of a
- * motion, how far into a plane its projection may round), {@code Mover.AXIS_TIE} (1e-6, how
- * near an axis a normal is taken as the axis) and {@code CharacterBody.SLOPE_TIE} (1e-6 of
- * a cosine, so that a 45-degree slope is ground at a 45-degree limit), and the public ones above; and two proven error
- * bounds of floating-point sums, {@code Lines.ORIENT_ERROR} and {@code Ellipses.SUM_ERROR}
- * (multiples of 2^-53 with their derivation beside them). The rest are here.
+ * <p>Named next to their one use, with their reasons there:
+ * <ul>
+ *   <li>the searches: {@code Clearance.TOLERANCE} (1e-9, how close a search's point must be
+ *       to the overlap set), {@code ConvexSweep.TOUCH} (1e-6 pixels, where conservative
+ *       advancement stops), {@code TurningSweep.TOUCH} (1e-3 pixels, the same for a turning
+ *       mover), {@code Containment.SEARCH_STOP} (1e-9 radians, where the search for how far a
+ *       curved shape pokes out stops), {@code Golden.AXIS_NEAR} (1e-3 radians, how near an
+ *       axis a searched least is tried on it) and {@code CurvedClearance.CONE_STEP} (1e-4
+ *       radians, how far past a cone's end its rise is measured);</li>
+ *   <li>the contacts: {@code Ray.SAME_EVENT} (1e-12 of the ray, events on a polygon's outline
+ *       that are one), {@code Containment.CONTAINMENT} (1e-9 of the container's size, how far
+ *       a curved pair that is searched rather than decided may poke out and still count as
+ *       held), the public {@code Manifold.TOLERANCE} (1e-5 of the shapes' size, how far a
+ *       manifold's point may lie outside a shape of a straight-edged or circle pair) and
+ *       {@code Manifold.CURVED_TOLERANCE} (1e-4, the same beside an ellipse), and the
+ *       manifold builder's {@code Manifolds.SAME} (1e-9 of the pair's scale, two points that
+ *       are one), {@code Manifolds.ALONG} (1e-3, a cosine below which a side is along a ray)
+ *       and {@code Manifolds.AS_DEEP} (1e-6 of the scale, corners equally deep);</li>
+ *   <li>the world: the slide's {@code Mover.SKIN} (1/64 pixel, the gap a slanted surface keeps
+ *       from a body that slides on it), {@code Mover.PLANE_TIE} (1e-12 of a motion, how far
+ *       into a plane its projection may round), {@code Mover.AXIS_TIE} (1e-6, how near an axis
+ *       a normal is taken as the axis) and {@code CharacterBody.SLOPE_TIE} (1e-6 of a cosine,
+ *       so that a 45-degree slope is ground at a 45-degree limit);</li>
+ *   <li>guard bands and roundings: {@code RawTests.FILTER_BELOW} and
+ *       {@code RawTests.FILTER_ABOVE} (1 -/+ 2^-18, the band outside which the float squares
+ *       of {@code Collide.circleCircle} decide) and {@code RawTests.FILTER_TINY} (2^-100, below
+ *       which a float square may be subnormal), {@code Lines.UNDERFLOW_GUARD} (2^-900, products
+ *       large enough that an exact {@code fma} residual proves them exact),
+ *       {@code Polygons.DISTANCE_ROUNDING} (1e-13 of the coordinates, a point-to-edge
+ *       distance's rounding), {@code Transforms.STRETCH_ROUNDING} (1e-12, a transform's least
+ *       stretch), {@code Poses.ELLIPSE_BOX_WIDEN} (1e-6 of the radius, a turned ellipse's box),
+ *       {@code Distances.PROJECTION_ROUNDING} (1e-12, an edge's reach) and
+ *       {@code ConvexPolygonSweep.PROJECTION_ROUNDING} (2^-48, a corner's projection);</li>
+ *   <li>drawing: {@code Draw.SHORTEST_ARROW} (1e-3 pixels, an arrow too short for a head);</li>
+ *   <li>the public ones above; and three proven error bounds of floating-point sums,
+ *       {@code Lines.ORIENT_ERROR}, {@code Ellipses.SUM_ERROR} and
+ *       {@code Containment.SUM_ROUNDING} (multiples of 2^-53 with their derivation beside
+ *       them).</li>
+ * </ul>
+ * The rest are here. {@code SourceRulesTest} keeps this list whole: it fails on a named
+ * tolerance missing from it and on a bare tolerance literal anywhere in the library.
  *
  * <p>The values are the ones the code had when they were written out as literals; naming
  * them changed no answer (they are compile-time constants, so even the bytecode is the same).
@@ -145,6 +173,14 @@ public final class Tolerance {
      * angle near pi (its 80 steps usually end first).
      */
     public static final double SUPPORT_ANGLE = 1e-15;
+
+    /**
+     * The rounding of a support sum (two shapes' reaches along a direction, in double),
+     * relative to the scene's size: a least that the angle search found off an axis is
+     * taken on the axis when the axis is as short to within this, so that mirror images
+     * agree. {@link Supports} and {@code CurvedClearance}.
+     */
+    public static final double SUPPORT_SUM_ROUNDING = 1e-12;
 
     /**
      * A direction's part smaller than this is taken as 0 ({@link Supports}): cos and sin of

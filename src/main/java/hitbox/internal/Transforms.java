@@ -23,6 +23,13 @@ public final class Transforms {
     }
 
     /**
+     * The relative rounding allowed in the least stretch of a transform's linear part (the
+     * smaller singular value, found in double): the image check takes the stretch as at least
+     * this much smaller, so rounding never makes a valid polygon's image look collapsed.
+     */
+    private static final double STRETCH_ROUNDING = 1e-12;
+
+    /**
      * The shape's image, by its kind: for a caller that holds a {@link Shape} and an
      * {@link Affine} (each kind's own {@code transformed} calls its case directly).
      *
@@ -214,7 +221,7 @@ public final class Transforms {
         // each vertex moves from its exact image by at most half a float step per coordinate
         // (the rounding to float) plus the double sum's error
         double delta = Math.ulp((float) big) + 4 * Math.ulp(err);
-        return HiddenParts.image(p, out, svd[1] * (1 - 1e-12), delta, () -> "transforming by " + a);
+        return HiddenParts.image(p, out, svd[1] * (1 - STRETCH_ROUNDING), delta, () -> "transforming by " + a);
     }
 
     /**

@@ -20,6 +20,9 @@ public final class Draw {
     private Draw() {
     }
 
+    /** An arrow shorter than this (pixels) is drawn as its line only: its head would have no direction. */
+    private static final float SHORTEST_ARROW = 1e-3f;
+
     /**
      * Draws any shape: a circle or an ellipse by its radii (a turned ellipse turned about its
      * centre, as {@code rotate()} turns it), a rect in CORNER mode, a segment as a line, a
@@ -146,7 +149,7 @@ public final class Draw {
     public static void arrow(PGraphics g, float x, float y, float dx, float dy) {
         float len = (float) Math.hypot(dx, dy);
         g.line(x, y, x + dx, y + dy);
-        if (len < 1e-3f) {
+        if (len < SHORTEST_ARROW) {
             return;
         }
         float ux = dx / len;
