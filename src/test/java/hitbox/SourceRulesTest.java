@@ -118,6 +118,17 @@ class SourceRulesTest {
     }
 
     @Test
+    void theReadmesModuleSentence_isTheModuleInfos() {
+        String info = strip(read(Path.of("src/main/java/module-info.java")));
+        String readme = read(Path.of("README.md"));
+        assertTrue(info.contains("module hitbox") && info.contains("exports hitbox;") && !info.contains("exports hitbox.internal"),
+                "module-info.java no longer exports the API alone: " + info);
+        assertTrue(readme.contains("the jar is the module `hitbox` (`requires hitbox;`), which exports\nthe API alone"),
+                "the README's sentence on the module path no longer says what module-info.java makes the jar");
+        assertTrue(!readme.toLowerCase().contains("automatic module"), "the README calls the jar an automatic module");
+    }
+
+    @Test
     void theSourcesAreFound() {
         assertTrue(sources(LIBRARY).size() > 40, "API sources: " + sources(LIBRARY).size());
         assertTrue(sources(KERNELS).size() > 40, "kernel sources: " + sources(KERNELS).size());

@@ -757,7 +757,7 @@ public final class Manifolds {
             most = Math.max(most, xy[i] * ux + xy[i + 1] * uy);
             size = Math.max(size, Math.abs(xy[i]) + Math.abs(xy[i + 1]));
         }
-        double sx = 0, sy = 0, minT = Double.POSITIVE_INFINITY, maxT = Double.NEGATIVE_INFINITY;
+        double minT = Double.POSITIVE_INFINITY, maxT = Double.NEGATIVE_INFINITY;
         double[] lo = null, hi = null;
         for (int i = 0; i < xy.length; i += 2) {
             if (xy[i] * ux + xy[i + 1] * uy >= most - SAME * Math.max(1, size)) {
