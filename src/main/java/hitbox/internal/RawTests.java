@@ -308,6 +308,9 @@ public final class RawTests {
         if (radiusX == 0 || radiusY == 0) {
             return circleRect(cx, cy, r, x - radiusX, y - radiusY, 2 * radiusX, 2 * radiusY);
         }
+        if (radiusX == radiusY) {
+            return circleCircle(x, y, radiusX, cx, cy, r); // a circle: exact on the touching rule
+        }
         return Ellipses.circle(x, y, radiusX, radiusY, cx, cy, r);
     }
 
@@ -341,6 +344,14 @@ public final class RawTests {
         if (radiusX2 == 0 || radiusY2 == 0) {
             return ellipseRect(x1, y1, radiusX1, radiusY1, x2 - radiusX2, y2 - radiusY2, 2 * radiusX2, 2 * radiusY2);
         }
+        // An ellipse with equal radii is a circle, whose pairs are exact on the touching rule;
+        // the general ellipse search is not, where a circle touches at a point off the axes.
+        if (radiusX1 == radiusY1) {
+            return ellipseCircle(x2, y2, radiusX2, radiusY2, x1, y1, radiusX1);
+        }
+        if (radiusX2 == radiusY2) {
+            return ellipseCircle(x1, y1, radiusX1, radiusY1, x2, y2, radiusX2);
+        }
         if (Ellipses.before(x2, y2, radiusX2, radiusY2, x1, y1, radiusX1, radiusY1)) {
             return Ellipses.ellipse(x2, y2, radiusX2, radiusY2, x1, y1, radiusX1, radiusY1);
         }
@@ -366,6 +377,9 @@ public final class RawTests {
         }
         if (radiusX == 0 || radiusY == 0) {
             return capsuleRect(x1, y1, x2, y2, r, x - radiusX, y - radiusY, 2 * radiusX, 2 * radiusY);
+        }
+        if (radiusX == radiusY) {
+            return capsuleCircle(x1, y1, x2, y2, r, x, y, radiusX); // a circle: exact on the touching rule
         }
         if (r == 0) {
             return Ellipses.segment(x, y, radiusX, radiusY, x1, y1, x2, y2, false);
