@@ -24,7 +24,7 @@ class ContractTest {
     @Test
     void bounce_takesAHitsNormalAsItComes() {
         // A ball falling onto a floor: the hit's normal points from the ball into the floor.
-        Hit hit = Sweep.circleRectHit(50, 0, 5, 3, 20, 0, 10, 100, 10);
+        Hit hit = Raw.sweepCircleRectHit(50, 0, 5, 3, 20, 0, 10, 100, 10);
         assertNotNull(hit);
         assertEquals(Side.TOP, hit.side());
         assertEquals(0f, hit.nx());
@@ -114,7 +114,7 @@ class ContractTest {
         Contact rectFirst = Contact.between(square, middle);
         assertEquals(new Contact(0, 1, 7), circleFirst);
         assertEquals(circleFirst, rectFirst, "a symmetric placement gives the same normal in both orders");
-        assertEquals(rectFirst, Contact.rectCircle(0, 0, 10, 10, 5, 5, 2));
+        assertEquals(rectFirst, Raw.contactRectCircle(0, 0, 10, 10, 5, 5, 2));
         // The same for a polygon with the circle second.
         Polygon box = Polygon.of(square);
         assertEquals(new Contact(0, 1, 7), Contact.between(box, middle));
@@ -192,7 +192,7 @@ class ContractTest {
         float t = Sweep.rectRect(x, 0, w, 10, vx, 0, ox, 0, 10, 10);
         assertFalse(Collide.rectRect(x + t * vx, 0, w, 10, ox, 0, 10, 10), "clear at t");
         assertTrue(Collide.rectRect(x + Math.nextUp(t) * vx, 0, w, 10, ox, 0, 10, 10), "overlapping just after");
-        Hit hit = Sweep.rectRectHit(x, 0, w, 10, vx, 0, ox, 0, 10, 10);
+        Hit hit = Raw.sweepRectRectHit(x, 0, w, 10, vx, 0, ox, 0, 10, 10);
         assertEquals(t, hit.t());
     }
 

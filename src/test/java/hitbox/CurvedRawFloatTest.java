@@ -23,13 +23,13 @@ class CurvedRawFloatTest {
             Circle c = new Circle(Sampled.coord(rnd), Sampled.coord(rnd), 1 + rnd.nextInt(30));
             Rect r = new Rect(Sampled.coord(rnd), Sampled.coord(rnd), rnd.nextInt(40), rnd.nextInt(40));
             Contact[][] pairs = {
-                {Contact.ellipseCircle(e.x(), e.y(), e.rx(), e.ry(), c.x(), c.y(), c.r()), e.contact(c)},
-                {Contact.ellipseRect(e.x(), e.y(), e.rx(), e.ry(), r.x(), r.y(), r.w(), r.h()), e.contact(r)},
-                {Contact.ellipseEllipse(e.x(), e.y(), e.rx(), e.ry(), f.x(), f.y(), f.rx(), f.ry()), e.contact(f)},
-                {Contact.ellipseCapsule(e.x(), e.y(), e.rx(), e.ry(), k.x1(), k.y1(), k.x2(), k.y2(), k.r()), e.contact(k)},
-                {Contact.capsuleCircle(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), c.x(), c.y(), c.r()), k.contact(c)},
-                {Contact.capsuleRect(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), r.x(), r.y(), r.w(), r.h()), k.contact(r)},
-                {Contact.capsuleCapsule(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), m.x1(), m.y1(), m.x2(), m.y2(), m.r()), k.contact(m)},
+                {Raw.contactEllipseCircle(e.x(), e.y(), e.rx(), e.ry(), c.x(), c.y(), c.r()), e.contact(c)},
+                {Raw.contactEllipseRect(e.x(), e.y(), e.rx(), e.ry(), r.x(), r.y(), r.w(), r.h()), e.contact(r)},
+                {Raw.contactEllipseEllipse(e.x(), e.y(), e.rx(), e.ry(), f.x(), f.y(), f.rx(), f.ry()), e.contact(f)},
+                {Raw.contactEllipseCapsule(e.x(), e.y(), e.rx(), e.ry(), k.x1(), k.y1(), k.x2(), k.y2(), k.r()), e.contact(k)},
+                {Raw.contactCapsuleCircle(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), c.x(), c.y(), c.r()), k.contact(c)},
+                {Raw.contactCapsuleRect(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), r.x(), r.y(), r.w(), r.h()), k.contact(r)},
+                {Raw.contactCapsuleCapsule(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), m.x1(), m.y1(), m.x2(), m.y2(), m.r()), k.contact(m)},
             };
             for (Contact[] p : pairs) {
                 assertEquals(p[1], p[0]);
@@ -41,14 +41,14 @@ class CurvedRawFloatTest {
 
     @Test
     void contacts_badInputIsNoContact() {
-        assertNull(Contact.ellipseCircle(Float.NaN, 0, 5, 5, 0, 0, 5));
-        assertNull(Contact.ellipseCircle(0, 0, -1, 5, 0, 0, 5));
-        assertNull(Contact.ellipseRect(0, 0, 5, 5, 0, 0, -1, 5));
-        assertNull(Contact.ellipseEllipse(0, 0, 5, 5, 0, Float.POSITIVE_INFINITY, 5, 5));
-        assertNull(Contact.capsuleCircle(0, 0, 10, 0, -2, 0, 0, 5));
-        assertNull(Contact.capsuleRect(0, 0, 10, 0, 2, 0, 0, 5, Float.NaN));
-        assertNull(Contact.capsuleCapsule(0, 0, 10, 0, 2, 0, 0, 10, 0, -2));
-        assertNull(Contact.ellipseCapsule(0, 0, 5, 5, 0, 0, 10, 0, Float.NaN));
+        assertNull(Raw.contactEllipseCircle(Float.NaN, 0, 5, 5, 0, 0, 5));
+        assertNull(Raw.contactEllipseCircle(0, 0, -1, 5, 0, 0, 5));
+        assertNull(Raw.contactEllipseRect(0, 0, 5, 5, 0, 0, -1, 5));
+        assertNull(Raw.contactEllipseEllipse(0, 0, 5, 5, 0, Float.POSITIVE_INFINITY, 5, 5));
+        assertNull(Raw.contactCapsuleCircle(0, 0, 10, 0, -2, 0, 0, 5));
+        assertNull(Raw.contactCapsuleRect(0, 0, 10, 0, 2, 0, 0, 5, Float.NaN));
+        assertNull(Raw.contactCapsuleCapsule(0, 0, 10, 0, 2, 0, 0, 10, 0, -2));
+        assertNull(Raw.contactEllipseCapsule(0, 0, 5, 5, 0, 0, 10, 0, Float.NaN));
     }
 
     @Test
@@ -64,22 +64,22 @@ class CurvedRawFloatTest {
             Capsule k = Sampled.capsule(rnd);
             RayHit he = ray.cast(e), hk = ray.cast(k);
             assertEquals(he == null ? Float.POSITIVE_INFINITY : he.distance(),
-                    Ray.distanceToEllipse(ox, oy, dx, dy, max, e.x(), e.y(), e.rx(), e.ry()), ray + " " + e);
+                    Raw.rayDistanceToEllipse(ox, oy, dx, dy, max, e.x(), e.y(), e.rx(), e.ry()), ray + " " + e);
             assertEquals(hk == null ? Float.POSITIVE_INFINITY : hk.distance(),
-                    Ray.distanceToCapsule(ox, oy, dx, dy, max, k.x1(), k.y1(), k.x2(), k.y2(), k.r()), ray + " " + k);
+                    Raw.rayDistanceToCapsule(ox, oy, dx, dy, max, k.x1(), k.y1(), k.x2(), k.y2(), k.r()), ray + " " + k);
             hits += (he == null ? 0 : 1) + (hk == null ? 0 : 1);
         }
         assertEquals(true, hits > 400, hits + " hits");
         // Inside: 0. A flat ellipse or a capsule of radius 0: never entered.
-        assertEquals(0f, Ray.distanceToEllipse(0, 0, 1, 0, 10, 0, 0, 5, 3));
-        assertEquals(0f, Ray.distanceToCapsule(0, 0, 1, 0, 10, -5, 0, 5, 0, 1));
-        assertEquals(2f, Ray.distanceToEllipse(-7, 0, 1, 0, 10, 0, 0, 5, 3));
-        assertEquals(6f, Ray.distanceToCapsule(0, -10, 0, 1, 100, -5, 0, 5, 0, 4));
-        assertEquals(Float.POSITIVE_INFINITY, Ray.distanceToEllipse(-7, 0, 1, 0, 10, 0, 0, 5, 0));
-        assertEquals(Float.POSITIVE_INFINITY, Ray.distanceToCapsule(0, -10, 0, 1, 100, -5, 0, 5, 0, 0));
-        assertEquals(Float.POSITIVE_INFINITY, Ray.distanceToEllipse(Float.NaN, 0, 1, 0, 10, 0, 0, 5, 3));
-        assertEquals(Float.POSITIVE_INFINITY, Ray.distanceToEllipse(-7, 0, 0, 0, 10, 0, 0, 5, 3));
-        assertEquals(Float.POSITIVE_INFINITY, Ray.distanceToCapsule(0, -10, 0, 1, -1, -5, 0, 5, 0, 4));
-        assertEquals(Float.POSITIVE_INFINITY, Ray.distanceToCapsule(0, -10, 0, 1, 100, -5, 0, 5, 0, -4));
+        assertEquals(0f, Raw.rayDistanceToEllipse(0, 0, 1, 0, 10, 0, 0, 5, 3));
+        assertEquals(0f, Raw.rayDistanceToCapsule(0, 0, 1, 0, 10, -5, 0, 5, 0, 1));
+        assertEquals(2f, Raw.rayDistanceToEllipse(-7, 0, 1, 0, 10, 0, 0, 5, 3));
+        assertEquals(6f, Raw.rayDistanceToCapsule(0, -10, 0, 1, 100, -5, 0, 5, 0, 4));
+        assertEquals(Float.POSITIVE_INFINITY, Raw.rayDistanceToEllipse(-7, 0, 1, 0, 10, 0, 0, 5, 0));
+        assertEquals(Float.POSITIVE_INFINITY, Raw.rayDistanceToCapsule(0, -10, 0, 1, 100, -5, 0, 5, 0, 0));
+        assertEquals(Float.POSITIVE_INFINITY, Raw.rayDistanceToEllipse(Float.NaN, 0, 1, 0, 10, 0, 0, 5, 3));
+        assertEquals(Float.POSITIVE_INFINITY, Raw.rayDistanceToEllipse(-7, 0, 0, 0, 10, 0, 0, 5, 3));
+        assertEquals(Float.POSITIVE_INFINITY, Raw.rayDistanceToCapsule(0, -10, 0, 1, -1, -5, 0, 5, 0, 4));
+        assertEquals(Float.POSITIVE_INFINITY, Raw.rayDistanceToCapsule(0, -10, 0, 1, 100, -5, 0, 5, 0, -4));
     }
 }

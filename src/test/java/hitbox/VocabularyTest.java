@@ -183,34 +183,34 @@ class VocabularyTest {
     @Test
     void sweepCircleRect_fastBallHitsThinWall() {
         // A ball of radius 5 at x = 0 moving 1000 right; the wall's left face at x = 500.
-        float t = Sweep.circleRect(0, 50, 5, 1000, 0, 500, 0, 1, 100);
+        float t = Raw.sweepCircleRect(0, 50, 5, 1000, 0, 500, 0, 1, 100);
         assertEquals(0.495f, t, 1e-6f);
         assertFalse(Collide.circleRect(0 + t * 1000, 50, 5, 500, 0, 1, 100), "never left inside");
     }
 
     @Test
     void sweepCircleRect_missOverlapAndNaN() {
-        assertEquals(Float.POSITIVE_INFINITY, Sweep.circleRect(0, 50, 5, 100, 0, 500, 0, 1, 100), "too short a move");
-        assertEquals(Float.POSITIVE_INFINITY, Sweep.circleRect(0, 50, 5, 0, -100, 500, 0, 1, 100), "moving away");
-        assertEquals(0f, Sweep.circleRect(500, 50, 5, 10, 0, 500, 0, 1, 100), "already overlapping");
-        assertEquals(Float.POSITIVE_INFINITY, Sweep.circleRect(Float.NaN, 50, 5, 1000, 0, 500, 0, 1, 100));
-        assertEquals(Float.POSITIVE_INFINITY, Sweep.circleRect(0, 50, -5, 1000, 0, 500, 0, 1, 100));
+        assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleRect(0, 50, 5, 100, 0, 500, 0, 1, 100), "too short a move");
+        assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleRect(0, 50, 5, 0, -100, 500, 0, 1, 100), "moving away");
+        assertEquals(0f, Raw.sweepCircleRect(500, 50, 5, 10, 0, 500, 0, 1, 100), "already overlapping");
+        assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleRect(Float.NaN, 50, 5, 1000, 0, 500, 0, 1, 100));
+        assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleRect(0, 50, -5, 1000, 0, 500, 0, 1, 100));
     }
 
     @Test
     void sweepsOnFloats_negativeSize_isNoHit() {
         // Documented as "no hit for negative input"; the search used to report t = 1.
-        assertNull(Sweep.circleRectHit(0, 50, -5, 1000, 0, 500, 0, 1, 100));
-        assertNull(Sweep.circleRectHit(0, 50, 5, 1000, 0, 500, 0, -1, 100));
-        assertNull(Sweep.circleCircleHit(0, 0, -5, 100, 0, 50, 0, 10));
-        assertNull(Sweep.circleCircleHit(0, 0, 5, 100, 0, 50, 0, -10));
-        assertNull(Sweep.rectRectHit(0, 0, -5, 5, 100, 0, 50, 0, 10, 10));
-        assertNull(Sweep.rectRectHit(0, 0, 5, 5, 100, 0, 50, 0, 10, -10));
+        assertNull(Raw.sweepCircleRectHit(0, 50, -5, 1000, 0, 500, 0, 1, 100));
+        assertNull(Raw.sweepCircleRectHit(0, 50, 5, 1000, 0, 500, 0, -1, 100));
+        assertNull(Raw.sweepCircleCircleHit(0, 0, -5, 100, 0, 50, 0, 10));
+        assertNull(Raw.sweepCircleCircleHit(0, 0, 5, 100, 0, 50, 0, -10));
+        assertNull(Raw.sweepRectRectHit(0, 0, -5, 5, 100, 0, 50, 0, 10, 10));
+        assertNull(Raw.sweepRectRectHit(0, 0, 5, 5, 100, 0, 50, 0, 10, -10));
         assertEquals(Float.POSITIVE_INFINITY, Sweep.rectRect(0, 0, -5, 5, 100, 0, 50, 0, 10, 10));
-        assertEquals(Float.POSITIVE_INFINITY, Sweep.circleCircle(0, 0, -5, 100, 0, 50, 0, 10));
+        assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleCircle(0, 0, -5, 100, 0, 50, 0, 10));
         // The same moves with real sizes do hit.
         assertEquals(0.45f, Sweep.rectRect(0, 0, 5, 5, 100, 0, 50, 0, 10, 10), 1e-6f);
-        assertEquals(0.4f, Sweep.circleCircle(0, 0, 5, 100, 0, 50, 0, 5), 1e-6f);
+        assertEquals(0.4f, Raw.sweepCircleCircle(0, 0, 5, 100, 0, 50, 0, 5), 1e-6f);
     }
 
     @Property
@@ -219,8 +219,8 @@ class VocabularyTest {
                                               @ForAll @FloatRange(min = 0, max = 20) float r,
                                               @ForAll @FloatRange(min = -200, max = 200) float vx,
                                               @ForAll @FloatRange(min = -200, max = 200) float vy) {
-        Hit hit = Sweep.circleRectHit(cx, cy, r, vx, vy, -10, -20, 30, 15);
-        float t = Sweep.circleRect(cx, cy, r, vx, vy, -10, -20, 30, 15);
+        Hit hit = Raw.sweepCircleRectHit(cx, cy, r, vx, vy, -10, -20, 30, 15);
+        float t = Raw.sweepCircleRect(cx, cy, r, vx, vy, -10, -20, 30, 15);
         assertEquals(hit == null ? Float.POSITIVE_INFINITY : hit.t(), t);
         Hit shapes = Sweep.timeOfImpact(new Circle(cx, cy, r), vx, vy, new Rect(-10, -20, 30, 15));
         assertEquals(hit, shapes, "the raw tiers and the shape tier agree");

@@ -165,7 +165,7 @@ public final class Contacts {
             case ELLIPSE, CAPSULE -> curved(c, b, kb);
             case CIRCLE -> {
                 Circle d = (Circle) b;
-                yield Contact.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
+                yield circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
             }
             case RECT -> {
                 Rect r = (Rect) b;
@@ -189,7 +189,7 @@ public final class Contacts {
             }
             case RECT -> {
                 Rect q = (Rect) b;
-                yield Contact.rectRect(r.x(), r.y(), r.w(), r.h(), q.x(), q.y(), q.w(), q.h());
+                yield rectRect(r.x(), r.y(), r.w(), r.h(), q.x(), q.y(), q.w(), q.h());
             }
             case POLYGON -> polygonal(r, false, b, true);
         };
@@ -295,7 +295,7 @@ public final class Contacts {
                 return null;
             }
             // A polygon's cached corners, or a rectangle's written into this thread's scratch
-            // array (two rectangles went to Contact.rectRect), so that nothing is allocated
+            // array (two rectangles went to rectRect), so that nothing is allocated
             // but the answer. The search decides apart exactly and only reads them.
             double[] scratch = polygonA && polygonB ? null : RECT_CORNERS.get();
             return FaceQuery.convexPolygons(cornersOf(a, polygonA, scratch), windingOf(a, polygonA), r,
@@ -441,4 +441,40 @@ public final class Contacts {
         return new Contact((float) nx, (float) ny, Math.max(Check.held(depth), Float.MIN_VALUE));
     }
 
+    /**
+     * The contact of two circles given by plain floats, or null when they do not overlap (and
+     * for NaN, infinite or negative values): the normal from the first centre to the second,
+     * the depth {@code r1 + r2 - dist}; circles with one centre get (0, 1) and {@code r1 + r2}.
+     */
+    public static Contact circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
+        if (Check.notFinite(x1, y1, r1, x2, y2) || Check.notFinite(r2, 0, 0, 0, 0) || r1 < 0 || r2 < 0
+                || !Collide.circleCircle(x1, y1, r1, x2, y2, r2)) {
+            return null;
+        }
+        double dx = (double) x2 - x1;
+        double dy = (double) y2 - y1;
+        double dist = Math.sqrt(dx * dx + dy * dy);
+        double reach = (double) r1 + r2;
+        if (dist == 0) {
+            return of(0, 1, reach);
+        }
+        return of(dx / dist, dy / dist, reach - dist);
+    }
+
+    /**
+     * The contact of two rectangles given by plain floats, or null when they do not overlap
+     * (and for NaN, infinite or negative values): the first rectangle's shortest way out of
+     * the second, an axis normal.
+     */
+    public static Contact rectRect(float x1, float y1, float w1, float h1,
+                                   float x2, float y2, float w2, float h2) {
+        if (Check.notFinite(x1, y1, w1, h1, x2) || Check.notFinite(y2, w2, h2, 0, 0)
+                || w1 < 0 || h1 < 0 || w2 < 0 || h2 < 0 || !Collide.rectRect(x1, y1, w1, h1, x2, y2, w2, h2)) {
+            return null;
+        }
+        // The first rectangle's shortest way out of the second (exact depths, exact ties in
+        // the tie rule's order): the same push Snap.pushOut makes.
+        Side side = RectPush.leastOverlap(x1, y1, w1, h1, x2, y2, w2, h2);
+        return of(RectPush.normalX(side), RectPush.normalY(side), RectPush.depth(side, x1, y1, w1, h1, x2, y2, w2, h2));
+    }
 }
