@@ -709,7 +709,7 @@ public final class Sweep {
     /**
      * Where {@link #move} left a box: its position, the velocity to keep for the next frame
      * and the sides of the obstacles it hit on the way. A move can hit several sides (a floor
-     * and a wall), so it gives them as bits, {@link #sides()}, like {@link Edges} and
+     * and a wall), so it gives them as a set, {@link #sides()}, like {@link Edges} and
      * {@link Motion}; a result with one side gives it as {@code side()} (see
      * <a href="Side.html#results">the side of a result</a>).
      *
@@ -718,11 +718,11 @@ public final class Sweep {
      * @param vx    the velocity to keep, x part: the one passed in, or 0 if a wall stopped it
      * @param vy    the velocity to keep, y part: the one passed in, or 0 if it landed or hit
      *              its head
-     * @param sides the obstacle sides hit, in {@link Side}'s <a href="Side.html#bits">bit
-     *              scheme</a> ({@code Side.TOP.bit()} if it landed, and so on); read it with
-     *              {@link #hit(Side)} or {@link #sideSet()}
+     * @param sides the obstacle sides hit, an unmodifiable set (see
+     *              <a href="Side.html#sets">several sides at once</a>), empty if none; read it
+     *              with {@link #hit(Side)} or {@code contains}
      */
-    public record Move(float x, float y, float vx, float vy, int sides) {
+    public record Move(float x, float y, float vx, float vy, java.util.Set<Side> sides) {
 
         /**
          * Makes a move result, checking its values.
@@ -731,20 +731,18 @@ public final class Sweep {
          * @param y the box's top edge after the move
          * @param vx the velocity to keep, x part: the one passed in, or 0 if a wall stopped it
          * @param vy the velocity to keep, y part: the one passed in, or 0 if it landed or hit its head
-         * @param sides the obstacle sides hit, in {@link Side}'s bit scheme
+         * @param sides the obstacle sides hit, not null (kept as an unmodifiable set; {@link Side#NONE}
+         *              in it names no side and is left out)
          *
-         * @throws IllegalArgumentException if a value is NaN or infinite, or {@code sides}
-         *                                  has a bit that names no side
+         * @throws IllegalArgumentException if a value is NaN or infinite, or {@code sides} is
+         *                                  null or holds null
          */
         public Move {
             Check.finite("x", x);
             Check.finite("y", y);
             Check.finite("vx", vx);
             Check.finite("vy", vy);
-            if ((sides & ~Side.ALL_BITS) != 0) {
-                throw new IllegalArgumentException("sides must only have the bits of TOP, BOTTOM, LEFT and RIGHT"
-                        + " (Side.ALL_BITS), was " + sides);
-            }
+            sides = SideSets.of(SideSets.bits(Check.notNull("sides", sides)));
         }
 
         /**
@@ -756,12 +754,8 @@ public final class Sweep {
          * @throws IllegalArgumentException if {@code side} is null
          */
         public boolean hit(Side side) {
-            return Side.has(sides, side);
-        }
-
-        /** @return the obstacle sides hit, as a new set (empty if it hit nothing), never null */
-        public java.util.EnumSet<Side> sideSet() {
-            return Side.setOf(sides);
+            Check.notNull("side", side);
+            return side == Side.NONE ? sides.isEmpty() : sides.contains(side);
         }
 
         /** @return true if the box came down on the top of an obstacle: it stands, and may jump */
@@ -781,7 +775,7 @@ public final class Sweep {
 
         /** @return true if the box hit anything at all */
         public boolean hitAnything() {
-            return sides != 0;
+            return !sides.isEmpty();
         }
     }
 
