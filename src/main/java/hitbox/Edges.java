@@ -47,7 +47,8 @@ public final class Edges {
      * @param shape  the shape, not null
      * @param width  the window's width
      * @param height the window's height
-     * @return the crossed edges, an unmodifiable set, empty if none; allocates nothing
+     * @return the crossed edges, an unmodifiable set, empty (not null) if none, never null;
+     *         allocates nothing
      * @throws IllegalArgumentException if {@code shape} is null
      */
     public static Set<Side> crossed(Shape shape, float width, float height) {
@@ -56,10 +57,11 @@ public final class Edges {
     }
 
     /**
-     * The one crossing rule: strictly beyond an edge, in double so touching is exact. A NaN
-     * anywhere crosses nothing.
+     * The one crossing rule, in {@code SideSets}' bits: strictly beyond an edge, in double so
+     * touching is exact. A NaN anywhere crosses nothing. Also {@link Motion#bounce}'s, on the
+     * floats of a box's next place.
      */
-    private static int crossed(double left, double right, double top, double bottom, float width, float height) {
+    static int crossed(double left, double right, double top, double bottom, float width, float height) {
         if (Double.isNaN(left) || Double.isNaN(right) || Double.isNaN(top) || Double.isNaN(bottom)
                 || Float.isNaN(width) || Float.isNaN(height)) {
             return 0;

@@ -55,11 +55,14 @@ public final class Motion {
      * {@link Side#BOTTOM} down) when the mover moved along it alone would overlap an
      * obstacle, all four for a diagonal hit on a corner (see the class description).
      *
+     * <p>A NaN speed blocks nothing (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param mover     the moving rectangle, not null
      * @param vx        its horizontal speed, pixels per frame
      * @param vy        its vertical speed, pixels per frame (down is positive)
      * @param obstacles the obstacles, not null, no null element
-     * @return the blocked axes' sides, an unmodifiable set, empty if the move is free
+     * @return the blocked axes' sides, an unmodifiable set, empty if the move is free, never
+     *         null
      * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
      *                                  elements is null
      */
@@ -72,11 +75,14 @@ public final class Motion {
      * Which axes of the circle's next move would run into any of the obstacles? As
      * {@link #blocked(Rect, float, float, List)}, for a ball.
      *
+     * <p>A NaN speed blocks nothing (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param mover     the moving circle, not null
      * @param vx        its horizontal speed, pixels per frame
      * @param vy        its vertical speed, pixels per frame (down is positive)
      * @param obstacles the obstacles, not null, no null element
-     * @return the blocked axes' sides, an unmodifiable set, empty if the move is free
+     * @return the blocked axes' sides, an unmodifiable set, empty if the move is free, never
+     *         null
      * @throws IllegalArgumentException if {@code mover}, {@code obstacles} or one of its
      *                                  elements is null
      */
@@ -96,11 +102,14 @@ public final class Motion {
      * same answer as {@link #blocked(Rect, float, float, List)} over the same boxes, asking
      * only the ones near the move.
      *
+     * <p>A NaN speed blocks nothing (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param mover     the moving rectangle, not null
      * @param vx        its horizontal speed, pixels per frame
      * @param vy        its vertical speed, pixels per frame (down is positive)
      * @param obstacles the obstacles' boxes, not null
-     * @return the blocked axes' sides, an unmodifiable set, empty if the move is free
+     * @return the blocked axes' sides, an unmodifiable set, empty if the move is free, never
+     *         null
      * @throws IllegalArgumentException if {@code mover} or {@code obstacles} is null
      */
     public static Set<Side> blocked(Rect mover, float vx, float vy, BroadPhase obstacles) {
@@ -192,6 +201,9 @@ public final class Motion {
      * {@link #bounce(Rect, float, float, List, float, float)} among the boxes of a broad
      * phase: the same step, so a sketch with thousands of obstacles changes one argument.
      *
+     * <p>A NaN speed blocks nothing and stays NaN; a NaN window size crosses no edge (the
+     * <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param box       the box, not null
      * @param vx        its horizontal speed
      * @param vy        its vertical speed
@@ -219,7 +231,10 @@ public final class Motion {
         Set<Side> blocked = SideSets.of(obstacles.at(vx, vy));
         vx = reverseX(blocked, vx);
         vy = reverseY(blocked, vy);
-        Set<Side> crossed = Edges.crossed(new Rect(x + vx, y + vy, w, h), width, height);
+        // The box at its next place against the window, by Edges' one crossing rule; on the
+        // floats, so that a NaN speed crosses nothing rather than making a box that is refused.
+        float nx0 = x + vx, ny0 = y + vy;
+        Set<Side> crossed = SideSets.of(Edges.crossed(nx0, (double) nx0 + w, ny0, (double) ny0 + h, width, height));
         vx = Edges.bounceX(crossed, vx);
         vy = Edges.bounceY(crossed, vy);
         int still = obstacles.at(vx, vy);

@@ -105,9 +105,9 @@ class CircleCircleContactTest {
         "0, 0, 1, 0, Infinity, 1, 'y2 must be a finite number, was Infinity'",
         "0, 0, 1, 0, 0, -2, 'r2 must be >= 0, was -2.0'",
     })
-    void circleCircle_badArguments_noContactNeverThrows(float x1, float y1, float r1, float x2, float y2, float r2, String what) {
-        // The NaN rule: the raw-float methods answer "no contact" for bad values.
-        assertNull(Raw.contactCircleCircle(x1, y1, r1, x2, y2, r2), what);
+    void circleCircle_badArguments_areRefusedByTheShapes(float x1, float y1, float r1, float x2, float y2, float r2, String what) {
+        // The raw-float form went (issue 30): such values make no circle, so no contact is asked.
+        assertThrows(IllegalArgumentException.class, () -> Raw.contactCircleCircle(x1, y1, r1, x2, y2, r2), what);
     }
 
     // ------------------------------------------------------------------------ properties

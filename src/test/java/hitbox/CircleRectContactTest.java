@@ -89,10 +89,10 @@ class CircleRectContactTest {
         "0, NaN, 1, 0, 0, 1, 1, 'cy must be a finite number, was NaN'",
         "0, 0, 1, 0, -Infinity, 1, 1, 'ry must be a finite number, was -Infinity'",
     })
-    void circleRect_badArguments_noContactNeverThrows(float cx, float cy, float r, float rx, float ry, float rw, float rh, String what) {
-        // The NaN rule: the raw-float methods answer "no contact" for bad values.
-        assertNull(Raw.contactCircleRect(cx, cy, r, rx, ry, rw, rh), what);
-        assertNull(Raw.contactRectCircle(rx, ry, rw, rh, cx, cy, r), what);
+    void circleRect_badArguments_areRefusedByTheShapes(float cx, float cy, float r, float rx, float ry, float rw, float rh, String what) {
+        // The raw-float forms went (issue 30): such values make no shape, so no contact is asked.
+        assertThrows(IllegalArgumentException.class, () -> Raw.contactCircleRect(cx, cy, r, rx, ry, rw, rh), what);
+        assertThrows(IllegalArgumentException.class, () -> Raw.contactRectCircle(rx, ry, rw, rh, cx, cy, r), what);
     }
 
     // ------------------------------------------------------------------------ properties

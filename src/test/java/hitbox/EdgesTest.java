@@ -485,10 +485,16 @@ class EdgesTest {
     void negativeSizeOrWindow_noCrossingAndPositionUnchanged(String what, float x, float size, float window) {
         boolean noShape = size < 0 || window < 0;  // -0 is a size of 0: a point, answered as one
         if (noShape) {
-            assertEquals(NONE, bits(Edges.crossed(new Circle(x, 50, size), window, 300)), what);
-            assertEquals(NONE, bits(Edges.crossed(new Circle(50, x, size), 400, window)), what);
-            assertEquals(NONE, bits(Edges.crossed(new Rect(x, 50, size, 10), window, 300)), what);
-            assertEquals(NONE, bits(Edges.crossed(new Rect(50, x, 10, size), 400, window)), what);
+            if (size < 0) {
+                // A negative size makes no shape to ask about (the raw crossing forms went).
+                assertThrows(IllegalArgumentException.class, () -> new Circle(x, 50, size), what);
+                assertThrows(IllegalArgumentException.class, () -> new Rect(x, 50, size, 10), what);
+            } else {
+                assertEquals(NONE, bits(Edges.crossed(new Circle(x, 50, size), window, 300)), what);
+                assertEquals(NONE, bits(Edges.crossed(new Circle(50, x, size), 400, window)), what);
+                assertEquals(NONE, bits(Edges.crossed(new Rect(x, 50, size, 10), window, 300)), what);
+                assertEquals(NONE, bits(Edges.crossed(new Rect(50, x, 10, size), 400, window)), what);
+            }
             assertEquals(x, Edges.circleWrapX(x, size, window), what);
             assertEquals(x, Edges.circleWrapY(x, size, window), what);
             assertEquals(x, Edges.rectWrapX(x, size, window), what);

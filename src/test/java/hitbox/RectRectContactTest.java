@@ -88,9 +88,9 @@ class RectRectContactTest {
         "0, 0, 1, 1, 0, 0, 1, -3, 'h2 must be >= 0, was -3.0'",
         "NaN, 0, 1, 1, 0, 0, 1, 1, 'x1 must be a finite number, was NaN'",
     })
-    void rectRect_badArguments_noContactNeverThrows(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2, String what) {
-        // The NaN rule: the raw-float methods answer "no contact" for bad values.
-        assertNull(Raw.contactRectRect(x1, y1, w1, h1, x2, y2, w2, h2), what);
+    void rectRect_badArguments_areRefusedByTheShapes(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2, String what) {
+        // The raw-float form went (issue 30): such values make no rectangle, so no contact is asked.
+        assertThrows(IllegalArgumentException.class, () -> Raw.contactRectRect(x1, y1, w1, h1, x2, y2, w2, h2), what);
     }
 
     // ------------------------------------------------------------------------ properties

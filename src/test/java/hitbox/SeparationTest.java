@@ -230,14 +230,15 @@ class SeparationTest {
     }
 
     @Test
-    void rawForms_badInput_answerInfinity() {
+    void badInput_rawCircleCircleAnswersInfinity_theShapesRefuseIt() {
+        // The one raw form left keeps its rule; the others went, and the shapes refuse such values.
         float inf = Float.POSITIVE_INFINITY;
         assertEquals(inf, Separation.circleCircle(Float.NaN, 0, 1, 5, 0, 1));
         assertEquals(inf, Separation.circleCircle(0, 0, -1, 5, 0, 1), "negative radius");
-        assertEquals(inf, Raw.separationRectRect(0, 0, 10, 10, inf, 0, 1, 1));
-        assertEquals(inf, Raw.separationRectPoint(0, 0, -1, 10, 20, 20));
-        assertEquals(inf, Raw.separationPolygonPoint(new float[] {0, 0, 10, 0}, 5, 5), "fewer than 3 vertices");
-        assertEquals(inf, Raw.separationPolygonPoint(new float[] {0, 0, 10, Float.NaN, 0, 10}, 50, 5));
+        assertThrows(IllegalArgumentException.class, () -> Raw.separationRectRect(0, 0, 10, 10, inf, 0, 1, 1));
+        assertThrows(IllegalArgumentException.class, () -> Raw.separationRectPoint(0, 0, -1, 10, 20, 20));
+        assertThrows(IllegalArgumentException.class, () -> Raw.separationPolygonPoint(new float[] {0, 0, 10, 0}, 5, 5), "fewer than 3 vertices");
+        assertThrows(IllegalArgumentException.class, () -> Raw.separationPolygonPoint(new float[] {0, 0, 10, Float.NaN, 0, 10}, 50, 5));
         assertThrows(IllegalArgumentException.class, () -> Raw.separationPolygonPoint(null, 0, 0));
     }
 }

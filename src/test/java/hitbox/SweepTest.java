@@ -128,7 +128,8 @@ class SweepTest {
         assertEquals(Float.POSITIVE_INFINITY, Sweep.rectRect(0, 0, 10, 10, Float.POSITIVE_INFINITY, 0, 15, 0, 10, 10));
         assertEquals(Float.POSITIVE_INFINITY, Sweep.rectRect(0, 0, 10, 10, 0, Float.NaN, 0, 15, 10, 10));
         assertEquals(Float.POSITIVE_INFINITY, Sweep.rectRect(Float.NaN, 0, 10, 10, 20, 0, 15, 0, 10, 10));
-        assertNull(Raw.sweepRectRectHit(0, 0, 10, 10, Float.NaN, 0, 15, 0, 10, 10));
+        assertThrows(IllegalArgumentException.class, () -> Raw.sweepRectRectHit(0, 0, 10, 10, Float.NaN, 0, 15, 0, 10, 10),
+                "on shapes a NaN velocity is refused");
     }
 
     // ------------------------------------------------------------------ circle and circle

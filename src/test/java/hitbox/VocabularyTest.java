@@ -146,21 +146,20 @@ class VocabularyTest {
         assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleRect(0, 50, 5, 100, 0, 500, 0, 1, 100), "too short a move");
         assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleRect(0, 50, 5, 0, -100, 500, 0, 1, 100), "moving away");
         assertEquals(0f, Raw.sweepCircleRect(500, 50, 5, 10, 0, 500, 0, 1, 100), "already overlapping");
-        assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleRect(Float.NaN, 50, 5, 1000, 0, 500, 0, 1, 100));
-        assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleRect(0, 50, -5, 1000, 0, 500, 0, 1, 100));
+        // NaN or a negative size: no shape to sweep (the float forms' "no hit" went with them).
+        assertThrows(IllegalArgumentException.class, () -> Raw.sweepCircleRect(Float.NaN, 50, 5, 1000, 0, 500, 0, 1, 100));
+        assertThrows(IllegalArgumentException.class, () -> Raw.sweepCircleRect(0, 50, -5, 1000, 0, 500, 0, 1, 100));
+        assertThrows(IllegalArgumentException.class, () -> Sweep.timeOfImpact(new Circle(0, 50, 5), Float.NaN, 0, new Rect(500, 0, 1, 100)));
     }
 
     @Test
     void sweepsOnFloats_negativeSize_isNoHit() {
-        // Documented as "no hit for negative input"; the search used to report t = 1.
-        assertNull(Raw.sweepCircleRectHit(0, 50, -5, 1000, 0, 500, 0, 1, 100));
-        assertNull(Raw.sweepCircleRectHit(0, 50, 5, 1000, 0, 500, 0, -1, 100));
-        assertNull(Raw.sweepCircleCircleHit(0, 0, -5, 100, 0, 50, 0, 10));
-        assertNull(Raw.sweepCircleCircleHit(0, 0, 5, 100, 0, 50, 0, -10));
-        assertNull(Raw.sweepRectRectHit(0, 0, -5, 5, 100, 0, 50, 0, 10, 10));
-        assertNull(Raw.sweepRectRectHit(0, 0, 5, 5, 100, 0, 50, 0, 10, -10));
+        // The one form left on floats is documented as "no hit for negative input" (the search
+        // used to report t = 1); on shapes a negative size is refused before any sweep.
         assertEquals(Float.POSITIVE_INFINITY, Sweep.rectRect(0, 0, -5, 5, 100, 0, 50, 0, 10, 10));
-        assertEquals(Float.POSITIVE_INFINITY, Raw.sweepCircleCircle(0, 0, -5, 100, 0, 50, 0, 10));
+        assertEquals(Float.POSITIVE_INFINITY, Sweep.rectRect(0, 0, 5, 5, 100, 0, 50, 0, 10, -10));
+        assertThrows(IllegalArgumentException.class, () -> Raw.sweepCircleRectHit(0, 50, -5, 1000, 0, 500, 0, 1, 100));
+        assertThrows(IllegalArgumentException.class, () -> Raw.sweepRectRectHit(0, 0, 5, 5, 100, 0, 50, 0, 10, -10));
         // The same moves with real sizes do hit.
         assertEquals(0.45f, Sweep.rectRect(0, 0, 5, 5, 100, 0, 50, 0, 10, 10), 1e-6f);
         assertEquals(0.4f, Raw.sweepCircleCircle(0, 0, 5, 100, 0, 50, 0, 5), 1e-6f);

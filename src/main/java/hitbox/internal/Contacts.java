@@ -5,6 +5,10 @@ import hitbox.*;
 /**
  * The table behind {@link Contact#between}: every pair of shape kinds routed to the code for
  * that pair, plus the one tie rule every contact uses.
+ *
+ * <p>This class is longer than most (about 480 lines) because the table is one place for all
+ * 21 unordered pairs of kinds, with the two-circle and two-box contacts on plain floats that
+ * used to be {@code Contact}'s raw forms (issue 30 kept them here, as the kernels they are).
  */
 public final class Contacts {
     private Contacts() {
