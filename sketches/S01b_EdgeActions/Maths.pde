@@ -89,6 +89,6 @@ void drawMaths(Set<Side> crossed) {
     rule = "an edge crossed: that speed = 0, and the ball put back\n"
         + "inside: x kept between r and width - r (Edges.circleClampX)";
   }
-  Overlay.label(g, 8, 30, "crossed: " + (crossed.isEmpty() ? "none" : crossed) + "\n" + rule,
+  Overlay.label(g, 8, 30, "crossed: " + (crossed.isEmpty() ? "NONE" : crossed) + "\n" + rule,
       crossed.isEmpty() ? Overlay.MISS : Overlay.HIT);
 }
