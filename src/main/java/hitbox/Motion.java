@@ -257,7 +257,9 @@ public final class Motion {
     public record Step(float x, float y, float vx, float vy, Set<Side> blocked, Set<Side> crossed) {
 
         /**
-         * Makes a step, keeping unmodifiable copies of the sets.
+         * Makes a step, keeping unmodifiable copies of the sets. A plain carrier of
+         * {@link #bounce}'s answer: it takes any float, NaN included (the
+         * <a href="package-summary.html#bad-input">NaN rule</a>: a NaN speed stays NaN).
          *
          * @param x       the box's left edge after the frame
          * @param y       the box's top edge after the frame

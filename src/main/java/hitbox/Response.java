@@ -46,6 +46,9 @@ public final class Response {
      * already have; {@link #separate} when a must end up clear, exactly; {@link Snap#pushOut}
      * for two boxes, with the side.
      *
+     * <p>A NaN {@code share} throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
+     *
      * @param <S>     the kind of shape
      * @param a       the first shape of the contact, not null
      * @param contact the contact between a and b, not null
@@ -62,6 +65,9 @@ public final class Response {
     /**
      * Shape b pushed out of a by its share of the depth: moved along the normal by
      * {@code share * depth} (see {@link #pushOutA}).
+     *
+     * <p>A NaN {@code share} throws, naming it
+     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param <S>     the kind of shape
      * @param b       the second shape of the contact, not null
