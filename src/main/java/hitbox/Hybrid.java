@@ -23,8 +23,8 @@ import hitbox.internal.*;
  * For masks the bounds are those of the solid pixels, and masks whose bounds only touch are
  * apart (no pixel is shared).
  *
- * <p>Every {@link Result} is one of four constants, so {@link #check} allocates nothing,
- * like {@link #overlaps}; a {@link Counter} tallies which stage decided, to show how much
+ * <p>Every {@link Result} is one of four constants, so {@link #check} allocates nothing
+ * ({@code check(a, b).overlaps()} is the answer alone); a {@link Counter} tallies which stage decided, to show how much
  * work the early stages save.
  *
  * <p>It shows the idea; it does not save time in Hitbox, whose precise tests already start
