@@ -25,17 +25,17 @@ class Bouncer {
   // Reverse each blocked speed once, bounce off the window's edges, then ask the obstacles
   // again: squeezed between two, the reversed move is blocked too, so wait on that axis.
   // (Motion.bounce does these steps in one call.)
-  void bounce(int blocked) {
+  void bounce(Set<Side> blocked) {
     vx = Motion.reverseX(blocked, vx);
     vy = Motion.reverseY(blocked, vy);
-    int crossed = Edges.rectCrossed(x + vx, y + vy, size, size, width, height);
+    Set<Side> crossed = Edges.crossed(new Rect(x + vx, y + vy, size, size), width, height);
     vx = Edges.bounceX(crossed, vx);
     vy = Edges.bounceY(crossed, vy);
-    int still = Motion.rectBlocked(x, y, size, size, vx, vy, obstacles);
-    if (!Side.hasAny(still, Side.LEFT_RIGHT)) {
+    Set<Side> still = Motion.blocked(new Rect(x, y, size, size), vx, vy, obstacles);
+    if (!still.contains(Side.LEFT)) {   // a blocked axis names both its sides
       x += vx;
     }
-    if (!Side.hasAny(still, Side.TOP_BOTTOM)) {
+    if (!still.contains(Side.TOP)) {
       y += vy;
     }
   }

@@ -16,7 +16,7 @@
  * phase is needed.
  *
  * Where Hitbox differs: press l for its loop (Hitbox.pde): each bouncer asks every obstacle
- * first (Motion.rectBlocked), combines the answers, reverses once and moves only where it is
+ * first (Motion.blocked), combines the answers, reverses once and moves only where it is
  * free, so none is ever caught.
  *
  * Everything random comes from randomSeed, so every run is the same.
@@ -27,6 +27,9 @@
  * next-position boxes).
  */
 import hitbox.*;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
 import hitbox.processing.*;
 
 int obstacleCount = 100;
@@ -53,7 +56,7 @@ void setup() {
   while (bouncers.size() < bouncerCount) {
     float x = random(0, width - size);
     float y = random(0, height - size);
-    if (!Hits.any(x, y, size, size, obstacles)) {  // start in a free spot
+    if (!Hits.any(new Rect(x, y, size, size), obstacles)) {  // start in a free spot
       bouncers.add(new Bouncer(x, y, randomSpeed(), randomSpeed()));
     }
   }

@@ -2,16 +2,16 @@
 // once and move where it is free (Bouncer.bounce).
 
 void hitboxStep(Bouncer b) {
-  int blocked = Motion.NONE;
+  Set<Side> blocked = EnumSet.noneOf(Side.class);
+  Rect box = new Rect(b.x, b.y, size, size);
   for (int i = 0; i < obstacles.size(); i++) {
-    Rect o = obstacles.get(i);
-    int answer = Motion.rectBlocked(b.x, b.y, size, size, b.vx, b.vy, o.x(), o.y(), o.w(), o.h());
-    if (answer != Motion.NONE) {
+    Set<Side> answer = Motion.blocked(box, b.vx, b.vy, List.of(obstacles.get(i)));
+    if (!answer.isEmpty()) {
       glow[i] = 10;
     }
-    blocked |= answer;
+    blocked.addAll(answer);
   }
-  if (blocked != Motion.NONE) {
+  if (!blocked.isEmpty()) {
     b.changeColour();   // the homework: a hit changes its colour
     hitsThisFrame++;
   }

@@ -7,7 +7,7 @@ void drawMaths() {
   if (!hitboxDecides) {
     int caught = 0;
     for (Bouncer b : bouncers) {
-      caught += Hits.any(b.x, b.y, size, size, obstacles) ? 1 : 0;
+      caught += Hits.any(new Rect(b.x, b.y, size, size), obstacles) ? 1 : 0;
     }
     Overlay.label(g, 8, height - 48, "section 8's loop (l: Hitbox's): " + caught + " bouncers inside an obstacle now",
         caught > 0 ? Overlay.HIT : Overlay.TEXT);
@@ -21,9 +21,9 @@ void drawMaths() {
 
   // Bouncer 0, ringed, with the two boxes its check tests next frame and what they hit.
   Bouncer b = bouncers.get(0);
-  int next = Motion.rectBlocked(b.x, b.y, size, size, b.vx, b.vy, obstacles);
-  int hitX = Hits.first(b.x + b.vx, b.y, size, size, obstacles);
-  int hitY = Hits.first(b.x, b.y + b.vy, size, size, obstacles);
+  Set<Side> next = Motion.blocked(new Rect(b.x, b.y, size, size), b.vx, b.vy, obstacles);
+  int hitX = Hits.first(new Rect(b.x + b.vx, b.y, size, size), obstacles);
+  int hitY = Hits.first(new Rect(b.x, b.y + b.vy, size, size), obstacles);
   pushStyle();
   noFill();
   stroke(Overlay.GUIDE);
@@ -39,12 +39,12 @@ void drawMaths() {
   nameObstacle(hitY);
   String text = "bouncer 0\nnext x: " + (hitX >= 0 ? "hits obstacle " + hitX : "free")
       + "\nnext y: " + (hitY >= 0 ? "hits obstacle " + hitY : "free");
-  if (next == Side.ALL_BITS && hitX < 0 && hitY < 0) {
-    text += "\ncorner: hits obstacle " + Hits.first(b.x + b.vx, b.y + b.vy, size, size, obstacles);
+  if (next.size() == 4 && hitX < 0 && hitY < 0) {
+    text += "\ncorner: hits obstacle " + Hits.first(new Rect(b.x + b.vx, b.y + b.vy, size, size), obstacles);
   }
   float lx = b.x + 22 > width - 170 ? b.x - 180 : b.x + 22;
   float ly = b.y + 22 > height - 80 ? b.y - 70 : b.y + 22;
-  Overlay.label(g, lx, ly, text, next != Motion.NONE ? Overlay.HIT : Overlay.MISS);
+  Overlay.label(g, lx, ly, text, !next.isEmpty() ? Overlay.HIT : Overlay.MISS);
 }
 
 // Writes an obstacle's index next to it, so "hits obstacle 12" can be found.

@@ -28,6 +28,7 @@
  * structure's cells or boxes around the mouse).
  */
 import hitbox.*;
+import java.util.Set;
 import hitbox.processing.*;
 
 int n = 10000;
@@ -83,7 +84,7 @@ void draw() {
   for (int i = 0; i < active; i++) {
     x[i] += vx[i];
     y[i] += vy[i];
-    int crossed = Edges.rectCrossed(x[i], y[i], size, size, width, height);
+    Set<Side> crossed = Edges.crossed(new Rect(x[i], y[i], size, size), width, height);
     vx[i] = Edges.bounceX(crossed, vx[i]);
     vy[i] = Edges.bounceY(crossed, vy[i]);
     x[i] = Edges.rectClampX(x[i], size, width);

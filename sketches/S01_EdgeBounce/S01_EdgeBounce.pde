@@ -16,6 +16,7 @@
  * ball at the mouse, d shows the maths.
  */
 import hitbox.*;
+import java.util.Set;
 import hitbox.processing.*;
 
 // The ball: position, radius and speed (pixels a frame).
@@ -63,8 +64,8 @@ void draw() {
     // down the page); Edges measures from (0, 0), so it gets the ball's place in the box.
     // Then the speed is set to point back inside: abs(xSpeed) past the left edge,
     // -abs(xSpeed) past the right. Set, not flipped: a second frame in the wall keeps it.
-    int crossed = Edges.circleCrossed(x - left, y - top, r, right - left, bottom - top);
-    bounced = crossed != Edges.NONE;
+    Set<Side> crossed = Edges.crossed(new Circle(x - left, y - top, r), right - left, bottom - top);
+    bounced = !crossed.isEmpty();
     xSpeed = Edges.bounceX(crossed, xSpeed);
     ySpeed = Edges.bounceY(crossed, ySpeed);
   }

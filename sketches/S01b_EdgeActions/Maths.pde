@@ -57,7 +57,7 @@ void drawGameOver() {
 }
 
 /** Where the ball's edges are, the edges it has crossed, and the rule of this action. */
-void drawMaths(int crossed) {
+void drawMaths(Set<Side> crossed) {
   Overlay.guide(g, x - r, y, 0, y);
   Overlay.guide(g, x + r, y, width, y);
   Overlay.guide(g, x, y - r, x, 0);
@@ -89,6 +89,6 @@ void drawMaths(int crossed) {
     rule = "an edge crossed: that speed = 0, and the ball put back\n"
         + "inside: x kept between r and width - r (Edges.circleClampX)";
   }
-  Overlay.label(g, 8, 30, "crossed: " + Side.describe(crossed) + "\n" + rule,
-      crossed == Edges.NONE ? Overlay.MISS : Overlay.HIT);
+  Overlay.label(g, 8, 30, "crossed: " + (crossed.isEmpty() ? "NONE" : crossed) + "\n" + rule,
+      crossed.isEmpty() ? Overlay.MISS : Overlay.HIT);
 }

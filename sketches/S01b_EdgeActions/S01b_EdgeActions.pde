@@ -17,6 +17,7 @@
  * maths.
  */
 import hitbox.*;
+import java.util.Set;
 import hitbox.processing.*;
 
 // The ball: position, radius and speed (pixels a frame).
@@ -44,7 +45,7 @@ void draw() {
   // Which edges has the ball gone past? The same question in every mode: the centre against
   // 0, width, 0 and height, as section 1 asks it (Hitbox's Edges asks it of the ball's edge).
   boolean pastEdge = x < 0 || x > width || y < 0 || y > height;
-  int crossed = Edges.circleCrossed(x, y, r, width, height);
+  Set<Side> crossed = Edges.crossed(new Circle(x, y, r), width, height);
 
   if (action.equals("wrap") && hitboxDecides) {
     x = Edges.circleWrapX(x, r, width);   // wholly out at one side (x - r > width): in at the other
@@ -69,7 +70,7 @@ void draw() {
     if (y < 0)      { screenY--; y += height; }
   } else if (action.equals("game over") && hitboxDecides) {
     ySpeed = Edges.bounceY(crossed, ySpeed);
-    if (Side.hasAny(crossed, Side.LEFT_RIGHT)) {
+    if (crossed.contains(Side.LEFT) || crossed.contains(Side.RIGHT)) {
       endGame();
     }
   } else if (action.equals("game over")) {
@@ -82,15 +83,15 @@ void draw() {
     }
   } else {
     // Stop: stay at the edge it reached (Edges.circleClampX puts it back just inside).
-    if (Side.hasAny(crossed, Side.LEFT_RIGHT)) xSpeed = 0;
-    if (Side.hasAny(crossed, Side.TOP_BOTTOM)) ySpeed = 0;
+    if (crossed.contains(Side.LEFT) || crossed.contains(Side.RIGHT)) xSpeed = 0;
+    if (crossed.contains(Side.TOP) || crossed.contains(Side.BOTTOM)) ySpeed = 0;
     x = Edges.circleClampX(x, r, width);
     y = Edges.circleClampY(y, r, height);
   }
 
   drawScene();
   noStroke();
-  boolean atEdge = hitboxDecides ? crossed != Edges.NONE : pastEdge;
+  boolean atEdge = hitboxDecides ? !crossed.isEmpty() : pastEdge;
   fill(atEdge ? Palette.HIT : Palette.PLAYER);
   circle(x, y, 2 * r);
   if (gameOver) {

@@ -20,6 +20,7 @@
  * dist < r + circleRadius, the edges crossed), space pauses, click puts the ball at the mouse.
  */
 import hitbox.*;
+import java.util.Set;
 import hitbox.processing.*;
 
 // The circle in the middle.
@@ -50,7 +51,7 @@ void draw() {
   if (!paused) {
     x += xSpeed;
     y += ySpeed;
-    int crossed;
+    Set<Side> crossed;
     if (!hitboxDecides) {
       // Section 1 as the tutorial writes it: the centre past an edge, the speed flipped.
       if (x < 0 || x > width) {
@@ -59,10 +60,10 @@ void draw() {
       if (y < 0 || y > height) {
         ySpeed *= -1;
       }
-      crossed = Edges.pointCrossed(x, y, width, height);   // only for the edge that lights up
+      crossed = Edges.crossed(new Circle(x, y, 0), width, height);   // only for the edge that lights up
     } else {
       // Hitbox's (S01): the ball's edge, the speed's sign set, then put back at the edge.
-      crossed = Edges.circleCrossed(x, y, r, width, height);
+      crossed = Edges.crossed(new Circle(x, y, r), width, height);
       xSpeed = Edges.bounceX(crossed, xSpeed);
       ySpeed = Edges.bounceY(crossed, ySpeed);
       x = Edges.circleClampX(x, r, width);

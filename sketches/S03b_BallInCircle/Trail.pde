@@ -2,7 +2,7 @@
 
 float[] trailX = new float[14];   // past positions, oldest first
 float[] trailY = new float[14];
-int lastCrossed;                  // the window edges the ball crossed last time it bounced
+Set<Side> lastCrossed = java.util.EnumSet.noneOf(Side.class);  // the window edges the ball crossed last time it bounced
 int bounceFrame = -1000;          // when that was
 
 void startTrail() {
@@ -13,8 +13,8 @@ void startTrail() {
 }
 
 /** Remembers this frame's position, and the edges it crossed if it bounced. */
-void addToTrail(int crossed) {
-  if (crossed != Edges.NONE) {
+void addToTrail(Set<Side> crossed) {
+  if (!crossed.isEmpty()) {
     lastCrossed = crossed;
     bounceFrame = frameCount;
   }
@@ -42,15 +42,15 @@ void drawBounce() {
   }
   stroke(Palette.ACCENT, 255 - age * 10);
   strokeWeight(5);
-  if (Side.has(lastCrossed, Side.LEFT)) line(2, 0, 2, height);
-  if (Side.has(lastCrossed, Side.RIGHT)) line(width - 3, 0, width - 3, height);
-  if (Side.has(lastCrossed, Side.TOP)) line(0, 2, width, 2);
-  if (Side.has(lastCrossed, Side.BOTTOM)) line(0, height - 3, width, height - 3);
+  if (lastCrossed.contains(Side.LEFT)) line(2, 0, 2, height);
+  if (lastCrossed.contains(Side.RIGHT)) line(width - 3, 0, width - 3, height);
+  if (lastCrossed.contains(Side.TOP)) line(0, 2, width, 2);
+  if (lastCrossed.contains(Side.BOTTOM)) line(0, height - 3, width, height - 3);
   if (showMaths) {
     // Which edges the bounce crossed, as the library names them, written beside the ball on
     // the window's side of it.
-    float inX = Side.has(lastCrossed, Side.LEFT) ? 1 : (Side.has(lastCrossed, Side.RIGHT) ? -1 : 0);
-    float inY = Side.has(lastCrossed, Side.TOP) ? 1 : (Side.has(lastCrossed, Side.BOTTOM) ? -1 : 0);
-    Overlay.labelBeside(g, x + inX * (r + 6), y + inY * (r + 6), inX, inY, "crossed: " + Side.describe(lastCrossed), Palette.ACCENT);
+    float inX = lastCrossed.contains(Side.LEFT) ? 1 : (lastCrossed.contains(Side.RIGHT) ? -1 : 0);
+    float inY = lastCrossed.contains(Side.TOP) ? 1 : (lastCrossed.contains(Side.BOTTOM) ? -1 : 0);
+    Overlay.labelBeside(g, x + inX * (r + 6), y + inY * (r + 6), inX, inY, "crossed: " + lastCrossed, Palette.ACCENT);
   }
 }

@@ -45,10 +45,10 @@ void drawScene() {
     rect(zx, zy, 120, 120);
     Overlay.label(g, zx, zy + 126, "inside!\n(6 times bigger)", Overlay.HIT);
   }
-  String way = library ? "Motion.rectBlocked" : "the tutorial's code";
+  String way = library ? "Motion.blocked" : "the tutorial's code";
   Overlay.label(g, 8, 8, (paused ? "paused: n steps one frame, p goes on   " : "") + way);
   Overlay.label(g, 8, 30, "frames it ended inside the center rectangle: " + framesInside, framesInside > 0 ? Overlay.HIT : Overlay.MISS);
-  Overlay.hint(g, "l: " + (library ? "the tutorial's code" : "Motion.rectBlocked")
+  Overlay.hint(g, "l: " + (library ? "the tutorial's code" : "Motion.blocked")
       + "   c: aim at the corner   p: pause   n: one frame   d: show the maths");
 }
 
@@ -67,7 +67,7 @@ void drawMaths() {
     // The corner case: neither axis alone hits, the diagonal move does.
     nextBox(nextX, nextY, true);
     Overlay.label(g, nextX + w + 6, nextY + h + 6, library
-        ? "next across and down (corner): colliding,\nMotion.rectBlocked reverses both"
+        ? "next across and down (corner): colliding,\nMotion.blocked reverses both"
         : "next across and down (corner): colliding,\nbut the tutorial's code never tests it", Overlay.HIT);
   }
   stroke(Palette.NEUTRAL);

@@ -16,7 +16,7 @@
  * (the counter at the top). The tutorial's window check looks where the rectangle is, not
  * where it will be, so it pokes out of the window for a frame at each edge.
  *
- * Where Hitbox differs: press l for Motion.rectBlocked, which makes the same two checks,
+ * Where Hitbox differs: press l for Motion.blocked, which makes the same two checks,
  * also tests the diagonal move and reports both axes for a corner hit; Edges checks the
  * window at the next position too. A check of the next position should never let it in.
  *
@@ -24,10 +24,12 @@
  * (d): when a next-position box turns red, that speed reverses. Set bouncingRectSpeedX to
  * 250: it jumps clean over now and then, because the check only looks where it lands, not
  * along the way (beyond the tutorial: Hitbox's Sweep looks at the path, see S10e).
- * Keys: l Motion.rectBlocked / the tutorial's code, c aim at the corner, p pause, n one
+ * Keys: l Motion.blocked / the tutorial's code, c aim at the corner, p pause, n one
  * frame while paused, d shows the maths.
  */
 import hitbox.*;
+import java.util.List;
+import java.util.Set;
 import hitbox.processing.*;
 
 float centerRectX = 220;
@@ -41,7 +43,7 @@ float bouncingRectHeight = 40;
 float bouncingRectSpeedX = 3.5;
 float bouncingRectSpeedY = 2.5;
 
-boolean library = false;    // l: Motion.rectBlocked instead of the tutorial's ifs
+boolean library = false;    // l: Motion.blocked instead of the tutorial's ifs
 int framesInside = 0;       // frames the rectangle ended inside the center rectangle
 boolean showMaths, paused, stepOnce;
 
@@ -90,12 +92,12 @@ void move() {
   } else {
     // Hitbox: the same two checks, and the diagonal one, in a call; then the window, also
     // at the next position.
-    int blocked = Motion.rectBlocked(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight,
-        bouncingRectSpeedX, bouncingRectSpeedY, centerRectX, centerRectY, centerRectWidth, centerRectHeight);
+    Set<Side> blocked = Motion.blocked(new Rect(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight),
+        bouncingRectSpeedX, bouncingRectSpeedY, List.of(new Rect(centerRectX, centerRectY, centerRectWidth, centerRectHeight)));
     bouncingRectSpeedX = Motion.reverseX(blocked, bouncingRectSpeedX);
     bouncingRectSpeedY = Motion.reverseY(blocked, bouncingRectSpeedY);
-    int crossed = Edges.rectCrossed(bouncingRectX + bouncingRectSpeedX, bouncingRectY + bouncingRectSpeedY,
-        bouncingRectWidth, bouncingRectHeight, width, height);
+    Set<Side> crossed = Edges.crossed(new Rect(bouncingRectX + bouncingRectSpeedX, bouncingRectY + bouncingRectSpeedY,
+        bouncingRectWidth, bouncingRectHeight), width, height);
     bouncingRectSpeedX = Edges.bounceX(crossed, bouncingRectSpeedX);
     bouncingRectSpeedY = Edges.bounceY(crossed, bouncingRectSpeedY);
   }

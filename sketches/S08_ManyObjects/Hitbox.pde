@@ -1,29 +1,34 @@
 // Hitbox's loop (key l): ask every rectangle first, reverse once, then move only where it is
-// free. Motion.rectBlocked is section 6's next-position check, its answer a Side mask.
+// free. Motion.blocked is section 6's next-position check, its answer the blocked axes' sides.
 
 void hitboxStep() {
-  int blocked = blockedByAny(bouncingRectSpeedX, bouncingRectSpeedY);
+  Set<Side> blocked = blockedByAny(bouncingRectSpeedX, bouncingRectSpeedY);
   bouncingRectSpeedX = Motion.reverseX(blocked, bouncingRectSpeedX);
   bouncingRectSpeedY = Motion.reverseY(blocked, bouncingRectSpeedY);
-  int still = blockedByAny(bouncingRectSpeedX, bouncingRectSpeedY);   // squeezed: the reversed move is blocked too
-  if (!Side.hasAny(still, Side.LEFT_RIGHT)) {
+  Set<Side> still = blockedByAny(bouncingRectSpeedX, bouncingRectSpeedY);   // squeezed: the reversed move is blocked too
+  if (!still.contains(Side.LEFT)) {   // a blocked axis names both its sides
     bouncingRectX += bouncingRectSpeedX;
   }
-  if (!Side.hasAny(still, Side.TOP_BOTTOM)) {
+  if (!still.contains(Side.TOP)) {
     bouncingRectY += bouncingRectSpeedY;
   }
 }
 
-// Section 6's check against every rectangle, the answers combined with |.
-int blockedByAny(float speedX, float speedY) {
-  int blocked = Motion.NONE;
+// Section 6's check against every rectangle, the answers combined.
+Set<Side> blockedByAny(float speedX, float speedY) {
+  Set<Side> blocked = EnumSet.noneOf(Side.class);
   for (Rectangle o : rectangles) {
-    int answer = Motion.rectBlocked(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight,
-        speedX, speedY, o.x, o.y, o.rectWidth, o.rectHeight);
-    if (answer != Motion.NONE) {
+    Set<Side> answer = blockedBy(o, speedX, speedY);
+    if (!answer.isEmpty()) {
       o.hit();
     }
-    blocked |= answer;
+    blocked.addAll(answer);
   }
   return blocked;
+}
+
+// Section 6's check against one rectangle.
+Set<Side> blockedBy(Rectangle o, float speedX, float speedY) {
+  return Motion.blocked(new Rect(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight),
+      speedX, speedY, List.of(new Rect(o.x, o.y, o.rectWidth, o.rectHeight)));
 }

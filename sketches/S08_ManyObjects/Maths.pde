@@ -137,29 +137,25 @@ String flips(String speed, IntList by) {
 // Hitbox's loop: every obstacle's answer, combined, reversed once, then asked again.
 String hitboxPreview() {
   String said = "";
-  int blocked = Motion.NONE;
+  Set<Side> blocked = EnumSet.noneOf(Side.class);
   for (int i = 0; i < rectangles.size(); i++) {
-    Rectangle o = rectangles.get(i);
-    int answer = Motion.rectBlocked(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight,
-        bouncingRectSpeedX, bouncingRectSpeedY, o.x, o.y, o.rectWidth, o.rectHeight);
-    if (answer != Motion.NONE) {
-      said += (said.isEmpty() ? "" : ", ") + i + " says " + Side.describe(answer);
+    Set<Side> answer = blockedBy(rectangles.get(i), bouncingRectSpeedX, bouncingRectSpeedY);
+    if (!answer.isEmpty()) {
+      said += (said.isEmpty() ? "" : ", ") + i + " says " + answer;
     }
-    blocked |= answer;
+    blocked.addAll(answer);
   }
-  String text = "Hitbox's loop, next frame:\nMotion.rectBlocked: " + (said.isEmpty() ? "nobody blocks" : said)
-      + "\ncombined: " + Side.describe(blocked);
-  if (blocked == Motion.NONE) {
+  String text = "Hitbox's loop, next frame:\nMotion.blocked: " + (said.isEmpty() ? "nobody blocks" : said)
+      + "\ncombined: " + blocked;
+  if (blocked.isEmpty()) {
     return text + ", so it moves";
   }
-  int still = Motion.NONE;
+  Set<Side> still = EnumSet.noneOf(Side.class);
   for (Rectangle o : rectangles) {
-    still |= Motion.rectBlocked(bouncingRectX, bouncingRectY, bouncingRectWidth, bouncingRectHeight,
-        Motion.reverseX(blocked, bouncingRectSpeedX), Motion.reverseY(blocked, bouncingRectSpeedY),
-        o.x, o.y, o.rectWidth, o.rectHeight);
+    still.addAll(blockedBy(o, Motion.reverseX(blocked, bouncingRectSpeedX), Motion.reverseY(blocked, bouncingRectSpeedY)));
   }
-  return text + ", reversed once\nasked again: " + Side.describe(still)
-      + (Side.hasAny(still, Side.LEFT_RIGHT) ? ", waits across" : "") + (Side.hasAny(still, Side.TOP_BOTTOM) ? ", waits down" : "");
+  return text + ", reversed once\nasked again: " + still
+      + (still.contains(Side.LEFT) ? ", waits across" : "") + (still.contains(Side.TOP) ? ", waits down" : "");
 }
 
 // How wide Overlay.label draws this text: its longest line at size 12, and 8 pixels.

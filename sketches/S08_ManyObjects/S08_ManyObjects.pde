@@ -13,7 +13,7 @@
  * moves into a pillar and stays there, flickering.
  *
  * Where Hitbox differs: because of that. Press l for Hitbox's loop (Hitbox.pde): it asks
- * every rectangle first (Motion.rectBlocked), combines the answers, reverses once, and asks
+ * every rectangle first (Motion.blocked), combines the answers, reverses once, and asks
  * again before it moves, so a box with nowhere to go waits a frame.
  *
  * Try this (the tutorial's): click to add a rectangle, mousePressed below; build another
@@ -22,6 +22,9 @@
  * d shows the maths, p pauses, n steps one frame.
  */
 import hitbox.*;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
 import hitbox.processing.*;
 
 ArrayList<Rectangle> rectangles = new ArrayList<Rectangle>();

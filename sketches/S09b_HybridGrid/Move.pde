@@ -18,14 +18,14 @@ boolean obstacleUnder(float x, float y, float w, float h) {
 Sweep.Move cellsMove(Rect p, float speedX, float speedY) {
   float x = p.x();
   float y = p.y();
-  int sides = 0;
+  Set<Side> sides = EnumSet.noneOf(Side.class);
   if (obstacleUnder(x + speedX, y, p.w(), p.h())) {
     if (speedX > 0) {
       x = columnAt(x + p.w() + speedX) * cellWidth - p.w();   // against the cell's left side
-      sides |= Side.LEFT.bit();
+      sides.add(Side.LEFT);
     } else {
       x = (columnAt(x + speedX) + 1) * cellWidth;             // against its right side
-      sides |= Side.RIGHT.bit();
+      sides.add(Side.RIGHT);
     }
     speedX = 0;
   }
@@ -33,10 +33,10 @@ Sweep.Move cellsMove(Rect p, float speedX, float speedY) {
   if (obstacleUnder(x, y + speedY, p.w(), p.h())) {
     if (speedY > 0) {
       y = rowAt(y + p.h() + speedY) * cellHeight - p.h();     // on the cell's top: landed
-      sides |= Side.TOP.bit();
+      sides.add(Side.TOP);
     } else {
       y = (rowAt(y + speedY) + 1) * cellHeight;               // head against its bottom
-      sides |= Side.BOTTOM.bit();
+      sides.add(Side.BOTTOM);
     }
     speedY = 0;
   }

@@ -27,6 +27,8 @@
  * cells, d shows the maths.
  */
 import hitbox.*;
+import java.util.EnumSet;
+import java.util.Set;
 import hitbox.processing.*;
 
 float cellWidth = 24;

@@ -92,7 +92,7 @@ void move() {
       }
       Manifold touch = Contact.manifold(ball, s);   // the same contact, and where they meet
       Vec v0 = new Vec(vx, vy);
-      Vec v = mode == BOUNCE ? Response.bounce(vx, vy, c) : mode == SLIDE ? Response.slide(vx, vy, c) : v0;
+      Vec v = mode == BOUNCE ? Response.bounce(vx, vy, c.nx(), c.ny(), 1) : mode == SLIDE ? Response.slide(vx, vy, c.nx(), c.ny()) : v0;
       vx = v.x();
       vy = v.y();
       // Out along the normal by the depth, and exactly out: overlaps() is false afterwards.

@@ -56,7 +56,7 @@ void drawAll() {
   textAlign(LEFT, BOTTOM);
   textSize(14);
   text("naive: move, then Collide.circleRect", 12, naive.y - r - 26);
-  text("swept: Sweep.circleRectHit, then move", 12, swept.y - r - 26);
+  text("swept: Sweep.timeOfImpact, then move", 12, swept.y - r - 26);
   noStroke();
   fill(Palette.OBSTACLE);
   rect(wallX, wallY, wallW, wallH);

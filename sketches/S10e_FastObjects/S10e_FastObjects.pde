@@ -9,7 +9,7 @@
  * it tunnels. (Section 6's next-position check looks one step ahead, but still at one
  * position, so it misses the same way.) The tutorial does not go into fast objects; Hitbox
  * differs because no test of positions can see a wall between two of them: the bottom ball
- * asks Sweep.circleRectHit about the whole step before taking it. When, as a fraction t of
+ * asks Sweep.timeOfImpact about the whole step before taking it. When, as a fraction t of
  * this step, does the ball first touch the wall? t <= 1 means "this frame": it moves t of the
  * way and stops, touching the wall. It never tunnels, at any speed.
  *
@@ -66,7 +66,7 @@ void moveNaive() {
 
 // Hitbox's way: ask about the whole step before taking it.
 void moveSwept() {
-  Hit hit = Sweep.circleRectHit(swept.x, swept.y, r, swept.vx, 0, wallX, wallY, wallW, wallH);
+  Hit hit = Sweep.timeOfImpact(new Circle(swept.x, swept.y, r), swept.vx, 0, new Rect(wallX, wallY, wallW, wallH));
   if (hit != null && !hit.alreadyOverlapping()) {
     remember(hit);                   // for the maths overlay
     swept.x += hit.t() * swept.vx;   // only t of the way: touching the wall

@@ -28,6 +28,7 @@
  * maths (the tests the tree made this frame against the n(n-1)/2 of an all-pairs loop).
  */
 import hitbox.*;
+import java.util.Set;
 import hitbox.processing.*;
 
 BroadPhase tree = BroadPhase.quadtree();
@@ -75,7 +76,7 @@ void draw() {
   for (int i = 0; i < count; i++) {
     x[i] += vx[i];
     y[i] += vy[i];
-    int crossed = Edges.rectCrossed(x[i], y[i], w[i], h[i], width, height);
+    Set<Side> crossed = Edges.crossed(new Rect(x[i], y[i], w[i], h[i]), width, height);
     vx[i] = Edges.bounceX(crossed, vx[i]);
     vy[i] = Edges.bounceY(crossed, vy[i]);
     tree.put(i, x[i], y[i], w[i], h[i]);

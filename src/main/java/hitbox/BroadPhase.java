@@ -302,27 +302,8 @@ public interface BroadPhase {
      * Visits the boxes a ray goes into, nearest first (equal distances: smaller id first),
      * until the visitor returns false. Distances are those of {@link Ray#distanceToRect}: in
      * pixels, 0 for a box the ray starts inside, and a box is visited only if the ray goes
-     * into its inside within {@code maxDistance} (a ray along an edge, or a box of width or
+     * into its inside within its {@code maxDistance} (a ray along an edge, or a box of width or
      * height 0, is not hit).
-     *
-     * <p>A NaN or infinite origin or direction, or a NaN or negative {@code maxDistance}, throws
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param ox          the ray's origin x
-     * @param oy          the ray's origin y
-     * @param dx          the direction's x part
-     * @param dy          the direction's y part
-     * @param maxDistance how far the ray reaches, in pixels: 0 or more, may be
-     *                    {@link Float#POSITIVE_INFINITY}
-     * @param out         receives each box hit and its distance, not null
-     * @throws IllegalArgumentException as {@link Ray#Ray(float, float, float, float, float)}
-     *                                  does for the ray's values, or if {@code out} is null
-     */
-    void raycast(float ox, float oy, float dx, float dy, float maxDistance, RayVisitor out);
-
-    /**
-     * Visits the boxes a ray goes into, nearest first: see
-     * {@link #raycast(float, float, float, float, float, RayVisitor)}.
      *
      * @param ray the ray, not null
      * @param out receives each box hit and its distance, not null

@@ -156,28 +156,6 @@ public final class Collide {
     }
 
     /**
-     * Does the rectangle overlap the circle? {@link #circleRect} with the shapes the other way
-     * round, the same answer, for a sketch whose player is the rectangle (as
-     * {@link Contact#rectCircle} is to {@link Contact#circleRect}).
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x  the rectangle's left edge
-     * @param y  the rectangle's top edge
-     * @param w  the rectangle's width
-     * @param h  the rectangle's height
-     * @param cx the circle's centre x
-     * @param cy the circle's centre y
-     * @param r  the circle's radius
-     * @return true if the rectangle's inside and the circle's inside overlap
-     */
-    public static boolean rectCircle(float x, float y, float w, float h, float cx, float cy, float r) {
-        return RawTests.rectCircle(x, y, w, h, cx, cy, r);
-    }
-
-    /**
      * Does the first rectangle hold the second: is no point of the second outside the first?
      * Edges may lie on each other, so a rectangle contains itself.
      *
@@ -231,54 +209,6 @@ public final class Collide {
      */
     public static boolean circleContainsCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
         return RawTests.circleContainsCircle(x1, y1, r1, x2, y2, r2);
-    }
-
-    /**
-     * Does the circle hold the rectangle: are its four corners in the circle or on its
-     * outline? (A circle is convex, so the corners decide.)
-     *
-     * <p>Each corner's distance is compared squared, exactly for whole-number coordinates of
-     * modest size. A rectangle of width or height 0 is its segment, ends included.
-     *
-     * <p>A NaN or infinite value in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param cx the circle's centre x
-     * @param cy the circle's centre y
-     * @param r  the circle's radius
-     * @param rectX the rectangle's left edge
-     * @param rectY the rectangle's top edge
-     * @param rectW the rectangle's width
-     * @param rectH the rectangle's height
-     * @return true if the rectangle, edges included, lies in the circle, outline included
-     */
-    public static boolean circleContainsRect(float cx, float cy, float r, float rectX, float rectY, float rectW, float rectH) {
-        return RawTests.circleContainsRect(cx, cy, r, rectX, rectY, rectW, rectH);
-    }
-
-    /**
-     * Does the rectangle hold the circle: is the circle's box, {@code cx - r} to
-     * {@code cx + r} and {@code cy - r} to {@code cy + r}, within the rectangle's edges?
-     * Touching an edge from inside counts.
-     *
-     * <p>Exact for every float: each side is a sum of two floats, compared exactly. A circle
-     * of radius 0 is its centre, held when the centre is inside or on an edge (where
-     * {@link #rectPoint}, which asks about the open inside, is false).
-     *
-     * <p>A NaN or infinite value in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x  the rectangle's left edge
-     * @param y  the rectangle's top edge
-     * @param w  the rectangle's width
-     * @param h  the rectangle's height
-     * @param cx the circle's centre x
-     * @param cy the circle's centre y
-     * @param r  the circle's radius
-     * @return true if the circle, outline included, lies in the rectangle, edges included
-     */
-    public static boolean rectContainsCircle(float x, float y, float w, float h, float cx, float cy, float r) {
-        return RawTests.rectContainsCircle(x, y, w, h, cx, cy, r);
     }
 
     /**

@@ -2,221 +2,90 @@ package hitbox;
 
 import hitbox.internal.*;
 
+import java.util.Set;
+
 /**
  * The window's edges: which ones a shape has crossed, and the three things a sketch does about
  * it: bounce back, wrap around to the other side, or stay inside.
  *
  * <p>The window runs from 0 to {@code width} across and from 0 to {@code height} down
- * (Processing's {@code width} and {@code height}). Every method is static, takes plain
- * {@code float}s, allocates nothing and checks nothing, so it is safe to call every frame:
+ * (Processing's {@code width} and {@code height}). Every method is static and allocates
+ * nothing, so it is safe to call every frame:
  * <pre>{@code
- * x += vx;
- * y += vy;
- * int crossed = Edges.circleCrossed(x, y, r, width, height);
+ * ball = ball.translated(vx, vy);
+ * Set<Side> crossed = Edges.crossed(ball, width, height);
  * vx = Edges.bounceX(crossed, vx);
  * vy = Edges.bounceY(crossed, vy);
  * }</pre>
  *
  * <p>Crossing follows the <a href="package-summary.html#touching">touching rule</a>: a shape
  * that only touches an edge (a ball of radius 10 at {@code x = 10}) has not crossed it; one
- * that reaches past it, even by a little, has. The answer is a set of sides in
- * {@link Side}'s <a href="Side.html#bits">bit scheme</a> ({@code Side.LEFT.bit()} and so on),
- * or {@link #NONE}: test one with {@code Side.has(crossed, Side.LEFT)}, print them with
- * {@link Side#describe(int)}, and get an {@code EnumSet} with {@link Side#setOf}. (This
- * class's own {@code LEFT}..{@code BOTTOM}, {@code has} and {@code describe} are deprecated
- * aliases of {@code Side}'s, kept one release.)
- * A shape bigger than the window crosses both opposite edges at once.
+ * that reaches past it, even by a little, has. The answer is an unmodifiable set of
+ * {@link Side}s (see <a href="Side.html#sets">several sides at once</a>), empty when none is
+ * crossed: {@code crossed.contains(Side.LEFT)}. A shape bigger than the window crosses both
+ * opposite edges at once.
  *
  * <p>Circles are centre and radius, rectangles top-left corner and size, as everywhere in
- * Hitbox; for a point use {@link #pointCrossed}, or a circle of radius 0 with the others.
- * Nothing is checked and nothing throws (the <a href="package-summary.html#bad-input">NaN
- * rule</a>): with a NaN argument the crossing tests answer {@link #NONE}, the bounce methods
- * hand the speed back unchanged, and the wrap and clamp methods answer NaN (a NaN position)
- * or hand the position back unchanged (a NaN size or window). A negative size or window
- * counts as NaN does: no crossing, the position unchanged.
- *
- * <p>This class is longer than most (about 470 lines) for one release only: beside the
- * crossing, bounce, wrap and clamp methods it carries the deprecated aliases of
- * {@link Side}'s bits, each with the javadoc that says what to call instead.
+ * Hitbox; for a point use a circle of radius 0. The wrap and clamp methods take plain floats
+ * and check nothing (the <a href="package-summary.html#bad-input">NaN rule</a>): they answer
+ * NaN for a NaN position, and hand the position back unchanged for a NaN or negative size
+ * or window; a NaN speed comes back from the bounce methods unchanged.
  */
 public final class Edges {
     private Edges() {
     }
 
-    /** No edge crossed: the shape is inside the window (touching an edge is inside). */
-    public static final int NONE = 0;
     /**
-     * The left edge, {@code x = 0}: {@code Side.LEFT.bit()}, 1.
+     * Which edges of the window has the shape crossed? Its exact extents ({@link Shape#minX()}
+     * and the others) against the window: {@link Side#LEFT} if it reaches left of
+     * {@code x = 0}, {@link Side#RIGHT} right of {@code x = width}, {@link Side#TOP} above
+     * {@code y = 0}, {@link Side#BOTTOM} below {@code y = height}. A point is a circle of
+     * radius 0.
      *
-     * @deprecated an alias of {@link Side#LEFT}'s bit, kept one release: test a crossing with
-     *             {@code Side.has(crossed, Side.LEFT)}, build one with {@code Side.LEFT.bit()}.
-     */
-    @Deprecated
-    public static final int LEFT = 1;
-    /**
-     * The right edge, {@code x = width}: {@code Side.RIGHT.bit()}, 2.
-     *
-     * @deprecated an alias of {@link Side#RIGHT}'s bit, kept one release: use
-     *             {@code Side.has(crossed, Side.RIGHT)} or {@code Side.RIGHT.bit()}.
-     */
-    @Deprecated
-    public static final int RIGHT = 2;
-    /**
-     * The top edge, {@code y = 0}: {@code Side.TOP.bit()}, 4.
-     *
-     * @deprecated an alias of {@link Side#TOP}'s bit, kept one release: use
-     *             {@code Side.has(crossed, Side.TOP)} or {@code Side.TOP.bit()}.
-     */
-    @Deprecated
-    public static final int TOP = 4;
-    /**
-     * The bottom edge, {@code y = height}: {@code Side.BOTTOM.bit()}, 8.
-     *
-     * @deprecated an alias of {@link Side#BOTTOM}'s bit, kept one release: use
-     *             {@code Side.has(crossed, Side.BOTTOM)} or {@code Side.BOTTOM.bit()}.
-     */
-    @Deprecated
-    public static final int BOTTOM = 8;
-
-    /**
-     * Has the point gone past a window edge? A point exactly on an edge has not.
-     *
-     * <p>A NaN in any argument answers {@link #NONE}, and so does a negative size or window
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param px     the point's x
-     * @param py     the point's y
-     * @param width  the window's width
-     * @param height the window's height
-     * @return the crossed edges, a combination of {@link #LEFT}, {@link #RIGHT}, {@link #TOP}
-     *         and {@link #BOTTOM}, or {@link #NONE}
-     */
-    public static int pointCrossed(float px, float py, float width, float height) {
-        return crossed(px, px, py, py, width, height);
-    }
-
-    /**
-     * Which window edges has the circle crossed? The tutorial's bouncing ball
-     * tests its centre, {@code x < 0 || x > width}; Hitbox tests the circle's edge,
-     * {@code x < r || x > width - r}, for each edge, so the ball turns before it is half out; a circle touching an edge has not crossed
-     * it.
-     *
-     * <p>A NaN in any argument answers {@link #NONE}, and so does a negative size or window
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param cx     the circle's centre x
-     * @param cy     the circle's centre y
-     * @param r      the circle's radius (not its diameter)
-     * @param width  the window's width
-     * @param height the window's height
-     * @return the crossed edges, a combination of {@link #LEFT}, {@link #RIGHT}, {@link #TOP}
-     *         and {@link #BOTTOM}, or {@link #NONE}
-     */
-    public static int circleCrossed(float cx, float cy, float r, float width, float height) {
-        return crossed((double) cx - r, (double) cx + r, (double) cy - r, (double) cy + r, width, height);
-    }
-
-    /**
-     * Which window edges has the rectangle crossed? A rectangle touching an edge has not
-     * crossed it.
-     *
-     * <p>A NaN in any argument answers {@link #NONE}, and so does a negative size or window
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x      the rectangle's left edge
-     * @param y      the rectangle's top edge
-     * @param w      the rectangle's width
-     * @param h      the rectangle's height
-     * @param width  the window's width
-     * @param height the window's height
-     * @return the crossed edges, a combination of {@link #LEFT}, {@link #RIGHT}, {@link #TOP}
-     *         and {@link #BOTTOM}, or {@link #NONE}
-     */
-    public static int rectCrossed(float x, float y, float w, float h, float width, float height) {
-        return crossed(x, (double) x + w, y, (double) y + h, width, height);
-    }
-
-    /**
-     * Which window edges has the shape crossed? Every shape is tested by how far it reaches,
-     * in double, as {@link #circleCrossed} tests a circle: exactly as far as the shape (a
-     * polygon by its {@link Shape#bounds() bounds}, a turned ellipse a hair farther).
-     *
-     * <p>A NaN or negative window size answers {@link #NONE}
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>); a shape never holds NaN.
+     * <p>A NaN or negative {@code width} or {@code height} is no window: nothing is crossed.
      *
      * @param shape  the shape, not null
      * @param width  the window's width
      * @param height the window's height
-     * @return the crossed edges, a combination of {@link #LEFT}, {@link #RIGHT}, {@link #TOP}
-     *         and {@link #BOTTOM}, or {@link #NONE}
+     * @return the crossed edges, an unmodifiable set, empty (not null) if none, never null;
+     *         allocates nothing
      * @throws IllegalArgumentException if {@code shape} is null
      */
-    public static int crossed(Shape shape, float width, float height) {
+    public static Set<Side> crossed(Shape shape, float width, float height) {
         Check.notNull("shape", shape);
-        return crossed(shape.minX(), shape.maxX(), shape.minY(), shape.maxY(), width, height);
+        return SideSets.of(crossed(shape.minX(), shape.maxX(), shape.minY(), shape.maxY(), width, height));
     }
 
     /**
-     * The one crossing rule: strictly beyond an edge, in double so touching is exact. A NaN
-     * anywhere crosses nothing.
+     * The one crossing rule, in {@code SideSets}' bits: strictly beyond an edge, in double so
+     * touching is exact. A NaN anywhere crosses nothing. Also {@link Motion#bounce}'s, on the
+     * floats of a box's next place.
      */
-    private static int crossed(double left, double right, double top, double bottom, float width, float height) {
+    static int crossed(double left, double right, double top, double bottom, float width, float height) {
         if (Double.isNaN(left) || Double.isNaN(right) || Double.isNaN(top) || Double.isNaN(bottom)
                 || Float.isNaN(width) || Float.isNaN(height)) {
-            return NONE;
+            return 0;
         }
         // A negative size or window is no shape and no window: no answer, as for NaN (the
         // package's bad-input rule). The sums are exact in double, so left > right only for
         // a negative size.
         if (left > right || top > bottom || width < 0 || height < 0) {
-            return NONE;
+            return 0;
         }
-        int edges = NONE;
+        int edges = 0;
         if (left < 0) {
-            edges |= LEFT;
+            edges |= SideSets.LEFT;
         }
         if (right > width) {
-            edges |= RIGHT;
+            edges |= SideSets.RIGHT;
         }
         if (top < 0) {
-            edges |= TOP;
+            edges |= SideSets.TOP;
         }
         if (bottom > height) {
-            edges |= BOTTOM;
+            edges |= SideSets.BOTTOM;
         }
         return edges;
-    }
-
-    /**
-     * Is this edge among the crossed ones? Reads better than {@code (crossed & edge) != 0}.
-     *
-     * <p>Any int is taken: bits outside the scheme are ignored.
-     *
-     * @param crossed the edges from one of the crossing tests
-     * @param edge    the edge to ask about: {@link #LEFT}, {@link #RIGHT}, {@link #TOP} or
-     *                {@link #BOTTOM}
-     * @return true if {@code crossed} includes {@code edge}
-     * @deprecated kept one release; the same answer as {@link Side#hasAny(int, int)} for
-     *             the edges' bits (for one side, {@link Side#has(int, Side)} reads better:
-     *             {@code Side.has(crossed, Side.LEFT)}).
-     */
-    @Deprecated
-    public static boolean has(int crossed, int edge) {
-        return (crossed & edge) != 0;
-    }
-
-    /**
-     * The crossed edges as words, for printing: {@code "LEFT|TOP"}, or {@code "NONE"}.
-     *
-     * <p>Any int is taken: bits outside the scheme are ignored.
-     *
-     * @param crossed the edges from one of the crossing tests
-     * @return the names of the edges in {@code crossed}, joined by {@code |}, never null
-     * @deprecated kept one release; returns exactly what {@link Side#describe(int)} returns.
-     */
-    @Deprecated
-    public static String describe(int crossed) {
-        return Side.describe(crossed);
     }
 
     /**
@@ -234,13 +103,15 @@ public final class Edges {
      * <p>A NaN speed comes back NaN, unchanged
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
-     * @param crossed the edges from one of the crossing tests
+     * @param crossed the edges from {@link #crossed}, not null
      * @param vx      the horizontal speed
-     * @return {@code |vx|} if only {@link #LEFT} was crossed, {@code -|vx|} if only
-     *         {@link #RIGHT} was, {@code vx} otherwise
+     * @return {@code |vx|} if only {@link Side#LEFT} was crossed, {@code -|vx|} if only
+     *         {@link Side#RIGHT} was, {@code vx} otherwise
+     * @throws IllegalArgumentException if {@code crossed} is null
      */
-    public static float bounceX(int crossed, float vx) {
-        return bounce(crossed & (LEFT | RIGHT), LEFT, RIGHT, vx);
+    public static float bounceX(Set<Side> crossed, float vx) {
+        Check.notNull("crossed", crossed);
+        return bounce(crossed.contains(Side.LEFT), crossed.contains(Side.RIGHT), vx);
     }
 
     /**
@@ -252,21 +123,23 @@ public final class Edges {
      * <p>A NaN speed comes back NaN, unchanged
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
-     * @param crossed the edges from one of the crossing tests
+     * @param crossed the edges from {@link #crossed}, not null
      * @param vy      the vertical speed (down is positive)
-     * @return {@code |vy|} if only {@link #TOP} was crossed, {@code -|vy|} if only
-     *         {@link #BOTTOM} was, {@code vy} otherwise
+     * @return {@code |vy|} if only {@link Side#TOP} was crossed, {@code -|vy|} if only
+     *         {@link Side#BOTTOM} was, {@code vy} otherwise
+     * @throws IllegalArgumentException if {@code crossed} is null
      */
-    public static float bounceY(int crossed, float vy) {
-        return bounce(crossed & (TOP | BOTTOM), TOP, BOTTOM, vy);
+    public static float bounceY(Set<Side> crossed, float vy) {
+        Check.notNull("crossed", crossed);
+        return bounce(crossed.contains(Side.TOP), crossed.contains(Side.BOTTOM), vy);
     }
 
     /** Points v away from the one crossed edge of a pair (low edge: positive; high: negative). */
-    private static float bounce(int pair, int low, int high, float v) {
-        if (pair == low) {
+    private static float bounce(boolean low, boolean high, float v) {
+        if (low && !high) {
             return Math.abs(v);
         }
-        if (pair == high) {
+        if (high && !low) {
             return -Math.abs(v);
         }
         return v;
@@ -463,7 +336,7 @@ public final class Edges {
     /**
      * Clamps a position whose shape reaches {@code before} behind and {@code after} ahead of it.
      * The bounds are rounded towards the inside, so the float answer never crosses an edge
-     * (the crossing tests say {@link #NONE} for it).
+     * ({@link #crossed} finds no edge crossed).
      */
     private static float clamp(float pos, float before, float after, float window) {
         if (before < 0 || after < 0 || window < 0) {

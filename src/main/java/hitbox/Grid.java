@@ -808,12 +808,13 @@ public final class Grid {
      * @param mover the box, where it starts
      * @param vx    its motion this frame, x part
      * @param vy    its motion this frame, y part
-     * @return the cells' rectangles, a new list, never null
+     * @return the cells' rectangles, an unmodifiable list (as every list the shapes and
+     *         questions hand back), never null
      * @throws IllegalArgumentException as {@link #move} does: if {@code mover} is null, or the
      *                                  velocity is NaN or infinite
      */
     public java.util.List<Rect> moveObstacles(Rect mover, float vx, float vy) {
-        return GridMove.obstacles(this, mover, vx, vy);
+        return java.util.Collections.unmodifiableList(GridMove.obstacles(this, mover, vx, vy));
     }
 
     /**

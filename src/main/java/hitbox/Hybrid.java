@@ -23,8 +23,8 @@ import hitbox.internal.*;
  * For masks the bounds are those of the solid pixels, and masks whose bounds only touch are
  * apart (no pixel is shared).
  *
- * <p>Every {@link Result} is one of four constants, so {@link #check} allocates nothing,
- * like {@link #overlaps}; a {@link Counter} tallies which stage decided, to show how much
+ * <p>Every {@link Result} is one of four constants, so {@link #check} allocates nothing
+ * ({@code check(a, b).overlaps()} is the answer alone); a {@link Counter} tallies which stage decided, to show how much
  * work the early stages save.
  *
  * <p>It shows the idea; it does not save time in Hitbox, whose precise tests already start
@@ -117,19 +117,6 @@ public final class Hybrid {
         return a.overlaps(b) ? OVERLAP : APART;
     }
 
-    /**
-     * Do the shapes overlap? The same answer as {@code a.overlaps(b)}, found with the cheap
-     * stages first. Allocates nothing.
-     *
-     * @param a one shape, not null
-     * @param b the other shape, not null
-     * @return true if the shapes overlap
-     * @throws IllegalArgumentException if a shape is null
-     */
-    public static boolean overlaps(Shape a, Shape b) {
-        return check(a, b).overlaps();
-    }
-
     // ---------------------------------------------------------------- masks
 
     /**
@@ -163,23 +150,6 @@ public final class Hybrid {
         }
         // The boxes overlap, so the offset is smaller than a mask and fits an int.
         return a.overlaps(b, (int) ((long) bx - ax), (int) ((long) by - ay)) ? OVERLAP : APART;
-    }
-
-    /**
-     * Do two placed masks overlap? The same answer as {@code a.overlaps(b, bx - ax, by - ay)},
-     * found with the cheap stages first. Allocates nothing.
-     *
-     * @param a  one mask, not null
-     * @param ax where a's left column is
-     * @param ay where a's top row is
-     * @param b  the other mask, not null
-     * @param bx where b's left column is
-     * @param by where b's top row is
-     * @return true if some pixel is solid in both
-     * @throws IllegalArgumentException if a mask is null
-     */
-    public static boolean overlaps(PixelMask a, int ax, int ay, PixelMask b, int bx, int by) {
-        return check(a, ax, ay, b, bx, by).overlaps();
     }
 
     // ---------------------------------------------------------------- counting

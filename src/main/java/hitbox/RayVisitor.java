@@ -2,7 +2,7 @@ package hitbox;
 
 /**
  * Receives the boxes a ray goes into, nearest first, from
- * {@link BroadPhase#raycast(float, float, float, float, float, RayVisitor)}.
+ * {@link BroadPhase#raycast(Ray, RayVisitor)}.
  *
  * <p>Return {@code false} to stop: for line of sight or a bullet, stop at the first box and the
  * farther ones are not visited.

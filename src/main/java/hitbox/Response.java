@@ -5,16 +5,21 @@ import hitbox.internal.*;
 /**
  * What to do after a hit, given its {@link Contact}: push the shapes apart, bounce, or slide.
  *
- * <p>Positions and velocities belong to the sketch's own objects, so these methods take
- * plain floats (or a {@link Vec}) and hand back the new value; nothing is changed in place.
- * The contact's normal points from a to b, so "a" and "b" below are the first and second
- * shape given to {@link Contact#between}.
+ * <p>One call per question: {@link #pushOutA} and {@link #pushOutB} move a shape by a
+ * contact, {@link #separate} moves one shape clear of another, {@link #bounce} and
+ * {@link #slide} give a new velocity. Velocities belong to the sketch's own objects, so the
+ * velocity methods take plain floats and a normal and hand back the new value as a
+ * {@link Vec}; nothing is changed in place. The contact's normal points from a to b, so "a"
+ * and "b" below are the first and second shape given to {@link Contact#between}.
  *
  * <p>One normal convention, the package's: a {@link Contact}'s normal points from a to b, a
- * {@link Hit}'s and a {@link RayHit}'s from the mover into what it hit, and every method here
- * takes that normal as it comes. The methods on plain floats never throw (a NaN gives the
- * value back unchanged); those that take a contact or a shape check their arguments as
- * constructors do.
+ * {@link Hit}'s and a {@link RayHit}'s from the mover into what it hit, and the velocity
+ * methods take that normal as it comes: {@code Response.bounce(vx, vy, c.nx(), c.ny(), 1)}.
+ * One rule per kind of value: a velocity or normal that is NaN or infinite gives the velocity
+ * back unchanged (the values a sketch computes); a restitution or a share (numbers a sketch
+ * chooses) that is NaN, infinite or outside [0, 1] is refused with an
+ * {@link IllegalArgumentException}, in every method that takes one; a null shape or contact
+ * is refused.
  *
  * <p>Velocity responses act only when a is moving into b (its velocity has a part along the
  * normal). A velocity that already moves a away from b is returned unchanged: reflecting it
@@ -34,89 +39,12 @@ public final class Response {
     }
 
     /**
-     * Where a goes when it alone is pushed out of b: moved against the normal by the depth,
-     * so the two just touch. Which push-out: the {@code pushOut} methods move by a contact
-     * you already have (and can share the push between a and b); {@link #separate} when a
-     * must end up clear, exactly; {@link Snap#pushOut} for two boxes, with the side.
-     *
-     * @param ax      any point that moves with a (its centre or its corner)
-     * @param ay      that point's y
-     * @param contact the contact between a and b, not null
-     * @return the point's new position, never null
-     * @throws IllegalArgumentException if the contact is null or a coordinate is NaN or
-     *                                  infinite
-     */
-    public static Vec pushOutA(float ax, float ay, Contact contact) {
-        return pushOutA(ax, ay, contact, 1);
-    }
-
-    /**
-     * Where a goes when it takes a share of the push out of b: moved against the normal by
-     * {@code share * depth}. Give b the rest with {@link #pushOutB(float, float, Contact, float)
-     * pushOutB(bx, by, contact, 1 - share)} and the two just touch: 0.5 and 0.5 moves each
-     * half way, a light object can take more than a heavy one.
-     *
-     * @param ax      any point that moves with a (its centre or its corner)
-     * @param ay      that point's y
-     * @param contact the contact between a and b, not null
-     * @param share   how much of the depth a moves, from 0 (a stays) to 1 (a moves it all)
-     * @return the point's new position, never null
-     * @throws IllegalArgumentException if the contact is null, a coordinate is NaN or
-     *                                  infinite, or share is outside [0, 1]
-     */
-    public static Vec pushOutA(float ax, float ay, Contact contact, float share) {
-        return moved("ax", ax, "ay", ay, contact, -share, share);
-    }
-
-    /**
-     * Where b goes when it alone is pushed out of a: moved along the normal by the depth, so
-     * the two just touch.
-     *
-     * @param bx      any point that moves with b (its centre or its corner)
-     * @param by      that point's y
-     * @param contact the contact between a and b, not null
-     * @return the point's new position, never null
-     * @throws IllegalArgumentException if the contact is null or a coordinate is NaN or
-     *                                  infinite
-     */
-    public static Vec pushOutB(float bx, float by, Contact contact) {
-        return pushOutB(bx, by, contact, 1);
-    }
-
-    /**
-     * Where b goes when it takes a share of the push out of a: moved along the normal by
-     * {@code share * depth}. See {@link #pushOutA(float, float, Contact, float)}.
-     *
-     * @param bx      any point that moves with b (its centre or its corner)
-     * @param by      that point's y
-     * @param contact the contact between a and b, not null
-     * @param share   how much of the depth b moves, from 0 (b stays) to 1 (b moves it all)
-     * @return the point's new position, never null
-     * @throws IllegalArgumentException if the contact is null, a coordinate is NaN or
-     *                                  infinite, or share is outside [0, 1]
-     */
-    public static Vec pushOutB(float bx, float by, Contact contact, float share) {
-        return moved("bx", bx, "by", by, contact, share, share);
-    }
-
-    /**
-     * Shape a pushed out of b: {@code a.translated} against the normal by the depth. The
-     * result is the same kind of shape as a.
-     *
-     * @param <S>     the kind of shape
-     * @param a       the first shape of the contact, not null
-     * @param contact the contact between a and b, not null
-     * @return a, moved so that it just touches b, never null
-     * @throws IllegalArgumentException if a shape or the contact is null, or the move gives a
-     *                                  coordinate too large for a float
-     */
-    public static <S extends Shape> S pushOutA(S a, Contact contact) {
-        return pushOutA(a, contact, 1);
-    }
-
-    /**
-     * Shape a pushed out of b by its share of the depth (see
-     * {@link #pushOutA(float, float, Contact, float)}).
+     * Shape a pushed out of b by its share of the depth: moved against the normal by
+     * {@code share * depth}. Give b the rest with {@link #pushOutB pushOutB(b, contact, 1 - share)}
+     * and the two just touch: 1 moves a alone, 0.5 and 0.5 moves each half way, a light
+     * object can take more than a heavy one. Which push-out: this one moves by a contact you
+     * already have; {@link #separate} when a must end up clear, exactly; {@link Snap#pushOut}
+     * for two boxes, with the side.
      *
      * <p>A NaN {@code share} throws, naming it
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
@@ -135,22 +63,8 @@ public final class Response {
     }
 
     /**
-     * Shape b pushed out of a: {@code b.translated} along the normal by the depth.
-     *
-     * @param <S>     the kind of shape
-     * @param b       the second shape of the contact, not null
-     * @param contact the contact between a and b, not null
-     * @return b, moved so that it just touches a, never null
-     * @throws IllegalArgumentException if a shape or the contact is null, or the move gives a
-     *                                  coordinate too large for a float
-     */
-    public static <S extends Shape> S pushOutB(S b, Contact contact) {
-        return pushOutB(b, contact, 1);
-    }
-
-    /**
-     * Shape b pushed out of a by its share of the depth (see
-     * {@link #pushOutA(float, float, Contact, float)}).
+     * Shape b pushed out of a by its share of the depth: moved along the normal by
+     * {@code share * depth} (see {@link #pushOutA}).
      *
      * <p>A NaN {@code share} throws, naming it
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
@@ -169,73 +83,16 @@ public final class Response {
     }
 
     /**
-     * a's velocity after bouncing off b: the part along the normal is reversed and scaled by
-     * the restitution, the part along the surface is kept. Only when a moves into b; a
-     * velocity moving a away from b is returned unchanged (see the class notes).
-     *
-     * <p>When b moves too, pass a's velocity relative to b (a's minus b's) and add b's
-     * velocity back to the result. For b's own bounce, use {@link Contact#flipped()}.
-     *
-     * <p>Reference: the reflection {@code v - (1 + e)(v . n) n}; C. Ericson, <i>Real-Time
-     * Collision Detection</i>, 2005, section 3.3 (reflection about a plane).
-     *
-     * @param vx          a's velocity x
-     * @param vy          a's velocity y
-     * @param contact     the contact between a and b, not null
-     * @param restitution how much of the speed into b comes back out, from 0 (a stops
-     *                    against b) to 1 (a perfect mirror bounce)
-     * @return the new velocity, never null
-     * @throws IllegalArgumentException if the contact is null, a velocity part is NaN or
-     *                                  infinite, or restitution is outside [0, 1]
-     */
-    public static Vec bounce(float vx, float vy, Contact contact, float restitution) {
-        Check.notNull("contact", contact);
-        Check.finite("vx", vx);
-        Check.finite("vy", vy);
-        checkRestitution(restitution);
-        return bounce(vx, vy, contact.nx(), contact.ny(), restitution);
-    }
-
-    /**
-     * a's velocity after a perfect bounce off b (restitution 1): the part along the normal is
-     * reversed, as a ball off a wall. Only when a moves into b.
-     *
-     * @param vx      a's velocity x
-     * @param vy      a's velocity y
-     * @param contact the contact between a and b, not null
-     * @return the new velocity, never null
-     * @throws IllegalArgumentException if the contact is null or a velocity part is NaN or
-     *                                  infinite
-     */
-    public static Vec bounce(float vx, float vy, Contact contact) {
-        return bounce(vx, vy, contact, 1);
-    }
-
-    /**
-     * {@link #bounce(float, float, Contact, float)} for a {@link Vec} velocity.
-     *
-     * @param velocity    a's velocity, not null
-     * @param contact     the contact between a and b, not null
-     * @param restitution from 0 (stop) to 1 (perfect bounce)
-     * @return the new velocity, never null
-     * @throws IllegalArgumentException if an argument is null, the velocity is NaN or
-     *                                  infinite, or restitution is outside [0, 1]
-     */
-    public static Vec bounce(Vec velocity, Contact contact, float restitution) {
-        Check.notNull("velocity", velocity);
-        return bounce(velocity.x(), velocity.y(), contact, restitution);
-    }
-
-    /**
      * The bounce on plain floats: velocity (vx, vy) against a surface whose normal (nx, ny)
      * points from the mover into what it hits, the package's one convention: pass a
      * {@link Contact}'s, a {@link Hit}'s or a {@link RayHit}'s normal as it is,
      * {@code Response.bounce(vx, vy, hit.nx(), hit.ny(), 1)}. The normal need not have length
      * 1 (it is scaled to 1), so {@code (bx - ax, by - ay)} between two centres will do.
      *
-     * <p>Never throws (the <a href="package-summary.html#bad-input">NaN rule</a>): a NaN or
-     * infinite value, or a normal of (0, 0), gives no bounce, the velocity back unchanged; a
-     * restitution outside [0, 1] is taken as the nearest end of that range.
+     * <p>A NaN or infinite velocity or normal, or a normal of (0, 0), gives no bounce, the
+     * velocity back unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>, for
+     * the values a sketch computes). The restitution is a number the sketch chooses, and has
+     * one rule wherever the library takes one: NaN, infinite or outside [0, 1] is refused.
      *
      * @param vx          the mover's velocity x
      * @param vy          the mover's velocity y
@@ -243,12 +100,14 @@ public final class Response {
      * @param ny          the normal's y
      * @param restitution from 0 (stop) to 1 (perfect bounce)
      * @return the new velocity; unchanged if the mover is not moving into the obstacle, never null
+     * @throws IllegalArgumentException if {@code restitution} is NaN, infinite or outside [0, 1]
      */
     public static Vec bounce(float vx, float vy, float nx, float ny, float restitution) {
-        if (Check.notFinite(vx, vy, nx, ny, restitution)) {
+        checkRestitution(restitution);
+        if (Check.notFinite(vx, vy, nx, ny, 0)) {
             return new Vec(vx, vy);
         }
-        double e = Math.min(Math.max(restitution, 0), 1);
+        double e = restitution;
         double len = Math.hypot(nx, ny);
         if (len == 0) {
             return new Vec(vx, vy);
@@ -260,35 +119,6 @@ public final class Response {
         }
         double k = (1 + e) * into;
         return new Vec((float) (vx - k * ux), (float) (vy - k * uy));
-    }
-
-    /**
-     * a's velocity sliding along b: the part into b removed, the part along the surface
-     * kept, as a character walking along a wall or a box sliding down a slope. Only when a
-     * moves into b; otherwise unchanged. The same as a bounce with restitution 0.
-     *
-     * @param vx      a's velocity x
-     * @param vy      a's velocity y
-     * @param contact the contact between a and b, not null
-     * @return the new velocity, never null
-     * @throws IllegalArgumentException if the contact is null or a velocity part is NaN or
-     *                                  infinite
-     */
-    public static Vec slide(float vx, float vy, Contact contact) {
-        return bounce(vx, vy, contact, 0);
-    }
-
-    /**
-     * {@link #slide(float, float, Contact)} for a {@link Vec} velocity.
-     *
-     * @param velocity a's velocity, not null
-     * @param contact  the contact between a and b, not null
-     * @return the new velocity, never null
-     * @throws IllegalArgumentException if an argument is null or the velocity is NaN or
-     *                                  infinite
-     */
-    public static Vec slide(Vec velocity, Contact contact) {
-        return bounce(velocity, contact, 0);
     }
 
     /**
@@ -308,24 +138,14 @@ public final class Response {
     }
 
     /** (x, y) moved along the normal by {@code signedShare * depth}, after checking the share. */
-    private static Vec moved(String xName, float x, String yName, float y, Contact contact,
-                             float signedShare, float share) {
-        Check.notNull("contact", contact);
-        Check.finite(xName, x);
-        Check.finite(yName, y);
-        checkShare(share);
-        double d = (double) signedShare * contact.depth();
-        return new Vec((float) (x + d * contact.nx()), (float) (y + d * contact.ny()));
-    }
-
     /**
      * Shape a moved the shortest way out of b, so that afterwards {@code a.overlaps(b)} is
      * false, exactly, and the two touch to within float rounding. Shapes that do not overlap
      * come back unchanged. Which push-out: this one when a must end up clear of b, any pair
-     * with area; {@link #pushOutA(Shape, Contact)} to move by a contact you already have;
+     * with area; {@link #pushOutA(Shape, Contact, float)} to move by a contact you already have;
      * {@link Snap#pushOut} for two boxes, with the side.
      *
-     * <p>Why more than {@link #pushOutA(Shape, Contact)}: a contact's normal and depth are
+     * <p>Why more than {@link #pushOutA(Shape, Contact, float)}: a contact's normal and depth are
      * floats, so moving by them can leave the shapes overlapping by a rounding error (a few
      * millionths of a pixel), and a game loop that pushes out until {@code overlaps} is false
      * would never finish. This moves along the same normal, by the depth and then by the

@@ -61,19 +61,21 @@ import hitbox.internal.*;
  * </ul>
  *
  * <h2>Answers, normals and bad input</h2>
- * No hit is {@link Float#POSITIVE_INFINITY} for the {@code float} methods and {@code null}
+ * No hit is {@link Float#POSITIVE_INFINITY} for {@link #rectRect} and {@code null}
  * for the {@link Hit} methods, so {@code t <= 1} reads "it hits this frame". A hit's normal
  * points <em>from the mover into the obstacle</em> (landing on a floor gives (0, 1)), the
  * package's one convention, so it goes straight to {@link Response#bounce(float, float,
- * float, float, float)}. The methods on plain floats never throw: NaN or an infinite value in
+ * float, float, float)}. {@link #rectRect} on plain floats never throws: NaN or an infinite value in
  * any argument, or a negative size, gives "no hit". The methods on shapes check their
  * arguments as constructors do.
  *
- * <p>Three levels, as elsewhere in the library: {@link #rectRect}, {@link #circleCircle}
- * and {@link #circleRect} return only {@code t}; the {@code ...Hit} methods on plain floats and the
- * {@code timeOfImpact} methods on shapes return a {@link Hit} with the normal and the
+ * <p>One call per question: {@link #timeOfImpact(Shape, float, float, Shape)} for any moving
+ * shape against any standing one, returning a {@link Hit} with the normal and the
  * {@link Side} hit; {@link #move} walks a box through a list of obstacles, sliding along what
- * it hits (the walk itself lives in a class of its own). The maths is shared with
+ * it hits (the walk itself lives in a class of its own); {@link #turningTimeOfImpact} for a
+ * polygon that turns as it moves. One form on plain floats stays, {@link #rectRect}, because
+ * the narrow-phase table (docs/narrow-phase.md) shows the shape form of that question more
+ * than 10% slower. The maths is shared with
  * {@link Ray}: slabs for boxes, discs for round parts. Entry times are computed in
  * {@code double}: for whole-number coordinates and velocities every decision (hit or not,
  * which side) is exact.
@@ -97,7 +99,10 @@ public final class Sweep {
     // ---------------------------------------------------------------- time only
 
     /**
-     * When does a moving rectangle first overlap a standing one? Swept box against box.
+     * When does a moving rectangle first overlap a standing one? Swept box against box, on
+     * plain floats: the one form on floats this class keeps, because the narrow-phase table
+     * (docs/narrow-phase.md, "swept rect vs rect") shows
+     * {@link #timeOfImpact(Shape, float, float, Shape)} more than 10% slower on this question.
      *
      * <p>On each axis the boxes overlap during an open interval of time; the insides overlap
      * while both intervals do, from the later entry to the earlier exit.
@@ -154,56 +159,6 @@ public final class Sweep {
         return s.t();
     }
 
-    /**
-     * When does a moving circle first overlap a standing one? Swept circle against circle.
-     *
-     * <p>Solves {@code |d + t v| < r + or} for the earliest {@code t}, a quadratic in
-     * {@code t}; a path that only touches the obstacle's outline is no hit.
-     *
-     * @param x  the mover's centre x at the start
-     * @param y  the mover's centre y at the start
-     * @param r  the mover's radius
-     * @param vx the mover's motion this frame, x part
-     * @param vy the mover's motion this frame, y part
-     * @param ox the obstacle's centre x
-     * @param oy the obstacle's centre y
-     * @param or the obstacle's radius
-     * @return the time of impact in [0, 1] (see <a href="#t">what t promises</a>); 0 if the
-     *         circles already overlap (exactly when {@link Collide#circleCircle} says so);
-     *         {@link Float#POSITIVE_INFINITY} if they do not start to overlap within the
-     *         motion, or for NaN, infinite or negative input
-     */
-    public static float circleCircle(float x, float y, float r, float vx, float vy,
-                                     float ox, float oy, float or) {
-        Hit hit = circleCircleHit(x, y, r, vx, vy, ox, oy, or);
-        return hit == null ? Float.POSITIVE_INFINITY : hit.t();
-    }
-
-    /**
-     * When does a moving circle first overlap a standing rectangle? The fast ball against a
-     * thin wall or a paddle, as a time only: the same {@code t} as
-     * {@link #circleRectHit}'s, for a sketch that needs no normal.
-     *
-     * @param x  the mover's centre x at the start
-     * @param y  the mover's centre y at the start
-     * @param r  the mover's radius
-     * @param vx the mover's motion this frame, x part
-     * @param vy the mover's motion this frame, y part
-     * @param ox the obstacle's left edge
-     * @param oy the obstacle's top edge
-     * @param ow the obstacle's width
-     * @param oh the obstacle's height
-     * @return the time of impact in [0, 1] (see <a href="#t">what t promises</a>); 0 if they
-     *         already overlap (exactly when {@link Collide#circleRect} says so);
-     *         {@link Float#POSITIVE_INFINITY} if they do not start to overlap within the
-     *         motion, or for NaN, infinite or negative input
-     */
-    public static float circleRect(float x, float y, float r, float vx, float vy,
-                                   float ox, float oy, float ow, float oh) {
-        Hit hit = circleRectHit(x, y, r, vx, vy, ox, oy, ow, oh);
-        return hit == null ? Float.POSITIVE_INFINITY : hit.t();
-    }
-
     // ---------------------------------------------------------------- richer answers, on floats
 
     /**
@@ -227,7 +182,7 @@ public final class Sweep {
      * @return the hit, normal from the mover into the obstacle; null if the insides do not
      *         start to overlap within the motion, or for NaN, infinite or negative input
      */
-    public static Hit rectRectHit(float x, float y, float w, float h, float vx, float vy,
+    static Hit rectRectHit(float x, float y, float w, float h, float vx, float vy,
                                   float ox, float oy, float ow, float oh) {
         if (Check.notFinite(x, y, w, h, vx) || Check.notFinite(vy, ox, oy, ow, oh)) {
             return null;
@@ -240,7 +195,7 @@ public final class Sweep {
     /**
      * Where does a moving circle first run into a standing one?
      *
-     * <p>Same time as {@link #circleCircle}; the normal points from the mover's centre to the
+     * <p>The normal points from the mover's centre to the
      * obstacle's at the impact, and the side is the one the normal points into.
      *
      * @param x  the mover's centre x at the start
@@ -254,7 +209,7 @@ public final class Sweep {
      * @return the hit, or null if the circles do not start to overlap within the motion, or
      *         for NaN, infinite or negative input
      */
-    public static Hit circleCircleHit(float x, float y, float r, float vx, float vy,
+    static Hit circleCircleHit(float x, float y, float r, float vx, float vy,
                                       float ox, float oy, float or) {
         Earliest e = SweptPairs.circleCircleEntry(x, y, r, vx, vy, ox, oy, or);
         if (!e.found() && !(Float.isFinite(x) && Float.isFinite(y) && r >= 0 && Float.isFinite(vx) && Float.isFinite(vy)
@@ -292,7 +247,7 @@ public final class Sweep {
      *         says they already overlap), or null if they do not start to overlap within the
      *         motion, or for NaN, infinite or negative input
      */
-    public static Hit circleRectHit(float cx, float cy, float r, float vx, float vy,
+    static Hit circleRectHit(float cx, float cy, float r, float vx, float vy,
                                     float rectX, float rectY, float rectW, float rectH) {
         Earliest e = SweptPairs.circleRectEntry(cx, cy, r, vx, vy, rectX, rectY, rectW, rectH);
         if (!e.found() && (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(rectX, rectY, rectW, rectH, 0)
@@ -329,7 +284,7 @@ public final class Sweep {
      * @return the hit, or null if the segment does not reach the rectangle's inside within
      *         the motion, or for NaN, infinite or negative input
      */
-    public static Hit rectSegmentHit(float x, float y, float w, float h, float vx, float vy,
+    static Hit rectSegmentHit(float x, float y, float w, float h, float vx, float vy,
                                      float x1, float y1, float x2, float y2) {
         Earliest e = SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2);
         Earliest grown = SweptPairs.decided(e) ? e
@@ -359,7 +314,7 @@ public final class Sweep {
      * @return the hit, or null if the circle does not reach the segment within the motion,
      *         or for NaN, infinite or negative input
      */
-    public static Hit circleSegmentHit(float cx, float cy, float r, float vx, float vy,
+    static Hit circleSegmentHit(float cx, float cy, float r, float vx, float vy,
                                        float x1, float y1, float x2, float y2) {
         Earliest e = SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2);
         Earliest grown = SweptPairs.decided(e) ? e
@@ -383,7 +338,7 @@ public final class Sweep {
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
-    public static Hit timeOfImpact(Rect mover, float vx, float vy, Rect obstacle) {
+    private static Hit timeOfImpact(Rect mover, float vx, float vy, Rect obstacle) {
         checkArgs(mover, vx, vy, obstacle);
         return rectRectHit(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy,
                 obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
@@ -400,7 +355,7 @@ public final class Sweep {
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
-    public static Hit timeOfImpact(Circle mover, float vx, float vy, Circle obstacle) {
+    private static Hit timeOfImpact(Circle mover, float vx, float vy, Circle obstacle) {
         checkArgs(mover, vx, vy, obstacle);
         return circleCircleHit(mover.x(), mover.y(), mover.r(), vx, vy,
                 obstacle.x(), obstacle.y(), obstacle.r());
@@ -417,7 +372,7 @@ public final class Sweep {
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
-    public static Hit timeOfImpact(Circle mover, float vx, float vy, Rect obstacle) {
+    private static Hit timeOfImpact(Circle mover, float vx, float vy, Rect obstacle) {
         checkArgs(mover, vx, vy, obstacle);
         return circleRectHit(mover.x(), mover.y(), mover.r(), vx, vy,
                 obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
@@ -435,7 +390,7 @@ public final class Sweep {
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
-    public static Hit timeOfImpact(Rect mover, float vx, float vy, Circle obstacle) {
+    private static Hit timeOfImpact(Rect mover, float vx, float vy, Circle obstacle) {
         checkArgs(mover, vx, vy, obstacle);
         float x = mover.x(), y = mover.y(), w = mover.w(), h = mover.h();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
@@ -459,7 +414,7 @@ public final class Sweep {
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
-    public static Hit timeOfImpact(Rect mover, float vx, float vy, Segment obstacle) {
+    private static Hit timeOfImpact(Rect mover, float vx, float vy, Segment obstacle) {
         checkArgs(mover, vx, vy, obstacle);
         return rectSegmentHit(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy,
                 obstacle.x1(), obstacle.y1(), obstacle.x2(), obstacle.y2());
@@ -477,7 +432,7 @@ public final class Sweep {
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
-    public static Hit timeOfImpact(Segment mover, float vx, float vy, Rect obstacle) {
+    private static Hit timeOfImpact(Segment mover, float vx, float vy, Rect obstacle) {
         checkArgs(mover, vx, vy, obstacle);
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float rectX = obstacle.x(), rectY = obstacle.y(), rectW = obstacle.w(), rectH = obstacle.h();
@@ -502,7 +457,7 @@ public final class Sweep {
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
-    public static Hit timeOfImpact(Circle mover, float vx, float vy, Segment obstacle) {
+    private static Hit timeOfImpact(Circle mover, float vx, float vy, Segment obstacle) {
         checkArgs(mover, vx, vy, obstacle);
         return circleSegmentHit(mover.x(), mover.y(), mover.r(), vx, vy,
                 obstacle.x1(), obstacle.y1(), obstacle.x2(), obstacle.y2());
@@ -520,7 +475,7 @@ public final class Sweep {
      * @return the hit, or null if there is none within the motion
      * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
      */
-    public static Hit timeOfImpact(Segment mover, float vx, float vy, Circle obstacle) {
+    private static Hit timeOfImpact(Segment mover, float vx, float vy, Circle obstacle) {
         checkArgs(mover, vx, vy, obstacle);
         float x1 = mover.x1(), y1 = mover.y1(), x2 = mover.x2(), y2 = mover.y2();
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
@@ -754,7 +709,7 @@ public final class Sweep {
     /**
      * Where {@link #move} left a box: its position, the velocity to keep for the next frame
      * and the sides of the obstacles it hit on the way. A move can hit several sides (a floor
-     * and a wall), so it gives them as bits, {@link #sides()}, like {@link Edges} and
+     * and a wall), so it gives them as a set, {@link #sides()}, like {@link Edges} and
      * {@link Motion}; a result with one side gives it as {@code side()} (see
      * <a href="Side.html#results">the side of a result</a>).
      *
@@ -763,11 +718,11 @@ public final class Sweep {
      * @param vx    the velocity to keep, x part: the one passed in, or 0 if a wall stopped it
      * @param vy    the velocity to keep, y part: the one passed in, or 0 if it landed or hit
      *              its head
-     * @param sides the obstacle sides hit, in {@link Side}'s <a href="Side.html#bits">bit
-     *              scheme</a> ({@code Side.TOP.bit()} if it landed, and so on); read it with
-     *              {@link #hit(Side)} or {@link #sideSet()}
+     * @param sides the obstacle sides hit, an unmodifiable set (see
+     *              <a href="Side.html#sets">several sides at once</a>), empty if none; read it
+     *              with {@link #hit(Side)} or {@code contains}
      */
-    public record Move(float x, float y, float vx, float vy, int sides) {
+    public record Move(float x, float y, float vx, float vy, java.util.Set<Side> sides) {
 
         /**
          * Makes a move result, checking its values.
@@ -776,20 +731,18 @@ public final class Sweep {
          * @param y the box's top edge after the move
          * @param vx the velocity to keep, x part: the one passed in, or 0 if a wall stopped it
          * @param vy the velocity to keep, y part: the one passed in, or 0 if it landed or hit its head
-         * @param sides the obstacle sides hit, in {@link Side}'s bit scheme
+         * @param sides the obstacle sides hit, not null (kept as an unmodifiable set; {@link Side#NONE}
+         *              in it names no side and is left out)
          *
-         * @throws IllegalArgumentException if a value is NaN or infinite, or {@code sides}
-         *                                  has a bit that names no side
+         * @throws IllegalArgumentException if a value is NaN or infinite, or {@code sides} is
+         *                                  null or holds null
          */
         public Move {
             Check.finite("x", x);
             Check.finite("y", y);
             Check.finite("vx", vx);
             Check.finite("vy", vy);
-            if ((sides & ~Side.ALL_BITS) != 0) {
-                throw new IllegalArgumentException("sides must only have the bits of TOP, BOTTOM, LEFT and RIGHT"
-                        + " (Side.ALL_BITS), was " + sides);
-            }
+            sides = SideSets.of(SideSets.bits(Check.notNull("sides", sides)));
         }
 
         /**
@@ -801,12 +754,8 @@ public final class Sweep {
          * @throws IllegalArgumentException if {@code side} is null
          */
         public boolean hit(Side side) {
-            return Side.has(sides, side);
-        }
-
-        /** @return the obstacle sides hit, as a new set (empty if it hit nothing), never null */
-        public java.util.EnumSet<Side> sideSet() {
-            return Side.setOf(sides);
+            Check.notNull("side", side);
+            return side == Side.NONE ? sides.isEmpty() : sides.contains(side);
         }
 
         /** @return true if the box came down on the top of an obstacle: it stands, and may jump */
@@ -826,7 +775,7 @@ public final class Sweep {
 
         /** @return true if the box hit anything at all */
         public boolean hitAnything() {
-            return sides != 0;
+            return !sides.isEmpty();
         }
     }
 

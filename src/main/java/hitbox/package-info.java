@@ -83,14 +83,9 @@
  *   <li><b>Sides.</b> Every "which side" answer is a {@link hitbox.Side}, named from the
  *       obstacle (or the window): {@code TOP} is landed on, {@code BOTTOM} hit from below. A
  *       normal gives its side by one rule, {@link hitbox.Side#ofNormal}. Answers that name
- *       several sides at once ({@link hitbox.Edges}, {@link hitbox.Motion},
- *       {@link hitbox.Sweep.Move#sides()}) are {@code int}s in one bit scheme, LEFT 1, RIGHT 2,
- *       TOP 4, BOTTOM 8 ({@link hitbox.Side#bit()}), read with {@link hitbox.Side#has},
- *       {@link hitbox.Side#hasAny} or {@link hitbox.Side#setOf} (an {@code EnumSet}) and
- *       printed with {@link hitbox.Side#describe}; {@code Edges} and {@code Motion} take
- *       and give these bits (their own {@code LEFT}..{@code BOTTOM}, {@code X}, {@code Y},
- *       {@code BOTH}, {@code has} and {@code describe} are deprecated aliases, kept one
- *       release). A result that names one side gives it as {@code side()}
+ *       several sides at once ({@link hitbox.Edges#crossed}, {@link hitbox.Motion#blocked},
+ *       {@link hitbox.Sweep.Move#sides()}) are unmodifiable {@code Set<Side>}s, empty when
+ *       there are none, never holding {@code NONE}. A result that names one side gives it as {@code side()}
  *       ({@link hitbox.Hit}, {@link hitbox.RayHit}, {@link hitbox.Contact},
  *       {@link hitbox.Snap.Push}).</li>
  *   <li><b>No result.</b> An answer that is an object is {@code null} when there is none (no
@@ -178,7 +173,7 @@
  * <ul>
  *   <li>{@link hitbox.Response#separate}: a shape must end up clear of another, exactly
  *       ({@code overlaps} is false afterwards), for any pair with area. The default.</li>
- *   <li>{@link hitbox.Response#pushOutA(hitbox.Shape, hitbox.Contact)} and {@code pushOutB}: you already
+ *   <li>{@link hitbox.Response#pushOutA(hitbox.Shape, hitbox.Contact, float)} and {@code pushOutB}: you already
  *       have the {@link hitbox.Contact} and move by its depth, one shape or both (a
  *       {@code share} each); may leave a rounding hair of overlap.</li>
  *   <li>{@link hitbox.Snap#pushOut(hitbox.Rect, hitbox.Rect)}: two boxes, pushed along one axis, with the
@@ -198,7 +193,6 @@
  * {@link hitbox.Separation} (how far apart, and the closest points) or null when the shapes
  * overlap, {@code timeOfImpact} a
  * {@link hitbox.Hit} or null (its time in [0, 1]), {@code distance...} a length or
- * {@code +Infinity}; {@link hitbox.Hits#first} an index, {@link hitbox.Hits#firstShape} the
- * shape.
+ * {@code +Infinity}; {@link hitbox.Hits#first} an index.
  */
 package hitbox;

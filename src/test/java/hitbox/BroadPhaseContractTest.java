@@ -471,9 +471,9 @@ class BroadPhaseContractTest {
         refused(bp, before, "out must not be null", () -> bp.query(0, 0, 1, 1, null));
         refused(bp, before, "shape must not be null", () -> bp.query((Shape) null, ids));
         refused(bp, before, "out must not be null", () -> bp.query(new Circle(0, 0, 1), null));
-        refused(bp, before, "direction (dx, dy) must not be (0, 0)", () -> bp.raycast(0, 0, 0, 0, 10, (i, d) -> true));
-        refused(bp, before, "maxDistance must be >= 0", () -> bp.raycast(0, 0, 1, 0, -1, (i, d) -> true));
-        refused(bp, before, "ox must be a finite number, was NaN", () -> bp.raycast(Float.NaN, 0, 1, 0, 1, (i, d) -> true));
+        refused(bp, before, "direction (dx, dy) must not be (0, 0)", () -> bp.raycast(new Ray(0, 0, 0, 0, 10), (i, d) -> true));
+        refused(bp, before, "maxDistance must be >= 0", () -> bp.raycast(new Ray(0, 0, 1, 0, -1), (i, d) -> true));
+        refused(bp, before, "ox must be a finite number, was NaN", () -> bp.raycast(new Ray(Float.NaN, 0, 1, 0, 1), (i, d) -> true));
         refused(bp, before, "ray must not be null", () -> bp.raycast(null, (i, d) -> true));
         refused(bp, before, "out must not be null", () -> bp.raycast(new Ray(0, 0, 1, 0), null));
         assertEquals(Set.of("1,2"), BroadPhaseModel.pairsOf(bp), name + " still answers after the refusals");

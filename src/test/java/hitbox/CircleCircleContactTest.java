@@ -35,12 +35,12 @@ class CircleCircleContactTest {
     })
     void circleCircle_overlapping(float x1, float y1, float r1, float x2, float y2, float r2,
                                   float nx, float ny, float depth) {
-        Contact c = Contact.circleCircle(x1, y1, r1, x2, y2, r2);
+        Contact c = Raw.contactCircleCircle(x1, y1, r1, x2, y2, r2);
         assertNotNull(c);
         assertEquals(nx, c.nx(), 1e-6);
         assertEquals(ny, c.ny(), 1e-6);
         assertEquals(depth, c.depth(), 1e-5);
-        assertReversed(c, Contact.circleCircle(x2, y2, r2, x1, y1, r1));
+        assertReversed(c, Raw.contactCircleCircle(x2, y2, r2, x1, y1, r1));
         assertEquals(c, new Circle(x1, y1, r1).contact(new Circle(x2, y2, r2)));
     }
 
@@ -54,8 +54,8 @@ class CircleCircleContactTest {
         "0, 0, 0, 3, 4, 0",         // two points apart
     })
     void circleCircle_touchingOrApart_isNull(float x1, float y1, float r1, float x2, float y2, float r2) {
-        assertNull(Contact.circleCircle(x1, y1, r1, x2, y2, r2));
-        assertNull(Contact.circleCircle(x2, y2, r2, x1, y1, r1));
+        assertNull(Raw.contactCircleCircle(x1, y1, r1, x2, y2, r2));
+        assertNull(Raw.contactCircleCircle(x2, y2, r2, x1, y1, r1));
     }
 
     @ParameterizedTest
@@ -67,7 +67,7 @@ class CircleCircleContactTest {
     })
     void circleCircle_coincidentCentres_pushB_down(float x1, float y1, float r1, float x2, float y2, float r2, float depth) {
         // Documented: normal (0, 1), so a goes up out of b; the same in both orders.
-        for (Contact c : new Contact[] {Contact.circleCircle(x1, y1, r1, x2, y2, r2), Contact.circleCircle(x2, y2, r2, x1, y1, r1)}) {
+        for (Contact c : new Contact[] {Raw.contactCircleCircle(x1, y1, r1, x2, y2, r2), Raw.contactCircleCircle(x2, y2, r2, x1, y1, r1)}) {
             assertEquals(0, c.nx());
             assertEquals(1, c.ny());
             assertEquals(depth, c.depth());
@@ -80,16 +80,16 @@ class CircleCircleContactTest {
         "1000000, 0", "0, 1000000", "-1000000, 999999", "123456, -654321",
     })
     void circleCircle_hugeCoordinates_sameContact(float dx, float dy) {
-        Contact near = Contact.circleCircle(0, 0, 5, 3, 4, 5);
-        Contact far = Contact.circleCircle(dx, dy, 5, 3 + dx, 4 + dy, 5);
+        Contact near = Raw.contactCircleCircle(0, 0, 5, 3, 4, 5);
+        Contact far = Raw.contactCircleCircle(dx, dy, 5, 3 + dx, 4 + dy, 5);
         assertEquals(near, far);
-        assertNull(Contact.circleCircle(dx, dy, 5, 6 + dx, 8 + dy, 5), "touching stays touching far away");
+        assertNull(Raw.contactCircleCircle(dx, dy, 5, 6 + dx, 8 + dy, 5), "touching stays touching far away");
     }
 
     @Test
     void circleCircle_hairsWidthOverlap_hasPositiveDepth() {
         // Distance^2 = 10^12 - 1 against reach 10^6: depth about 5e-7, still > 0.
-        Contact c = Contact.circleCircle(0, 0, 500000, 999999, 1413, 500000);
+        Contact c = Raw.contactCircleCircle(0, 0, 500000, 999999, 1413, 500000);
         if (Collide.circleCircle(0, 0, 500000, 999999, 1413, 500000)) {
             assertNotNull(c);
             assertTrue(c.depth() > 0);
@@ -105,9 +105,9 @@ class CircleCircleContactTest {
         "0, 0, 1, 0, Infinity, 1, 'y2 must be a finite number, was Infinity'",
         "0, 0, 1, 0, 0, -2, 'r2 must be >= 0, was -2.0'",
     })
-    void circleCircle_badArguments_noContactNeverThrows(float x1, float y1, float r1, float x2, float y2, float r2, String what) {
-        // The NaN rule: the raw-float methods answer "no contact" for bad values.
-        assertNull(Contact.circleCircle(x1, y1, r1, x2, y2, r2), what);
+    void circleCircle_badArguments_areRefusedByTheShapes(float x1, float y1, float r1, float x2, float y2, float r2, String what) {
+        // The raw-float form went (issue 30): such values make no circle, so no contact is asked.
+        assertThrows(IllegalArgumentException.class, () -> Raw.contactCircleCircle(x1, y1, r1, x2, y2, r2), what);
     }
 
     // ------------------------------------------------------------------------ properties
@@ -159,9 +159,9 @@ class CircleCircleContactTest {
         int scale = r1 + r2;
         Assume.that(scale % t[2] == 0);
         float x = (float) t[0] * scale / t[2], y = (float) t[1] * scale / t[2];
-        assertNull(Contact.circleCircle(0, 0, r1, x, y, r2));
+        assertNull(Raw.contactCircleCircle(0, 0, r1, x, y, r2));
         double shy = 1.0 - 1.0 / k / scale;
-        Contact c = Contact.circleCircle(0, 0, r1, (float) (x * shy), (float) (y * shy), r2);
+        Contact c = Raw.contactCircleCircle(0, 0, r1, (float) (x * shy), (float) (y * shy), r2);
         assertNotNull(c);
         assertEquals(1.0 / k, c.depth(), 1e-5);
     }

@@ -44,7 +44,7 @@ class CircleRectContactTest {
     })
     void circleRect_overlapping(float cx, float cy, float r, float rx, float ry, float rw, float rh,
                                 float nx, float ny, float depth) {
-        Contact c = Contact.circleRect(cx, cy, r, rx, ry, rw, rh);
+        Contact c = Raw.contactCircleRect(cx, cy, r, rx, ry, rw, rh);
         assertNotNull(c);
         assertEquals(nx, c.nx(), 1e-6, "nx");
         assertEquals(ny, c.ny(), 1e-6, "ny");
@@ -52,7 +52,7 @@ class CircleRectContactTest {
         Circle circle = new Circle(cx, cy, r);
         Rect rect = new Rect(rx, ry, rw, rh);
         assertEquals(c, circle.contact(rect));
-        assertEquals(rect.contact(circle), Contact.rectCircle(rx, ry, rw, rh, cx, cy, r));
+        assertEquals(rect.contact(circle), Raw.contactRectCircle(rx, ry, rw, rh, cx, cy, r));
         assertReversedOrSymmetricTie(circle, rect, c, rect.contact(circle));
         assertPushOutTouches(circle, rect, c);
     }
@@ -70,16 +70,16 @@ class CircleRectContactTest {
         "20, 5, 10, 30, 0, 0, 10",    // circle touching a zero-width rect
     })
     void circleRect_touchingOrApart_isNull(float cx, float cy, float r, float rx, float ry, float rw, float rh) {
-        assertNull(Contact.circleRect(cx, cy, r, rx, ry, rw, rh));
-        assertNull(Contact.rectCircle(rx, ry, rw, rh, cx, cy, r));
+        assertNull(Raw.contactCircleRect(cx, cy, r, rx, ry, rw, rh));
+        assertNull(Raw.contactRectCircle(rx, ry, rw, rh, cx, cy, r));
     }
 
     @ParameterizedTest
     @CsvSource({"1000000, 0", "0, -1000000", "999999, 999999", "-123456, 654321"})
     void circleRect_hugeCoordinates_sameContact(float dx, float dy) {
-        assertEquals(Contact.circleRect(-3, -4, 10, 0, 0, 10, 10), Contact.circleRect(-3 + dx, -4 + dy, 10, dx, dy, 10, 10));
-        assertEquals(Contact.circleRect(10, 25, 5, 0, 0, 100, 50), Contact.circleRect(10 + dx, 25 + dy, 5, dx, dy, 100, 50));
-        assertNull(Contact.circleRect(-3 + dx, -4 + dy, 5, dx, dy, 10, 10), "touching stays touching far away");
+        assertEquals(Raw.contactCircleRect(-3, -4, 10, 0, 0, 10, 10), Raw.contactCircleRect(-3 + dx, -4 + dy, 10, dx, dy, 10, 10));
+        assertEquals(Raw.contactCircleRect(10, 25, 5, 0, 0, 100, 50), Raw.contactCircleRect(10 + dx, 25 + dy, 5, dx, dy, 100, 50));
+        assertNull(Raw.contactCircleRect(-3 + dx, -4 + dy, 5, dx, dy, 10, 10), "touching stays touching far away");
     }
 
     @ParameterizedTest
@@ -89,10 +89,10 @@ class CircleRectContactTest {
         "0, NaN, 1, 0, 0, 1, 1, 'cy must be a finite number, was NaN'",
         "0, 0, 1, 0, -Infinity, 1, 1, 'ry must be a finite number, was -Infinity'",
     })
-    void circleRect_badArguments_noContactNeverThrows(float cx, float cy, float r, float rx, float ry, float rw, float rh, String what) {
-        // The NaN rule: the raw-float methods answer "no contact" for bad values.
-        assertNull(Contact.circleRect(cx, cy, r, rx, ry, rw, rh), what);
-        assertNull(Contact.rectCircle(rx, ry, rw, rh, cx, cy, r), what);
+    void circleRect_badArguments_areRefusedByTheShapes(float cx, float cy, float r, float rx, float ry, float rw, float rh, String what) {
+        // The raw-float forms went (issue 30): such values make no shape, so no contact is asked.
+        assertThrows(IllegalArgumentException.class, () -> Raw.contactCircleRect(cx, cy, r, rx, ry, rw, rh), what);
+        assertThrows(IllegalArgumentException.class, () -> Raw.contactRectCircle(rx, ry, rw, rh, cx, cy, r), what);
     }
 
     // ------------------------------------------------------------------------ properties

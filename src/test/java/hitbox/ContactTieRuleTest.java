@@ -58,7 +58,7 @@ class ContactTieRuleTest {
         // Before: (1.6e-8, -1), the search's stopping place deciding.
         assertEquals(new Contact(0, 1, 1.5f), Contact.between(new Circle(0, 0, 1), new Ellipse(0, 0, 1, 0.5f)));
         assertEquals(new Contact(0, 1, 1.5f), Contact.between(new Ellipse(0, 0, 1, 0.5f), new Circle(0, 0, 1)));
-        assertEquals(new Contact(0, 1, 1.5f), Contact.ellipseCircle(0, 0, 1, 0.5f, 0, 0, 1));
+        assertEquals(new Contact(0, 1, 1.5f), Raw.contactEllipseCircle(0, 0, 1, 0.5f, 0, 0, 1));
     }
 
     @Test

@@ -46,9 +46,9 @@ class ContainmentTest {
         assertTrue(Collide.rectContainsRect(0, 0, 10, 10, 0, 0, 10, 10));
         assertTrue(Collide.rectContainsRect(0, 0, 10, 10, 2, 3, 8, 7));
         assertFalse(Collide.rectContainsRect(0, 0, 10, 10, 2, 3, 8.000001f, 7));
-        assertTrue(Collide.rectContainsCircle(0, 0, 10, 10, 5, 5, 5), "inscribed");
-        assertFalse(Collide.rectContainsCircle(0, 0, 10, 10, 5, 5, 5.000001f));
-        assertTrue(Collide.rectContainsCircle(0, 0, 10, 10, 0, 5, 0), "a point on the edge");
+        assertTrue(new Rect(0, 0, 10, 10).contains(new Circle(5, 5, 5)), "inscribed");
+        assertFalse(new Rect(0, 0, 10, 10).contains(new Circle(5, 5, 5.000001f)));
+        assertTrue(new Rect(0, 0, 10, 10).contains(new Circle(0, 5, 0)), "a point on the edge");
         assertFalse(Collide.rectPoint(0, 0, 10, 10, 0, 5), "which the open inside does not hold");
     }
 
@@ -66,8 +66,8 @@ class ContainmentTest {
         assertFalse(new Circle(3, 4, 0).contains(new Circle(3, 5, 0)));
         assertTrue(Collide.circleContainsCircle(0, 0, 10, 3, 4, 5), "touching inside at (6, 8)");
         assertFalse(Collide.circleContainsCircle(0, 0, 10, 3, 4, 5.0000005f));
-        assertTrue(Collide.circleContainsRect(0, 0, 5, -3, -4, 6, 8), "corners on the outline");
-        assertFalse(Collide.circleContainsRect(0, 0, 5, -3, -4, 6, 8.000001f));
+        assertTrue(new Circle(0, 0, 5).contains(new Rect(-3, -4, 6, 8)), "corners on the outline");
+        assertFalse(new Circle(0, 0, 5).contains(new Rect(-3, -4, 6, 8.000001f)));
         assertFalse(Collide.circleContainsCircle(0, 0, 10, 0, 0, -1), "negative radius");
         assertFalse(Collide.circleContainsCircle(0, 0, Float.POSITIVE_INFINITY, 0, 0, 1), "infinite");
         assertFalse(Collide.circleContainsCircle(Float.NaN, 0, 10, 0, 0, 1), "NaN");
@@ -227,14 +227,23 @@ class ContainmentTest {
             Circle c = new Circle(rnd.nextInt(-10, 10), rnd.nextInt(-10, 10), rnd.nextInt(0, 15));
             Circle d = new Circle(rnd.nextInt(-10, 10), rnd.nextInt(-10, 10), rnd.nextInt(0, 8));
             assertEquals(a.contains(b), Collide.rectContainsRect(a.x(), a.y(), a.w(), a.h(), b.x(), b.y(), b.w(), b.h()));
-            assertEquals(a.contains(c), Collide.rectContainsCircle(a.x(), a.y(), a.w(), a.h(), c.x(), c.y(), c.r()));
             assertEquals(c.contains(d), Collide.circleContainsCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r()));
-            assertEquals(c.contains(b), Collide.circleContainsRect(c.x(), c.y(), c.r(), b.x(), b.y(), b.w(), b.h()));
             // the formulas themselves, in exact integer arithmetic
             assertEquals(b.x() >= a.x() && b.x() + b.w() <= a.x() + a.w() && b.y() >= a.y() && b.y() + b.h() <= a.y() + a.h(),
                     a.contains(b), a + " " + b);
             long dx = (long) d.x() - (long) c.x(), dy = (long) d.y() - (long) c.y(), m = (long) c.r() - (long) d.r();
             assertEquals(m >= 0 && dx * dx + dy * dy <= m * m, c.contains(d), c + " " + d);
+            // a circle in a rect: its box within the edges; a rect in a circle: every corner within r
+            long cx = (long) c.x(), cy = (long) c.y(), r = (long) c.r();
+            assertEquals(cx - r >= (long) a.x() && cx + r <= (long) a.x() + (long) a.w()
+                    && cy - r >= (long) a.y() && cy + r <= (long) a.y() + (long) a.h(), a.contains(c), a + " " + c);
+            boolean corners = true;
+            for (long qx : new long[] {(long) b.x(), (long) b.x() + (long) b.w()}) {
+                for (long qy : new long[] {(long) b.y(), (long) b.y() + (long) b.h()}) {
+                    corners &= (qx - cx) * (qx - cx) + (qy - cy) * (qy - cy) <= r * r;
+                }
+            }
+            assertEquals(corners, c.contains(b), c + " " + b);
         }
     }
 

@@ -126,6 +126,7 @@ class GridMoveTest {
         // Swept box: x 40 to 52, y 40 to 53, over columns 3 and 4 and rows 3 and 4: solid (3, 3) and (3, 4).
         assertEquals(List.of(g.cellRect(3, 3), g.cellRect(3, 4)), cells);
         assertTrue(g.moveObstacles(new Rect(40, 40, 10, 10), 0, 0).size() <= 2);
+        assertThrows(UnsupportedOperationException.class, () -> cells.add(player), "handed back unmodifiable");
     }
 
     @Test

@@ -24,8 +24,6 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.function.Executable;
 
-// Exercises the deprecated aliases and overloads too: they are kept, and must keep answering, for one release.
-@SuppressWarnings("deprecation")
 class HitsTest {
 
     /** Obstacles around the 10 x 10 box at the origin: which ones it hits is in the tables. */
@@ -49,22 +47,15 @@ class HitsTest {
     })
     void rawRect_table(float x, float y, float w, float h, String expected) {
         int[] want = indices(expected);
-        Rect[] array = WALLS.toArray(new Rect[0]);
-        assertArrayEquals(want, Hits.all(x, y, w, h, WALLS));
-        assertArrayEquals(want, Hits.all(x, y, w, h, array));
-        assertEquals(want.length == 0 ? -1 : want[0], Hits.first(x, y, w, h, WALLS));
-        assertEquals(want.length == 0 ? -1 : want[0], Hits.first(x, y, w, h, array));
-        assertEquals(want.length, Hits.count(x, y, w, h, WALLS));
-        assertEquals(want.length, Hits.count(x, y, w, h, array));
-        assertEquals(want.length > 0, Hits.any(x, y, w, h, WALLS));
-        assertEquals(want.length > 0, Hits.any(x, y, w, h, array));
-        assertArrayEquals(want, visited(action -> Hits.each(x, y, w, h, WALLS, action)));
-        assertArrayEquals(want, visited(action -> Hits.each(x, y, w, h, array, action)));
+        assertArrayEquals(want, Hits.all(new Rect(x, y, w, h), WALLS));
+        assertEquals(want.length == 0 ? -1 : want[0], Hits.first(new Rect(x, y, w, h), WALLS));
+        assertEquals(want.length, Hits.count(new Rect(x, y, w, h), WALLS));
+        assertEquals(want.length > 0, Hits.any(new Rect(x, y, w, h), WALLS));
+        assertArrayEquals(want, visited(action -> Hits.each(new Rect(x, y, w, h), WALLS, action)));
 
         // The same answers through shapes, and in the other order: each hit wall hits the box.
         Rect box = new Rect(x, y, w, h);
         assertArrayEquals(want, Hits.all(box, WALLS));
-        assertArrayEquals(want, Hits.all(box, array));
         for (int i = 0; i < WALLS.size(); i++) {
             assertEquals(contains(want, i) ? 0 : -1, Hits.first(WALLS.get(i), List.of(box)), "wall " + i + " against the box");
         }
@@ -89,7 +80,6 @@ class HitsTest {
         int[] want = indices(expected);
         Circle c = new Circle(cx, cy, r);
         assertArrayEquals(want, Hits.all(c, others));
-        assertArrayEquals(want, Hits.all(c, others.toArray(new Shape[0])));
         for (int i = 0; i < others.size(); i++) {
             assertEquals(contains(want, i), others.get(i).overlaps(c), "other order, shape " + i);
         }
@@ -105,7 +95,7 @@ class HitsTest {
         assertArrayEquals(new int[] {0}, Hits.all(b, balls));
         assertEquals(1, Hits.count(a, balls));
         assertArrayEquals(new int[] {0, 1}, Hits.all(twinOfA, balls), "an equal but separate shape counts");
-        assertArrayEquals(new int[] {1}, Hits.all(a, new Shape[] {a, b, a}));
+        assertArrayEquals(new int[] {1}, Hits.all(a, List.of(a, b, a)));
     }
 
     @Test
@@ -114,18 +104,18 @@ class HitsTest {
         for (int i = 0; i < 50; i++) {
             stack.add(new Rect(i, i, 100, 100));
         }
-        assertArrayEquals(IntStream.range(0, 50).toArray(), Hits.all(60, 60, 1, 1, stack));
+        assertArrayEquals(IntStream.range(0, 50).toArray(), Hits.all(new Rect(60, 60, 1, 1), stack));
         assertArrayEquals(IntStream.range(0, 50).toArray(), Hits.all(new Circle(60, 60, 1), stack));
-        assertEquals(50, Hits.count(60, 60, 1, 1, stack.toArray(new Rect[0])));
+        assertEquals(50, Hits.count(new Rect(60, 60, 1, 1), stack));
     }
 
     @Test
     void emptyLists_hitNothing() {
         Rect box = new Rect(0, 0, 10, 10);
         assertEquals(-1, Hits.first(box, List.of()));
-        assertArrayEquals(new int[0], Hits.all(box, new Shape[0]));
-        assertFalse(Hits.any(0, 0, 10, 10, new Rect[0]));
-        assertEquals(0, Hits.count(0, 0, 10, 10, List.of()));
+        assertArrayEquals(new int[0], Hits.all(box, List.of()));
+        assertFalse(Hits.any(new Rect(0, 0, 10, 10), List.of()));
+        assertEquals(0, Hits.count(new Rect(0, 0, 10, 10), List.of()));
     }
 
     @Test
@@ -133,23 +123,21 @@ class HitsTest {
         Rect box = new Rect(0, 0, 10, 10);
         assertMessage("shape must not be null", () -> Hits.first(null, WALLS));
         assertMessage("others must not be null", () -> Hits.any(box, (List<Shape>) null));
-        assertMessage("others must not be null", () -> Hits.all(box, (Shape[]) null));
-        assertMessage("rects must not be null", () -> Hits.count(0, 0, 1, 1, (List<Rect>) null));
-        assertMessage("rects must not be null", () -> Hits.first(0, 0, 1, 1, (Rect[]) null));
+        assertMessage("others must not be null", () -> Hits.count(new Rect(0, 0, 1, 1), (List<Rect>) null));
         assertMessage("action must not be null", () -> Hits.each(box, WALLS, null));
-        assertMessage("action must not be null", () -> Hits.each(0, 0, 1, 1, WALLS, null));
+        assertMessage("action must not be null", () -> Hits.each(new Rect(0, 0, 1, 1), WALLS, null));
         List<Rect> withHole = Arrays.asList(new Rect(500, 500, 1, 1), null);
         assertStartsWith("others[1] is null", () -> Hits.all(box, withHole));
-        assertStartsWith("rects[1] is null", () -> Hits.any(0, 0, 1, 1, withHole));
-        assertStartsWith("rects[0] is null", () -> Hits.first(0, 0, 1, 1, new Rect[] {null}));
-        assertStartsWith("others[2] is null", () -> Hits.count(box, new Shape[] {box, new Rect(50, 50, 1, 1), null}));
+        assertStartsWith("others[1] is null", () -> Hits.any(new Rect(0, 0, 1, 1), withHole));
+        assertStartsWith("others[0] is null", () -> Hits.first(new Rect(0, 0, 1, 1), Arrays.asList((Rect) null)));
+        assertStartsWith("others[2] is null", () -> Hits.count(box, Arrays.asList(box, new Rect(50, 50, 1, 1), null)));
     }
 
     @Test
     void first_stopsAtTheFirstHitBeforeAHole() {
         // A hit before a null element is found without reaching the null.
         List<Rect> withHole = Arrays.asList(new Rect(0, 0, 5, 5), null);
-        assertEquals(0, Hits.first(1, 1, 1, 1, withHole));
+        assertEquals(0, Hits.first(new Rect(1, 1, 1, 1), withHole));
         assertTrue(Hits.any(new Rect(1, 1, 1, 1), withHole));
     }
 
@@ -180,17 +168,11 @@ class HitsTest {
             }
         }
         int[] want = reference.stream().mapToInt(Integer::intValue).toArray();
-        Shape[] array = others.toArray(new Shape[0]);
         assertArrayEquals(want, Hits.all(shape, others));
-        assertArrayEquals(want, Hits.all(shape, array));
         assertArrayEquals(want, visited(a -> Hits.each(shape, others, a)));
-        assertArrayEquals(want, visited(a -> Hits.each(shape, array, a)));
         assertEquals(want.length == 0 ? -1 : want[0], Hits.first(shape, others));
-        assertEquals(want.length == 0 ? -1 : want[0], Hits.first(shape, array));
         assertEquals(want.length, Hits.count(shape, others));
-        assertEquals(want.length, Hits.count(shape, array));
         assertEquals(want.length > 0, Hits.any(shape, others));
-        assertEquals(want.length > 0, Hits.any(shape, array));
         // Both orders: each hit, tested against the shape alone, hits it back.
         for (int i : want) {
             assertEquals(0, Hits.first(others.get(i), List.of(shape)));
@@ -203,11 +185,10 @@ class HitsTest {
             @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dx,
             @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dy) {
         int[] want = Hits.all(box, rects);
-        assertArrayEquals(want, Hits.all(box.x(), box.y(), box.w(), box.h(), rects));
+        assertArrayEquals(want, Hits.all(new Rect(box.x(), box.y(), box.w(), box.h()), rects));
         List<Rect> moved = rects.stream().map(r -> r.translated(dx, dy)).toList();
         Rect movedBox = box.translated(dx, dy);
-        assertArrayEquals(want, Hits.all(movedBox.x(), movedBox.y(), movedBox.w(), movedBox.h(),
-                moved.toArray(new Rect[0])));
+        assertArrayEquals(want, Hits.all(new Rect(movedBox.x(), movedBox.y(), movedBox.w(), movedBox.h()), moved));
     }
 
     // ---- helpers ----------------------------------------------------------------------

@@ -51,7 +51,7 @@ class HybridTest {
         assertEquals(sa.overlaps(sb), overlaps, "the table agrees with the precise test");
         assertEquals(new Hybrid.Result(overlaps, stage), Hybrid.check(sa, sb));
         assertEquals(new Hybrid.Result(overlaps, stage), Hybrid.check(sb, sa), "other order");
-        assertEquals(overlaps, Hybrid.overlaps(sa, sb));
+        assertEquals(overlaps, Hybrid.check(sa, sb).overlaps());
         Shape fa = sa.translated(1_000_000, -1_000_000), fb = sb.translated(1_000_000, -1_000_000);
         assertEquals(new Hybrid.Result(overlaps, stage), Hybrid.check(fa, fb), "far away");
     }
@@ -112,7 +112,7 @@ class HybridTest {
         PixelMask b = which.equals("DOT") ? DOT : PADDED_DOT;
         assertEquals(new Hybrid.Result(overlaps, stage), Hybrid.check(RING, ax, ay, b, bx, by));
         assertEquals(new Hybrid.Result(overlaps, stage), Hybrid.check(b, bx, by, RING, ax, ay), "other order");
-        assertEquals(overlaps, Hybrid.overlaps(RING, ax, ay, b, bx, by));
+        assertEquals(overlaps, Hybrid.check(RING, ax, ay, b, bx, by).overlaps());
     }
 
     @Test

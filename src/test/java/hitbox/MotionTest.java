@@ -19,9 +19,16 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
-// Exercises the deprecated aliases and overloads too: they are kept, and must keep answering, for one release.
-@SuppressWarnings("deprecation")
 class MotionTest {
+
+    /** The four answers, as sets: a blocked axis names both its sides. */
+    private static final Set<Side> NONE = Set.of(), X = Set.of(Side.LEFT, Side.RIGHT), Y = Set.of(Side.TOP, Side.BOTTOM),
+            BOTH = Set.of(Side.LEFT, Side.RIGHT, Side.TOP, Side.BOTTOM);
+
+    /** The table's names for exactly those four sets; any other set prints as itself (and fails). */
+    private static String describe(Set<Side> blocked) {
+        return blocked.equals(NONE) ? "NONE" : blocked.equals(X) ? "X" : blocked.equals(Y) ? "Y" : blocked.equals(BOTH) ? "BOTH" : blocked.toString();
+    }
 
     // ---- rectangle mover --------------------------------------------------------------
 
@@ -48,15 +55,12 @@ class MotionTest {
     })
     void rectBlocked_table(float x, float y, float w, float h, float vx, float vy,
                            float ox, float oy, float ow, float oh, String expected) {
-        assertEquals(expected, Motion.describe(Motion.rectBlocked(x, y, w, h, vx, vy, ox, oy, ow, oh)));
         Rect mover = new Rect(x, y, w, h);
         Rect obstacle = new Rect(ox, oy, ow, oh);
-        assertEquals(expected, Motion.describe(Motion.rectBlocked(x, y, w, h, vx, vy, obstacle)));
-        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, obstacle)));
-        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, new Rect[] {obstacle})));
-        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, List.of(obstacle))));
+        assertEquals(expected, describe(Motion.blocked(mover, vx, vy, List.of(obstacle))));
+        assertEquals(expected, describe(Motion.blocked(mover, vx, vy, List.of(obstacle, obstacle))), "the same obstacle twice");
         // The other order: the obstacle moving back at the mover sees the same axes.
-        assertEquals(expected, Motion.describe(Motion.blocked(obstacle, -vx, -vy, mover)));
+        assertEquals(expected, describe(Motion.blocked(obstacle, -vx, -vy, List.of(mover))));
     }
 
     @Test
@@ -67,8 +71,8 @@ class MotionTest {
         assertFalse(Collide.rectRect(x, y + vy, 10, 10, 12, 12, 10, 10));
         // ... yet moving would put the mover inside the obstacle.
         assertTrue(Collide.rectRect(x + vx, y + vy, 10, 10, 12, 12, 10, 10));
-        int blocked = Motion.rectBlocked(x, y, 10, 10, vx, vy, 12, 12, 10, 10);
-        assertEquals(Motion.BOTH, blocked);
+        Set<Side> blocked = Motion.blocked(new Rect(x, y, 10, 10), vx, vy, List.of(new Rect(12, 12, 10, 10)));
+        assertEquals(BOTH, blocked);
         x += Motion.reverseX(blocked, vx);
         y += Motion.reverseY(blocked, vy);
         assertFalse(Collide.rectRect(x, y, 10, 10, 12, 12, 10, 10));
@@ -77,13 +81,13 @@ class MotionTest {
     @Test
     void rectBlocked_alreadyInside_reportsBoth() {
         // Documented: the check assumes the mover starts outside.
-        assertEquals(Motion.BOTH, Motion.rectBlocked(5, 5, 10, 10, 1, 1, 0, 0, 20, 20));
+        assertEquals(BOTH, Motion.blocked(new Rect(5, 5, 10, 10), 1, 1, List.of(new Rect(0, 0, 20, 20))));
     }
 
     @Test
     void rectBlocked_nan_isNone() {
-        assertEquals(Motion.NONE, Motion.rectBlocked(0, 0, 10, 10, Float.NaN, Float.NaN, 5, 0, 10, 10));
-        assertEquals(Motion.NONE, Motion.circleBlocked(0, 0, 10, Float.NaN, Float.NaN, 5, 0, 10, 10));
+        assertEquals(NONE, Motion.blocked(new Rect(0, 0, 10, 10), Float.NaN, Float.NaN, List.of(new Rect(5, 0, 10, 10))));
+        assertEquals(NONE, Motion.blocked(new Circle(0, 0, 10), Float.NaN, Float.NaN, List.of(new Rect(5, 0, 10, 10))));
     }
 
     // ---- circle mover -----------------------------------------------------------------
@@ -103,13 +107,10 @@ class MotionTest {
     })
     void circleBlocked_table(float cx, float cy, float r, float vx, float vy,
                              float ox, float oy, float ow, float oh, String expected) {
-        assertEquals(expected, Motion.describe(Motion.circleBlocked(cx, cy, r, vx, vy, ox, oy, ow, oh)));
         Circle mover = new Circle(cx, cy, r);
         Rect obstacle = new Rect(ox, oy, ow, oh);
-        assertEquals(expected, Motion.describe(Motion.circleBlocked(cx, cy, r, vx, vy, obstacle)));
-        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, obstacle)));
-        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, new Rect[] {obstacle})));
-        assertEquals(expected, Motion.describe(Motion.blocked(mover, vx, vy, List.of(obstacle))));
+        assertEquals(expected, describe(Motion.blocked(mover, vx, vy, List.of(obstacle))));
+        assertEquals(expected, describe(Motion.blocked(mover, vx, vy, List.of(obstacle, obstacle))), "the same obstacle twice");
     }
 
     // ---- many obstacles ---------------------------------------------------------------
@@ -120,13 +121,13 @@ class MotionTest {
         Rect floor = new Rect(-50, 20, 100, 10);
         Rect far = new Rect(500, 500, 10, 10);
         Rect mover = new Rect(0, 0, 10, 10);
-        assertEquals(Motion.X, Motion.blocked(mover, 15, 15, List.of(wall)) & Motion.X);
-        assertEquals(Motion.BOTH, Motion.blocked(mover, 15, 15, List.of(far, wall, floor)));
-        assertEquals(Motion.BOTH, Motion.rectBlocked(0, 0, 10, 10, 15, 15, new Rect[] {wall, floor}));
-        assertEquals(Motion.NONE, Motion.blocked(mover, 15, 15, new Rect[] {far}));
-        assertEquals(Motion.NONE, Motion.blocked(mover, 15, 15, List.of()));
-        assertEquals(Motion.BOTH, Motion.circleBlocked(5, 5, 5, 15, 15, List.of(wall, floor)));
-        assertEquals(Motion.X, Motion.circleBlocked(5, 5, 5, 15, 0, new Rect[] {far, wall}));
+        assertTrue(Motion.blocked(mover, 15, 15, List.of(wall)).containsAll(X));
+        assertEquals(BOTH, Motion.blocked(mover, 15, 15, List.of(far, wall, floor)));
+        assertEquals(BOTH, Motion.blocked(new Rect(0, 0, 10, 10), 15, 15, List.of(wall, floor)));
+        assertEquals(NONE, Motion.blocked(mover, 15, 15, List.of(far)));
+        assertEquals(NONE, Motion.blocked(mover, 15, 15, List.of()));
+        assertEquals(BOTH, Motion.blocked(new Circle(5, 5, 5), 15, 15, List.of(wall, floor)));
+        assertEquals(X, Motion.blocked(new Circle(5, 5, 5), 15, 0, List.of(far, wall)));
     }
 
     @Property
@@ -136,38 +137,36 @@ class MotionTest {
                                            @ForAll @IntRange(min = -30, max = 30) int vy,
                                            @ForAll @Size(max = 6) List<@IntRange(min = -100, max = 100) Integer> corners) {
         List<Rect> obstacles = new ArrayList<>();
-        int rects = 0, circles = 0;
+        Set<Side> rects = EnumSet.noneOf(Side.class), circles = EnumSet.noneOf(Side.class);
         for (int i = 0; i + 1 < corners.size(); i += 2) {
             Rect o = new Rect(corners.get(i), corners.get(i + 1), 25, 15);
             obstacles.add(o);
-            rects |= Motion.rectBlocked(x, y, 20, 10, vx, vy, o);
-            circles |= Motion.circleBlocked(x, y, 8, vx, vy, o);
+            rects.addAll(Motion.blocked(new Rect(x, y, 20, 10), vx, vy, List.of(o)));
+            circles.addAll(Motion.blocked(new Circle(x, y, 8), vx, vy, List.of(o)));
         }
-        assertEquals(rects, Motion.rectBlocked(x, y, 20, 10, vx, vy, obstacles));
-        assertEquals(rects, Motion.rectBlocked(x, y, 20, 10, vx, vy, obstacles.toArray(new Rect[0])));
-        assertEquals(circles, Motion.circleBlocked(x, y, 8, vx, vy, obstacles));
-        assertEquals(circles, Motion.blocked(new Circle(x, y, 8), vx, vy, obstacles.toArray(new Rect[0])));
+        assertEquals(rects, Motion.blocked(new Rect(x, y, 20, 10), vx, vy, obstacles));
+        assertEquals(circles, Motion.blocked(new Circle(x, y, 8), vx, vy, obstacles));
     }
 
     @Test
     void blocked_nullArguments_nameTheParameter() {
         Rect r = new Rect(0, 0, 10, 10);
-        assertEquals("obstacle must not be null",
-                assertThrows(IllegalArgumentException.class, () -> Motion.blocked(r, 1, 1, (Rect) null)).getMessage());
         assertEquals("mover must not be null",
-                assertThrows(IllegalArgumentException.class, () -> Motion.blocked((Rect) null, 1, 1, r)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> Motion.blocked((Rect) null, 1, 1, List.of(r))).getMessage());
         assertEquals("mover must not be null",
-                assertThrows(IllegalArgumentException.class, () -> Motion.blocked((Circle) null, 1, 1, r)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> Motion.blocked((Circle) null, 1, 1, List.of(r))).getMessage());
         assertEquals("obstacles must not be null",
                 assertThrows(IllegalArgumentException.class, () -> Motion.blocked(r, 1, 1, (List<Rect>) null)).getMessage());
         assertEquals("obstacles must not be null",
-                assertThrows(IllegalArgumentException.class, () -> Motion.circleBlocked(0, 0, 1, 1, 1, (Rect[]) null)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> Motion.blocked(new Circle(0, 0, 1), 1, 1, (List<Rect>) null)).getMessage());
+        assertEquals("obstacles must not be null",
+                assertThrows(IllegalArgumentException.class, () -> Motion.blocked(r, 1, 1, (BroadPhase) null)).getMessage());
         List<Rect> withHole = Arrays.asList(r, null);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> Motion.rectBlocked(100, 100, 1, 1, 1, 1, withHole));
+                () -> Motion.blocked(new Rect(100, 100, 1, 1), 1, 1, withHole));
         assertTrue(e.getMessage().startsWith("obstacles[1] is null"), e.getMessage());
         e = assertThrows(IllegalArgumentException.class,
-                () -> Motion.circleBlocked(100, 100, 1, 1, 1, new Rect[] {null}));
+                () -> Motion.blocked(new Circle(100, 100, 1), 1, 1, Arrays.asList((Rect) null)));
         assertTrue(e.getMessage().startsWith("obstacles[0] is null"), e.getMessage());
     }
 
@@ -175,28 +174,33 @@ class MotionTest {
 
     @ParameterizedTest(name = "reverse({0}) of (3, -4)")
     @CsvSource({
-            "0, 3, -4",     // NONE
-            "3, -3, -4",    // X: LEFT | RIGHT in Side's bits
-            "12, 3, 4",     // Y: TOP | BOTTOM
-            "15, -3, 4",    // BOTH
+            "NONE, 3, -4",
+            "X, -3, -4",    // LEFT and RIGHT
+            "Y, 3, 4",      // TOP and BOTTOM
+            "BOTH, -3, 4",
+            "LEFT, -3, -4", // either side of an axis reverses it
+            "BOTTOM, 3, 4",
     })
-    void reverse_table(int blocked, float vx, float vy) {
-        assertEquals(vx, Motion.reverseX(blocked, 3));
-        assertEquals(vy, Motion.reverseY(blocked, -4));
+    void reverse_table(String blocked, float vx, float vy) {
+        Set<Side> sides = switch (blocked) {
+            case "NONE" -> NONE;
+            case "X" -> X;
+            case "Y" -> Y;
+            case "BOTH" -> BOTH;
+            default -> Set.of(Side.valueOf(blocked));
+        };
+        assertEquals(vx, Motion.reverseX(sides, 3));
+        assertEquals(vy, Motion.reverseY(sides, -4));
     }
 
     @Test
-    void constantsAndDescribe() {
-        assertEquals(0, Motion.NONE);
-        assertEquals(Motion.BOTH, Motion.X | Motion.Y);
-        assertEquals(0, Motion.X & Motion.Y);
-        assertTrue(Motion.has(Motion.BOTH, Motion.X));
-        assertTrue(Motion.has(Motion.Y, Motion.Y));
-        assertFalse(Motion.has(Motion.Y, Motion.X));
-        assertEquals("NONE", Motion.describe(Motion.NONE));
-        assertEquals("X", Motion.describe(Motion.X));
-        assertEquals("Y", Motion.describe(Motion.Y));
-        assertEquals("BOTH", Motion.describe(Motion.BOTH));
+    void answers_areTheSidesOfTheBlockedAxes_unmodifiable() {
+        Set<Side> both = Motion.blocked(new Rect(0, 0, 10, 10), 5, 5, List.of(new Rect(12, 12, 10, 10)));
+        assertEquals(BOTH, both);
+        assertFalse(both.contains(Side.NONE));
+        assertThrows(UnsupportedOperationException.class, () -> both.add(Side.NONE));
+        assertThrows(UnsupportedOperationException.class, () -> Motion.blocked(new Rect(0, 0, 1, 1), 0, 0, List.of()).add(Side.TOP));
+        assertThrows(IllegalArgumentException.class, () -> Motion.reverseX(null, 1));
     }
 
     // ---- properties -------------------------------------------------------------------
@@ -207,8 +211,8 @@ class MotionTest {
             @ForAll @IntRange(min = 0, max = 40) int w, @ForAll @IntRange(min = 0, max = 40) int h,
             @ForAll @IntRange(min = -30, max = 30) int vx, @ForAll @IntRange(min = -30, max = 30) int vy,
             @ForAll @IntRange(min = 0, max = 40) int ow, @ForAll @IntRange(min = 0, max = 40) int oh) {
-        assertEquals(Motion.rectBlocked(x, y, w, h, vx, vy, 0, 0, ow, oh),
-                Motion.rectBlocked(0, 0, ow, oh, -vx, -vy, x, y, w, h));
+        assertEquals(Motion.blocked(new Rect(x, y, w, h), vx, vy, List.of(new Rect(0, 0, ow, oh))),
+                Motion.blocked(new Rect(0, 0, ow, oh), -vx, -vy, List.of(new Rect(x, y, w, h))));
     }
 
     @Property
@@ -218,10 +222,10 @@ class MotionTest {
             @ForAll @IntRange(min = 0, max = 30) int r,
             @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dx,
             @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dy) {
-        assertEquals(Motion.rectBlocked(x, y, 20, 15, vx, vy, 0, 0, 30, 25),
-                Motion.rectBlocked(x + dx, y + dy, 20, 15, vx, vy, dx, dy, 30, 25));
-        assertEquals(Motion.circleBlocked(x, y, r, vx, vy, 0, 0, 30, 25),
-                Motion.circleBlocked(x + dx, y + dy, r, vx, vy, dx, dy, 30, 25));
+        assertEquals(Motion.blocked(new Rect(x, y, 20, 15), vx, vy, List.of(new Rect(0, 0, 30, 25))),
+                Motion.blocked(new Rect(x + dx, y + dy, 20, 15), vx, vy, List.of(new Rect(dx, dy, 30, 25))));
+        assertEquals(Motion.blocked(new Circle(x, y, r), vx, vy, List.of(new Rect(0, 0, 30, 25))),
+                Motion.blocked(new Circle(x + dx, y + dy, r), vx, vy, List.of(new Rect(dx, dy, 30, 25))));
     }
 
     @Property
@@ -243,7 +247,7 @@ class MotionTest {
         if (alongY || (!alongX && diagonal)) {
             expected.addAll(EnumSet.of(Side.TOP, Side.BOTTOM));
         }
-        assertEquals(expected, Side.setOf(Motion.blocked(new Rect(x, y, w, h), vx, vy, new Rect(ox, oy, ow, oh))));
+        assertEquals(expected, Motion.blocked(new Rect(x, y, w, h), vx, vy, List.of(new Rect(ox, oy, ow, oh))));
     }
 
     /** A box that moves like a sketch's: bounce off the window, then the obstacle check, then move. */
@@ -257,10 +261,10 @@ class MotionTest {
         Assume.that(!Collide.rectRect(x, y, w, h, ox, oy, ow, oh));
         float px = x, py = y, vx = startVx, vy = startVy;
         for (int frame = 0; frame < 300; frame++) {
-            int crossed = Edges.rectCrossed(px, py, w, h, 240, 240);
+            Set<Side> crossed = Edges.crossed(new Rect(px, py, w, h), 240, 240);
             vx = Edges.bounceX(crossed, vx);
             vy = Edges.bounceY(crossed, vy);
-            int blocked = Motion.rectBlocked(px, py, w, h, vx, vy, ox, oy, ow, oh);
+            Set<Side> blocked = Motion.blocked(new Rect(px, py, w, h), vx, vy, List.of(new Rect(ox, oy, ow, oh)));
             vx = Motion.reverseX(blocked, vx);
             vy = Motion.reverseY(blocked, vy);
             px += vx;
@@ -280,10 +284,10 @@ class MotionTest {
         Assume.that(!Collide.circleRect(x, y, r, ox, oy, ow, oh));
         float cx = x, cy = y, vx = startVx, vy = startVy;
         for (int frame = 0; frame < 300; frame++) {
-            int crossed = Edges.circleCrossed(cx, cy, r, 240, 240);
+            Set<Side> crossed = Edges.crossed(new Circle(cx, cy, r), 240, 240);
             vx = Edges.bounceX(crossed, vx);
             vy = Edges.bounceY(crossed, vy);
-            int blocked = Motion.circleBlocked(cx, cy, r, vx, vy, ox, oy, ow, oh);
+            Set<Side> blocked = Motion.blocked(new Circle(cx, cy, r), vx, vy, List.of(new Rect(ox, oy, ow, oh)));
             vx = Motion.reverseX(blocked, vx);
             vy = Motion.reverseY(blocked, vy);
             cx += vx;
@@ -308,16 +312,16 @@ class MotionTest {
 
     @Test
     void bounce_freePath_movesByItsSpeed() {
-        Motion.Step step = Motion.bounce(10, 10, 8, 8, 3, 2, List.of(new Rect(100, 100, 10, 10)), 200, 200);
-        assertEquals(new Motion.Step(13, 12, 3, 2, Motion.NONE, Edges.NONE), step);
+        Motion.Step step = Motion.bounce(new Rect(10, 10, 8, 8), 3, 2, List.of(new Rect(100, 100, 10, 10)), 200, 200);
+        assertEquals(new Motion.Step(13, 12, 3, 2, NONE, NONE), step);
         assertFalse(step.hitObstacle());
     }
 
     @Test
     void bounce_wallAhead_reversesTheBlockedSpeedAndMovesAway() {
         // The next x (16..24) overlaps the wall at 20; y is free.
-        Motion.Step step = Motion.bounce(10, 10, 8, 8, 6, 2, List.of(new Rect(20, 0, 10, 100)), 200, 200);
-        assertEquals(new Motion.Step(4, 12, -6, 2, Motion.X, Edges.NONE), step);
+        Motion.Step step = Motion.bounce(new Rect(10, 10, 8, 8), 6, 2, List.of(new Rect(20, 0, 10, 100)), 200, 200);
+        assertEquals(new Motion.Step(4, 12, -6, 2, X, NONE), step);
         assertTrue(step.hitObstacle());
     }
 
@@ -325,19 +329,19 @@ class MotionTest {
     void bounce_squeezedBetweenTwoObstacles_waitsInsteadOfMovingIntoTheOther() {
         // 2 px free on each side: reversing the blocked speed points at the other obstacle.
         List<Rect> obstacles = List.of(new Rect(0, 0, 10, 100), new Rect(30, 0, 10, 100));
-        Motion.Step step = Motion.bounce(12, 50, 16, 8, 5, 1, obstacles, 200, 200);
+        Motion.Step step = Motion.bounce(new Rect(12, 50, 16, 8), 5, 1, obstacles, 200, 200);
         assertEquals(12f, step.x(), "waits across");
         assertEquals(-5f, step.vx(), "but its speed is reversed");
         assertEquals(51f, step.y(), "and it still moves down");
-        assertEquals(Motion.X, step.blocked());
+        assertEquals(X, step.blocked());
     }
 
     @Test
     void bounce_windowEdgeAhead_bouncesBackInside() {
-        Motion.Step step = Motion.bounce(190, 50, 8, 8, 5, 0, List.of(), 200, 200);
+        Motion.Step step = Motion.bounce(new Rect(190, 50, 8, 8), 5, 0, List.of(), 200, 200);
         assertEquals(-5f, step.vx());
         assertEquals(185f, step.x());
-        assertEquals(Edges.RIGHT, step.crossed());
+        assertEquals(Set.of(Side.RIGHT), step.crossed());
     }
 
     @Property(tries = 300)
@@ -349,16 +353,16 @@ class MotionTest {
         for (int i = 0; i + 1 < corners.size(); i += 2) {
             obstacles.add(new Rect(corners.get(i), corners.get(i + 1), 6 + i, 14 - i));
         }
-        Assume.that(Hits.first(x0, y0, 8, 8, obstacles) < 0);
+        Assume.that(Hits.first(new Rect(x0, y0, 8, 8), obstacles) < 0);
         float x = x0, y = y0, vx = vx0, vy = vy0;
         for (int frame = 1; frame <= 400; frame++) {
-            Motion.Step step = Motion.bounce(x, y, 8, 8, vx, vy, obstacles, 200, 200);
+            Motion.Step step = Motion.bounce(new Rect(x, y, 8, 8), vx, vy, obstacles, 200, 200);
             x = step.x();
             y = step.y();
             vx = step.vx();
             vy = step.vy();
-            assertEquals(-1, Hits.first(x, y, 8, 8, obstacles), "inside an obstacle on frame " + frame);
-            assertEquals(Edges.NONE, Edges.rectCrossed(x, y, 8, 8, 200, 200), "outside the window on frame " + frame);
+            assertEquals(-1, Hits.first(new Rect(x, y, 8, 8), obstacles), "inside an obstacle on frame " + frame);
+            assertEquals(NONE, Edges.crossed(new Rect(x, y, 8, 8), 200, 200), "outside the window on frame " + frame);
         }
     }
 }

@@ -76,7 +76,7 @@ class NoTunnellingTest {
         for (int degrees = 0; degrees < 360; degrees += 5) {
             double a = Math.toRadians(degrees + 0.3);
             float vx = (float) (speed * Math.cos(a)), vy = (float) (speed * Math.sin(a));
-            float t = Sweep.circleCircle(0, 0, 1, vx, vy, vx / 2, vy / 2, 0.5f);
+            float t = Raw.sweepCircleCircle(0, 0, 1, vx, vy, vx / 2, vy / 2, 0.5f);
             assertTrue(t < 1, "missed at " + degrees);
             assertEquals((speed / 2 - 1.5f) / speed, t, 1e-5f);
         }
@@ -116,7 +116,7 @@ class NoTunnellingTest {
         assertTrue(!sampled || t <= 1, "box went through the wall between samples");
 
         // The circle of radius 1.
-        Hit ball = Sweep.circleRectHit(sx, sy, 1, vx, vy, wall.x(), wall.y(), wall.w(), wall.h());
+        Hit ball = Raw.sweepCircleRectHit(sx, sy, 1, vx, vy, wall.x(), wall.y(), wall.w(), wall.h());
         assertEquals(SweepReference.circleRectHits(sx, sy, 1, vx, vy, wall.x(), wall.y(), wall.w(), wall.h()), ball != null);
         boolean sampledBall = sampledCrossing(vx, vy, thickness, s -> Collide.circleRect(
                 (float) (sx + s * vx), (float) (sy + s * vy), 1, wall.x(), wall.y(), wall.w(), wall.h()));

@@ -42,7 +42,7 @@ class PixelMaskFuzzTest {
         assertEquals(solid > 0, mask.overlaps(mask, 0, 0));
         assertEquals(solid, mask.overlapCount(mask, 0, 0));
         int dx = data.consumeInt(-140, 140), dy = data.consumeInt(-30, 30);
-        assertEquals(mask.overlaps(mask, dx, dy), Hybrid.overlaps(mask, 0, 0, mask, dx, dy));
+        assertEquals(mask.overlaps(mask, dx, dy), Hybrid.check(mask, 0, 0, mask, dx, dy).overlaps());
     }
 
     @FuzzTest(maxDuration = "5m")

@@ -141,8 +141,8 @@ class PolygonContactTest {
     void rectSquarePolygon_sameAsRectRect(float x, float y, float w, float h) {
         Polygon square = Polygon.of(0, 0, 10, 0, 10, 10, 0, 10);
         Rect r = new Rect(x, y, w, h);
-        assertEquals(Contact.rectRect(x, y, w, h, 0, 0, 10, 10), r.contact(square));
-        assertEquals(Contact.rectRect(0, 0, 10, 10, x, y, w, h), square.contact(r));
+        assertEquals(Raw.contactRectRect(x, y, w, h, 0, 0, 10, 10), r.contact(square));
+        assertEquals(Raw.contactRectRect(0, 0, 10, 10, x, y, w, h), square.contact(r));
     }
 
     @Test

@@ -38,7 +38,7 @@ class RectRectContactTest {
     })
     void rectRect_overlapping(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2,
                               float nx, float ny, float depth) {
-        Contact c = Contact.rectRect(x1, y1, w1, h1, x2, y2, w2, h2);
+        Contact c = Raw.contactRectRect(x1, y1, w1, h1, x2, y2, w2, h2);
         assertNotNull(c);
         assertEquals(nx, c.nx(), "nx");
         assertEquals(ny, c.ny(), "ny");
@@ -70,16 +70,16 @@ class RectRectContactTest {
         "0, 0, 10, 10, 10, 10, 0, 0",    // a point on a's corner
     })
     void rectRect_touchingOrApart_isNull(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2) {
-        assertNull(Contact.rectRect(x1, y1, w1, h1, x2, y2, w2, h2));
-        assertNull(Contact.rectRect(x2, y2, w2, h2, x1, y1, w1, h1));
+        assertNull(Raw.contactRectRect(x1, y1, w1, h1, x2, y2, w2, h2));
+        assertNull(Raw.contactRectRect(x2, y2, w2, h2, x1, y1, w1, h1));
     }
 
     @ParameterizedTest
     @CsvSource({"1000000, 0", "0, 1000000", "-999999, 1000000", "654321, -123456"})
     void rectRect_hugeCoordinates_sameContact(float dx, float dy) {
-        assertEquals(Contact.rectRect(0, 0, 10, 10, 8, 2, 10, 6), Contact.rectRect(dx, dy, 10, 10, 8 + dx, 2 + dy, 10, 6));
-        assertEquals(Contact.rectRect(0, 0, 100, 100, 10, 40, 5, 5), Contact.rectRect(dx, dy, 100, 100, 10 + dx, 40 + dy, 5, 5));
-        assertNull(Contact.rectRect(dx, dy, 10, 10, 10 + dx, dy, 10, 10), "touching stays touching far away");
+        assertEquals(Raw.contactRectRect(0, 0, 10, 10, 8, 2, 10, 6), Raw.contactRectRect(dx, dy, 10, 10, 8 + dx, 2 + dy, 10, 6));
+        assertEquals(Raw.contactRectRect(0, 0, 100, 100, 10, 40, 5, 5), Raw.contactRectRect(dx, dy, 100, 100, 10 + dx, 40 + dy, 5, 5));
+        assertNull(Raw.contactRectRect(dx, dy, 10, 10, 10 + dx, dy, 10, 10), "touching stays touching far away");
     }
 
     @ParameterizedTest
@@ -88,9 +88,9 @@ class RectRectContactTest {
         "0, 0, 1, 1, 0, 0, 1, -3, 'h2 must be >= 0, was -3.0'",
         "NaN, 0, 1, 1, 0, 0, 1, 1, 'x1 must be a finite number, was NaN'",
     })
-    void rectRect_badArguments_noContactNeverThrows(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2, String what) {
-        // The NaN rule: the raw-float methods answer "no contact" for bad values.
-        assertNull(Contact.rectRect(x1, y1, w1, h1, x2, y2, w2, h2), what);
+    void rectRect_badArguments_areRefusedByTheShapes(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2, String what) {
+        // The raw-float form went (issue 30): such values make no rectangle, so no contact is asked.
+        assertThrows(IllegalArgumentException.class, () -> Raw.contactRectRect(x1, y1, w1, h1, x2, y2, w2, h2), what);
     }
 
     // ------------------------------------------------------------------------ properties

@@ -61,40 +61,40 @@ class SeparationProperties {
             return Separation.circleCircle(c.x(), c.y(), c.r(), d.x(), d.y(), d.r());
         }
         if (a instanceof Circle c && b instanceof Rect r) {
-            return Separation.circleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
+            return Raw.separationCircleRect(c.x(), c.y(), c.r(), r.x(), r.y(), r.w(), r.h());
         }
         if (a instanceof Rect r && b instanceof Rect q) {
-            return Separation.rectRect(r.x(), r.y(), r.w(), r.h(), q.x(), q.y(), q.w(), q.h());
+            return Raw.separationRectRect(r.x(), r.y(), r.w(), r.h(), q.x(), q.y(), q.w(), q.h());
         }
         if (a instanceof Rect r && b instanceof Circle c && c.r() == 0) {
-            return Separation.rectPoint(r.x(), r.y(), r.w(), r.h(), c.x(), c.y());
+            return Raw.separationRectPoint(r.x(), r.y(), r.w(), r.h(), c.x(), c.y());
         }
         if (a instanceof Circle c && b instanceof Circle d && d.r() == 0) {
-            return Separation.circlePoint(c.x(), c.y(), c.r(), d.x(), d.y());
+            return Raw.separationCirclePoint(c.x(), c.y(), c.r(), d.x(), d.y());
         }
         if (a instanceof Segment g && b instanceof Circle c) {
-            return c.r() == 0 ? Separation.linePoint(g.x1(), g.y1(), g.x2(), g.y2(), c.x(), c.y())
-                    : Separation.lineCircle(g.x1(), g.y1(), g.x2(), g.y2(), c.x(), c.y(), c.r());
+            return c.r() == 0 ? Raw.separationLinePoint(g.x1(), g.y1(), g.x2(), g.y2(), c.x(), c.y())
+                    : Raw.separationLineCircle(g.x1(), g.y1(), g.x2(), g.y2(), c.x(), c.y(), c.r());
         }
         if (a instanceof Segment g && b instanceof Segment h) {
-            return Separation.lineLine(g.x1(), g.y1(), g.x2(), g.y2(), h.x1(), h.y1(), h.x2(), h.y2());
+            return Raw.separationLineLine(g.x1(), g.y1(), g.x2(), g.y2(), h.x1(), h.y1(), h.x2(), h.y2());
         }
         if (a instanceof Segment g && b instanceof Rect r) {
-            return Separation.lineRect(g.x1(), g.y1(), g.x2(), g.y2(), r.x(), r.y(), r.w(), r.h());
+            return Raw.separationLineRect(g.x1(), g.y1(), g.x2(), g.y2(), r.x(), r.y(), r.w(), r.h());
         }
         if (a instanceof Polygon p) {
             float[] xy = p.coordinates();
             if (b instanceof Polygon q) {
-                return Separation.polygonPolygon(xy, q.coordinates());
+                return Raw.separationPolygonPolygon(xy, q.coordinates());
             }
             if (b instanceof Circle c) {
-                return c.r() == 0 ? Separation.polygonPoint(xy, c.x(), c.y()) : Separation.polygonCircle(xy, c.x(), c.y(), c.r());
+                return c.r() == 0 ? Raw.separationPolygonPoint(xy, c.x(), c.y()) : Raw.separationPolygonCircle(xy, c.x(), c.y(), c.r());
             }
             if (b instanceof Rect r) {
-                return Separation.polygonRect(xy, r.x(), r.y(), r.w(), r.h());
+                return Raw.separationPolygonRect(xy, r.x(), r.y(), r.w(), r.h());
             }
             if (b instanceof Segment g) {
-                return Separation.polygonLine(xy, g.x1(), g.y1(), g.x2(), g.y2());
+                return Raw.separationPolygonLine(xy, g.x1(), g.y1(), g.x2(), g.y2());
             }
         }
         return null;

@@ -256,8 +256,8 @@ class SweepFarFromOriginTest {
     void circleCircle_answerIsTheLastClearFloat_farFromTheOrigin(@ForAll("farCircles") float[] c) {
         float x = c[0], y = c[1], r = c[2], vx = c[3], vy = c[4], ox = c[5], oy = c[6], or = c[7];
         String what = "circleCircle" + java.util.Arrays.toString(c);
-        float t = Sweep.circleCircle(x, y, r, vx, vy, ox, oy, or);
-        assertEquals(t, t(Sweep.circleCircleHit(x, y, r, vx, vy, ox, oy, or)), what);
+        float t = Raw.sweepCircleCircle(x, y, r, vx, vy, ox, oy, or);
+        assertEquals(t, t(Raw.sweepCircleCircleHit(x, y, r, vx, vy, ox, oy, or)), what);
         check(what, t, (s, k) -> Collide.circleCircle(mx(x, s, vx, k), my(y, s, vy, k), r, px(ox, k), py(oy, k), or), x, vx, y, vy);
     }
 
@@ -267,8 +267,8 @@ class SweepFarFromOriginTest {
         float r = c[2] / 2, x = c[0] + r, y = c[1] + r, vx = c[4], vy = c[5];
         float ox = c[6], oy = c[7], ow = c[8], oh = c[9];
         String what = "circleRect" + java.util.Arrays.toString(new float[] {x, y, r, vx, vy, ox, oy, ow, oh});
-        float t = Sweep.circleRect(x, y, r, vx, vy, ox, oy, ow, oh);
-        assertEquals(t, t(Sweep.circleRectHit(x, y, r, vx, vy, ox, oy, ow, oh)), what);
+        float t = Raw.sweepCircleRect(x, y, r, vx, vy, ox, oy, ow, oh);
+        assertEquals(t, t(Raw.sweepCircleRectHit(x, y, r, vx, vy, ox, oy, ow, oh)), what);
         check(what, t, (s, k) -> Collide.circleRect(mx(x, s, vx, k), my(y, s, vy, k), r, px(ox, k), py(oy, k), ow, oh), x, vx, y, vy);
     }
 
@@ -287,7 +287,7 @@ class SweepFarFromOriginTest {
         float x = c[0], y = c[1], w = c[2], h = c[3], vx = c[4], vy = c[5], ox = c[6], oy = c[7], ow = c[8], oh = c[9];
         String what = "rectRect" + java.util.Arrays.toString(c);
         float t = Sweep.rectRect(x, y, w, h, vx, vy, ox, oy, ow, oh);
-        assertEquals(t, t(Sweep.rectRectHit(x, y, w, h, vx, vy, ox, oy, ow, oh)), what);
+        assertEquals(t, t(Raw.sweepRectRectHit(x, y, w, h, vx, vy, ox, oy, ow, oh)), what);
         check(what, t, (s, k) -> Collide.rectRect(mx(x, s, vx, k), my(y, s, vy, k), w, h, px(ox, k), py(oy, k), ow, oh), x, vx, y, vy);
     }
 
@@ -365,7 +365,7 @@ class SweepFarFromOriginTest {
         float[] s = segmentOf(c);
         float x1 = s[0], y1 = s[1], x2 = s[2], y2 = s[3];
         String what = "rectSegmentHit" + java.util.Arrays.toString(new float[] {x, y, w, h, vx, vy, x1, y1, x2, y2});
-        float t = t(Sweep.rectSegmentHit(x, y, w, h, vx, vy, x1, y1, x2, y2));
+        float t = t(Raw.sweepRectSegmentHit(x, y, w, h, vx, vy, x1, y1, x2, y2));
         if (!(w > 0 && h > 0)) {
             assertEquals(Float.POSITIVE_INFINITY, t, what);
             return;
@@ -394,7 +394,7 @@ class SweepFarFromOriginTest {
         float[] s = segmentOf(c);
         float x1 = s[0], y1 = s[1], x2 = s[2], y2 = s[3];
         String what = "circleSegmentHit" + java.util.Arrays.toString(new float[] {x, y, r, vx, vy, x1, y1, x2, y2});
-        float t = t(Sweep.circleSegmentHit(x, y, r, vx, vy, x1, y1, x2, y2));
+        float t = t(Raw.sweepCircleSegmentHit(x, y, r, vx, vy, x1, y1, x2, y2));
         if (!(r > 0)) {
             assertEquals(Float.POSITIVE_INFINITY, t, what);
             return;
@@ -428,7 +428,7 @@ class SweepFarFromOriginTest {
     void casesFoundFarFromTheOrigin_answerTheLastClearFloat() {
         float[] cc = {1175071.8f, -2776515.8f, 4.847686f, 19.498964f, 43.87264f, 1175070.8f, -2776492.8f, 5.425373f};
         // Before: 0.4302226; the float position at 0.41312763 already overlaps.
-        assertEquals(0.4131276f, Sweep.circleCircle(cc[0], cc[1], cc[2], cc[3], cc[4], cc[5], cc[6], cc[7]));
+        assertEquals(0.4131276f, Raw.sweepCircleCircle(cc[0], cc[1], cc[2], cc[3], cc[4], cc[5], cc[6], cc[7]));
         circleCircle_answerIsTheLastClearFloat_farFromTheOrigin(cc);
         // The exact path enters after 1, the float positions at 0.9994105: no hit, by the
         // exact decision (an open question: the largest-float promise would say 0.99941045).
@@ -439,14 +439,14 @@ class SweepFarFromOriginTest {
         assertTrue(Collide.rectRect(rr[0] + 0.9994105f * rr[4], rr[1] + 0.9994105f * rr[5], rr[2], rr[3], rr[6], rr[7],
                 rr[8], rr[9]));
         // Before: 0.6708652, 0.5732566, 0.8572243.
-        float cr = Sweep.circleRect(-1365462.9f, 2608262.8f, 5.5f, 31.582352f, 7.0770826f, -1365440.0f, 2608261.2f, 3.0f, 1.0f);
+        float cr = Raw.sweepCircleRect(-1365462.9f, 2608262.8f, 5.5f, 31.582352f, 7.0770826f, -1365440.0f, 2608261.2f, 3.0f, 1.0f);
         assertEquals(Math.nextDown(0.65107566f), cr);
         check("circleRect", cr, (u, k) -> Collide.circleRect(mx(-1365462.9f, u, 31.582352f, k), my(2608262.8f, u, 7.0770826f, k), 5.5f,
                 px(-1365440.0f, k), py(2608261.2f, k), 3.0f, 1.0f), -1365462.9f, 31.582352f, 2608262.8f, 7.0770826f);
-        float rs = t(Sweep.rectSegmentHit(-1074017.2f, 3987586.2f, 3.3350303f, 0.047184587f, 40.01262f, -38.640285f,
+        float rs = t(Raw.sweepRectSegmentHit(-1074017.2f, 3987586.2f, 3.3350303f, 0.047184587f, 40.01262f, -38.640285f,
                 -1073991.5f, 3987565.0f, -1073987.4f, 3987558.2f));
         assertEquals(Math.nextDown(0.5701327f), rs);
-        float cs = t(Sweep.circleSegmentHit(-943237.56f, 333954.28f, 1.2679408f, -12.31356f, 22.620245f,
+        float cs = t(Raw.sweepCircleSegmentHit(-943237.56f, 333954.28f, 1.2679408f, -12.31356f, 22.620245f,
                 -943255.8f, 333979.5f, -943246.0f, 333973.9f));
         assertEquals(Math.nextDown(0.8544613f), cs);
         // The shape forms with the roles swapped: before, 0.95775455, 0.47367597, 0.22842324.

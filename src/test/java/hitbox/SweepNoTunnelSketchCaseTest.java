@@ -65,7 +65,7 @@ class SweepNoTunnelSketchCaseTest {
             float x = x0;
             boolean stopped = false;
             while (!stopped) {
-                Hit hit = Sweep.circleRectHit(x, LANE, R, speed, 0, WALL_X, WALL_Y, wallW, WALL_H);
+                Hit hit = Raw.sweepCircleRectHit(x, LANE, R, speed, 0, WALL_X, WALL_Y, wallW, WALL_H);
                 if (hit != null && !hit.alreadyOverlapping()) {
                     assertTrue(hit.t() >= 0 && hit.t() <= 1, where + ": t in [0, 1], was " + hit.t());
                     x += hit.t() * speed;
@@ -115,7 +115,7 @@ class SweepNoTunnelSketchCaseTest {
             String where = "start (" + x + ", " + y + ")";
             Hit hit = null;
             for (int frame = 0; frame < 1000 && hit == null; frame++) {
-                hit = Sweep.circleRectHit(x, y, R, vx, vy, WALL_X, WALL_Y, 6, WALL_H);
+                hit = Raw.sweepCircleRectHit(x, y, R, vx, vy, WALL_X, WALL_Y, 6, WALL_H);
                 if (hit == null) {
                     x += vx;
                     y += vy;

@@ -78,11 +78,11 @@ class SweepPropertiesTest {
         SweepReference.Q exact = SweepReference.rectRect(x, y, w, h, vx, vy, ox, oy, ow, oh);
         if (exact == null) {
             assertEquals(Float.POSITIVE_INFINITY, t);
-            assertTrue(Sweep.rectRectHit(x, y, w, h, vx, vy, ox, oy, ow, oh) == null);
+            assertTrue(Raw.sweepRectRectHit(x, y, w, h, vx, vy, ox, oy, ow, oh) == null);
         } else {
             SketchT.check(exact.value(), t, s -> Collide.rectRect(x + s * vx, y + s * vy, w, h, ox, oy, ow, oh),
                     SketchT.plateau(vx, vy, x, y, ox, oy, x + w, y + h, ox + ow, oy + oh), "exact " + exact);
-            Hit hit = Sweep.rectRectHit(x, y, w, h, vx, vy, ox, oy, ow, oh);
+            Hit hit = Raw.sweepRectRectHit(x, y, w, h, vx, vy, ox, oy, ow, oh);
             assertNotNull(hit);
             assertEquals(t, hit.t());
             assertEquals(Collide.rectRect(x, y, w, h, ox, oy, ow, oh), hit.alreadyOverlapping());
@@ -107,11 +107,11 @@ class SweepPropertiesTest {
                                                         @ForAll @IntRange(min = -40, max = 40) int ox, @ForAll @IntRange(min = -40, max = 40) int oy,
                                                         @ForAll @IntRange(min = 0, max = 20) int or,
                                                         @ForAll @IntRange(min = -1_000_000, max = 1_000_000) int dx) {
-        float t = Sweep.circleCircle(x, y, r, vx, vy, ox, oy, or);
+        float t = Raw.sweepCircleCircle(x, y, r, vx, vy, ox, oy, or);
         double near = 2 * SketchT.plateau(vx, vy, x, y, ox, oy, r, or);
         SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, t,
                 s -> Collide.circleCircle(x + s * vx, y + s * vy, r, ox, oy, or), near, "mover, obstacle");
-        SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, Sweep.circleCircle(ox, oy, or, -vx, -vy, x, y, r),
+        SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, Raw.sweepCircleCircle(ox, oy, or, -vx, -vy, x, y, r),
                 s -> Collide.circleCircle(ox + s * -vx, oy + s * -vy, or, x, y, r), near, "roles swapped");
         float fx = x + dx, fy = y - dx, fox = ox + dx, foy = oy - dx;
         // Far away a position rounds by up to a float step on each axis, and a circle meets
@@ -124,11 +124,11 @@ class SweepPropertiesTest {
             along = c > 0 ? Math.abs(vx * cx + vy * cy) / c : 0;
         }
         double rounding = Math.max(SketchT.plateau(vx, vy, fx, fy, fox, foy), SketchT.plateauAlong(along, fx, fy, fox, foy));
-        SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, Sweep.circleCircle(fx, fy, r, vx, vy, fox, foy, or),
+        SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, Raw.sweepCircleCircle(fx, fy, r, vx, vy, fox, foy, or),
                 s -> Collide.circleCircle(fx + s * vx, fy + s * vy, r, fox, foy, or),
                 near + rounding, "translated");
-        assertEquals(Collide.circleCircle(x, y, r, ox, oy, or), Sweep.circleCircleHit(x, y, r, vx, vy, ox, oy, or) != null
-                && Sweep.circleCircleHit(x, y, r, vx, vy, ox, oy, or).alreadyOverlapping());
+        assertEquals(Collide.circleCircle(x, y, r, ox, oy, or), Raw.sweepCircleCircleHit(x, y, r, vx, vy, ox, oy, or) != null
+                && Raw.sweepCircleCircleHit(x, y, r, vx, vy, ox, oy, or).alreadyOverlapping());
     }
 
     /**
@@ -149,7 +149,7 @@ class SweepPropertiesTest {
             @ForAll @IntRange(min = -80, max = 80) int ox2, @ForAll @IntRange(min = -80, max = 80) int oy2,
             @ForAll @IntRange(min = 0, max = 20) int or2) {
         float x = x2 / 2f, y = y2 / 2f, r = r2 / 2f, vx = vx2 / 2f, vy = vy2 / 2f, ox = ox2 / 2f, oy = oy2 / 2f, or = or2 / 2f;
-        float t = Sweep.circleCircle(x, y, r, vx, vy, ox, oy, or);
+        float t = Raw.sweepCircleCircle(x, y, r, vx, vy, ox, oy, or);
         boolean exact = SweepReference.circleCircleHits(x, y, r, vx, vy, ox, oy, or);
         // The reference includes t = 1 (a path that overlaps only at the very end): the
         // overlap is open, so it would have started before the end.
@@ -180,7 +180,7 @@ class SweepPropertiesTest {
             @ForAll @IntRange(min = 0, max = 30) int rw2, @ForAll @IntRange(min = 0, max = 30) int rh2) {
         float x = x2 / 2f, y = y2 / 2f, r = r2 / 2f, vx = vx2 / 2f, vy = vy2 / 2f;
         float rx = rx2 / 2f, ry = ry2 / 2f, rw = rw2 / 2f, rh = rh2 / 2f;
-        Hit hit = Sweep.circleRectHit(x, y, r, vx, vy, rx, ry, rw, rh);
+        Hit hit = Raw.sweepCircleRectHit(x, y, r, vx, vy, rx, ry, rw, rh);
         boolean exact = SweepReference.circleRectHits(x, y, r, vx, vy, rx, ry, rw, rh);
         assertEquals(exact, hit != null, () -> "hit = " + hit);
         float t = hit == null ? Float.POSITIVE_INFINITY : hit.t();
@@ -214,7 +214,7 @@ class SweepPropertiesTest {
             @ForAll @IntRange(min = -60, max = 60) int bx2, @ForAll @IntRange(min = -60, max = 60) int by2) {
         float x = x2 / 2f, y = y2 / 2f, w = w2 / 2f, h = h2 / 2f, vx = vx2 / 2f, vy = vy2 / 2f;
         float ax = ax2 / 2f, ay = ay2 / 2f, bx = bx2 / 2f, by = by2 / 2f;
-        Hit hit = Sweep.rectSegmentHit(x, y, w, h, vx, vy, ax, ay, bx, by);
+        Hit hit = Raw.sweepRectSegmentHit(x, y, w, h, vx, vy, ax, ay, bx, by);
         float t = hit == null ? Float.POSITIVE_INFINITY : hit.t();
         boolean atStart = SweepReference.openBoxSegment(x, y, w, h, ax, ay, bx, by);
         assertEquals(atStart, hit != null && hit.alreadyOverlapping(), () -> "hit = " + hit);
@@ -255,7 +255,7 @@ class SweepPropertiesTest {
             @ForAll @IntRange(min = -60, max = 60) int bx2, @ForAll @IntRange(min = -60, max = 60) int by2) {
         float x = x2 / 2f, y = y2 / 2f, r = r2 / 2f, vx = vx2 / 2f, vy = vy2 / 2f;
         float ax = ax2 / 2f, ay = ay2 / 2f, bx = bx2 / 2f, by = by2 / 2f;
-        Hit hit = Sweep.circleSegmentHit(x, y, r, vx, vy, ax, ay, bx, by);
+        Hit hit = Raw.sweepCircleSegmentHit(x, y, r, vx, vy, ax, ay, bx, by);
         float t = hit == null ? Float.POSITIVE_INFINITY : hit.t();
         java.math.BigDecimal r2exact = SweepReference.d(r).multiply(SweepReference.d(r));
         boolean everClose = r > 0 && pathMeetsCapsule(x, y, vx, vy, ax, ay, bx, by, r);

@@ -27,18 +27,18 @@ class SweepStartAndWindowTest {
     void rectRect_touchingAtStartAndMovingIn_isExactlyZero() {
         // Before: 1.78e-16, the largest float at which x + t * vx had not yet moved.
         assertEquals(0f, Sweep.rectRect(0, 0, 10, 10, 5, 0, 10, 0, 10, 10));
-        Hit h = Sweep.rectRectHit(0, 0, 10, 10, 5, 0, 10, 0, 10, 10);
+        Hit h = Raw.sweepRectRectHit(0, 0, 10, 10, 5, 0, 10, 0, 10, 10);
         assertEquals(new Hit(0, 1, 0, Side.LEFT), h);
         assertEquals(0f, Sweep.rectRect(0, 0, 10, 10, 0, -3, 2, -10, 5, 10), "from below, moving up");
     }
 
     @Test
     void rawFloatPairs_touchingAtStartAndMovingIn_areExactlyZero() {
-        assertEquals(0f, Sweep.circleCircle(0, 0, 5, 3, 0, 10, 0, 5));
-        assertEquals(0f, Sweep.circleRect(0, 0, 5, 3, 0, 5, -5, 10, 10));
-        assertEquals(0f, Sweep.circleRectHit(0, 0, 5, 3, 4, 3, 4, 10, 10).t(), "against a corner");
-        assertEquals(0f, Sweep.rectSegmentHit(0, 0, 10, 10, 5, 0, 10, -5, 10, 20).t());
-        assertEquals(0f, Sweep.circleSegmentHit(0, 0, 5, 5, 0, 5, -5, 5, 20).t());
+        assertEquals(0f, Raw.sweepCircleCircle(0, 0, 5, 3, 0, 10, 0, 5));
+        assertEquals(0f, Raw.sweepCircleRect(0, 0, 5, 3, 0, 5, -5, 10, 10));
+        assertEquals(0f, Raw.sweepCircleRectHit(0, 0, 5, 3, 4, 3, 4, 10, 10).t(), "against a corner");
+        assertEquals(0f, Raw.sweepRectSegmentHit(0, 0, 10, 10, 5, 0, 10, -5, 10, 20).t());
+        assertEquals(0f, Raw.sweepCircleSegmentHit(0, 0, 5, 5, 0, 5, -5, 5, 20).t());
     }
 
     @Test
@@ -76,7 +76,7 @@ class SweepStartAndWindowTest {
         assertFalse(Collide.rectRect(-30 + t * 59, 524373 + t * 10, 0, 7, -28, 524382, 10, 10));
         float next = Math.nextUp(t);
         assertTrue(Collide.rectRect(-30 + next * 59, 524373 + next * 10, 0, 7, -28, 524382, 10, 10));
-        assertEquals(t, Sweep.rectRectHit(-30, 524373, 0, 7, 59, 10, -28, 524382, 10, 10).t());
+        assertEquals(t, Raw.sweepRectRectHit(-30, 524373, 0, 7, 59, 10, -28, 524382, 10, 10).t());
     }
 
     /**

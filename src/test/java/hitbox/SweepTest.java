@@ -31,7 +31,7 @@ class SweepTest {
     void rectSegmentHit_segmentEndCrossesTheBoxCornerBriefly_isAHit() {
         // Found by SweepPropertiesTest: the end (4, -4.5) is strictly inside the moving box
         // only for t in (3/44, 4/58.5), a window of 0.0002 of the frame. Still a hit.
-        Hit hit = Sweep.rectSegmentHit(0, -8, 0.5f, 0.5f, 58.5f, 44, 0, 0, 4, -4.5f);
+        Hit hit = Raw.sweepRectSegmentHit(0, -8, 0.5f, 0.5f, 58.5f, 44, 0, 0, 4, -4.5f);
         assertNotNull(hit);
         assertEquals(3 / 44f, hit.t(), 1e-6f);
         float t = (3 / 44f + 4 / 58.5f) / 2;
@@ -93,7 +93,7 @@ class SweepTest {
         Hit back = Sweep.timeOfImpact(new Rect(ox, oy, ow, oh), -vx, -vy, new Rect(x, y, w, h));
         checkHit(t, near, side, hit);
         checkReversed(hit, back);
-        assertEquals(hit, Sweep.rectRectHit(x, y, w, h, vx, vy, ox, oy, ow, oh));
+        assertEquals(hit, Raw.sweepRectRectHit(x, y, w, h, vx, vy, ox, oy, ow, oh));
     }
 
     @ParameterizedTest
@@ -128,7 +128,8 @@ class SweepTest {
         assertEquals(Float.POSITIVE_INFINITY, Sweep.rectRect(0, 0, 10, 10, Float.POSITIVE_INFINITY, 0, 15, 0, 10, 10));
         assertEquals(Float.POSITIVE_INFINITY, Sweep.rectRect(0, 0, 10, 10, 0, Float.NaN, 0, 15, 10, 10));
         assertEquals(Float.POSITIVE_INFINITY, Sweep.rectRect(Float.NaN, 0, 10, 10, 20, 0, 15, 0, 10, 10));
-        assertNull(Sweep.rectRectHit(0, 0, 10, 10, Float.NaN, 0, 15, 0, 10, 10));
+        assertThrows(IllegalArgumentException.class, () -> Raw.sweepRectRectHit(0, 0, 10, 10, Float.NaN, 0, 15, 0, 10, 10),
+                "on shapes a NaN velocity is refused");
     }
 
     // ------------------------------------------------------------------ circle and circle
@@ -157,12 +158,12 @@ class SweepTest {
     void circleCircle_table(float x, float y, float r, float vx, float vy, float ox, float oy, float or,
                             double t, Side side, String scenario) {
         double near = SketchT.plateau(vx, vy, x, y, ox, oy, r, or);
-        float got = Sweep.circleCircle(x, y, r, vx, vy, ox, oy, or);
+        float got = Raw.sweepCircleCircle(x, y, r, vx, vy, ox, oy, or);
         SketchT.check(t, got, s -> Collide.circleCircle(x + s * vx, y + s * vy, r, ox, oy, or), near, "mover, obstacle");
-        SketchT.check(t, Sweep.circleCircle(ox, oy, or, -vx, -vy, x, y, r),
+        SketchT.check(t, Raw.sweepCircleCircle(ox, oy, or, -vx, -vy, x, y, r),
                 s -> Collide.circleCircle(ox + s * -vx, oy + s * -vy, or, x, y, r), near, "roles swapped");
         float fx = x + FAR, fy = y - FAR, fox = ox + FAR, foy = oy - FAR;
-        SketchT.check(t, Sweep.circleCircle(fx, fy, r, vx, vy, fox, foy, or),
+        SketchT.check(t, Raw.sweepCircleCircle(fx, fy, r, vx, vy, fox, foy, or),
                 s -> Collide.circleCircle(fx + s * vx, fy + s * vy, r, fox, foy, or), SketchT.plateau(vx, vy, FAR), "far away");
         assertEquals(Collide.circleCircle(x, y, r, ox, oy, or), side == Side.NONE && got == 0, "t = 0 for overlap");
 
@@ -174,7 +175,7 @@ class SweepTest {
 
     @Test
     void circleCircleHit_normalPointsFromMoverIntoObstacle() {
-        Hit hit = Sweep.circleCircleHit(0, 0, 1, 6, 8, 6, 8, 4);
+        Hit hit = Raw.sweepCircleCircleHit(0, 0, 1, 6, 8, 6, 8, 4);
         assertEquals(0.6f, hit.nx(), 1e-6f);
         assertEquals(0.8f, hit.ny(), 1e-6f);
     }
@@ -206,7 +207,7 @@ class SweepTest {
     void circleRect_table(float cx, float cy, float r, float vx, float vy, float rx, float ry, float rw, float rh,
                           double t, Side side, String scenario) {
         double near = SketchT.plateau(vx, vy, cx, cy, r, rx, ry, rx + rw, ry + rh);
-        Hit hit = Sweep.circleRectHit(cx, cy, r, vx, vy, rx, ry, rw, rh);
+        Hit hit = Raw.sweepCircleRectHit(cx, cy, r, vx, vy, rx, ry, rw, rh);
         checkHit(t, near, side, hit);
         if (hit != null) {
             SketchT.check(t, hit.t(), s -> Collide.circleRect(cx + s * vx, cy + s * vy, r, rx, ry, rw, rh), near, "t");
@@ -218,7 +219,7 @@ class SweepTest {
             SketchT.check(t, back.t(), s -> Collide.circleRect(cx, cy, r, rx + s * -vx, ry + s * -vy, rw, rh), near, "roles swapped");
         }
         float fcx = cx + FAR, fcy = cy - FAR, frx = rx + FAR, fry = ry - FAR;
-        Hit far = Sweep.circleRectHit(fcx, fcy, r, vx, vy, frx, fry, rw, rh);
+        Hit far = Raw.sweepCircleRectHit(fcx, fcy, r, vx, vy, frx, fry, rw, rh);
         checkHit(t, SketchT.plateau(vx, vy, FAR), side, far);
         if (far != null) {
             SketchT.check(t, far.t(), s -> Collide.circleRect(fcx + s * vx, fcy + s * vy, r, frx, fry, rw, rh),
@@ -228,11 +229,11 @@ class SweepTest {
 
     @Test
     void circleRectHit_cornerNormalPointsFromCentreToCorner() {
-        Hit hit = Sweep.circleRectHit(0, 0, 1, 10, 10, 5, 5, 10, 10);
+        Hit hit = Raw.sweepCircleRectHit(0, 0, 1, 10, 10, 5, 5, 10, 10);
         assertEquals(0.70710678f, hit.nx(), 1e-6f);
         assertEquals(0.70710678f, hit.ny(), 1e-6f);
         // Just off the diagonal the corner normal leans to one side.
-        Hit wall = Sweep.circleRectHit(0, 1, 1, 10, 10, 5, 5, 10, 10);
+        Hit wall = Raw.sweepCircleRectHit(0, 1, 1, 10, 10, 5, 5, 10, 10);
         assertEquals(Side.LEFT, wall.side());
     }
 
@@ -262,7 +263,7 @@ class SweepTest {
     void rectSegment_table(float x, float y, float w, float h, float vx, float vy,
                            float x1, float y1, float x2, float y2, double t, Side side, String scenario) {
         double near = SketchT.plateau(vx, vy, x, y, x + w, y + h, x1, y1, x2, y2);
-        Hit hit = Sweep.rectSegmentHit(x, y, w, h, vx, vy, x1, y1, x2, y2);
+        Hit hit = Raw.sweepRectSegmentHit(x, y, w, h, vx, vy, x1, y1, x2, y2);
         checkHit(t, near, side, hit);
         if (hit != null) {
             SketchT.check(t, hit.t(), s -> Collide.lineRect(x1, y1, x2, y2, x + s * vx, y + s * vy, w, h), near, "t");
@@ -275,7 +276,7 @@ class SweepTest {
                     near, "roles swapped");
         }
         float fx = x + FAR, fy = y - FAR;
-        Hit far = Sweep.rectSegmentHit(fx, fy, w, h, vx, vy, x1 + FAR, y1 - FAR, x2 + FAR, y2 - FAR);
+        Hit far = Raw.sweepRectSegmentHit(fx, fy, w, h, vx, vy, x1 + FAR, y1 - FAR, x2 + FAR, y2 - FAR);
         checkHit(t, SketchT.plateau(vx, vy, FAR), side, far);
         if (far != null) {
             float fx1 = x1 + FAR, fy1 = y1 - FAR, fx2 = x2 + FAR, fy2 = y2 - FAR;
@@ -286,7 +287,7 @@ class SweepTest {
 
     @Test
     void rectSegmentHit_slopeNormalIsPerpendicular() {
-        Hit hit = Sweep.rectSegmentHit(0, 0, 2, 2, 0, 10, 0, 10, 10, 0);
+        Hit hit = Raw.sweepRectSegmentHit(0, 0, 2, 2, 0, 10, 0, 10, 10, 0);
         assertEquals(0.70710678f, hit.nx(), 1e-6f);
         assertEquals(0.70710678f, hit.ny(), 1e-6f);
     }
@@ -311,7 +312,7 @@ class SweepTest {
     void circleSegment_table(float cx, float cy, float r, float vx, float vy,
                              float x1, float y1, float x2, float y2, double t, Side side, String scenario) {
         double near = SketchT.plateau(vx, vy, cx, cy, r, x1, y1, x2, y2);
-        Hit hit = Sweep.circleSegmentHit(cx, cy, r, vx, vy, x1, y1, x2, y2);
+        Hit hit = Raw.sweepCircleSegmentHit(cx, cy, r, vx, vy, x1, y1, x2, y2);
         checkHit(t, near, side, hit);
         if (hit != null) {
             SketchT.check(t, hit.t(), s -> Collide.lineCircle(x1, y1, x2, y2, cx + s * vx, cy + s * vy, r), near, "t");
@@ -319,7 +320,7 @@ class SweepTest {
         assertEquals(hit, Sweep.timeOfImpact(new Circle(cx, cy, r), vx, vy, new Segment(x1, y1, x2, y2)));
         Hit back = Sweep.timeOfImpact(new Segment(x1, y1, x2, y2), -vx, -vy, new Circle(cx, cy, r));
         checkReversed(hit, back);
-        Hit far = Sweep.circleSegmentHit(cx + FAR, cy - FAR, r, vx, vy, x1 + FAR, y1 - FAR, x2 + FAR, y2 - FAR);
+        Hit far = Raw.sweepCircleSegmentHit(cx + FAR, cy - FAR, r, vx, vy, x1 + FAR, y1 - FAR, x2 + FAR, y2 - FAR);
         assertEquals(hit == null, far == null, "far away");
         if (hit != null) {
             assertEquals(hit.t(), far.t(), SketchT.plateau(vx, vy, FAR) + 1e-6, "far away");

@@ -6,7 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
@@ -40,10 +42,10 @@ class WorldMoveTest {
                 List<Collision> got = w.move(mover, dx, dy);
                 assertEquals(new Rect(want.x(), want.y(), at.w(), at.h()), mover.shape(),
                         "world " + world + " frame " + frame + ": " + at + " by (" + dx + ", " + dy + ")");
-                int sides = 0;
+                Set<Side> sides = EnumSet.noneOf(Side.class);
                 for (Collision c : got) {
                     if (!c.hit().alreadyOverlapping()) {
-                        sides |= c.hit().side().bit();
+                        sides.add(c.hit().side());
                         assertEquals(Reaction.SLIDE, c.reaction());
                         hits++;
                     }

@@ -1,5 +1,7 @@
 package sketches;
 
+import hitbox.Rect;
+import java.util.Set;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -47,9 +49,9 @@ class H02_BouncersTest {
         SketchRun.of(hitboxLoop()).frames(3000).everyFrame(s -> {
             for (int i = 0; i < s.bouncers.size(); i++) {
                 H02_Bouncers.Bouncer b = s.bouncers.get(i);
-                int inside = Hits.first(b.x, b.y, s.size, s.size, s.obstacles);
+                int inside = Hits.first(new Rect(b.x, b.y, s.size, s.size), s.obstacles);
                 assertEquals(-1, inside, "bouncer " + i + " at (" + b.x + ", " + b.y + ") is inside obstacle " + inside);
-                assertEquals(Edges.NONE, Edges.rectCrossed(b.x, b.y, s.size, s.size, s.width, s.height),
+                assertEquals(Set.of(), Edges.crossed(new Rect(b.x, b.y, s.size, s.size), s.width, s.height),
                         "bouncer " + i + " left the window at (" + b.x + ", " + b.y + ")");
             }
             if (s.frameCount == 3000) {
@@ -74,7 +76,7 @@ class H02_BouncersTest {
                 H02_Bouncers.Bouncer b = s.bouncers.get(i);
                 if (before[i] != null) {
                     float[] p = before[i];
-                    boolean hit = Motion.rectBlocked(p[0], p[1], s.size, s.size, p[2], p[3], s.obstacles) != Motion.NONE;
+                    boolean hit = !Motion.blocked(new Rect(p[0], p[1], s.size, s.size), p[2], p[3], s.obstacles).isEmpty();
                     boolean changed = b.colour != colours[i];
                     assertEquals(hit, changed, "frame " + s.frameCount + ", bouncer " + i
                             + ": a new colour if and only if it hit an obstacle");
@@ -104,7 +106,7 @@ class H02_BouncersTest {
                 if (before[i] != null) {
                     assertTrue(s.hitboxDecides);
                     float[] p = before[i];
-                    Motion.Step step = Motion.bounce(p[0], p[1], s.size, s.size, p[2], p[3], s.obstacles, s.width, s.height);
+                    Motion.Step step = Motion.bounce(new Rect(p[0], p[1], s.size, s.size), p[2], p[3], s.obstacles, s.width, s.height);
                     String what = "frame " + s.frameCount + ", bouncer " + i;
                     assertEquals(step.x(), b.x, what + " x");
                     assertEquals(step.y(), b.y, what + " y");
@@ -202,7 +204,7 @@ class H02_BouncersTest {
             }
             boolean anyInside = false;
             for (H02_Bouncers.Bouncer b : s.bouncers) {
-                anyInside |= Hits.any(b.x, b.y, s.size, s.size, s.obstacles);
+                anyInside |= Hits.any(new Rect(b.x, b.y, s.size, s.size), s.obstacles);
             }
             caughtFrames[0] += anyInside ? 1 : 0;
         }).run();

@@ -1,5 +1,6 @@
 package sketches;
 
+import java.util.Set;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -62,9 +63,9 @@ class H02b_BouncersWorldTest {
             List<Rect> obstacles = obstacleRects(s);
             for (int i = 0; i < s.bouncers.size(); i++) {
                 Rect r = box(s.bouncers.get(i));
-                int inside = Hits.first(r.x(), r.y(), r.w(), r.h(), obstacles);
+                int inside = Hits.first(new Rect(r.x(), r.y(), r.w(), r.h()), obstacles);
                 assertEquals(-1, inside, "frame " + s.frameCount + ": bouncer " + i + " at " + r + " is inside obstacle " + inside);
-                assertEquals(Edges.NONE, Edges.rectCrossed(r.x(), r.y(), r.w(), r.h(), s.width, s.height),
+                assertEquals(Set.of(), Edges.crossed(new Rect(r.x(), r.y(), r.w(), r.h()), s.width, s.height),
                         "frame " + s.frameCount + ": bouncer " + i + " left the window at " + r);
             }
             if (s.frameCount == 3000) {

@@ -36,7 +36,7 @@ class H03_TenThousandTest {
         SketchRun.of(new H03_TenThousand()).frames(300).everyFrame(s -> {
             assertEquals(10_000, s.active);
             for (int i = 0; i < s.n; i++) {
-                assertEquals(Edges.NONE, Edges.rectCrossed(s.x[i], s.y[i], s.size, s.size, s.width, s.height),
+                assertEquals(Set.of(), Edges.crossed(new Rect(s.x[i], s.y[i], s.size, s.size), s.width, s.height),
                         "bouncer " + i + " left the window at (" + s.x[i] + ", " + s.y[i] + ")");
                 for (Rect o : s.obstacles) {
                     assertTrue(!Collide.rectRect(s.x[i], s.y[i], s.size, s.size, o.x(), o.y(), o.w(), o.h()),

@@ -1,5 +1,10 @@
 package sketches;
 
+import hitbox.Circle;
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -36,25 +41,28 @@ class S01_EdgeBounceTest {
 
     @Test
     void hitboxWay_bouncesOffAllFourEdges_neverPastOneForTwoFramesRunning() {
-        int[] edgesCrossed = {0};
-        int[] previous = {Edges.NONE};
+        Set<Side> edgesCrossed = EnumSet.noneOf(Side.class);
+        List<Set<Side>> previous = new ArrayList<>(List.of(Set.of()));
         SketchRun.of(new S01_EdgeBounce()).script(new Script().frames(5000).key(1, 'l'))
                 .everyFrame(s -> {
                     if (s.frameCount < 2) {
                         return;
                     }
-                    int crossed = Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height);
-                    assertEquals(Edges.NONE, crossed & previous[0],
+                    Set<Side> crossed = Edges.crossed(new Circle(s.x, s.y, s.r), s.width, s.height);
+                    Set<Side> twice = EnumSet.noneOf(Side.class);
+                    twice.addAll(crossed);
+                    twice.retainAll(previous.get(0));
+                    assertEquals(Set.of(), twice,
                             "ball at (" + s.x + ", " + s.y + ") is past the same edge two frames running");
                     assertTrue(s.x - s.r > -4.5f - 1e-3f && s.x + s.r < s.width + 4.5f + 1e-3f, "at most one step past, x = " + s.x);
                     assertTrue(s.y - s.r > -3.2f - 1e-3f && s.y + s.r < s.height + 3.2f + 1e-3f, "at most one step past, y = " + s.y);
-                    assertEquals(Integer.toHexString(crossed != Edges.NONE ? Palette.HIT : Palette.PLAYER),
+                    assertEquals(Integer.toHexString(!crossed.isEmpty() ? Palette.HIT : Palette.PLAYER),
                             Integer.toHexString(ballColour(s)), "red exactly on the frames it crossed an edge");
-                    edgesCrossed[0] |= crossed;
-                    previous[0] = crossed;
+                    edgesCrossed.addAll(crossed);
+                    previous.set(0, crossed);
                 })
                 .run();
-        assertEquals(Side.ALL_BITS, edgesCrossed[0],
+        assertEquals(Set.of(Side.LEFT, Side.RIGHT, Side.TOP, Side.BOTTOM), edgesCrossed,
                 "in 5000 frames the ball reaches and bounces off all four edges");
     }
 
@@ -115,8 +123,8 @@ class S01_EdgeBounceTest {
                 assertTrue(s.x - s.r >= s.left, "back inside the box by frame 40, x = " + s.x);
             }
             if (s.frameCount >= 40) {
-                int crossed = Edges.circleCrossed(s.x - s.left, s.y - s.top, s.r, s.right - s.left, s.bottom - s.top);
-                inside[0] |= crossed == Edges.NONE;
+                Set<Side> crossed = Edges.crossed(new Circle(s.x - s.left, s.y - s.top, s.r), s.right - s.left, s.bottom - s.top);
+                inside[0] |= crossed.isEmpty();
                 assertTrue(s.x - s.r > s.left - 4.5f - 1e-3f && s.x + s.r < s.right + 4.5f + 1e-3f, "stays in the box, x = " + s.x);
                 assertTrue(s.y - s.r > s.top - 3.2f - 1e-3f && s.y + s.r < s.bottom + 3.2f + 1e-3f, "stays in the box, y = " + s.y);
             }

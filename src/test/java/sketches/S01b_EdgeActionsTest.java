@@ -1,5 +1,7 @@
 package sketches;
 
+import hitbox.Circle;
+import java.util.Set;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -125,7 +127,7 @@ class S01b_EdgeActionsTest {
         S01b_EdgeActions s = SketchRun.of(new S01b_EdgeActions())
                 .script(new Script().frames(90).key(1, 'g').key(1, 'l')).run().sketch();
         assertTrue(s.gameOver);
-        assertTrue(Side.has(Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height), Side.RIGHT));
+        assertTrue(Edges.crossed(new Circle(s.x, s.y, s.r), s.width, s.height).contains(Side.RIGHT));
         assertTrue(s.x <= s.width, "over before the centre got past: " + s.x);
     }
 
@@ -135,7 +137,7 @@ class S01b_EdgeActionsTest {
                 .script(new Script().frames(300).key(1, 's')).run().sketch();
         assertEquals(0f, s.xSpeed, "stopped across");
         assertEquals(0f, s.ySpeed, "stopped down");
-        assertEquals(Edges.NONE, Edges.circleCrossed(s.x, s.y, s.r, s.width, s.height), "put back inside");
+        assertEquals(Set.of(), Edges.crossed(new Circle(s.x, s.y, s.r), s.width, s.height), "put back inside");
 
         S01b_EdgeActions again = SketchRun.of(new S01b_EdgeActions())
                 .script(new Script().frames(320).key(1, 's').key(300, 'w')).run().sketch();

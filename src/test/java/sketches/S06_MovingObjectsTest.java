@@ -1,5 +1,7 @@
 package sketches;
 
+import hitbox.Rect;
+import java.util.Set;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -37,7 +39,7 @@ class S06_MovingObjectsTest {
             assertFalse(Collide.rectRect(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight,
                     s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight),
                     "it overlaps the center rectangle at (" + s.bouncingRectX + ", " + s.bouncingRectY + ")");
-            assertEquals(Edges.NONE, Edges.rectCrossed(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight, s.width, s.height),
+            assertEquals(Set.of(), Edges.crossed(new Rect(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight), s.width, s.height),
                     "it left the window at (" + s.bouncingRectX + ", " + s.bouncingRectY + ")");
         }).run();
     }
@@ -62,8 +64,7 @@ class S06_MovingObjectsTest {
                 boolean across = Collide.rectRect(px + pvx, py, w, h, s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight);
                 boolean down = Collide.rectRect(px, py + pvy, w, h, s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight);
                 boolean diagonal = Collide.rectRect(px + pvx, py + pvy, w, h, s.centerRectX, s.centerRectY, s.centerRectWidth, s.centerRectHeight);
-                boolean nearAnEdge = Edges.rectCrossed(px - Math.abs(pvx), py - Math.abs(pvy), w + 2 * Math.abs(pvx), h + 2 * Math.abs(pvy),
-                        s.width, s.height) != Edges.NONE;
+                boolean nearAnEdge = !Edges.crossed(new Rect(px - Math.abs(pvx), py - Math.abs(pvy), w + 2 * Math.abs(pvx), h + 2 * Math.abs(pvy)), s.width, s.height).isEmpty();
                 if (across) {
                     assertEquals(-pvx, s.bouncingRectSpeedX, "the move across would collide: bouncingRectSpeedX *= -1, frame " + s.frameCount);
                     bounces[0]++;

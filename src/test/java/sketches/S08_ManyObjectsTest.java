@@ -1,5 +1,6 @@
 package sketches;
 
+import hitbox.Rect;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -129,7 +130,7 @@ class S08_ManyObjectsTest {
         float[] last = new float[2];
         SketchRun.Result<S08_ManyObjects> r = SketchRun.of(new S08_ManyObjects()).script(script).everyFrame(s -> {
             assertEquals(-1, inside(s), "the box at (" + s.bouncingRectX + ", " + s.bouncingRectY + ") overlaps an obstacle");
-            assertEquals(Edges.NONE, Edges.rectCrossed(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight, s.width, s.height), "inside the window");
+            assertEquals(Set.of(), Edges.crossed(new Rect(s.bouncingRectX, s.bouncingRectY, s.bouncingRectWidth, s.bouncingRectHeight), s.width, s.height), "inside the window");
             for (int i = 0; i < s.rectangles.size(); i++) {
                 if (s.rectangles.get(i).lit()) {
                     lit.add(i);

@@ -9,8 +9,10 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
+import hitbox.Circle;
 import hitbox.Collide;
 import hitbox.Hit;
+import hitbox.Rect;
 import hitbox.Sweep;
 import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
@@ -53,8 +55,8 @@ class S10e_FastObjectsTest {
             if (b.hitNow) {
                 stops[0]++;
                 // The step it was about to take, asked of the library afresh.
-                Hit expected = Sweep.circleRectHit(s.impactFromX, b.y, s.r, b.vx, 0,
-                        s.wallX, s.wallY, s.wallW, s.wallH);
+                Hit expected = Sweep.timeOfImpact(new Circle(s.impactFromX, b.y, s.r), b.vx, 0,
+                        new Rect(s.wallX, s.wallY, s.wallW, s.wallH));
                 assertNotNull(expected, "Sweep finds the wall on that step");
                 assertEquals(expected, s.impact, "the sketch's answer is Sweep's");
                 assertEquals(s.impactFromX + expected.t() * b.vx, b.x, 1e-3f, "it moved t of the step");

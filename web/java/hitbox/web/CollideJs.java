@@ -1,6 +1,7 @@
 package hitbox.web;
 
 import hitbox.Collide;
+import hitbox.internal.Containment;
 import org.teavm.jso.JSClass;
 import org.teavm.jso.JSExport;
 
@@ -97,7 +98,7 @@ public final class CollideJs {
     }
 
     /**
-     * {@link Collide#rectCircle}.
+     * {@link Collide#circleRect} with the shapes the other way round.
      *
      * @param x as there
      * @param y as there
@@ -110,7 +111,7 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean rectCircle(float x, float y, float w, float h, float cx, float cy, float r) {
-        return Collide.rectCircle(x, y, w, h, cx, cy, r);
+        return RawTests.rectCircle(x, y, w, h, cx, cy, r);  // the library asks it the one way round
     }
 
     /**
@@ -148,7 +149,7 @@ public final class CollideJs {
     }
 
     /**
-     * {@link Collide#circleContainsRect}.
+     * Does the circle hold the rectangle (edges and outline included)? {@code Circle.contains(Rect)} on plain floats; false for NaN, infinite or negative values.
      *
      * @param cx as there
      * @param cy as there
@@ -161,11 +162,13 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean circleContainsRect(float cx, float cy, float r, float rectX, float rectY, float rectW, float rectH) {
-        return Collide.circleContainsRect(cx, cy, r, rectX, rectY, rectW, rectH);
+        // The library asks it of the shapes (Circle.contains); the export keeps its plain-float
+        // form and its rule for bad values (false, never an exception) on the same kernel.
+        return RawTests.circleContainsRect(cx, cy, r, rectX, rectY, rectW, rectH);
     }
 
     /**
-     * {@link Collide#rectContainsCircle}.
+     * Does the rectangle hold the circle (edges and outline included)? {@code Rect.contains(Circle)} on plain floats; false for NaN, infinite or negative values.
      *
      * @param x as there
      * @param y as there
@@ -178,7 +181,8 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean rectContainsCircle(float x, float y, float w, float h, float cx, float cy, float r) {
-        return Collide.rectContainsCircle(x, y, w, h, cx, cy, r);
+        // As circleContainsRect: Rect.contains in the library, this form and its rule kept here.
+        return RawTests.rectContainsCircle(x, y, w, h, cx, cy, r);
     }
 
     /**

@@ -3,6 +3,7 @@ package hitbox.web;
 import hitbox.Grid;
 import hitbox.Rect;
 import hitbox.Sweep;
+import hitbox.internal.SideSets;
 import org.teavm.jso.JSBody;
 import org.teavm.jso.JSClass;
 import org.teavm.jso.JSExport;
@@ -186,6 +187,7 @@ public final class GridJs {
     @JSExport
     public JSObject move(float x, float y, float w, float h, float vx, float vy) {
         Sweep.Move m = grid.move(new Rect(x, y, w, h), vx, vy);
-        return move(m.x(), m.y(), m.vx(), m.vy(), m.sides());
+        // JavaScript keeps its bits (LEFT 1, RIGHT 2, TOP 4, BOTTOM 8); the library gives a set.
+        return move(m.x(), m.y(), m.vx(), m.vy(), SideSets.bits(m.sides()));
     }
 }

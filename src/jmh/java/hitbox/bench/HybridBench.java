@@ -64,7 +64,7 @@ public class HybridBench {
         int n = 0;
         for (int i = 0; i < SHAPES; i++) {
             for (int j = i + 1; j < SHAPES; j++) {
-                if (Hybrid.overlaps(shapes[i], shapes[j])) {
+                if (Hybrid.check(shapes[i], shapes[j]).overlaps()) {
                     n++;
                 }
             }
@@ -91,7 +91,7 @@ public class HybridBench {
         int n = 0;
         for (int i = 0; i < SPRITES; i++) {
             for (int j = i + 1; j < SPRITES; j++) {
-                if (Hybrid.overlaps(sprites[i], spriteX[i], spriteY[i], sprites[j], spriteX[j], spriteY[j])) {
+                if (Hybrid.check(sprites[i], spriteX[i], spriteY[i], sprites[j], spriteX[j], spriteY[j]).overlaps()) {
                     n++;
                 }
             }

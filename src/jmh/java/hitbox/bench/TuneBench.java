@@ -366,7 +366,7 @@ public class TuneBench {
     public double sweepCircleRect_hit() {
         double d = 0;
         for (int i = 0; i < N; i++) {
-            Hit h = Sweep.circleRectHit(ox[i], oy[i], cr[i], 10 * dx[i], 10 * dy[i], rx[i], ry[i], rw[i], rh[i]);
+            Hit h = Sweep.timeOfImpact(new Circle(ox[i], oy[i], cr[i]), 10 * dx[i], 10 * dy[i], new Rect(rx[i], ry[i], rw[i], rh[i]));
             d += h == null ? 0 : h.t();
         }
         return d;

@@ -299,11 +299,6 @@ public abstract class AbstractBroadPhase implements BroadPhase {
     }
 
     @Override
-    public final void raycast(float ox, float oy, float dx, float dy, float maxDistance, RayVisitor out) {
-        raycast(new Ray(ox, oy, dx, dy, maxDistance), out);
-    }
-
-    @Override
     public final void raycast(Ray ray, RayVisitor out) {
         Check.notNull("ray", ray);
         Check.notNull("out", out);

@@ -2,18 +2,17 @@ package hitbox.internal;
 
 import hitbox.*;
 
-import java.util.Arrays;
 import java.util.function.IntConsumer;
 
 /**
- * The one place {@link Hits} and {@link Motion} turn a {@link BroadPhase} of obstacles into
- * the answers their list versions give: the broad phase names the candidates near a box, and
+ * Where {@link Motion} turns a {@link BroadPhase} of obstacles into the answers its list
+ * versions give: the broad phase names the candidates near a box, and
  * each candidate is then tested exactly as the list versions test every obstacle, so the
  * answers are the same, only found without visiting the far obstacles.
  *
- * <p>The broad phase refuses NaN, infinite and negative boxes, which the raw-float methods of
- * {@code Hits} and {@code Motion} accept (they answer as {@link Collide#rectRect} would); for
- * such a box every stored obstacle is a candidate.
+ * <p>The broad phase refuses NaN, infinite and negative boxes, which a move can make (a NaN
+ * speed; it answers as {@link Collide#rectRect} would); for such a box every stored obstacle
+ * is a candidate.
  */
 public final class BroadPhaseHits {
     private BroadPhaseHits() {
@@ -44,23 +43,7 @@ public final class BroadPhaseHits {
     }
 
     /** The ids of the stored boxes that the box overlaps by {@link Collide#rectRect}, ascending. */
-    public static int[] overlapping(BroadPhase obstacles, float x, float y, float w, float h) {
-        int[][] found = {new int[8]};
-        int[] n = {0};
-        candidates(obstacles, x, y, w, h, id -> {
-            if (RawTests.rectRect(x, y, w, h, obstacles.x(id), obstacles.y(id), obstacles.w(id), obstacles.h(id))) {
-                if (n[0] == found[0].length) {
-                    found[0] = Arrays.copyOf(found[0], 2 * n[0]);
-                }
-                found[0][n[0]++] = id;
-            }
-        });
-        int[] ids = Arrays.copyOf(found[0], n[0]);
-        Arrays.sort(ids);
-        return ids;
-    }
-
-    /** {@link Motion#rectBlocked} over every obstacle the move could reach: the OR of the answers. */
+    /** {@link NextPosition#rect} over every obstacle the move could reach: the OR of the answers, in {@link SideSets}' bits. */
     public static int rectBlocked(float x, float y, float w, float h, float vx, float vy, BroadPhase obstacles) {
         float nx = x + vx;
         float ny = y + vy;
@@ -69,9 +52,9 @@ public final class BroadPhaseHits {
         // The box that holds the mover at all three next positions the per-axis check tries.
         float right = Math.max(x, nx) + w;
         float bottom = Math.max(y, ny) + h;
-        int[] blocked = {Motion.NONE};
+        int[] blocked = {0};
         candidates(obstacles, left, top, right - left, bottom - top, id -> blocked[0] |=
-                Motion.rectBlocked(x, y, w, h, vx, vy, obstacles.x(id), obstacles.y(id), obstacles.w(id), obstacles.h(id)));
+                NextPosition.rect(x, y, w, h, vx, vy, obstacles.x(id), obstacles.y(id), obstacles.w(id), obstacles.h(id)));
         return blocked[0];
     }
 }

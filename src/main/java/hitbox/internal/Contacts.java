@@ -4,12 +4,11 @@ import hitbox.*;
 
 /**
  * The table behind {@link Contact#between}: every pair of shape kinds routed to the code for
- * that pair, plus the one tie rule every contact uses, and the bodies of
- * {@code Contact}'s raw-float forms.
+ * that pair, plus the one tie rule every contact uses.
  *
- * <p>This class is longer than most (about 470 lines): it is the whole table, one small
- * method per pair of kinds so that the JIT can inline each into a caller's loop, and the
- * pairs that need more than a call (a circle or a polygon against a rectangle) in full.
+ * <p>This class is longer than most (about 480 lines) because the table is one place for all
+ * 21 unordered pairs of kinds, with the two-circle and two-box contacts on plain floats that
+ * used to be {@code Contact}'s raw forms (issue 30 kept them here, as the kernels they are).
  */
 public final class Contacts {
     private Contacts() {
@@ -300,7 +299,7 @@ public final class Contacts {
                 return null;
             }
             // A polygon's cached corners, or a rectangle's written into this thread's scratch
-            // array (two rectangles went to Contact.rectRect), so that nothing is allocated
+            // array (two rectangles went to rectRect), so that nothing is allocated
             // but the answer. The search decides apart exactly and only reads them.
             double[] scratch = polygonA && polygonB ? null : RECT_CORNERS.get();
             return FaceQuery.convexPolygons(cornersOf(a, polygonA, scratch), windingOf(a, polygonA), r,
@@ -446,7 +445,11 @@ public final class Contacts {
         return new Contact((float) nx, (float) ny, Math.max(Check.held(depth), Float.MIN_VALUE));
     }
 
-    /** {@code Contact.circleCircle}: null unless the circles overlap, by the contract there. */
+    /**
+     * The contact of two circles given by plain floats, or null when they do not overlap (and
+     * for NaN, infinite or negative values): the normal from the first centre to the second,
+     * the depth {@code r1 + r2 - dist}; circles with one centre get (0, 1) and {@code r1 + r2}.
+     */
     public static Contact circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
         if (Check.notFinite(x1, y1, r1, x2, y2) || Check.notFinite(r2, 0, 0, 0, 0) || r1 < 0 || r2 < 0
                 || !RawTests.circleCircle(x1, y1, r1, x2, y2, r2)) {
@@ -462,7 +465,11 @@ public final class Contacts {
         return of(dx / dist, dy / dist, reach - dist);
     }
 
-    /** {@code Contact.rectRect}: null unless the rectangles overlap, by the contract there. */
+    /**
+     * The contact of two rectangles given by plain floats, or null when they do not overlap
+     * (and for NaN, infinite or negative values): the first rectangle's shortest way out of
+     * the second, an axis normal.
+     */
     public static Contact rectRect(float x1, float y1, float w1, float h1,
                                    float x2, float y2, float w2, float h2) {
         if (Check.notFinite(x1, y1, w1, h1, x2) || Check.notFinite(y2, w2, h2, 0, 0)

@@ -183,7 +183,7 @@ public final class Containment {
         return a != b ? a < b : atLeast(w, ws, v, vs);
     }
 
-    /** {@link Collide#rectContainsCircle}: finite values, sizes 0 or more. */
+    /** Does the rectangle hold the circle ({@code Rect.contains(Circle)}): finite values, sizes 0 or more. */
     public static boolean rectCircle(float x, float y, float w, float h, float cx, float cy, float r) {
         return within(cx, -r, r, x, 0, w) && within(cy, -r, r, y, 0, h);
     }
@@ -193,7 +193,7 @@ public final class Containment {
         return new Disc(x1, y1, r1).holds(x2, y2, r2);
     }
 
-    /** {@link Collide#circleContainsRect}: finite values, sizes 0 or more. */
+    /** Does the circle hold the rectangle ({@code Circle.contains(Rect)}): finite values, sizes 0 or more. */
     public static boolean circleRect(float cx, float cy, float r, float rectX, float rectY, float rectW, float rectH) {
         double right = (double) rectX + rectW, bottom = (double) rectY + rectH;
         return discWithin(rectX, rectY, cx, cy, r, 0) && discWithin(right, rectY, cx, cy, r, 0)

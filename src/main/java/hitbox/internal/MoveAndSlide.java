@@ -78,9 +78,9 @@ public final class MoveAndSlide {
                 my = 0;
                 keepVy = 0;
             }
-            sides |= side.bit();
+            sides |= SideSets.bit(side);
         }
-        return new Sweep.Move(x, y, keepVx, keepVy, sides);
+        return new Sweep.Move(x, y, keepVx, keepVy, SideSets.of(sides));
     }
 
     /**

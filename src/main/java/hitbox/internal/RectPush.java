@@ -5,7 +5,7 @@ import hitbox.*;
 /**
  * The rectangle push-out, in one place: the four ways a box can leave another box, how far
  * each is, which is shortest, and where the box stands afterwards, touching. {@link Snap}
- * places the box with it, {@link Contact#rectRect} reports it as a normal and a depth, and
+ * places the box with it, {@link Contacts#rectRect} reports it as a normal and a depth, and
  * {@link Sweep#move} stands a box against the face it hit.
  *
  * <p>The ways out are named by the obstacle's side the mover ends up against:
