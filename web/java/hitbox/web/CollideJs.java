@@ -1,7 +1,7 @@
 package hitbox.web;
 
 import hitbox.Collide;
-import hitbox.internal.Containment;
+import hitbox.internal.RawTests;
 import org.teavm.jso.JSClass;
 import org.teavm.jso.JSExport;
 
