@@ -97,6 +97,8 @@ public final class World {
     private Map<Long, Body[]> contacts = new HashMap<>();
 
     private final double[] scratch = new double[4];
+    /** A grid's body's cells, for the queries and the contacts. */
+    private final GridCollider grids = new GridCollider();
     /** The move-and-slide solver: every move walks there. */
     private final Mover mover = new Mover(this);
 
@@ -748,33 +750,12 @@ public final class World {
             return false;
         }
         if (a.grid != null) {
-            return gridMeets(a, b.shape());
+            return grids.meets(a.grid, b.shape());
         }
         if (b.grid != null) {
-            return gridMeets(b, a.shape());
+            return grids.meets(b.grid, a.shape());
         }
         return a.shape().overlaps(b.shape());
-    }
-
-    /** Does a shape overlap a solid cell of a grid's body? */
-    private boolean gridMeets(Body g, Shape s) {
-        return gridCell(g, s) >= 0;
-    }
-
-    /** The first solid cell (row by row) of a grid's body that a shape overlaps, or -1. */
-    private int gridCell(Body g, Shape s) {
-        Grid grid = g.grid;
-        double pad = pad(s.minX(), s.minY(), s.maxX(), s.maxY());
-        int c0 = Math.max(0, grid.colAt((float) (s.minX() - pad))), c1 = Math.min(grid.cols() - 1, grid.colAt((float) (s.maxX() + pad)));
-        int r0 = Math.max(0, grid.rowAt((float) (s.minY() - pad))), r1 = Math.min(grid.rows() - 1, grid.rowAt((float) (s.maxY() + pad)));
-        for (int row = r0; row <= r1; row++) {
-            for (int col = c0; col <= c1; col++) {
-                if (grid.isSolid(col, row) && s.overlaps(grid.cellRect(col, row))) {
-                    return row * grid.cols() + col;
-                }
-            }
-        }
-        return -1;
     }
 
     /**
@@ -824,14 +805,7 @@ public final class World {
         List<Body> out = new ArrayList<>();
         for (int i = 0; i < candCount; i++) {
             Body b = byId[cand[i]];
-            boolean in;
-            if (b.grid != null) {
-                Grid g = b.grid;
-                int col = g.colAt(x), row = g.rowAt(y);
-                in = g.inGrid(col, row) && g.isSolid(col, row) && g.cellRect(col, row).contains(x, y);
-            } else {
-                in = b.shape().contains(x, y);
-            }
+            boolean in = b.grid != null ? grids.holds(b.grid, x, y) : b.shape().contains(x, y);
             if (in && keep(filter, b)) {
                 out.add(b);
             }
@@ -907,7 +881,7 @@ public final class World {
             if (b == except) {
                 continue;
             }
-            boolean meets = b.grid != null ? gridMeets(b, shape) : b.shape().overlaps(shape);
+            boolean meets = b.grid != null ? grids.meets(b.grid, shape) : b.shape().overlaps(shape);
             if (meets && keep(filter, b)) {
                 out.add(b);
             }
@@ -946,7 +920,7 @@ public final class World {
         List<Body> out = new ArrayList<>();
         for (int i = 0; i < candCount; i++) {
             Body b = byId[cand[i]];
-            if (b != body && b.grid == null && gridMeets(body, b.shape()) && keep(filter, b)) {
+            if (b != body && b.grid == null && grids.meets(body.grid, b.shape()) && keep(filter, b)) {
                 out.add(b);
             }
         }
@@ -1013,7 +987,7 @@ public final class World {
         List<BodyHit> out = new ArrayList<>();
         for (int i = 0; i < candCount; i++) {
             Body b = byId[cand[i]];
-            BodyHit hit = b.grid != null ? gridRay(b, ray) : hitOf(b, ray.cast(b.shape()));
+            BodyHit hit = b.grid != null ? grids.ray(b, b.grid, ray) : hitOf(b, ray.cast(b.shape()));
             if (hit != null && keep(filter, b)) {
                 out.add(hit);
                 if (firstOnly) {
@@ -1031,30 +1005,6 @@ public final class World {
 
     private static BodyHit hitOf(Body b, RayHit h) {
         return h == null ? null : new BodyHit(b, h, -1);
-    }
-
-    /** The nearest solid cell of a grid's body that a ray meets, within its reach and the grid. */
-    private BodyHit gridRay(Body b, Ray ray) {
-        Grid g = b.grid;
-        double len = Math.hypot(ray.dx(), ray.dy());
-        double reach = Math.min(ray.maxDistance(), Math.hypot(g.width(), g.height())
-                + Math.hypot(Math.max(Math.abs(ray.ox()), Math.abs(ray.ox() - g.width())),
-                Math.max(Math.abs(ray.oy()), Math.abs(ray.oy() - g.height()))));
-        double ex = ray.ox() + ray.dx() / len * reach, ey = ray.oy() + ray.dy() / len * reach;
-        int c0 = Math.max(0, g.colAt((float) Math.min(ray.ox(), ex))), c1 = Math.min(g.cols() - 1, g.colAt((float) Math.max(ray.ox(), ex)));
-        int r0 = Math.max(0, g.rowAt((float) Math.min(ray.oy(), ey))), r1 = Math.min(g.rows() - 1, g.rowAt((float) Math.max(ray.oy(), ey)));
-        BodyHit best = null;
-        for (int row = r0; row <= r1; row++) {
-            for (int col = c0; col <= c1; col++) {
-                if (g.isSolid(col, row)) {
-                    RayHit h = ray.cast(g.cellRect(col, row));
-                    if (h != null && (best == null || h.distance() < best.distance())) {
-                        best = new BodyHit(b, h, row * g.cols() + col);
-                    }
-                }
-            }
-        }
-        return best;
     }
 
     // ---------------------------------------------------------------- looking inside
@@ -1075,6 +1025,11 @@ public final class World {
     @Override
     public String toString() {
         return "World of " + size + " bodies on " + broad;
+    }
+
+    /** The grids' cell answers, for the tests that count the cells looked at. */
+    GridCollider grids() {
+        return grids;
     }
 
     /** The broad phase, for the tests that check a refused call changed nothing. */
