@@ -274,9 +274,10 @@ public final class Body {
      *                               callback of its world
      */
     public Body layers(int category, int mask) {
-        live("layers");
+        World w = live("layers");
         this.category = category;
         this.mask = mask;
+        w.layersChanged(this);
         return this;
     }
 

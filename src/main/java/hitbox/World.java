@@ -3,10 +3,8 @@ package hitbox;
 import hitbox.internal.*;
 
 import java.util.ArrayList;
-import java.util.Collections;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
+import java.util.function.BiConsumer;
 import java.util.function.IntConsumer;
 import java.util.function.Predicate;
 
@@ -94,7 +92,8 @@ public final class World {
     // Contacts and the collisions of the current step.
     private final ArrayList<Collision> stepCollisions = new ArrayList<>();
     private boolean stepped;
-    private Map<Long, Body[]> contacts = new HashMap<>();
+    /** The contacts, kept from step to step. */
+    private final ContactTracker tracker;
 
     private final double[] scratch = new double[4];
     /** A grid's body's cells, for the queries and the contacts. */
@@ -120,6 +119,7 @@ public final class World {
             throw new IllegalArgumentException("broadPhase must be empty, but holds " + broadPhase.size() + " boxes");
         }
         this.broad = broadPhase;
+        this.tracker = new ContactTracker(this, broadPhase);
     }
 
     // ---------------------------------------------------------------- bodies
@@ -231,6 +231,9 @@ public final class World {
         }
         byId[id] = b;
         size++;
+        if (grid != null) {
+            tracker.addedGrid(b);
+        }
         return b;
     }
 
@@ -249,6 +252,7 @@ public final class World {
         if (body.dirtyIndex >= 0) {
             undirty(body);
         }
+        tracker.removed(body);
         broad.remove(body.id);
         byId[body.id] = null;
         if (freeCount == freeIds.length) {
@@ -473,6 +477,7 @@ public final class World {
         if (!saved.dirty() && b.dirtyIndex >= 0) {
             undirty(b);
         }
+        tracker.changed(b);
     }
 
     /** Asks a filter for a pair's reaction, reporting what it throws as the world's rules say. */
@@ -572,6 +577,7 @@ public final class World {
      * putting one box per move would rebuild it once per move.
      */
     private void setBox(Body b, float x, float y, float w, float h) {
+        tracker.changed(b);
         if (b.grid != null) {
             b.boxX = b.fatX = 0;
             b.boxY = b.fatY = 0;
@@ -644,51 +650,133 @@ public final class World {
     // ---------------------------------------------------------------- events
 
     /**
-     * Ends the frame: the contacts now (pairs whose layers accept each other that overlap, or
-     * that a move since the last step met), compared with those of the last step. Call once a
-     * frame, after the moves.
+     * Ends the frame and reports every contact as an event: the contacts now (pairs whose
+     * layers accept each other that overlap, or that a move since the last step met), compared
+     * with those of the last step. Call once a frame, after the moves. Matter.js's
+     * {@code collisionStart}, {@code collisionActive} and {@code collisionEnd} in one list.
+     *
+     * <p>This is the simple form, for a sketch with a few contacts: it makes a STAY event for
+     * every contact that goes on, every frame. A world with many bodies at rest calls
+     * {@link #step(List)} instead, which hands only the changes, and reads the contacts that
+     * go on when it needs them ({@link #contacts(BiConsumer)}, {@link #contacts(Body, List)},
+     * {@link #inContact}), as Box2D v3's begin and end events and contact data.
      *
      * @return the events, ENTER and EXIT once per change and STAY for each contact that goes
-     *         on, bodies of each pair in the order added; empty if there are none, never null
+     *         on, ordered by pair (the pair's body added first, then the other), bodies of each
+     *         pair in the order added; a new list, the caller's; empty if there are none
      * @throws IllegalStateException if called from inside a callback of this world
      */
     public List<BodyEvent> step() {
         checkNotInCallback("step");
-        flush();
-        Map<Long, Body[]> now = new HashMap<>();
-        broad.pairs((i, j) -> {
-            Body a = byId[i], b = byId[j];
-            if (a.accepts(b) && overlap(a, b)) {
-                putPair(now, a, b);
-            }
-        });
-        if (!stepped) {
-            for (Collision c : stepCollisions) {
-                if (c.mover().world == this && c.other().world == this && c.mover().accepts(c.other())) {
-                    putPair(now, c.mover(), c.other());
-                }
-            }
-        }
         List<BodyEvent> events = new ArrayList<>();
-        List<Long> keys = new ArrayList<>(now.keySet());
-        for (Long k : contacts.keySet()) {
-            if (!now.containsKey(k)) {
-                keys.add(k);
-            }
-        }
-        Collections.sort(keys);
-        for (Long k : keys) {
-            Body[] p = now.get(k);
-            if (p == null) {
-                Body[] q = contacts.get(k);
-                events.add(new BodyEvent(BodyEvent.Kind.EXIT, q[0], q[1]));
-            } else {
-                events.add(new BodyEvent(contacts.containsKey(k) ? BodyEvent.Kind.STAY : BodyEvent.Kind.ENTER, p[0], p[1]));
-            }
-        }
-        contacts = now;
-        stepped = true;
+        endFrame(events, true);
         return events;
+    }
+
+    /**
+     * Ends the frame and puts into {@code changes} the contacts that began (ENTER) and ended
+     * (EXIT) since the last step, each once; never a STAY. The contacts are those of
+     * {@link #step()}. It costs in proportion to what changed: the bodies moved, turned, added,
+     * removed or given new layers since the last step (and the grids whose cells changed),
+     * and their neighbours; a pair of bodies that both stand keeps its contact untested, and a
+     * step in which nothing changed tests no pair and allocates nothing.
+     *
+     * @param changes cleared, then given the ENTER and EXIT events ordered by pair (the pair's
+     *                body added first, then the other); not null
+     * @throws IllegalArgumentException if {@code changes} is null
+     * @throws IllegalStateException    if called from inside a callback of this world
+     */
+    public void step(List<BodyEvent> changes) {
+        Check.notNull("changes", changes);
+        checkNotInCallback("step");
+        changes.clear();
+        endFrame(changes, false);
+    }
+
+    private void endFrame(List<BodyEvent> out, boolean stays) {
+        flush();
+        tracker.step(stepped ? null : stepCollisions, out, stays);
+        stepped = true;
+    }
+
+    /**
+     * How many pairs of bodies are in contact, as of the last step.
+     *
+     * @return the number of contacts, 0 or more
+     */
+    public int contactCount() {
+        return tracker.count();
+    }
+
+    /**
+     * Visits every pair of bodies in contact, as of the last step ({@link #step(List)}): the
+     * contacts that go on, read when needed rather than reported every frame. Nothing is made
+     * per contact.
+     *
+     * @param out receives each pair, the body added first first, in no particular order of
+     *            pairs; it may read the world but not change it; not null
+     * @throws IllegalArgumentException if {@code out} is null, or it threw
+     * @throws IllegalStateException    if called from inside a callback of this world, or
+     *                                  {@code out} tried to change the world
+     */
+    public void contacts(BiConsumer<Body, Body> out) {
+        Check.notNull("out", out);
+        checkNotInCallback("contacts");
+        callbackDepth++;
+        try {
+            tracker.forEach(out);
+        } catch (IllegalStateException e) {
+            throw e;
+        } catch (RuntimeException e) {
+            throw new IllegalArgumentException("out threw " + e, e);
+        } finally {
+            callbackDepth--;
+        }
+    }
+
+    /**
+     * Adds to a list the bodies in contact with a body, as of the last step.
+     *
+     * @param body a body of this world, not null
+     * @param out  the caller's list, which gets the bodies added (in no particular order;
+     *             nothing is removed from it), not null
+     * @throws IllegalArgumentException if an argument is null, or the body was removed or is
+     *                                  another world's
+     */
+    public void contacts(Body body, List<Body> out) {
+        own("body", body);
+        Check.notNull("out", out);
+        tracker.of(body, out);
+    }
+
+    /**
+     * Are two bodies in contact, as of the last step?
+     *
+     * @param a a body of this world, not null
+     * @param b another body of this world, not null
+     * @return true if they were in contact at the last step
+     * @throws IllegalArgumentException if an argument is null, or a body was removed or is
+     *                                  another world's
+     */
+    public boolean inContact(Body a, Body b) {
+        own("a", a);
+        own("b", b);
+        return a != b && tracker.touching(a, b);
+    }
+
+    /** The contact tracker, for the tests that count the pairs it tests. */
+    ContactTracker tracker() {
+        return tracker;
+    }
+
+    /** A body's layers changed: its contacts need a look at the next step. */
+    void layersChanged(Body b) {
+        tracker.changed(b);
+    }
+
+    /** The body of an id, or null. */
+    Body body(int id) {
+        return id < byId.length ? byId[id] : null;
     }
 
     /**
@@ -703,7 +791,7 @@ public final class World {
      * @throws IllegalStateException    if called from inside a callback of this world, or
      *                                  {@code out} tried to change the world
      */
-    public void pairs(java.util.function.BiConsumer<Body, Body> out) {
+    public void pairs(BiConsumer<Body, Body> out) {
         Check.notNull("out", out);
         checkNotInCallback("pairs");
         flush();
@@ -729,17 +817,8 @@ public final class World {
         });
     }
 
-    private static void putPair(Map<Long, Body[]> map, Body a, Body b) {
-        if (a.serial > b.serial) {
-            Body t = a;
-            a = b;
-            b = t;
-        }
-        map.putIfAbsent(((long) a.serial << 32) | b.serial, new Body[] {a, b});
-    }
-
     /** Do two bodies overlap now (a grid's body: one of its solid cells)? */
-    private boolean overlap(Body a, Body b) {
+    boolean overlap(Body a, Body b) {
         // The tight boxes first (the broad phase holds fat ones): no shape is made for a pair
         // whose boxes are apart.
         if (a.boxX > (double) b.boxX + b.boxW || b.boxX > (double) a.boxX + a.boxW
