@@ -40,7 +40,8 @@ import hitbox.internal.*;
  * changed from inside a filter or query callback of its world ({@link IllegalStateException}).
  */
 public final class Body {
-    // The world's bookkeeping: package-private, read and written by World.
+    // The world's bookkeeping: package-private, read by World, Mover and CharacterBody, and
+    // written only by the methods below (pose, placed, box, fat, dirtyIndex, removed, becomes).
     World world;
     final int id;
     final int serial;
@@ -80,13 +81,6 @@ public final class Body {
     Side oneWay = Side.NONE;
     boolean carrier;
     Object data;
-    /** Per-move scratch of the world: the move stamp when last seen, its reaction, its flags. */
-    int seenStamp;
-    Reaction seenReaction;
-    boolean seenOverlap;
-    boolean seenCrossed;
-    boolean seenBlocked;
-    int riderStamp;
     /** The character this body is, or null. */
     CharacterBody character;
 
@@ -98,6 +92,63 @@ public final class Body {
         this.pivotX = pivotX;
         this.pivotY = pivotY;
         this.grid = grid;
+    }
+
+    // ---------------------------------------------------------------- its state, changed by the world
+
+    /**
+     * A new pose (a teleport, or the body's first): the translation, the angle with its cosine
+     * and sine, the turned shape's extents about the pivot; the shape is made again when asked.
+     */
+    void pose(double tx, double ty, float angle, double cos, double sin, double[] turnedExtents) {
+        this.tx = tx;
+        this.ty = ty;
+        this.angle = angle;
+        this.cos = cos;
+        this.sin = sin;
+        if (turnedExtents != extents) {
+            System.arraycopy(turnedExtents, 0, extents, 0, 4);
+        }
+        this.shape = null;
+    }
+
+    /** Moved (not turned) to where a move left it: the translation and the shape there, made by the move. */
+    void placed(double tx, double ty, Shape shape) {
+        this.tx = tx;
+        this.ty = ty;
+        this.shape = shape;
+    }
+
+    /** The tight box, at or a hair outside the shape. */
+    void box(float x, float y, float w, float h) {
+        boxX = x;
+        boxY = y;
+        boxW = w;
+        boxH = h;
+        boxed = true;
+    }
+
+    /** The fat box the broad phase holds (or will hold, while the body is dirty). */
+    void fat(float x, float y, float w, float h) {
+        fatX = x;
+        fatY = y;
+        fatW = w;
+        fatH = h;
+    }
+
+    /** Where the body is in the world's list of bodies waiting for the broad phase, or -1. */
+    void dirtyIndex(int i) {
+        dirtyIndex = i;
+    }
+
+    /** Removed from its world: dead from now on. */
+    void removed() {
+        world = null;
+    }
+
+    /** This body is a character's. */
+    void becomes(CharacterBody character) {
+        this.character = character;
     }
 
     // ---------------------------------------------------------------- the pose
@@ -146,13 +197,18 @@ public final class Body {
     }
 
     /**
-     * The body's box: at or a hair outside {@code shape().bounds()}, made without making the
-     * shape. (The broad phase holds it grown by a margin, so a body that moves a little
-     * costs it nothing.)
+     * The body's box: for a body at angle 0 (and a grid's) exactly {@code shape().bounds()},
+     * so a floor added as {@code new Rect(0, 400, 800, 20)} has its top at 400; for a turned
+     * body, at or a hair outside {@code shape().bounds()}, made without making the turned
+     * shape. (The broad phase holds it grown by a margin, so a body that moves a little costs
+     * it nothing.)
      *
      * @return a new rectangle, never null
      */
     public Rect bounds() {
+        if (angle == 0) {
+            return shape().bounds();
+        }
         return new Rect(boxX, boxY, boxW, boxH);
     }
 
@@ -372,9 +428,15 @@ public final class Body {
      * @param data the object, not null (a body made without one has none)
      * @return this body, for chaining, never null
      * @throws IllegalArgumentException if {@code data} is null
+     * @throws IllegalStateException    if the body was removed, as every method that changes a
+     *                                  body (a filter may set it: it changes no contact)
      */
     public Body data(Object data) {
-        this.data = Check.notNull("data", data);
+        Check.notNull("data", data);
+        if (world == null) {
+            throw new IllegalStateException("data: this body was removed from its world");
+        }
+        this.data = data;
         return this;
     }
 

@@ -3,6 +3,7 @@ package hitbox;
 import hitbox.internal.*;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.function.BiConsumer;
 import java.util.function.IntConsumer;
@@ -77,7 +78,6 @@ public final class World {
     private int size;
     private int serials;
     private int callbackDepth;
-    private int riderMark;
 
     // Candidates of a query or a leg, by id.
     private int[] cand = new int[16];
@@ -98,6 +98,8 @@ public final class World {
     private final double[] scratch = new double[4];
     /** A grid's body's cells, for the queries and the contacts. */
     private final GridCollider grids = new GridCollider();
+    /** The queries: what a point, a shape, a body and a ray meet. */
+    private final WorldQueries queries = new WorldQueries(this, grids);
     /** The move-and-slide solver: every move walks there. */
     private final Mover mover = new Mover(this);
 
@@ -219,12 +221,7 @@ public final class World {
         float[] box = box(px + tx, py + ty, scratch, "x, y and angle");
         int id = freeCount > 0 ? freeIds[--freeCount] : nextId++;
         Body b = new Body(this, id, serials++, home, px, py, grid);
-        b.tx = tx;
-        b.ty = ty;
-        b.angle = angle;
-        b.cos = cos;
-        b.sin = sin;
-        System.arraycopy(scratch, 0, b.extents, 0, 4);
+        b.pose(tx, ty, angle, cos, sin, scratch);
         setBox(b, box[0], box[1], box[2], box[3]);
         if (id >= byId.length) {
             byId = java.util.Arrays.copyOf(byId, Math.max(2 * byId.length, id + 1));
@@ -259,7 +256,7 @@ public final class World {
             freeIds = java.util.Arrays.copyOf(freeIds, 2 * freeCount);
         }
         freeIds[freeCount++] = body.id;
-        body.world = null;
+        body.removed();
         size--;
     }
 
@@ -289,7 +286,7 @@ public final class World {
             }
         }
         out.sort((a, b) -> Integer.compare(a.serial, b.serial));
-        return out;
+        return Collections.unmodifiableList(out);
     }
 
     // ---------------------------------------------------------------- moving
@@ -372,11 +369,7 @@ public final class World {
     /** A carrier's move: the riders go first when it goes up, after it otherwise. */
     private Collisions moveCarrier(Body p, float dx, float dy, CollisionFilter filter) {
         List<Body> riders = riders(p);
-        int mark = ++riderMark;
-        for (Body r : riders) {
-            r.riderStamp = mark;
-        }
-        CollisionFilter platform = (m, o) -> o.riderStamp == mark ? null : filter.react(m, o);
+        CollisionFilter platform = (m, o) -> riders.contains(o) ? null : filter.react(m, o);
         List<Collision> collisionsBefore = new ArrayList<>(stepCollisions);
         boolean steppedBefore = stepped;
         Saved[] saved = new Saved[riders.size() + 1];
@@ -420,7 +413,6 @@ public final class World {
             stepped = steppedBefore;
             throw e;
         } finally {
-            riderMark++;
             holdFlush = false;
         }
     }
@@ -462,18 +454,10 @@ public final class World {
 
     /** Puts a body back as saved; no flush happened meanwhile, so the broad phase is as it was. */
     private void restore(Body b, Saved saved) {
-        b.tx = saved.tx();
-        b.ty = saved.ty();
-        b.shape = saved.shape();
+        b.placed(saved.tx(), saved.ty(), saved.shape());
         float[] k = saved.box();
-        b.boxX = k[0];
-        b.boxY = k[1];
-        b.boxW = k[2];
-        b.boxH = k[3];
-        b.fatX = k[4];
-        b.fatY = k[5];
-        b.fatW = k[6];
-        b.fatH = k[7];
+        b.box(k[0], k[1], k[2], k[3]);
+        b.fat(k[4], k[5], k[6], k[7]);
         if (!saved.dirty() && b.dirtyIndex >= 0) {
             undirty(b);
         }
@@ -502,9 +486,7 @@ public final class World {
         // The shape's own extents too (no Rect made for them: a move's only new object is its shape).
         float x0 = Math.min(box[0], Math.nextDown((float) end.minX())), y0 = Math.min(box[1], Math.nextDown((float) end.minY()));
         float x1 = Math.max(box[0] + box[2], Math.nextUp((float) end.maxX())), y1 = Math.max(box[1] + box[3], Math.nextUp((float) end.maxY()));
-        m.tx = ntx;
-        m.ty = nty;
-        m.shape = end;
+        m.placed(ntx, nty, end);
         setBox(m, x0, y0, Math.nextUp(x1 - x0), Math.nextUp(y1 - y0));
         if (stepped) {
             stepCollisions.clear();
@@ -533,15 +515,7 @@ public final class World {
             ex = scratch;
         }
         float[] box = box(b.pivotX + tx, b.pivotY + ty, ex, what);
-        if (ex == scratch) {
-            System.arraycopy(scratch, 0, b.extents, 0, 4);
-        }
-        b.tx = tx;
-        b.ty = ty;
-        b.angle = angle;
-        b.cos = cos;
-        b.sin = sin;
-        b.shape = null;
+        b.pose(tx, ty, angle, cos, sin, ex);
         setBox(b, box[0], box[1], box[2], box[3]);
     }
 
@@ -579,20 +553,14 @@ public final class World {
     private void setBox(Body b, float x, float y, float w, float h) {
         tracker.changed(b);
         if (b.grid != null) {
-            b.boxX = b.fatX = 0;
-            b.boxY = b.fatY = 0;
-            b.boxW = b.fatW = b.grid.width();
-            b.boxH = b.fatH = b.grid.height();
+            b.box(0, 0, b.grid.width(), b.grid.height());
+            b.fat(0, 0, b.grid.width(), b.grid.height());
             broad.put(b.id, 0, 0, b.boxW, b.boxH);
             return;
         }
         boolean fresh = !b.boxed;
-        b.boxed = true;
         double ddx = fresh ? 0 : (double) x - b.boxX, ddy = fresh ? 0 : (double) y - b.boxY;
-        b.boxX = x;
-        b.boxY = y;
-        b.boxW = w;
-        b.boxH = h;
+        b.box(x, y, w, h);
         if (!fresh && x >= b.fatX && y >= b.fatY && (double) x + w <= (double) b.fatX + b.fatW
                 && (double) y + h <= (double) b.fatY + b.fatH) {
             return;
@@ -603,15 +571,14 @@ public final class World {
         double x1 = Math.min(Float.MAX_VALUE, (double) x + w + m + Math.max(0, 4 * ddx));
         double y1 = Math.min(Float.MAX_VALUE, (double) y + h + m + Math.max(0, 4 * ddy));
         // Never past the float range: a body near its edge gets a fat box that ends there.
-        b.fatX = Math.min(x, Math.max(-Float.MAX_VALUE, Math.nextDown((float) x0)));
-        b.fatY = Math.min(y, Math.max(-Float.MAX_VALUE, Math.nextDown((float) y0)));
-        b.fatW = (float) Math.min(Float.MAX_VALUE, Math.nextUp(x1 - b.fatX));
-        b.fatH = (float) Math.min(Float.MAX_VALUE, Math.nextUp(y1 - b.fatY));
+        float fx = Math.min(x, Math.max(-Float.MAX_VALUE, Math.nextDown((float) x0)));
+        float fy = Math.min(y, Math.max(-Float.MAX_VALUE, Math.nextDown((float) y0)));
+        b.fat(fx, fy, (float) Math.min(Float.MAX_VALUE, Math.nextUp(x1 - fx)), (float) Math.min(Float.MAX_VALUE, Math.nextUp(y1 - fy)));
         if (b.dirtyIndex < 0) {
             if (dirtyCount == dirty.length) {
                 dirty = java.util.Arrays.copyOf(dirty, 2 * dirtyCount);
             }
-            b.dirtyIndex = dirtyCount;
+            b.dirtyIndex(dirtyCount);
             dirty[dirtyCount++] = b;
         }
         flushIfMany();
@@ -632,7 +599,7 @@ public final class World {
         for (int i = 0; i < dirtyCount; i++) {
             Body b = dirty[i];
             broad.put(b.id, b.fatX, b.fatY, b.fatW, b.fatH);
-            b.dirtyIndex = -1;
+            b.dirtyIndex(-1);
             dirty[i] = null;
         }
         dirtyCount = 0;
@@ -642,9 +609,9 @@ public final class World {
         int i = b.dirtyIndex;
         Body last = dirty[--dirtyCount];
         dirty[i] = last;
-        last.dirtyIndex = i;
+        last.dirtyIndex(i);
         dirty[dirtyCount] = null;
-        b.dirtyIndex = -1;
+        b.dirtyIndex(-1);
     }
 
     // ---------------------------------------------------------------- events
@@ -670,7 +637,7 @@ public final class World {
         checkNotInCallback("step");
         List<BodyEvent> events = new ArrayList<>();
         endFrame(events, true);
-        return events;
+        return Collections.unmodifiableList(events);
     }
 
     /**
@@ -844,7 +811,7 @@ public final class World {
      * @return the collisions in the order met, a new list; empty if none, never null
      */
     public List<Collision> collisions() {
-        return new ArrayList<>(stepCollisions);
+        return Collections.unmodifiableList(new ArrayList<>(stepCollisions));
     }
 
     // ---------------------------------------------------------------- queries
@@ -857,7 +824,7 @@ public final class World {
      *
      * @param x the point's x
      * @param y the point's y
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if x or y is NaN or infinite
      */
     public List<Body> queryPoint(float x, float y) {
@@ -872,24 +839,34 @@ public final class World {
      * @param x      the point's x
      * @param y      the point's y
      * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if x or y is NaN or infinite, {@code filter} is null or
      *                                  threw
      */
     public List<Body> queryPoint(float x, float y, Predicate<Body> filter) {
+        List<Body> out = new ArrayList<>();
+        queryPoint(x, y, filter, out);
+        return Collections.unmodifiableList(out);
+    }
+
+    /**
+     * The bodies the filter keeps whose shape holds a point, put into the caller's list: the
+     * form for a query every frame, which makes nothing once the list has grown.
+     *
+     * @param x      the point's x
+     * @param y      the point's y
+     * @param filter which bodies to keep, not null
+     * @param out    the caller's list: the bodies are added after what it holds, in the order
+     *               added; not null
+     * @throws IllegalArgumentException if x or y is NaN or infinite, {@code filter} or
+     *                                  {@code out} is null, or the filter threw
+     */
+    public void queryPoint(float x, float y, Predicate<Body> filter, List<Body> out) {
         Check.finite("x", x);
         Check.finite("y", y);
         Check.notNull("filter", filter);
-        gather(x, y, x, y);
-        List<Body> out = new ArrayList<>();
-        for (int i = 0; i < candCount; i++) {
-            Body b = byId[cand[i]];
-            boolean in = b.grid != null ? grids.holds(b.grid, x, y) : b.shape().contains(x, y);
-            if (in && keep(filter, b)) {
-                out.add(b);
-            }
-        }
-        return out;
+        Check.notNull("out", out);
+        queries.point(x, y, filter, out);
     }
 
     /**
@@ -901,7 +878,7 @@ public final class World {
      * @param y the box's top edge
      * @param w the box's width, 0 or more
      * @param h the box's height, 0 or more
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if a number is NaN or infinite, or a size negative
      */
     public List<Body> queryBox(float x, float y, float w, float h) {
@@ -919,7 +896,7 @@ public final class World {
      * @param w      the box's width, 0 or more
      * @param h      the box's height, 0 or more
      * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if a number is NaN or infinite, a size negative, or
      *                                  {@code filter} is null or threw
      */
@@ -931,7 +908,7 @@ public final class World {
      * The bodies whose shape overlaps a shape ({@link Shape#overlaps}).
      *
      * @param shape the shape, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if {@code shape} is null
      */
     public List<Body> queryShape(Shape shape) {
@@ -943,29 +920,31 @@ public final class World {
      *
      * @param shape  the shape, not null
      * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
      */
     public List<Body> queryShape(Shape shape, Predicate<Body> filter) {
-        Check.notNull("shape", shape);
-        Check.notNull("filter", filter);
-        return meeting(shape, null, filter);
+        List<Body> out = new ArrayList<>();
+        queryShape(shape, filter, out);
+        return Collections.unmodifiableList(out);
     }
 
-    private List<Body> meeting(Shape shape, Body except, Predicate<Body> filter) {
-        gather(shape.minX(), shape.minY(), shape.maxX(), shape.maxY());
-        List<Body> out = new ArrayList<>();
-        for (int i = 0; i < candCount; i++) {
-            Body b = byId[cand[i]];
-            if (b == except) {
-                continue;
-            }
-            boolean meets = b.grid != null ? grids.meets(b.grid, shape) : b.shape().overlaps(shape);
-            if (meets && keep(filter, b)) {
-                out.add(b);
-            }
-        }
-        return out;
+    /**
+     * The bodies the filter keeps whose shape overlaps a shape (a box is a {@link Rect}), put
+     * into the caller's list: the form for a query every frame, which makes nothing once the
+     * list has grown.
+     *
+     * @param shape  the shape, not null
+     * @param filter which bodies to keep, not null
+     * @param out    the caller's list: the bodies are added after what it holds, in the order
+     *               added; not null
+     * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
+     */
+    public void queryShape(Shape shape, Predicate<Body> filter, List<Body> out) {
+        Check.notNull("shape", shape);
+        Check.notNull("filter", filter);
+        Check.notNull("out", out);
+        queries.shape(shape, null, filter, out);
     }
 
     /**
@@ -973,7 +952,7 @@ public final class World {
      * cells).
      *
      * @param body a body of this world, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if {@code body} is null, removed or another world's
      */
     public List<Body> overlapping(Body body) {
@@ -985,34 +964,42 @@ public final class World {
      *
      * @param body   a body of this world, not null
      * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if an argument is null, the body is removed or another
      *                                  world's, or {@code filter} threw
      */
     public List<Body> overlapping(Body body, Predicate<Body> filter) {
+        List<Body> out = new ArrayList<>();
+        overlapping(body, filter, out);
+        return Collections.unmodifiableList(out);
+    }
+
+    /**
+     * The bodies the filter keeps that a body overlaps now, put into the caller's list: the
+     * form for a query every frame, which makes nothing once the list has grown.
+     *
+     * @param body   a body of this world, not null
+     * @param filter which bodies to keep, not null
+     * @param out    the caller's list: the bodies are added after what it holds, in the order
+     *               added; not null
+     * @throws IllegalArgumentException if an argument is null, the body is removed or another
+     *                                  world's, or {@code filter} threw
+     */
+    public void overlapping(Body body, Predicate<Body> filter, List<Body> out) {
         own("body", body);
         Check.notNull("filter", filter);
-        if (body.grid == null) {
-            return meeting(body.shape(), body, filter);
-        }
-        gather(body.boxX, body.boxY, (double) body.boxX + body.boxW, (double) body.boxY + body.boxH);
-        List<Body> out = new ArrayList<>();
-        for (int i = 0; i < candCount; i++) {
-            Body b = byId[cand[i]];
-            if (b != body && b.grid == null && grids.meets(body.grid, b.shape()) && keep(filter, b)) {
-                out.add(b);
-            }
-        }
-        return out;
+        Check.notNull("out", out);
+        queries.overlapping(body, filter, out);
     }
 
     /**
      * Every body a ray meets within its reach, nearest first ({@link Ray#cast}: distance,
-     * point, normal from the ray into the body); each body once, at its nearest point.
+     * point, normal from the ray into the body); each body once, at its nearest point. A
+     * grid's body: its nearest solid cell, found by walking the cells along the ray.
      *
      * @param ray the ray, not null
-     * @return the hits, nearest first (equal distances: in the order added); empty if none,
-     *         never null
+     * @return the hits, nearest first (equal distances: in the order added), unmodifiable;
+     *         empty if none, never null
      * @throws IllegalArgumentException if {@code ray} is null
      */
     public List<BodyHit> raycast(Ray ray) {
@@ -1024,13 +1011,30 @@ public final class World {
      *
      * @param ray    the ray, not null
      * @param filter which bodies to keep, not null
-     * @return the hits, nearest first; empty if none, never null
+     * @return the hits, nearest first, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
      */
     public List<BodyHit> raycast(Ray ray, Predicate<Body> filter) {
+        List<BodyHit> out = new ArrayList<>();
+        raycast(ray, filter, out);
+        return Collections.unmodifiableList(out);
+    }
+
+    /**
+     * Every body the filter keeps that a ray meets, nearest first, put into the caller's list:
+     * see {@link #raycast(Ray)}. Nothing is made but the hits once the list has grown.
+     *
+     * @param ray    the ray, not null
+     * @param filter which bodies to keep, not null
+     * @param out    the caller's list: the hits are added after what it holds, nearest first;
+     *               not null
+     * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
+     */
+    public void raycast(Ray ray, Predicate<Body> filter, List<BodyHit> out) {
         Check.notNull("ray", ray);
         Check.notNull("filter", filter);
-        return rayHits(ray, filter, false);
+        Check.notNull("out", out);
+        queries.ray(ray, filter, false, out);
     }
 
     /**
@@ -1044,47 +1048,31 @@ public final class World {
     public BodyHit raycastFirst(Ray ray, Predicate<Body> filter) {
         Check.notNull("ray", ray);
         Check.notNull("filter", filter);
-        List<BodyHit> hits = rayHits(ray, filter, true);
-        return hits.isEmpty() ? null : hits.get(0);
+        firstHit.clear();
+        queries.ray(ray, filter, true, firstHit);
+        BodyHit hit = firstHit.isEmpty() ? null : firstHit.get(0);
+        firstHit.clear();
+        return hit;
     }
 
-    private List<BodyHit> rayHits(Ray ray, Predicate<Body> filter, boolean firstOnly) {
+    /** The nearest hit of {@link #raycastFirst}, while it is found. */
+    private final ArrayList<BodyHit> firstHit = new ArrayList<>(1);
+
+    /** The candidates of a ray: the bodies whose boxes it meets, in no particular order. */
+    void rayCandidates(Ray ray) {
         candCount = 0;
-        double[] nearest = {Double.POSITIVE_INFINITY};
-        broad.raycast(ray, (id, distance) -> {
-            if (firstOnly && distance > nearest[0]) {
-                return false;
-            }
-            if (byId[id].dirtyIndex < 0) {
-                collect.accept(id);
-            }
-            return true;
-        });
+        broad.raycast(ray, rayCollect);
         for (int i = 0; i < dirtyCount; i++) {
             collect.accept(dirty[i].id);
         }
-        List<BodyHit> out = new ArrayList<>();
-        for (int i = 0; i < candCount; i++) {
-            Body b = byId[cand[i]];
-            BodyHit hit = b.grid != null ? grids.ray(b, b.grid, ray) : hitOf(b, ray.cast(b.shape()));
-            if (hit != null && keep(filter, b)) {
-                out.add(hit);
-                if (firstOnly) {
-                    nearest[0] = Math.min(nearest[0], hit.distance());
-                }
-            }
-        }
-        out.sort((p, q) -> p.distance() != q.distance() ? Float.compare(p.distance(), q.distance())
-                : Integer.compare(p.body().serial, q.body().serial));
-        if (firstOnly && out.size() > 1) {
-            return out.subList(0, 1);
-        }
-        return out;
     }
 
-    private static BodyHit hitOf(Body b, RayHit h) {
-        return h == null ? null : new BodyHit(b, h, -1);
-    }
+    private final RayVisitor rayCollect = (id, distance) -> {
+        if (byId[id].dirtyIndex < 0) {
+            collect.accept(id);  // a dirty body's box in the broad phase is stale: it is added after
+        }
+        return true;
+    };
 
     // ---------------------------------------------------------------- looking inside
 
@@ -1120,7 +1108,7 @@ public final class World {
 
     private static final Predicate<Body> ALL = b -> true;
 
-    private boolean keep(Predicate<Body> filter, Body b) {
+    boolean keep(Predicate<Body> filter, Body b) {
         if (filter == ALL) {
             return true;
         }
