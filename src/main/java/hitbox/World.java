@@ -6,7 +6,6 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.function.BiConsumer;
-import java.util.function.IntConsumer;
 import java.util.function.Predicate;
 
 /**
@@ -71,31 +70,16 @@ public final class World {
     public static final int MAX_LEGS = 8;
 
     private final BroadPhase broad;
-    private Body[] byId = new Body[16];
-    private int[] freeIds = new int[16];
-    private int freeCount;
-    private int nextId;
-    private int size;
-    private int serials;
     private int callbackDepth;
-
-    // Candidates of a query or a leg, by id.
-    private int[] cand = new int[16];
-    private int candCount;
-    private final IntConsumer collect = id -> {
-        if (candCount == cand.length) {
-            cand = java.util.Arrays.copyOf(cand, 2 * candCount);
-        }
-        cand[candCount++] = id;
-    };
 
     // Contacts and the collisions of the current step.
     private final ArrayList<Collision> stepCollisions = new ArrayList<>();
     private boolean stepped;
     /** The contacts, kept from step to step. */
     private final ContactTracker tracker;
+    /** The bodies with their poses and boxes, and the broad phase's upkeep. */
+    private final BodyTable table;
 
-    private final double[] scratch = new double[4];
     /** A grid's body's cells, for the queries and the contacts. */
     private final GridCollider grids = new GridCollider();
     /** The queries: what a point, a shape, a body and a ray meet. */
@@ -122,6 +106,7 @@ public final class World {
         }
         this.broad = broadPhase;
         this.tracker = new ContactTracker(this, broadPhase);
+        this.table = new BodyTable(this, broadPhase, tracker);
     }
 
     // ---------------------------------------------------------------- bodies
@@ -216,22 +201,7 @@ public final class World {
     }
 
     private Body added(Shape home, double px, double py, double tx, double ty, float angle, Grid grid) {
-        double cos = angle == 0 ? 1 : Math.cos(angle), sin = angle == 0 ? 0 : Math.sin(angle);
-        Poses.extents(home, px, py, cos, sin, scratch);
-        float[] box = box(px + tx, py + ty, scratch, "x, y and angle");
-        int id = freeCount > 0 ? freeIds[--freeCount] : nextId++;
-        Body b = new Body(this, id, serials++, home, px, py, grid);
-        b.pose(tx, ty, angle, cos, sin, scratch);
-        setBox(b, box[0], box[1], box[2], box[3]);
-        if (id >= byId.length) {
-            byId = java.util.Arrays.copyOf(byId, Math.max(2 * byId.length, id + 1));
-        }
-        byId[id] = b;
-        size++;
-        if (grid != null) {
-            tracker.addedGrid(b);
-        }
-        return b;
+        return table.add(home, px, py, tx, ty, angle, grid);
     }
 
     /**
@@ -246,18 +216,7 @@ public final class World {
     public void remove(Body body) {
         own("body", body);
         checkNotInCallback("remove");
-        if (body.dirtyIndex >= 0) {
-            undirty(body);
-        }
-        tracker.removed(body);
-        broad.remove(body.id);
-        byId[body.id] = null;
-        if (freeCount == freeIds.length) {
-            freeIds = java.util.Arrays.copyOf(freeIds, 2 * freeCount);
-        }
-        freeIds[freeCount++] = body.id;
-        body.removed();
-        size--;
+        table.remove(body);
     }
 
     /**
@@ -274,19 +233,12 @@ public final class World {
 
     /** @return how many bodies the world holds */
     public int size() {
-        return size;
+        return table.size();
     }
 
     /** @return the bodies, in the order they were added, as a new list, never null */
     public List<Body> bodies() {
-        List<Body> out = new ArrayList<>(size);
-        for (int i = 0; i < nextId; i++) {
-            if (i < byId.length && byId[i] != null) {
-                out.add(byId[i]);
-            }
-        }
-        out.sort((a, b) -> Integer.compare(a.serial, b.serial));
-        return Collections.unmodifiableList(out);
+        return Collections.unmodifiableList(table.all());
     }
 
     // ---------------------------------------------------------------- moving
@@ -377,7 +329,7 @@ public final class World {
         for (int i = 0; i < riders.size(); i++) {
             saved[i + 1] = save(riders.get(i));
         }
-        holdFlush = true;
+        table.holdFlush = true;
         try {
             Collisions out;
             float px = p.x(), py = p.y();
@@ -400,8 +352,8 @@ public final class World {
                     mover.move(r, ax, ay, riderFilter(r));
                 }
             }
-            holdFlush = false;
-            flushIfMany();
+            table.holdFlush = false;
+            table.flushIfMany();
             return out;
         } catch (RuntimeException e) {
             restore(p, saved[0]);
@@ -413,7 +365,7 @@ public final class World {
             stepped = steppedBefore;
             throw e;
         } finally {
-            holdFlush = false;
+            table.holdFlush = false;
         }
     }
 
@@ -426,8 +378,8 @@ public final class World {
         Shape ps = p.shape();
         float probe = 2 * Mover.SKIN;
         gather(p.boxX, p.boxY - 2 * probe, (double) p.boxX + p.boxW, (double) p.boxY + p.boxH);
-        for (int i = 0; i < candCount; i++) {
-            Body o = byId[cand[i]];
+        for (int i = 0, n = table.candidateCount(); i < n; i++) {
+            Body o = table.candidate(i);
             if (o == p || o.grid != null || o.sensor || o.carrier || !p.accepts(o)) {
                 continue;
             }
@@ -459,7 +411,7 @@ public final class World {
         b.box(k[0], k[1], k[2], k[3]);
         b.fat(k[4], k[5], k[6], k[7]);
         if (!saved.dirty() && b.dirtyIndex >= 0) {
-            undirty(b);
+            table.undirty(b);
         }
         tracker.changed(b);
     }
@@ -481,13 +433,7 @@ public final class World {
 
     /** The world changes: the mover's pose, shape and box; the collisions handed back. */
     Collisions commit(Body m, Shape start, Shape end, List<Collision> out, boolean finished) {
-        double ntx = m.tx + (Poses.refX(end) - Poses.refX(start)), nty = m.ty + (Poses.refY(end) - Poses.refY(start));
-        float[] box = box(m.pivotX + ntx, m.pivotY + nty, m.extents, "dx and dy");
-        // The shape's own extents too (no Rect made for them: a move's only new object is its shape).
-        float x0 = Math.min(box[0], Math.nextDown((float) end.minX())), y0 = Math.min(box[1], Math.nextDown((float) end.minY()));
-        float x1 = Math.max(box[0] + box[2], Math.nextUp((float) end.maxX())), y1 = Math.max(box[1] + box[3], Math.nextUp((float) end.maxY()));
-        m.placed(ntx, nty, end);
-        setBox(m, x0, y0, Math.nextUp(x1 - x0), Math.nextUp(y1 - y0));
+        table.moved(m, start, end);
         if (stepped) {
             stepCollisions.clear();
             stepped = false;
@@ -498,120 +444,6 @@ public final class World {
         Collisions result = Collisions.of(out, finished);
         out.clear();
         return result;
-    }
-
-    // ---------------------------------------------------------------- teleports (Body calls these)
-
-    void teleport(Body b, double tx, double ty, float angle, String what) {
-        if (b.grid != null) {
-            throw new IllegalStateException("a grid's body does not move or turn");
-        }
-        double cos = b.cos, sin = b.sin;
-        double[] ex = b.extents;
-        if (angle != b.angle) {
-            cos = angle == 0 ? 1 : Math.cos(angle);
-            sin = angle == 0 ? 0 : Math.sin(angle);
-            Poses.extents(b.home, b.pivotX, b.pivotY, cos, sin, scratch);
-            ex = scratch;
-        }
-        float[] box = box(b.pivotX + tx, b.pivotY + ty, ex, what);
-        b.pose(tx, ty, angle, cos, sin, ex);
-        setBox(b, box[0], box[1], box[2], box[3]);
-    }
-
-    private final float[] boxOut = new float[4];
-
-    /** The box of a pose, rounded outwards a float step more; checked before anything changes. */
-    private float[] box(double ox, double oy, double[] ex, String what) {
-        // The placed shape's coordinates are rounded to float where they are, anywhere in the
-        // box: a capsule's end 4.5 inside its box edge rounds at the end's size, which can
-        // move the edge by more than one step of the edge's own size. A step at the box's
-        // largest size along each axis covers any such rounding.
-        double sx = Math.ulp((float) Math.max(Math.abs(ox + ex[0]), Math.abs(ox + ex[2])));
-        double sy = Math.ulp((float) Math.max(Math.abs(oy + ex[1]), Math.abs(oy + ex[3])));
-        float x0 = Math.nextDown((float) (ox + ex[0] - sx)), y0 = Math.nextDown((float) (oy + ex[1] - sy));
-        float x1 = Math.nextUp((float) (ox + ex[2] + sx)), y1 = Math.nextUp((float) (oy + ex[3] + sy));
-        float w = Math.nextUp((float) ((double) x1 - x0)), h = Math.nextUp((float) ((double) y1 - y0));
-        if (!Float.isFinite(x0) || !Float.isFinite(y0) || !Float.isFinite(x1) || !Float.isFinite(y1)
-                || !Float.isFinite(w) || !Float.isFinite(h)) {
-            throw new IllegalArgumentException(what + " put the body's shape out of the float range");
-        }
-        boxOut[0] = x0;
-        boxOut[1] = y0;
-        boxOut[2] = w;
-        boxOut[3] = h;
-        return boxOut;
-    }
-
-    /**
-     * Sets a body's tight box. The broad phase holds a fat box: when the tight box leaves it,
-     * a new fat box (grown by an eighth of the body's size and a pixel, and four times the
-     * last move ahead) waits in the dirty list, which queries scan, until enough wait to put
-     * them all at once (or the next {@link #step()}): the grid rebuilds after each change, so
-     * putting one box per move would rebuild it once per move.
-     */
-    private void setBox(Body b, float x, float y, float w, float h) {
-        tracker.changed(b);
-        if (b.grid != null) {
-            b.box(0, 0, b.grid.width(), b.grid.height());
-            b.fat(0, 0, b.grid.width(), b.grid.height());
-            broad.put(b.id, 0, 0, b.boxW, b.boxH);
-            return;
-        }
-        boolean fresh = !b.boxed;
-        double ddx = fresh ? 0 : (double) x - b.boxX, ddy = fresh ? 0 : (double) y - b.boxY;
-        b.box(x, y, w, h);
-        if (!fresh && x >= b.fatX && y >= b.fatY && (double) x + w <= (double) b.fatX + b.fatW
-                && (double) y + h <= (double) b.fatY + b.fatH) {
-            return;
-        }
-        double m = 1 + Math.max(w, h) / 8.0;
-        double x0 = Math.max(-Float.MAX_VALUE, x - m + Math.min(0, 4 * ddx));
-        double y0 = Math.max(-Float.MAX_VALUE, y - m + Math.min(0, 4 * ddy));
-        double x1 = Math.min(Float.MAX_VALUE, (double) x + w + m + Math.max(0, 4 * ddx));
-        double y1 = Math.min(Float.MAX_VALUE, (double) y + h + m + Math.max(0, 4 * ddy));
-        // Never past the float range: a body near its edge gets a fat box that ends there.
-        float fx = Math.min(x, Math.max(-Float.MAX_VALUE, Math.nextDown((float) x0)));
-        float fy = Math.min(y, Math.max(-Float.MAX_VALUE, Math.nextDown((float) y0)));
-        b.fat(fx, fy, (float) Math.min(Float.MAX_VALUE, Math.nextUp(x1 - fx)), (float) Math.min(Float.MAX_VALUE, Math.nextUp(y1 - fy)));
-        if (b.dirtyIndex < 0) {
-            if (dirtyCount == dirty.length) {
-                dirty = java.util.Arrays.copyOf(dirty, 2 * dirtyCount);
-            }
-            b.dirtyIndex(dirtyCount);
-            dirty[dirtyCount++] = b;
-        }
-        flushIfMany();
-    }
-
-    private Body[] dirty = new Body[16];
-    private int dirtyCount;
-    private boolean holdFlush;
-
-    private void flushIfMany() {
-        if (!holdFlush && dirtyCount > 64 + 2 * Math.sqrt(size)) {
-            flush();
-        }
-    }
-
-    /** Puts every waiting fat box into the broad phase. */
-    private void flush() {
-        for (int i = 0; i < dirtyCount; i++) {
-            Body b = dirty[i];
-            broad.put(b.id, b.fatX, b.fatY, b.fatW, b.fatH);
-            b.dirtyIndex(-1);
-            dirty[i] = null;
-        }
-        dirtyCount = 0;
-    }
-
-    private void undirty(Body b) {
-        int i = b.dirtyIndex;
-        Body last = dirty[--dirtyCount];
-        dirty[i] = last;
-        last.dirtyIndex(i);
-        dirty[dirtyCount] = null;
-        b.dirtyIndex(-1);
     }
 
     // ---------------------------------------------------------------- events
@@ -661,7 +493,7 @@ public final class World {
     }
 
     private void endFrame(List<BodyEvent> out, boolean stays) {
-        flush();
+        table.flush();
         tracker.step(stepped ? null : stepCollisions, out, stays);
         stepped = true;
     }
@@ -743,7 +575,7 @@ public final class World {
 
     /** The body of an id, or null. */
     Body body(int id) {
-        return id < byId.length ? byId[id] : null;
+        return table.body(id);
     }
 
     /**
@@ -761,9 +593,9 @@ public final class World {
     public void pairs(BiConsumer<Body, Body> out) {
         Check.notNull("out", out);
         checkNotInCallback("pairs");
-        flush();
+        table.flush();
         broad.pairs((i, j) -> {
-            Body a = byId[i], b = byId[j];
+            Body a = table.body(i), b = table.body(j);
             if (a.accepts(b) && overlap(a, b)) {
                 if (a.serial > b.serial) {
                     Body t = a;
@@ -1058,22 +890,6 @@ public final class World {
     /** The nearest hit of {@link #raycastFirst}, while it is found. */
     private final ArrayList<BodyHit> firstHit = new ArrayList<>(1);
 
-    /** The candidates of a ray: the bodies whose boxes it meets, in no particular order. */
-    void rayCandidates(Ray ray) {
-        candCount = 0;
-        broad.raycast(ray, rayCollect);
-        for (int i = 0; i < dirtyCount; i++) {
-            collect.accept(dirty[i].id);
-        }
-    }
-
-    private final RayVisitor rayCollect = (id, distance) -> {
-        if (byId[id].dirtyIndex < 0) {
-            collect.accept(id);  // a dirty body's box in the broad phase is stale: it is added after
-        }
-        return true;
-    };
-
     // ---------------------------------------------------------------- looking inside
 
     /**
@@ -1084,14 +900,14 @@ public final class World {
      */
     public void cells(BoxConsumer out) {
         Check.notNull("out", out);
-        flush();
+        table.flush();
         broad.cells(out);
     }
 
     /** @return the name of the broad phase inside, for labels */
     @Override
     public String toString() {
-        return "World of " + size + " bodies on " + broad;
+        return "World of " + table.size() + " bodies on " + broad;
     }
 
     /** The grids' cell answers, for the tests that count the cells looked at. */
@@ -1126,76 +942,32 @@ public final class World {
 
     /** The ids of the bodies whose boxes meet a box (padded by a few float steps), in the order added. */
     void gather(double left, double top, double right, double bottom) {
-        double pad = pad(left, top, right, bottom);
-        float x0 = (float) Math.max(-Float.MAX_VALUE, left - pad), y0 = (float) Math.max(-Float.MAX_VALUE, top - pad);
-        float x1 = (float) Math.min(Float.MAX_VALUE, right + pad), y1 = (float) Math.min(Float.MAX_VALUE, bottom + pad);
-        float w = (float) Math.min(Float.MAX_VALUE, Math.nextUp((double) x1 - x0));
-        float h = (float) Math.min(Float.MAX_VALUE, Math.nextUp((double) y1 - y0));
-        candCount = 0;
-        broad.query(x0, y0, w, h, collect);
-        int kept = 0;
-        for (int i = 0; i < candCount; i++) {
-            if (byId[cand[i]].dirtyIndex < 0) {
-                cand[kept++] = cand[i];  // a dirty body's box in the broad phase is stale
-            }
-        }
-        candCount = kept;
-        for (int i = 0; i < dirtyCount; i++) {
-            Body b = dirty[i];
-            if (b.fatX <= x1 && x0 <= (double) b.fatX + b.fatW && b.fatY <= y1 && y0 <= (double) b.fatY + b.fatH) {
-                collect.accept(b.id);
-            }
-        }
-        sortCandidates();
+        table.gather(left, top, right, bottom);
     }
 
+    /** A few float steps at a box's largest coordinate, and the smallest normal float. */
     static double pad(double left, double top, double right, double bottom) {
-        double m = Math.max(Math.max(Math.abs(left), Math.abs(right)), Math.max(Math.abs(top), Math.abs(bottom)));
-        return 4 * Math.ulp((float) Math.min(m, Float.MAX_VALUE / 4)) + Float.MIN_NORMAL;
+        return BodyTable.pad(left, top, right, bottom);
     }
-
-    /**
-     * Sorts the candidates by the order added (ties are met in that order): insertion sort for
-     * the few of a move's leg, a sort of (serial, id) keys for the many of a large query, so a
-     * query over the whole world costs k log k, not k squared.
-     */
-    private void sortCandidates() {
-        if (candCount <= 32) {
-            for (int i = 1; i < candCount; i++) {
-                int id = cand[i];
-                int s = byId[id].serial;
-                int j = i - 1;
-                while (j >= 0 && byId[cand[j]].serial > s) {
-                    cand[j + 1] = cand[j];
-                    j--;
-                }
-                cand[j + 1] = id;
-            }
-            return;
-        }
-        if (keys.length < candCount) {
-            keys = new long[Math.max(candCount, 2 * keys.length)];
-        }
-        for (int i = 0; i < candCount; i++) {
-            keys[i] = ((long) byId[cand[i]].serial << 32) | cand[i];
-        }
-        java.util.Arrays.sort(keys, 0, candCount);
-        for (int i = 0; i < candCount; i++) {
-            cand[i] = (int) keys[i];
-        }
-    }
-
-    /** The sort keys of a large query's candidates: serial above, id below. */
-    private long[] keys = new long[64];
 
     /** How many bodies the last {@link #gather} found. */
     int candidateCount() {
-        return candCount;
+        return table.candidateCount();
     }
 
     /** The i-th body the last {@link #gather} found, in the order added. */
     Body candidate(int i) {
-        return byId[cand[i]];
+        return table.candidate(i);
+    }
+
+    /** The candidates of a ray: the bodies whose boxes it meets, in no particular order. */
+    void rayCandidates(Ray ray) {
+        table.rayCandidates(ray);
+    }
+
+    /** Teleports a body (Body's moveTo, moveBy, turnTo and turnBy); checked before anything changes. */
+    void teleport(Body b, double tx, double ty, float angle, String what) {
+        table.teleport(b, tx, ty, angle, what);
     }
 
     /** A body argument of this world, checked. */
