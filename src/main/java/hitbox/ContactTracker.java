@@ -31,6 +31,7 @@ final class ContactTracker {
 
     private final World world;
     private final BroadPhase broad;
+    private final GridCollider cells;
 
     // The contact slots: the two bodies (the one added first in a), and per step marks.
     private Body[] ca = new Body[64];
@@ -94,9 +95,10 @@ final class ContactTracker {
         near[nearCount++] = id;
     };
 
-    ContactTracker(World world, BroadPhase broad) {
+    ContactTracker(World world, BroadPhase broad, GridCollider grids) {
         this.world = world;
         this.broad = broad;
+        this.cells = grids;
     }
 
     private static int[] filled(int[] a) {
@@ -258,7 +260,7 @@ final class ContactTracker {
                 continue;  // in contact: tested above
             }
             pairTests++;
-            if (b.accepts(o) && world.overlap(b, o)) {
+            if (b.accepts(o) && overlap(b, o)) {
                 int c = begin(first, second);  // (not checked[begin(..)]: begin may grow the array)
                 checked[c] = step;
             }
@@ -270,7 +272,7 @@ final class ContactTracker {
         checked[c] = step;
         Body a = ca[c], b = cb[c];
         pairTests++;
-        if (a.accepts(b) && world.overlap(a, b)) {
+        if (a.accepts(b) && overlap(a, b)) {
             return;
         }
         if (metAt[c] == step && a.accepts(b)) {
@@ -365,6 +367,26 @@ final class ContactTracker {
             changedAt = java.util.Arrays.copyOf(changedAt, n);
             doneAt = java.util.Arrays.copyOf(doneAt, n);
         }
+    }
+
+    /** Do two bodies overlap now (a grid's body: one of its solid cells)? */
+    boolean overlap(Body a, Body b) {
+        // The tight boxes first (the broad phase holds fat ones): no shape is made for a pair
+        // whose boxes are apart.
+        if (a.boxX > (double) b.boxX + b.boxW || b.boxX > (double) a.boxX + a.boxW
+                || a.boxY > (double) b.boxY + b.boxH || b.boxY > (double) a.boxY + a.boxH) {
+            return false;
+        }
+        if (a.grid != null && b.grid != null) {
+            return false;
+        }
+        if (a.grid != null) {
+            return cells.meets(a.grid, b.shape());
+        }
+        if (b.grid != null) {
+            return cells.meets(b.grid, a.shape());
+        }
+        return a.shape().overlaps(b.shape());
     }
 
     // ---------------------------------------------------------------- reading the contacts

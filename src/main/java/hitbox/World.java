@@ -38,16 +38,23 @@ import java.util.function.Predicate;
  * the same walk does both. The broad phase narrows the bodies looked at to those whose boxes
  * meet the box the move sweeps.
  *
- * <h2>Contacts and events: a list per step</h2>
+ * <h2>Contacts and events: once a frame</h2>
  * Call {@link #step()} once a frame, after the moves: it returns the {@link BodyEvent}s of the
- * frame, a contact's ENTER and EXIT once each and STAY every step in between. There are no
+ * frame, a contact's ENTER and EXIT once each and STAY every step in between. A world with
+ * many bodies at rest calls {@link #step(List)} instead, as Box2D v3 users do: only the
+ * contacts that began and ended, and the contacts that go on read when needed
+ * ({@link #contacts(BiConsumer)}, {@link #contacts(Body, List)}, {@link #inContact}). The
+ * contacts are kept from step to step, so a step costs in proportion to the bodies that moved,
+ * turned or changed, and a pair of bodies that both stand costs nothing. There are no
  * listeners, so nothing of the sketch runs while the world is changing.
  *
  * <h2>Queries</h2>
  * What a point, a box, a shape or a ray meets, and what a body overlaps now, each with an
  * optional filter ({@code Predicate<Body>}); answers are lists, bodies in the order they were
- * added, ray hits nearest first. A {@link Grid} added with {@link #add(Grid)} is one body that
- * acts as its solid cells (cells inside the grid; beyond its edges is open here).
+ * added, ray hits nearest first, unmodifiable. Each has a form that fills the caller's list
+ * instead, which allocates nothing once the list has grown. A {@link Grid} added with
+ * {@link #add(Grid)} is one body that acts as its solid cells (cells inside the grid; beyond
+ * its edges is open here); a ray walks its cells along the ray.
  *
  * <h2>Bad input</h2>
  * A null, a NaN or infinite number, a removed body or another world's body throws an
@@ -59,10 +66,13 @@ import java.util.function.Predicate;
  * exactly as it was: every body's pose and shape and the broad phase's boxes. Not
  * thread-safe.
  *
- * <p>This class is longer than most (about 1,200 lines): it is the whole public face of the
- * world (bodies, moves, carrying, events, five queries) with full javadoc; the move's walk is
- * in {@code Mover}, the character's rules in {@link CharacterBody}, the shapes' placement in
- * {@code Poses} and the rectangles' walk in {@code MoveAndSlide}.
+ * <p>This class is the face of the world, longer than most (about 1,000 lines, most of them
+ * javadoc of the public methods), over parts with one job each: the bodies with their poses
+ * and boxes and the broad phase's upkeep ({@code BodyTable}), the contacts kept from step to
+ * step ({@code ContactTracker}), a grid's body's cells ({@code GridCollider}), the queries
+ * ({@code WorldQueries}) and the move's walk ({@code Mover}); it keeps the checks, the
+ * carriers and the callbacks' rules. The character's rules are in {@link CharacterBody}, the
+ * shapes' placement in {@code Poses} and the rectangles' walk in {@code MoveAndSlide}.
  */
 public final class World {
 
@@ -105,7 +115,7 @@ public final class World {
             throw new IllegalArgumentException("broadPhase must be empty, but holds " + broadPhase.size() + " boxes");
         }
         this.broad = broadPhase;
-        this.tracker = new ContactTracker(this, broadPhase);
+        this.tracker = new ContactTracker(this, broadPhase, grids);
         this.table = new BodyTable(this, broadPhase, tracker);
     }
 
@@ -596,7 +606,7 @@ public final class World {
         table.flush();
         broad.pairs((i, j) -> {
             Body a = table.body(i), b = table.body(j);
-            if (a.accepts(b) && overlap(a, b)) {
+            if (a.accepts(b) && tracker.overlap(a, b)) {
                 if (a.serial > b.serial) {
                     Body t = a;
                     a = b;
@@ -616,31 +626,11 @@ public final class World {
         });
     }
 
-    /** Do two bodies overlap now (a grid's body: one of its solid cells)? */
-    boolean overlap(Body a, Body b) {
-        // The tight boxes first (the broad phase holds fat ones): no shape is made for a pair
-        // whose boxes are apart.
-        if (a.boxX > (double) b.boxX + b.boxW || b.boxX > (double) a.boxX + a.boxW
-                || a.boxY > (double) b.boxY + b.boxH || b.boxY > (double) a.boxY + a.boxH) {
-            return false;
-        }
-        if (a.grid != null && b.grid != null) {
-            return false;
-        }
-        if (a.grid != null) {
-            return grids.meets(a.grid, b.shape());
-        }
-        if (b.grid != null) {
-            return grids.meets(b.grid, a.shape());
-        }
-        return a.shape().overlaps(b.shape());
-    }
-
     /**
      * The collisions the moves reported since the last {@link #step()}, or, right after a step,
      * those of the frame it ended (until the next move): for drawing the frame's contacts.
      *
-     * @return the collisions in the order met, a new list; empty if none, never null
+     * @return the collisions in the order met, unmodifiable; empty if none, never null
      */
     public List<Collision> collisions() {
         return Collections.unmodifiableList(new ArrayList<>(stepCollisions));
