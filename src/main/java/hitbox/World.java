@@ -246,7 +246,12 @@ public final class World {
         return table.size();
     }
 
-    /** @return the bodies, in the order they were added, as a new list, never null */
+    /**
+     * The bodies, in the order they were added.
+     *
+     * @return the bodies, unmodifiable (a copy: later adds and removes do not show in it),
+     *         never null
+     */
     public List<Body> bodies() {
         return Collections.unmodifiableList(table.all());
     }
@@ -472,7 +477,7 @@ public final class World {
      *
      * @return the events, ENTER and EXIT once per change and STAY for each contact that goes
      *         on, ordered by pair (the pair's body added first, then the other), bodies of each
-     *         pair in the order added; a new list, the caller's; empty if there are none
+     *         pair in the order added; unmodifiable; empty if there are none
      * @throws IllegalStateException if called from inside a callback of this world
      */
     public List<BodyEvent> step() {

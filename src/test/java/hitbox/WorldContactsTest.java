@@ -198,6 +198,16 @@ class WorldContactsTest {
         assertFalse(w.inContact(a, b));
         assertEquals(0, w.contactCount());
         assertThrows(IllegalArgumentException.class, () -> w.step(null));
+        b.moveTo(15, 0);
+        w.step(changes);
+        assertThrows(IllegalStateException.class, () -> w.contacts((p, q) -> w.remove(q)), "a reader may not change the world");
+        assertThrows(IllegalArgumentException.class, () -> w.contacts((p, q) -> {
+            throw new ArithmeticException("boom");
+        }));
+        assertTrue(a.alive() && b.alive() && w.inContact(a, b), "refused calls changed nothing");
+        assertThrows(IllegalArgumentException.class, () -> w.contacts(a, null));
+        World other = new World();
+        assertThrows(IllegalArgumentException.class, () -> w.inContact(a, other.add(new Circle(0, 0, 1))));
     }
 
     /** Circles in a square lattice, each overlapping its four neighbours: n * n bodies, 2 n (n - 1) contacts. */
