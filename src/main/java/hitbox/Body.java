@@ -38,6 +38,10 @@ import hitbox.internal.*;
  * parameter, and nothing changes. A body removed from its world is dead: its methods that
  * change it throw an {@link IllegalStateException}; reading it still works. A body may not be
  * changed from inside a filter or query callback of its world ({@link IllegalStateException}).
+ *
+ * <p>This class is longer than most (about 460 lines): the public face of a body (pose,
+ * teleports, layers, sensor, one-way side, carrier, data) with full javadoc, and the few
+ * package-private methods through which alone the world's parts change its state.
  */
 public final class Body {
     // The world's bookkeeping: package-private, read by World, Mover and CharacterBody, and

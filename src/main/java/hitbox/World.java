@@ -477,7 +477,7 @@ public final class World {
      *
      * @return the events, ENTER and EXIT once per change and STAY for each contact that goes
      *         on, ordered by pair (the pair's body added first, then the other), bodies of each
-     *         pair in the order added; unmodifiable; empty if there are none
+     *         pair in the order added; unmodifiable, never null; empty if there are none
      * @throws IllegalStateException if called from inside a callback of this world
      */
     public List<BodyEvent> step() {
@@ -496,14 +496,18 @@ public final class World {
      * step in which nothing changed tests no pair and allocates nothing.
      *
      * @param changes cleared, then given the ENTER and EXIT events ordered by pair (the pair's
-     *                body added first, then the other); not null
-     * @throws IllegalArgumentException if {@code changes} is null
+     *                body added first, then the other); not null, modifiable
+     * @throws IllegalArgumentException if {@code changes} is null or cannot be cleared
      * @throws IllegalStateException    if called from inside a callback of this world
      */
     public void step(List<BodyEvent> changes) {
         Check.notNull("changes", changes);
         checkNotInCallback("step");
-        changes.clear();
+        try {
+            changes.clear();
+        } catch (UnsupportedOperationException e) {
+            throw refused("changes", e);  // before anything changed
+        }
         endFrame(changes, false);
     }
 
@@ -555,12 +559,16 @@ public final class World {
      * @param out  the caller's list, which gets the bodies added (in no particular order;
      *             nothing is removed from it), not null
      * @throws IllegalArgumentException if an argument is null, or the body was removed or is
-     *                                  another world's
+     *                                  another world's, or {@code out} cannot be added to
      */
     public void contacts(Body body, List<Body> out) {
         own("body", body);
         Check.notNull("out", out);
-        tracker.of(body, out);
+        try {
+            tracker.of(body, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
+        }
     }
 
     /**
@@ -686,14 +694,19 @@ public final class World {
      * @param out    the caller's list: the bodies are added after what it holds, in the order
      *               added; not null
      * @throws IllegalArgumentException if x or y is NaN or infinite, {@code filter} or
-     *                                  {@code out} is null, or the filter threw
+     *                                  {@code out} is null, the filter threw, or {@code out}
+     *                                  cannot be added to
      */
     public void queryPoint(float x, float y, Predicate<Body> filter, List<Body> out) {
         Check.finite("x", x);
         Check.finite("y", y);
         Check.notNull("filter", filter);
         Check.notNull("out", out);
-        queries.point(x, y, filter, out);
+        try {
+            queries.point(x, y, filter, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
+        }
     }
 
     /**
@@ -765,13 +778,18 @@ public final class World {
      * @param filter which bodies to keep, not null
      * @param out    the caller's list: the bodies are added after what it holds, in the order
      *               added; not null
-     * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
+     * @throws IllegalArgumentException if an argument is null, {@code filter} threw, or
+     *                                  {@code out} cannot be added to
      */
     public void queryShape(Shape shape, Predicate<Body> filter, List<Body> out) {
         Check.notNull("shape", shape);
         Check.notNull("filter", filter);
         Check.notNull("out", out);
-        queries.shape(shape, null, filter, out);
+        try {
+            queries.shape(shape, null, filter, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
+        }
     }
 
     /**
@@ -810,13 +828,18 @@ public final class World {
      * @param out    the caller's list: the bodies are added after what it holds, in the order
      *               added; not null
      * @throws IllegalArgumentException if an argument is null, the body is removed or another
-     *                                  world's, or {@code filter} threw
+     *                                  world's, {@code filter} threw, or {@code out} cannot be
+     *                                  added to
      */
     public void overlapping(Body body, Predicate<Body> filter, List<Body> out) {
         own("body", body);
         Check.notNull("filter", filter);
         Check.notNull("out", out);
-        queries.overlapping(body, filter, out);
+        try {
+            queries.overlapping(body, filter, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
+        }
     }
 
     /**
@@ -855,13 +878,18 @@ public final class World {
      * @param filter which bodies to keep, not null
      * @param out    the caller's list: the hits are added after what it holds, nearest first;
      *               not null
-     * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
+     * @throws IllegalArgumentException if an argument is null, {@code filter} threw, or
+     *                                  {@code out} cannot be added to
      */
     public void raycast(Ray ray, Predicate<Body> filter, List<BodyHit> out) {
         Check.notNull("ray", ray);
         Check.notNull("filter", filter);
         Check.notNull("out", out);
-        queries.ray(ray, filter, false, out);
+        try {
+            queries.ray(ray, filter, false, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
+        }
     }
 
     /**
@@ -963,6 +991,12 @@ public final class World {
     /** Teleports a body (Body's moveTo, moveBy, turnTo and turnBy); checked before anything changes. */
     void teleport(Body b, double tx, double ty, float angle, String what) {
         table.teleport(b, tx, ty, angle, what);
+    }
+
+    /** The exception for a caller's list the world cannot add to. */
+    private static IllegalArgumentException refused(String name, UnsupportedOperationException e) {
+        return new IllegalArgumentException(name + " must be a list the world can add to (an ArrayList, say), "
+                + "not an unmodifiable one: " + e, e);
     }
 
     /** A body argument of this world, checked. */

@@ -63,4 +63,23 @@ class WorldAnswersTest {
             assertThrows(UnsupportedOperationException.class, list::clear, "unmodifiable: " + list);
         }
     }
+
+    @Test
+    void aListTheWorldCannotAddTo_isRefusedNamingIt() {
+        World w = new World();
+        Body a = w.add(new Circle(0, 0, 10));
+        w.add(new Circle(5, 0, 10));
+        List<Body> fixed = List.of();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> w.queryPoint(1, 0, b -> true, fixed));
+        assertTrue(e.getMessage().startsWith("out"), e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> w.queryShape(new Circle(0, 0, 1), b -> true, fixed));
+        assertThrows(IllegalArgumentException.class, () -> w.overlapping(a, b -> true, fixed));
+        assertThrows(IllegalArgumentException.class, () -> w.raycast(new Ray(-50, 0, 1, 0), b -> true, List.of()));
+        e = assertThrows(IllegalArgumentException.class, () -> w.step(List.of()));
+        assertTrue(e.getMessage().startsWith("changes"), e.getMessage());
+        List<BodyEvent> changes = new java.util.ArrayList<>();
+        w.step(changes);
+        assertEquals(1, changes.size(), "the refused step changed nothing: the contact enters now");
+        assertThrows(IllegalArgumentException.class, () -> w.contacts(a, fixed));
+    }
 }

@@ -303,16 +303,23 @@ class WorldContactsTest {
         assertEquals(2 * 100 * 99, w.contactCount());
         int[] count = new int[1];
         java.util.function.BiConsumer<Body, Body> counter = (a, b) -> count[0]++;
-        long bytes = -1;
-        for (int round = 0; round < 200; round++) {
+        int clean = 0;
+        long least = Long.MAX_VALUE;
+        for (int round = 0; round < 240; round++) {
             long before = THREADS.getCurrentThreadAllocatedBytes();
             w.step(changes);
             count[0] = 0;
             w.contacts(counter);
-            bytes = THREADS.getCurrentThreadAllocatedBytes() - before;
+            long bytes = THREADS.getCurrentThreadAllocatedBytes() - before;
             assertEquals(2 * 100 * 99, count[0]);
+            if (round >= 200) {
+                least = Math.min(least, bytes);
+                clean += bytes == 0 ? 1 : 0;
+            }
         }
-        assertEquals(0, bytes, "bytes an idle step and a read of its contacts made");
+        // Every one of the last 40 rounds makes nothing, but for a few the JIT's recompiling may disturb.
+        assertEquals(0, least, "bytes an idle step and a read of its contacts made");
+        assertTrue(clean >= 36, clean + " of the last 40 rounds made nothing");
         assertEquals(List.of(), changes);
     }
 }
