@@ -304,7 +304,13 @@ final class BodyTable {
         candCount = 0;
         broad.raycast(ray, rayCollect);
         for (int i = 0; i < dirtyCount; i++) {
-            collect.accept(dirty[i].id);
+            Body b = dirty[i];
+            // Only those whose fat box the ray goes into (the fat box holds the shape, with a
+            // margin of a pixel at least): not every waiting body's shape cast each time.
+            if (Ray.distanceToRect(ray.ox(), ray.oy(), ray.dx(), ray.dy(), ray.maxDistance(),
+                    b.fatX, b.fatY, b.fatW, b.fatH) != Float.POSITIVE_INFINITY) {
+                collect.accept(b.id);
+            }
         }
     }
 
