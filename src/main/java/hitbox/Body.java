@@ -38,9 +38,14 @@ import hitbox.internal.*;
  * parameter, and nothing changes. A body removed from its world is dead: its methods that
  * change it throw an {@link IllegalStateException}; reading it still works. A body may not be
  * changed from inside a filter or query callback of its world ({@link IllegalStateException}).
+ *
+ * <p>This class is longer than most (about 460 lines): the public face of a body (pose,
+ * teleports, layers, sensor, one-way side, carrier, data) with full javadoc, and the few
+ * package-private methods through which alone the world's parts change its state.
  */
 public final class Body {
-    // The world's bookkeeping: package-private, read and written by World.
+    // The world's bookkeeping: package-private, read by World, Mover and CharacterBody, and
+    // written only by the methods below (pose, placed, box, fat, dirtyIndex, removed, becomes).
     World world;
     final int id;
     final int serial;
@@ -80,13 +85,6 @@ public final class Body {
     Side oneWay = Side.NONE;
     boolean carrier;
     Object data;
-    /** Per-move scratch of the world: the move stamp when last seen, its reaction, its flags. */
-    int seenStamp;
-    Reaction seenReaction;
-    boolean seenOverlap;
-    boolean seenCrossed;
-    boolean seenBlocked;
-    int riderStamp;
     /** The character this body is, or null. */
     CharacterBody character;
 
@@ -98,6 +96,63 @@ public final class Body {
         this.pivotX = pivotX;
         this.pivotY = pivotY;
         this.grid = grid;
+    }
+
+    // ---------------------------------------------------------------- its state, changed by the world
+
+    /**
+     * A new pose (a teleport, or the body's first): the translation, the angle with its cosine
+     * and sine, the turned shape's extents about the pivot; the shape is made again when asked.
+     */
+    void pose(double tx, double ty, float angle, double cos, double sin, double[] turnedExtents) {
+        this.tx = tx;
+        this.ty = ty;
+        this.angle = angle;
+        this.cos = cos;
+        this.sin = sin;
+        if (turnedExtents != extents) {
+            System.arraycopy(turnedExtents, 0, extents, 0, 4);
+        }
+        this.shape = null;
+    }
+
+    /** Moved (not turned) to where a move left it: the translation and the shape there, made by the move. */
+    void placed(double tx, double ty, Shape shape) {
+        this.tx = tx;
+        this.ty = ty;
+        this.shape = shape;
+    }
+
+    /** The tight box, at or a hair outside the shape. */
+    void box(float x, float y, float w, float h) {
+        boxX = x;
+        boxY = y;
+        boxW = w;
+        boxH = h;
+        boxed = true;
+    }
+
+    /** The fat box the broad phase holds (or will hold, while the body is dirty). */
+    void fat(float x, float y, float w, float h) {
+        fatX = x;
+        fatY = y;
+        fatW = w;
+        fatH = h;
+    }
+
+    /** Where the body is in the world's list of bodies waiting for the broad phase, or -1. */
+    void dirtyIndex(int i) {
+        dirtyIndex = i;
+    }
+
+    /** Removed from its world: dead from now on. */
+    void removed() {
+        world = null;
+    }
+
+    /** This body is a character's. */
+    void becomes(CharacterBody character) {
+        this.character = character;
     }
 
     // ---------------------------------------------------------------- the pose
@@ -146,13 +201,18 @@ public final class Body {
     }
 
     /**
-     * The body's box: at or a hair outside {@code shape().bounds()}, made without making the
-     * shape. (The broad phase holds it grown by a margin, so a body that moves a little
-     * costs it nothing.)
+     * The body's box: for a body at angle 0 (and a grid's) exactly {@code shape().bounds()},
+     * so a floor added as {@code new Rect(0, 400, 800, 20)} has its top at 400; for a turned
+     * body, at or a hair outside {@code shape().bounds()}, made without making the turned
+     * shape. (The broad phase holds it grown by a margin, so a body that moves a little costs
+     * it nothing.)
      *
      * @return a new rectangle, never null
      */
     public Rect bounds() {
+        if (angle == 0) {
+            return shape().bounds();
+        }
         return new Rect(boxX, boxY, boxW, boxH);
     }
 
@@ -274,9 +334,10 @@ public final class Body {
      *                               callback of its world
      */
     public Body layers(int category, int mask) {
-        live("layers");
+        World w = live("layers");
         this.category = category;
         this.mask = mask;
+        w.layersChanged(this);
         return this;
     }
 
@@ -371,9 +432,15 @@ public final class Body {
      * @param data the object, not null (a body made without one has none)
      * @return this body, for chaining, never null
      * @throws IllegalArgumentException if {@code data} is null
+     * @throws IllegalStateException    if the body was removed, as every method that changes a
+     *                                  body (a filter may set it: it changes no contact)
      */
     public Body data(Object data) {
-        this.data = Check.notNull("data", data);
+        Check.notNull("data", data);
+        if (world == null) {
+            throw new IllegalStateException("data: this body was removed from its world");
+        }
+        this.data = data;
         return this;
     }
 

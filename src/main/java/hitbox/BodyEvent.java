@@ -5,7 +5,8 @@ import hitbox.internal.*;
 /**
  * A change in whether two bodies are in contact, as {@link World#step()} reports it: Matter.js's
  * {@code collisionStart}, {@code collisionActive} and {@code collisionEnd}, Box2D's begin and
- * end contact.
+ * end contact. {@link World#step(java.util.List)} reports the changes alone (ENTER and EXIT,
+ * never STAY); the contacts that go on are then read from the world when needed.
  *
  * <p>Two bodies are in contact during a step when their layers accept each other and either
  * their shapes overlap at the step's end or a {@link World#move} during the step met one with

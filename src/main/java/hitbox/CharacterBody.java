@@ -71,7 +71,7 @@ public final class CharacterBody {
 
     CharacterBody(Body body) {
         this.body = body;
-        body.character = this;
+        body.becomes(this);
     }
 
     // ---------------------------------------------------------------- moving

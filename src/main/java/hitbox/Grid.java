@@ -72,6 +72,8 @@ public final class Grid {
     /** The cells' terrains, row by row; read and written by GridMaps too (through HiddenParts). */
     private final int[] cells;
     private int[] passable = new int[0];
+    /** Counts the changes to the cells and the passable terrains ({@link #changes()}). */
+    private int changes;
 
     /**
      * Makes an empty grid: every cell {@link #EMPTY}.
@@ -275,6 +277,15 @@ public final class Grid {
      */
     public void set(int col, int row, int terrain) {
         cells[index(col, row)] = terrain;
+        changes++;
+    }
+
+    /**
+     * How many times the cells or the passable terrains were changed: a world reads it to know
+     * that a grid's body's contacts need a look, and otherwise leaves them as they stood.
+     */
+    int changes() {
+        return changes;
     }
 
     private int index(int col, int row) {
@@ -335,6 +346,7 @@ public final class Grid {
             }
         }
         passable = terrains.clone();
+        changes++;
         return this;
     }
 
@@ -379,6 +391,7 @@ public final class Grid {
      */
     public Grid fill(int terrain) {
         Arrays.fill(cells, terrain);
+        changes++;
         return this;
     }
 
@@ -429,6 +442,7 @@ public final class Grid {
 
     private Grid fill(float fraction, long seed, int free) {
         GridMaps.fillRandom(cells, fraction, seed, free);
+        changes++;
         return this;
     }
 

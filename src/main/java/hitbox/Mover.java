@@ -45,6 +45,15 @@ final class Mover {
     private final World world;
     private int stamp;
 
+    // What the move under way knows of each other body, by id, valid where seenStamp is the
+    // move's stamp: its reaction, whether the mover overlapped it at the start, crossed it
+    // (reported once), or met its one-way side.
+    private int[] seenStamp = new int[16];
+    private Reaction[] seenReaction = new Reaction[16];
+    private boolean[] seenOverlap = new boolean[16];
+    private boolean[] seenCrossed = new boolean[16];
+    private boolean[] seenBlocked = new boolean[16];
+
     // The obstacles of one leg: a body's shape, or one cell of a grid's.
     private Shape[] obShape = new Shape[16];
     private Body[] obBody = new Body[16];
@@ -172,7 +181,7 @@ final class Mover {
                 break;
             }
             Body o = obBody[best];
-            Reaction reaction = o.seenReaction;
+            Reaction reaction = seenReaction[o.id];
             // The normal in double, of length 1 there too (a float normal is only near it).
             double len = Math.hypot(bestHit.nx(), bestHit.ny());
             double nx = bestHit.nx() / len, ny = bestHit.ny() / len;
@@ -181,7 +190,7 @@ final class Mover {
             float t = bestHit.t();
             Shape meet = clearAlong(cur, fvx, fvy, t, t == 0 ? cur : cur.translated(t * fvx, t * fvy));
             if (o.oneWay != Side.NONE) {
-                o.seenBlocked = true;
+                seenBlocked[o.id] = true;
             }
             // Times never run back, though a stop a skin short of a hit starts the next leg a
             // little before the hit's own time.
@@ -383,17 +392,17 @@ final class Mover {
         Hit bestHit = null;
         for (int i = 0; i < obCount; i++) {
             Body o = obBody[i];
-            if (!all && o.seenReaction == Reaction.CROSS) {
+            if (!all && seenReaction[o.id] == Reaction.CROSS) {
                 obHit[i] = null;
                 continue;
             }
             Hit h = Sweep.timeOfImpact(cur, fvx, fvy, obShape[i]);
             if (h != null && (h.alreadyOverlapping()
-                    || o.seenReaction != Reaction.CROSS && o.oneWay != Side.NONE && h.side() != o.oneWay)) {
+                    || seenReaction[o.id] != Reaction.CROSS && o.oneWay != Side.NONE && h.side() != o.oneWay)) {
                 h = null;  // a one-way body met from a side that does not block
             }
             obHit[i] = h;
-            if (h != null && o.seenReaction != Reaction.CROSS
+            if (h != null && seenReaction[o.id] != Reaction.CROSS
                     && (best < 0 || h.t() < bestHit.t() || h.t() == bestHit.t() && o.serial < obBody[best].serial)) {
                 best = i;
                 bestHit = h;
@@ -444,7 +453,7 @@ final class Mover {
             for (int i = 0; i < obCount; i++) {
                 Body o = obBody[i];
                 Hit h = obHit[i];
-                if (h != null && o.seenReaction == Reaction.CROSS && !o.seenCrossed && h.t() <= tb
+                if (h != null && seenReaction[o.id] == Reaction.CROSS && !seenCrossed[o.id] && h.t() <= tb
                         && (first < 0 || h.t() < obHit[first].t())) {
                     first = i;
                 }
@@ -453,7 +462,7 @@ final class Mover {
                 return;
             }
             Body o = obBody[first];
-            o.seenCrossed = true;
+            seenCrossed[o.id] = true;
             Hit h = obHit[first];
             found.add(new Collision(m, o, Reaction.CROSS, new Hit(timeMet(time + h.t() * (1 - time)), h.nx(), h.ny(), h.side()),
                     poseX(m, start, cur) + h.t() * fvx, poseY(m, start, cur) + h.t() * fvy, obCell[first]));
@@ -490,7 +499,7 @@ final class Mover {
     boolean clear(Shape s) {
         for (int i = 0; i < obCount; i++) {
             Body o = obBody[i];
-            boolean blocks = o.seenReaction != Reaction.CROSS && (o.oneWay == Side.NONE || o.seenBlocked);
+            boolean blocks = seenReaction[o.id] != Reaction.CROSS && (o.oneWay == Side.NONE || seenBlocked[o.id]);
             if (blocks && s.overlaps(obShape[i])) {
                 return false;
             }
@@ -524,7 +533,7 @@ final class Mover {
         obCount = 0;
         for (int i = 0, n = world.candidateCount(); i < n; i++) {
             Body o = world.candidate(i);
-            if (o == m || reaction(m, o, filter, start, st) == null || o.seenOverlap) {
+            if (o == m || reaction(m, o, filter, start, st) == null || seenOverlap[o.id]) {
                 continue;
             }
             if (o.grid != null) {
@@ -573,20 +582,28 @@ final class Mover {
 
     /** The reaction to another body, asked once a move: layers, then sensors, then the filter. */
     Reaction reaction(Body m, Body o, CollisionFilter filter, Shape start, int st) {
-        if (o.seenStamp != st) {
-            o.seenStamp = st;
-            o.seenCrossed = false;
-            o.seenBlocked = false;
-            o.seenOverlap = false;
+        if (o.id >= seenStamp.length) {
+            int n = Math.max(2 * seenStamp.length, o.id + 1);
+            seenStamp = java.util.Arrays.copyOf(seenStamp, n);
+            seenReaction = java.util.Arrays.copyOf(seenReaction, n);
+            seenOverlap = java.util.Arrays.copyOf(seenOverlap, n);
+            seenCrossed = java.util.Arrays.copyOf(seenCrossed, n);
+            seenBlocked = java.util.Arrays.copyOf(seenBlocked, n);
+        }
+        if (seenStamp[o.id] != st) {
+            seenStamp[o.id] = st;
+            seenCrossed[o.id] = false;
+            seenBlocked[o.id] = false;
+            seenOverlap[o.id] = false;
             Reaction r = decide(m, o, filter);
-            o.seenReaction = r;
+            seenReaction[o.id] = r;
             if (r != null && o.grid == null && start.overlaps(o.shape())) {
-                o.seenOverlap = true;
-                o.seenCrossed = true;
+                seenOverlap[o.id] = true;
+                seenCrossed[o.id] = true;
                 reportStartOverlap(m, o, r);
             }
         }
-        return o.seenReaction;
+        return seenReaction[o.id];
     }
 
     /** Reports a body the mover overlapped when its move began, once a move. */
@@ -628,7 +645,7 @@ final class Mover {
             if (r == null || r == Reaction.CROSS || o.oneWay != Side.NONE) {
                 continue;
             }
-            if (o.grid == null ? o.seenOverlap : gridOverlaps(o, start)) {
+            if (o.grid == null ? seenOverlap[o.id] : gridOverlaps(o, start)) {
                 return true;
             }
         }
@@ -728,7 +745,7 @@ final class Mover {
         rects.clear();
         for (int i = 0; i < n; i++) {
             Body o = world.candidate(i);
-            if (o == m || o.seenReaction == null) {
+            if (o == m || seenReaction[o.id] == null) {
                 continue;
             }
             if (o.grid != null) {

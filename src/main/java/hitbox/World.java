@@ -4,10 +4,8 @@ import hitbox.internal.*;
 
 import java.util.ArrayList;
 import java.util.Collections;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
-import java.util.function.IntConsumer;
+import java.util.function.BiConsumer;
 import java.util.function.Predicate;
 
 /**
@@ -40,16 +38,23 @@ import java.util.function.Predicate;
  * the same walk does both. The broad phase narrows the bodies looked at to those whose boxes
  * meet the box the move sweeps.
  *
- * <h2>Contacts and events: a list per step</h2>
+ * <h2>Contacts and events: once a frame</h2>
  * Call {@link #step()} once a frame, after the moves: it returns the {@link BodyEvent}s of the
- * frame, a contact's ENTER and EXIT once each and STAY every step in between. There are no
+ * frame, a contact's ENTER and EXIT once each and STAY every step in between. A world with
+ * many bodies at rest calls {@link #step(List)} instead, as Box2D v3 users do: only the
+ * contacts that began and ended, and the contacts that go on read when needed
+ * ({@link #contacts(BiConsumer)}, {@link #contacts(Body, List)}, {@link #inContact}). The
+ * contacts are kept from step to step, so a step costs in proportion to the bodies that moved,
+ * turned or changed, and a pair of bodies that both stand costs nothing. There are no
  * listeners, so nothing of the sketch runs while the world is changing.
  *
  * <h2>Queries</h2>
  * What a point, a box, a shape or a ray meets, and what a body overlaps now, each with an
  * optional filter ({@code Predicate<Body>}); answers are lists, bodies in the order they were
- * added, ray hits nearest first. A {@link Grid} added with {@link #add(Grid)} is one body that
- * acts as its solid cells (cells inside the grid; beyond its edges is open here).
+ * added, ray hits nearest first, unmodifiable. Each has a form that fills the caller's list
+ * instead, which allocates nothing once the list has grown. A {@link Grid} added with
+ * {@link #add(Grid)} is one body that acts as its solid cells (cells inside the grid; beyond
+ * its edges is open here); a ray walks its cells along the ray.
  *
  * <h2>Bad input</h2>
  * A null, a NaN or infinite number, a removed body or another world's body throws an
@@ -61,10 +66,13 @@ import java.util.function.Predicate;
  * exactly as it was: every body's pose and shape and the broad phase's boxes. Not
  * thread-safe.
  *
- * <p>This class is longer than most (about 1,200 lines): it is the whole public face of the
- * world (bodies, moves, carrying, events, five queries) with full javadoc; the move's walk is
- * in {@code Mover}, the character's rules in {@link CharacterBody}, the shapes' placement in
- * {@code Poses} and the rectangles' walk in {@code MoveAndSlide}.
+ * <p>This class is the face of the world, longer than most (about 1,000 lines, most of them
+ * javadoc of the public methods), over parts with one job each: the bodies with their poses
+ * and boxes and the broad phase's upkeep ({@code BodyTable}), the contacts kept from step to
+ * step ({@code ContactTracker}), a grid's body's cells ({@code GridCollider}), the queries
+ * ({@code WorldQueries}) and the move's walk ({@code Mover}); it keeps the checks, the
+ * carriers and the callbacks' rules. The character's rules are in {@link CharacterBody}, the
+ * shapes' placement in {@code Poses} and the rectangles' walk in {@code MoveAndSlide}.
  */
 public final class World {
 
@@ -72,31 +80,20 @@ public final class World {
     public static final int MAX_LEGS = 8;
 
     private final BroadPhase broad;
-    private Body[] byId = new Body[16];
-    private int[] freeIds = new int[16];
-    private int freeCount;
-    private int nextId;
-    private int size;
-    private int serials;
     private int callbackDepth;
-    private int riderMark;
-
-    // Candidates of a query or a leg, by id.
-    private int[] cand = new int[16];
-    private int candCount;
-    private final IntConsumer collect = id -> {
-        if (candCount == cand.length) {
-            cand = java.util.Arrays.copyOf(cand, 2 * candCount);
-        }
-        cand[candCount++] = id;
-    };
 
     // Contacts and the collisions of the current step.
     private final ArrayList<Collision> stepCollisions = new ArrayList<>();
     private boolean stepped;
-    private Map<Long, Body[]> contacts = new HashMap<>();
+    /** The contacts, kept from step to step. */
+    private final ContactTracker tracker;
+    /** The bodies with their poses and boxes, and the broad phase's upkeep. */
+    private final BodyTable table;
 
-    private final double[] scratch = new double[4];
+    /** A grid's body's cells, for the queries and the contacts. */
+    private final GridCollider grids = new GridCollider();
+    /** The queries: what a point, a shape, a body and a ray meet. */
+    private final WorldQueries queries = new WorldQueries(this, grids);
     /** The move-and-slide solver: every move walks there. */
     private final Mover mover = new Mover(this);
 
@@ -118,6 +115,8 @@ public final class World {
             throw new IllegalArgumentException("broadPhase must be empty, but holds " + broadPhase.size() + " boxes");
         }
         this.broad = broadPhase;
+        this.tracker = new ContactTracker(this, broadPhase, grids);
+        this.table = new BodyTable(this, broadPhase, tracker);
     }
 
     // ---------------------------------------------------------------- bodies
@@ -212,24 +211,7 @@ public final class World {
     }
 
     private Body added(Shape home, double px, double py, double tx, double ty, float angle, Grid grid) {
-        double cos = angle == 0 ? 1 : Math.cos(angle), sin = angle == 0 ? 0 : Math.sin(angle);
-        Poses.extents(home, px, py, cos, sin, scratch);
-        float[] box = box(px + tx, py + ty, scratch, "x, y and angle");
-        int id = freeCount > 0 ? freeIds[--freeCount] : nextId++;
-        Body b = new Body(this, id, serials++, home, px, py, grid);
-        b.tx = tx;
-        b.ty = ty;
-        b.angle = angle;
-        b.cos = cos;
-        b.sin = sin;
-        System.arraycopy(scratch, 0, b.extents, 0, 4);
-        setBox(b, box[0], box[1], box[2], box[3]);
-        if (id >= byId.length) {
-            byId = java.util.Arrays.copyOf(byId, Math.max(2 * byId.length, id + 1));
-        }
-        byId[id] = b;
-        size++;
-        return b;
+        return table.add(home, px, py, tx, ty, angle, grid);
     }
 
     /**
@@ -244,17 +226,7 @@ public final class World {
     public void remove(Body body) {
         own("body", body);
         checkNotInCallback("remove");
-        if (body.dirtyIndex >= 0) {
-            undirty(body);
-        }
-        broad.remove(body.id);
-        byId[body.id] = null;
-        if (freeCount == freeIds.length) {
-            freeIds = java.util.Arrays.copyOf(freeIds, 2 * freeCount);
-        }
-        freeIds[freeCount++] = body.id;
-        body.world = null;
-        size--;
+        table.remove(body);
     }
 
     /**
@@ -271,19 +243,17 @@ public final class World {
 
     /** @return how many bodies the world holds */
     public int size() {
-        return size;
+        return table.size();
     }
 
-    /** @return the bodies, in the order they were added, as a new list, never null */
+    /**
+     * The bodies, in the order they were added.
+     *
+     * @return the bodies, unmodifiable (a copy: later adds and removes do not show in it),
+     *         never null
+     */
     public List<Body> bodies() {
-        List<Body> out = new ArrayList<>(size);
-        for (int i = 0; i < nextId; i++) {
-            if (i < byId.length && byId[i] != null) {
-                out.add(byId[i]);
-            }
-        }
-        out.sort((a, b) -> Integer.compare(a.serial, b.serial));
-        return out;
+        return Collections.unmodifiableList(table.all());
     }
 
     // ---------------------------------------------------------------- moving
@@ -366,11 +336,7 @@ public final class World {
     /** A carrier's move: the riders go first when it goes up, after it otherwise. */
     private Collisions moveCarrier(Body p, float dx, float dy, CollisionFilter filter) {
         List<Body> riders = riders(p);
-        int mark = ++riderMark;
-        for (Body r : riders) {
-            r.riderStamp = mark;
-        }
-        CollisionFilter platform = (m, o) -> o.riderStamp == mark ? null : filter.react(m, o);
+        CollisionFilter platform = (m, o) -> riders.contains(o) ? null : filter.react(m, o);
         List<Collision> collisionsBefore = new ArrayList<>(stepCollisions);
         boolean steppedBefore = stepped;
         Saved[] saved = new Saved[riders.size() + 1];
@@ -378,7 +344,7 @@ public final class World {
         for (int i = 0; i < riders.size(); i++) {
             saved[i + 1] = save(riders.get(i));
         }
-        holdFlush = true;
+        table.holdFlush = true;
         try {
             Collisions out;
             float px = p.x(), py = p.y();
@@ -401,8 +367,8 @@ public final class World {
                     mover.move(r, ax, ay, riderFilter(r));
                 }
             }
-            holdFlush = false;
-            flushIfMany();
+            table.holdFlush = false;
+            table.flushIfMany();
             return out;
         } catch (RuntimeException e) {
             restore(p, saved[0]);
@@ -414,8 +380,7 @@ public final class World {
             stepped = steppedBefore;
             throw e;
         } finally {
-            riderMark++;
-            holdFlush = false;
+            table.holdFlush = false;
         }
     }
 
@@ -428,8 +393,8 @@ public final class World {
         Shape ps = p.shape();
         float probe = 2 * Mover.SKIN;
         gather(p.boxX, p.boxY - 2 * probe, (double) p.boxX + p.boxW, (double) p.boxY + p.boxH);
-        for (int i = 0; i < candCount; i++) {
-            Body o = byId[cand[i]];
+        for (int i = 0, n = table.candidateCount(); i < n; i++) {
+            Body o = table.candidate(i);
             if (o == p || o.grid != null || o.sensor || o.carrier || !p.accepts(o)) {
                 continue;
             }
@@ -456,21 +421,14 @@ public final class World {
 
     /** Puts a body back as saved; no flush happened meanwhile, so the broad phase is as it was. */
     private void restore(Body b, Saved saved) {
-        b.tx = saved.tx();
-        b.ty = saved.ty();
-        b.shape = saved.shape();
+        b.placed(saved.tx(), saved.ty(), saved.shape());
         float[] k = saved.box();
-        b.boxX = k[0];
-        b.boxY = k[1];
-        b.boxW = k[2];
-        b.boxH = k[3];
-        b.fatX = k[4];
-        b.fatY = k[5];
-        b.fatW = k[6];
-        b.fatH = k[7];
+        b.box(k[0], k[1], k[2], k[3]);
+        b.fat(k[4], k[5], k[6], k[7]);
         if (!saved.dirty() && b.dirtyIndex >= 0) {
-            undirty(b);
+            table.undirty(b);
         }
+        tracker.changed(b);
     }
 
     /** Asks a filter for a pair's reaction, reporting what it throws as the world's rules say. */
@@ -490,15 +448,7 @@ public final class World {
 
     /** The world changes: the mover's pose, shape and box; the collisions handed back. */
     Collisions commit(Body m, Shape start, Shape end, List<Collision> out, boolean finished) {
-        double ntx = m.tx + (Poses.refX(end) - Poses.refX(start)), nty = m.ty + (Poses.refY(end) - Poses.refY(start));
-        float[] box = box(m.pivotX + ntx, m.pivotY + nty, m.extents, "dx and dy");
-        // The shape's own extents too (no Rect made for them: a move's only new object is its shape).
-        float x0 = Math.min(box[0], Math.nextDown((float) end.minX())), y0 = Math.min(box[1], Math.nextDown((float) end.minY()));
-        float x1 = Math.max(box[0] + box[2], Math.nextUp((float) end.maxX())), y1 = Math.max(box[1] + box[3], Math.nextUp((float) end.maxY()));
-        m.tx = ntx;
-        m.ty = nty;
-        m.shape = end;
-        setBox(m, x0, y0, Math.nextUp(x1 - x0), Math.nextUp(y1 - y0));
+        table.moved(m, start, end);
         if (stepped) {
             stepCollisions.clear();
             stepped = false;
@@ -511,182 +461,144 @@ public final class World {
         return result;
     }
 
-    // ---------------------------------------------------------------- teleports (Body calls these)
-
-    void teleport(Body b, double tx, double ty, float angle, String what) {
-        if (b.grid != null) {
-            throw new IllegalStateException("a grid's body does not move or turn");
-        }
-        double cos = b.cos, sin = b.sin;
-        double[] ex = b.extents;
-        if (angle != b.angle) {
-            cos = angle == 0 ? 1 : Math.cos(angle);
-            sin = angle == 0 ? 0 : Math.sin(angle);
-            Poses.extents(b.home, b.pivotX, b.pivotY, cos, sin, scratch);
-            ex = scratch;
-        }
-        float[] box = box(b.pivotX + tx, b.pivotY + ty, ex, what);
-        if (ex == scratch) {
-            System.arraycopy(scratch, 0, b.extents, 0, 4);
-        }
-        b.tx = tx;
-        b.ty = ty;
-        b.angle = angle;
-        b.cos = cos;
-        b.sin = sin;
-        b.shape = null;
-        setBox(b, box[0], box[1], box[2], box[3]);
-    }
-
-    private final float[] boxOut = new float[4];
-
-    /** The box of a pose, rounded outwards a float step more; checked before anything changes. */
-    private float[] box(double ox, double oy, double[] ex, String what) {
-        // The placed shape's coordinates are rounded to float where they are, anywhere in the
-        // box: a capsule's end 4.5 inside its box edge rounds at the end's size, which can
-        // move the edge by more than one step of the edge's own size. A step at the box's
-        // largest size along each axis covers any such rounding.
-        double sx = Math.ulp((float) Math.max(Math.abs(ox + ex[0]), Math.abs(ox + ex[2])));
-        double sy = Math.ulp((float) Math.max(Math.abs(oy + ex[1]), Math.abs(oy + ex[3])));
-        float x0 = Math.nextDown((float) (ox + ex[0] - sx)), y0 = Math.nextDown((float) (oy + ex[1] - sy));
-        float x1 = Math.nextUp((float) (ox + ex[2] + sx)), y1 = Math.nextUp((float) (oy + ex[3] + sy));
-        float w = Math.nextUp((float) ((double) x1 - x0)), h = Math.nextUp((float) ((double) y1 - y0));
-        if (!Float.isFinite(x0) || !Float.isFinite(y0) || !Float.isFinite(x1) || !Float.isFinite(y1)
-                || !Float.isFinite(w) || !Float.isFinite(h)) {
-            throw new IllegalArgumentException(what + " put the body's shape out of the float range");
-        }
-        boxOut[0] = x0;
-        boxOut[1] = y0;
-        boxOut[2] = w;
-        boxOut[3] = h;
-        return boxOut;
-    }
-
-    /**
-     * Sets a body's tight box. The broad phase holds a fat box: when the tight box leaves it,
-     * a new fat box (grown by an eighth of the body's size and a pixel, and four times the
-     * last move ahead) waits in the dirty list, which queries scan, until enough wait to put
-     * them all at once (or the next {@link #step()}): the grid rebuilds after each change, so
-     * putting one box per move would rebuild it once per move.
-     */
-    private void setBox(Body b, float x, float y, float w, float h) {
-        if (b.grid != null) {
-            b.boxX = b.fatX = 0;
-            b.boxY = b.fatY = 0;
-            b.boxW = b.fatW = b.grid.width();
-            b.boxH = b.fatH = b.grid.height();
-            broad.put(b.id, 0, 0, b.boxW, b.boxH);
-            return;
-        }
-        boolean fresh = !b.boxed;
-        b.boxed = true;
-        double ddx = fresh ? 0 : (double) x - b.boxX, ddy = fresh ? 0 : (double) y - b.boxY;
-        b.boxX = x;
-        b.boxY = y;
-        b.boxW = w;
-        b.boxH = h;
-        if (!fresh && x >= b.fatX && y >= b.fatY && (double) x + w <= (double) b.fatX + b.fatW
-                && (double) y + h <= (double) b.fatY + b.fatH) {
-            return;
-        }
-        double m = 1 + Math.max(w, h) / 8.0;
-        double x0 = Math.max(-Float.MAX_VALUE, x - m + Math.min(0, 4 * ddx));
-        double y0 = Math.max(-Float.MAX_VALUE, y - m + Math.min(0, 4 * ddy));
-        double x1 = Math.min(Float.MAX_VALUE, (double) x + w + m + Math.max(0, 4 * ddx));
-        double y1 = Math.min(Float.MAX_VALUE, (double) y + h + m + Math.max(0, 4 * ddy));
-        // Never past the float range: a body near its edge gets a fat box that ends there.
-        b.fatX = Math.min(x, Math.max(-Float.MAX_VALUE, Math.nextDown((float) x0)));
-        b.fatY = Math.min(y, Math.max(-Float.MAX_VALUE, Math.nextDown((float) y0)));
-        b.fatW = (float) Math.min(Float.MAX_VALUE, Math.nextUp(x1 - b.fatX));
-        b.fatH = (float) Math.min(Float.MAX_VALUE, Math.nextUp(y1 - b.fatY));
-        if (b.dirtyIndex < 0) {
-            if (dirtyCount == dirty.length) {
-                dirty = java.util.Arrays.copyOf(dirty, 2 * dirtyCount);
-            }
-            b.dirtyIndex = dirtyCount;
-            dirty[dirtyCount++] = b;
-        }
-        flushIfMany();
-    }
-
-    private Body[] dirty = new Body[16];
-    private int dirtyCount;
-    private boolean holdFlush;
-
-    private void flushIfMany() {
-        if (!holdFlush && dirtyCount > 64 + 2 * Math.sqrt(size)) {
-            flush();
-        }
-    }
-
-    /** Puts every waiting fat box into the broad phase. */
-    private void flush() {
-        for (int i = 0; i < dirtyCount; i++) {
-            Body b = dirty[i];
-            broad.put(b.id, b.fatX, b.fatY, b.fatW, b.fatH);
-            b.dirtyIndex = -1;
-            dirty[i] = null;
-        }
-        dirtyCount = 0;
-    }
-
-    private void undirty(Body b) {
-        int i = b.dirtyIndex;
-        Body last = dirty[--dirtyCount];
-        dirty[i] = last;
-        last.dirtyIndex = i;
-        dirty[dirtyCount] = null;
-        b.dirtyIndex = -1;
-    }
-
     // ---------------------------------------------------------------- events
 
     /**
-     * Ends the frame: the contacts now (pairs whose layers accept each other that overlap, or
-     * that a move since the last step met), compared with those of the last step. Call once a
-     * frame, after the moves.
+     * Ends the frame and reports every contact as an event: the contacts now (pairs whose
+     * layers accept each other that overlap, or that a move since the last step met), compared
+     * with those of the last step. Call once a frame, after the moves. Matter.js's
+     * {@code collisionStart}, {@code collisionActive} and {@code collisionEnd} in one list.
+     *
+     * <p>This is the simple form, for a sketch with a few contacts: it makes a STAY event for
+     * every contact that goes on, every frame. A world with many bodies at rest calls
+     * {@link #step(List)} instead, which hands only the changes, and reads the contacts that
+     * go on when it needs them ({@link #contacts(BiConsumer)}, {@link #contacts(Body, List)},
+     * {@link #inContact}), as Box2D v3's begin and end events and contact data.
      *
      * @return the events, ENTER and EXIT once per change and STAY for each contact that goes
-     *         on, bodies of each pair in the order added; empty if there are none, never null
+     *         on, ordered by pair (the pair's body added first, then the other), bodies of each
+     *         pair in the order added; unmodifiable, never null; empty if there are none
      * @throws IllegalStateException if called from inside a callback of this world
      */
     public List<BodyEvent> step() {
         checkNotInCallback("step");
-        flush();
-        Map<Long, Body[]> now = new HashMap<>();
-        broad.pairs((i, j) -> {
-            Body a = byId[i], b = byId[j];
-            if (a.accepts(b) && overlap(a, b)) {
-                putPair(now, a, b);
-            }
-        });
-        if (!stepped) {
-            for (Collision c : stepCollisions) {
-                if (c.mover().world == this && c.other().world == this && c.mover().accepts(c.other())) {
-                    putPair(now, c.mover(), c.other());
-                }
-            }
-        }
         List<BodyEvent> events = new ArrayList<>();
-        List<Long> keys = new ArrayList<>(now.keySet());
-        for (Long k : contacts.keySet()) {
-            if (!now.containsKey(k)) {
-                keys.add(k);
-            }
+        endFrame(events, true);
+        return Collections.unmodifiableList(events);
+    }
+
+    /**
+     * Ends the frame and puts into {@code changes} the contacts that began (ENTER) and ended
+     * (EXIT) since the last step, each once; never a STAY. The contacts are those of
+     * {@link #step()}. It costs in proportion to what changed: the bodies moved, turned, added,
+     * removed or given new layers since the last step (and the grids whose cells changed),
+     * and their neighbours; a pair of bodies that both stand keeps its contact untested, and a
+     * step in which nothing changed tests no pair and allocates nothing.
+     *
+     * @param changes cleared, then given the ENTER and EXIT events ordered by pair (the pair's
+     *                body added first, then the other); not null, modifiable
+     * @throws IllegalArgumentException if {@code changes} is null or cannot be cleared
+     * @throws IllegalStateException    if called from inside a callback of this world
+     */
+    public void step(List<BodyEvent> changes) {
+        Check.notNull("changes", changes);
+        checkNotInCallback("step");
+        try {
+            changes.clear();
+        } catch (UnsupportedOperationException e) {
+            throw refused("changes", e);  // before anything changed
         }
-        Collections.sort(keys);
-        for (Long k : keys) {
-            Body[] p = now.get(k);
-            if (p == null) {
-                Body[] q = contacts.get(k);
-                events.add(new BodyEvent(BodyEvent.Kind.EXIT, q[0], q[1]));
-            } else {
-                events.add(new BodyEvent(contacts.containsKey(k) ? BodyEvent.Kind.STAY : BodyEvent.Kind.ENTER, p[0], p[1]));
-            }
-        }
-        contacts = now;
+        endFrame(changes, false);
+    }
+
+    private void endFrame(List<BodyEvent> out, boolean stays) {
+        table.flush();
+        tracker.step(stepped ? null : stepCollisions, out, stays);
         stepped = true;
-        return events;
+    }
+
+    /**
+     * How many pairs of bodies are in contact, as of the last step.
+     *
+     * @return the number of contacts, 0 or more
+     */
+    public int contactCount() {
+        return tracker.count();
+    }
+
+    /**
+     * Visits every pair of bodies in contact, as of the last step ({@link #step(List)}): the
+     * contacts that go on, read when needed rather than reported every frame. Nothing is made
+     * per contact.
+     *
+     * @param out receives each pair, the body added first first, in no particular order of
+     *            pairs; it may read the world but not change it; not null
+     * @throws IllegalArgumentException if {@code out} is null, or it threw
+     * @throws IllegalStateException    if called from inside a callback of this world, or
+     *                                  {@code out} tried to change the world
+     */
+    public void contacts(BiConsumer<Body, Body> out) {
+        Check.notNull("out", out);
+        checkNotInCallback("contacts");
+        callbackDepth++;
+        try {
+            tracker.forEach(out);
+        } catch (IllegalStateException e) {
+            throw e;
+        } catch (RuntimeException e) {
+            throw new IllegalArgumentException("out threw " + e, e);
+        } finally {
+            callbackDepth--;
+        }
+    }
+
+    /**
+     * Adds to a list the bodies in contact with a body, as of the last step.
+     *
+     * @param body a body of this world, not null
+     * @param out  the caller's list, which gets the bodies added (in no particular order;
+     *             nothing is removed from it), not null
+     * @throws IllegalArgumentException if an argument is null, or the body was removed or is
+     *                                  another world's, or {@code out} cannot be added to
+     */
+    public void contacts(Body body, List<Body> out) {
+        own("body", body);
+        Check.notNull("out", out);
+        try {
+            tracker.of(body, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
+        }
+    }
+
+    /**
+     * Are two bodies in contact, as of the last step?
+     *
+     * @param a a body of this world, not null
+     * @param b another body of this world, not null
+     * @return true if they were in contact at the last step
+     * @throws IllegalArgumentException if an argument is null, or a body was removed or is
+     *                                  another world's
+     */
+    public boolean inContact(Body a, Body b) {
+        own("a", a);
+        own("b", b);
+        return a != b && tracker.touching(a, b);
+    }
+
+    /** The contact tracker, for the tests that count the pairs it tests. */
+    ContactTracker tracker() {
+        return tracker;
+    }
+
+    /** A body's layers changed: its contacts need a look at the next step. */
+    void layersChanged(Body b) {
+        tracker.changed(b);
+    }
+
+    /** The body of an id, or null. */
+    Body body(int id) {
+        return table.body(id);
     }
 
     /**
@@ -701,13 +613,13 @@ public final class World {
      * @throws IllegalStateException    if called from inside a callback of this world, or
      *                                  {@code out} tried to change the world
      */
-    public void pairs(java.util.function.BiConsumer<Body, Body> out) {
+    public void pairs(BiConsumer<Body, Body> out) {
         Check.notNull("out", out);
         checkNotInCallback("pairs");
-        flush();
+        table.flush();
         broad.pairs((i, j) -> {
-            Body a = byId[i], b = byId[j];
-            if (a.accepts(b) && overlap(a, b)) {
+            Body a = table.body(i), b = table.body(j);
+            if (a.accepts(b) && tracker.overlap(a, b)) {
                 if (a.serial > b.serial) {
                     Body t = a;
                     a = b;
@@ -727,64 +639,14 @@ public final class World {
         });
     }
 
-    private static void putPair(Map<Long, Body[]> map, Body a, Body b) {
-        if (a.serial > b.serial) {
-            Body t = a;
-            a = b;
-            b = t;
-        }
-        map.putIfAbsent(((long) a.serial << 32) | b.serial, new Body[] {a, b});
-    }
-
-    /** Do two bodies overlap now (a grid's body: one of its solid cells)? */
-    private boolean overlap(Body a, Body b) {
-        // The tight boxes first (the broad phase holds fat ones): no shape is made for a pair
-        // whose boxes are apart.
-        if (a.boxX > (double) b.boxX + b.boxW || b.boxX > (double) a.boxX + a.boxW
-                || a.boxY > (double) b.boxY + b.boxH || b.boxY > (double) a.boxY + a.boxH) {
-            return false;
-        }
-        if (a.grid != null && b.grid != null) {
-            return false;
-        }
-        if (a.grid != null) {
-            return gridMeets(a, b.shape());
-        }
-        if (b.grid != null) {
-            return gridMeets(b, a.shape());
-        }
-        return a.shape().overlaps(b.shape());
-    }
-
-    /** Does a shape overlap a solid cell of a grid's body? */
-    private boolean gridMeets(Body g, Shape s) {
-        return gridCell(g, s) >= 0;
-    }
-
-    /** The first solid cell (row by row) of a grid's body that a shape overlaps, or -1. */
-    private int gridCell(Body g, Shape s) {
-        Grid grid = g.grid;
-        double pad = pad(s.minX(), s.minY(), s.maxX(), s.maxY());
-        int c0 = Math.max(0, grid.colAt((float) (s.minX() - pad))), c1 = Math.min(grid.cols() - 1, grid.colAt((float) (s.maxX() + pad)));
-        int r0 = Math.max(0, grid.rowAt((float) (s.minY() - pad))), r1 = Math.min(grid.rows() - 1, grid.rowAt((float) (s.maxY() + pad)));
-        for (int row = r0; row <= r1; row++) {
-            for (int col = c0; col <= c1; col++) {
-                if (grid.isSolid(col, row) && s.overlaps(grid.cellRect(col, row))) {
-                    return row * grid.cols() + col;
-                }
-            }
-        }
-        return -1;
-    }
-
     /**
      * The collisions the moves reported since the last {@link #step()}, or, right after a step,
      * those of the frame it ended (until the next move): for drawing the frame's contacts.
      *
-     * @return the collisions in the order met, a new list; empty if none, never null
+     * @return the collisions in the order met, unmodifiable; empty if none, never null
      */
     public List<Collision> collisions() {
-        return new ArrayList<>(stepCollisions);
+        return Collections.unmodifiableList(new ArrayList<>(stepCollisions));
     }
 
     // ---------------------------------------------------------------- queries
@@ -797,7 +659,7 @@ public final class World {
      *
      * @param x the point's x
      * @param y the point's y
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if x or y is NaN or infinite
      */
     public List<Body> queryPoint(float x, float y) {
@@ -812,31 +674,39 @@ public final class World {
      * @param x      the point's x
      * @param y      the point's y
      * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if x or y is NaN or infinite, {@code filter} is null or
      *                                  threw
      */
     public List<Body> queryPoint(float x, float y, Predicate<Body> filter) {
+        List<Body> out = new ArrayList<>();
+        queryPoint(x, y, filter, out);
+        return Collections.unmodifiableList(out);
+    }
+
+    /**
+     * The bodies the filter keeps whose shape holds a point, put into the caller's list: the
+     * form for a query every frame, which makes nothing once the list has grown.
+     *
+     * @param x      the point's x
+     * @param y      the point's y
+     * @param filter which bodies to keep, not null
+     * @param out    the caller's list: the bodies are added after what it holds, in the order
+     *               added; not null
+     * @throws IllegalArgumentException if x or y is NaN or infinite, {@code filter} or
+     *                                  {@code out} is null, the filter threw, or {@code out}
+     *                                  cannot be added to
+     */
+    public void queryPoint(float x, float y, Predicate<Body> filter, List<Body> out) {
         Check.finite("x", x);
         Check.finite("y", y);
         Check.notNull("filter", filter);
-        gather(x, y, x, y);
-        List<Body> out = new ArrayList<>();
-        for (int i = 0; i < candCount; i++) {
-            Body b = byId[cand[i]];
-            boolean in;
-            if (b.grid != null) {
-                Grid g = b.grid;
-                int col = g.colAt(x), row = g.rowAt(y);
-                in = g.inGrid(col, row) && g.isSolid(col, row) && g.cellRect(col, row).contains(x, y);
-            } else {
-                in = b.shape().contains(x, y);
-            }
-            if (in && keep(filter, b)) {
-                out.add(b);
-            }
+        Check.notNull("out", out);
+        try {
+            queries.point(x, y, filter, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
         }
-        return out;
     }
 
     /**
@@ -848,7 +718,7 @@ public final class World {
      * @param y the box's top edge
      * @param w the box's width, 0 or more
      * @param h the box's height, 0 or more
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if a number is NaN or infinite, or a size negative
      */
     public List<Body> queryBox(float x, float y, float w, float h) {
@@ -866,7 +736,7 @@ public final class World {
      * @param w      the box's width, 0 or more
      * @param h      the box's height, 0 or more
      * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if a number is NaN or infinite, a size negative, or
      *                                  {@code filter} is null or threw
      */
@@ -878,7 +748,7 @@ public final class World {
      * The bodies whose shape overlaps a shape ({@link Shape#overlaps}).
      *
      * @param shape the shape, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if {@code shape} is null
      */
     public List<Body> queryShape(Shape shape) {
@@ -890,29 +760,36 @@ public final class World {
      *
      * @param shape  the shape, not null
      * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
      */
     public List<Body> queryShape(Shape shape, Predicate<Body> filter) {
-        Check.notNull("shape", shape);
-        Check.notNull("filter", filter);
-        return meeting(shape, null, filter);
+        List<Body> out = new ArrayList<>();
+        queryShape(shape, filter, out);
+        return Collections.unmodifiableList(out);
     }
 
-    private List<Body> meeting(Shape shape, Body except, Predicate<Body> filter) {
-        gather(shape.minX(), shape.minY(), shape.maxX(), shape.maxY());
-        List<Body> out = new ArrayList<>();
-        for (int i = 0; i < candCount; i++) {
-            Body b = byId[cand[i]];
-            if (b == except) {
-                continue;
-            }
-            boolean meets = b.grid != null ? gridMeets(b, shape) : b.shape().overlaps(shape);
-            if (meets && keep(filter, b)) {
-                out.add(b);
-            }
+    /**
+     * The bodies the filter keeps whose shape overlaps a shape (a box is a {@link Rect}), put
+     * into the caller's list: the form for a query every frame, which makes nothing once the
+     * list has grown.
+     *
+     * @param shape  the shape, not null
+     * @param filter which bodies to keep, not null
+     * @param out    the caller's list: the bodies are added after what it holds, in the order
+     *               added; not null
+     * @throws IllegalArgumentException if an argument is null, {@code filter} threw, or
+     *                                  {@code out} cannot be added to
+     */
+    public void queryShape(Shape shape, Predicate<Body> filter, List<Body> out) {
+        Check.notNull("shape", shape);
+        Check.notNull("filter", filter);
+        Check.notNull("out", out);
+        try {
+            queries.shape(shape, null, filter, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
         }
-        return out;
     }
 
     /**
@@ -920,7 +797,7 @@ public final class World {
      * cells).
      *
      * @param body a body of this world, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if {@code body} is null, removed or another world's
      */
     public List<Body> overlapping(Body body) {
@@ -932,34 +809,47 @@ public final class World {
      *
      * @param body   a body of this world, not null
      * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added; empty if none, never null
+     * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if an argument is null, the body is removed or another
      *                                  world's, or {@code filter} threw
      */
     public List<Body> overlapping(Body body, Predicate<Body> filter) {
+        List<Body> out = new ArrayList<>();
+        overlapping(body, filter, out);
+        return Collections.unmodifiableList(out);
+    }
+
+    /**
+     * The bodies the filter keeps that a body overlaps now, put into the caller's list: the
+     * form for a query every frame, which makes nothing once the list has grown.
+     *
+     * @param body   a body of this world, not null
+     * @param filter which bodies to keep, not null
+     * @param out    the caller's list: the bodies are added after what it holds, in the order
+     *               added; not null
+     * @throws IllegalArgumentException if an argument is null, the body is removed or another
+     *                                  world's, {@code filter} threw, or {@code out} cannot be
+     *                                  added to
+     */
+    public void overlapping(Body body, Predicate<Body> filter, List<Body> out) {
         own("body", body);
         Check.notNull("filter", filter);
-        if (body.grid == null) {
-            return meeting(body.shape(), body, filter);
+        Check.notNull("out", out);
+        try {
+            queries.overlapping(body, filter, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
         }
-        gather(body.boxX, body.boxY, (double) body.boxX + body.boxW, (double) body.boxY + body.boxH);
-        List<Body> out = new ArrayList<>();
-        for (int i = 0; i < candCount; i++) {
-            Body b = byId[cand[i]];
-            if (b != body && b.grid == null && gridMeets(body, b.shape()) && keep(filter, b)) {
-                out.add(b);
-            }
-        }
-        return out;
     }
 
     /**
      * Every body a ray meets within its reach, nearest first ({@link Ray#cast}: distance,
-     * point, normal from the ray into the body); each body once, at its nearest point.
+     * point, normal from the ray into the body); each body once, at its nearest point. A
+     * grid's body: its nearest solid cell, found by walking the cells along the ray.
      *
      * @param ray the ray, not null
-     * @return the hits, nearest first (equal distances: in the order added); empty if none,
-     *         never null
+     * @return the hits, nearest first (equal distances: in the order added), unmodifiable;
+     *         empty if none, never null
      * @throws IllegalArgumentException if {@code ray} is null
      */
     public List<BodyHit> raycast(Ray ray) {
@@ -971,13 +861,35 @@ public final class World {
      *
      * @param ray    the ray, not null
      * @param filter which bodies to keep, not null
-     * @return the hits, nearest first; empty if none, never null
+     * @return the hits, nearest first, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
      */
     public List<BodyHit> raycast(Ray ray, Predicate<Body> filter) {
+        List<BodyHit> out = new ArrayList<>();
+        raycast(ray, filter, out);
+        return Collections.unmodifiableList(out);
+    }
+
+    /**
+     * Every body the filter keeps that a ray meets, nearest first, put into the caller's list:
+     * see {@link #raycast(Ray)}. Nothing is made but the hits once the list has grown.
+     *
+     * @param ray    the ray, not null
+     * @param filter which bodies to keep, not null
+     * @param out    the caller's list: the hits are added after what it holds, nearest first;
+     *               not null
+     * @throws IllegalArgumentException if an argument is null, {@code filter} threw, or
+     *                                  {@code out} cannot be added to
+     */
+    public void raycast(Ray ray, Predicate<Body> filter, List<BodyHit> out) {
         Check.notNull("ray", ray);
         Check.notNull("filter", filter);
-        return rayHits(ray, filter, false);
+        Check.notNull("out", out);
+        try {
+            queries.ray(ray, filter, false, out);
+        } catch (UnsupportedOperationException e) {
+            throw refused("out", e);
+        }
     }
 
     /**
@@ -991,71 +903,15 @@ public final class World {
     public BodyHit raycastFirst(Ray ray, Predicate<Body> filter) {
         Check.notNull("ray", ray);
         Check.notNull("filter", filter);
-        List<BodyHit> hits = rayHits(ray, filter, true);
-        return hits.isEmpty() ? null : hits.get(0);
+        firstHit.clear();
+        queries.ray(ray, filter, true, firstHit);
+        BodyHit hit = firstHit.isEmpty() ? null : firstHit.get(0);
+        firstHit.clear();
+        return hit;
     }
 
-    private List<BodyHit> rayHits(Ray ray, Predicate<Body> filter, boolean firstOnly) {
-        candCount = 0;
-        double[] nearest = {Double.POSITIVE_INFINITY};
-        broad.raycast(ray, (id, distance) -> {
-            if (firstOnly && distance > nearest[0]) {
-                return false;
-            }
-            if (byId[id].dirtyIndex < 0) {
-                collect.accept(id);
-            }
-            return true;
-        });
-        for (int i = 0; i < dirtyCount; i++) {
-            collect.accept(dirty[i].id);
-        }
-        List<BodyHit> out = new ArrayList<>();
-        for (int i = 0; i < candCount; i++) {
-            Body b = byId[cand[i]];
-            BodyHit hit = b.grid != null ? gridRay(b, ray) : hitOf(b, ray.cast(b.shape()));
-            if (hit != null && keep(filter, b)) {
-                out.add(hit);
-                if (firstOnly) {
-                    nearest[0] = Math.min(nearest[0], hit.distance());
-                }
-            }
-        }
-        out.sort((p, q) -> p.distance() != q.distance() ? Float.compare(p.distance(), q.distance())
-                : Integer.compare(p.body().serial, q.body().serial));
-        if (firstOnly && out.size() > 1) {
-            return out.subList(0, 1);
-        }
-        return out;
-    }
-
-    private static BodyHit hitOf(Body b, RayHit h) {
-        return h == null ? null : new BodyHit(b, h, -1);
-    }
-
-    /** The nearest solid cell of a grid's body that a ray meets, within its reach and the grid. */
-    private BodyHit gridRay(Body b, Ray ray) {
-        Grid g = b.grid;
-        double len = Math.hypot(ray.dx(), ray.dy());
-        double reach = Math.min(ray.maxDistance(), Math.hypot(g.width(), g.height())
-                + Math.hypot(Math.max(Math.abs(ray.ox()), Math.abs(ray.ox() - g.width())),
-                Math.max(Math.abs(ray.oy()), Math.abs(ray.oy() - g.height()))));
-        double ex = ray.ox() + ray.dx() / len * reach, ey = ray.oy() + ray.dy() / len * reach;
-        int c0 = Math.max(0, g.colAt((float) Math.min(ray.ox(), ex))), c1 = Math.min(g.cols() - 1, g.colAt((float) Math.max(ray.ox(), ex)));
-        int r0 = Math.max(0, g.rowAt((float) Math.min(ray.oy(), ey))), r1 = Math.min(g.rows() - 1, g.rowAt((float) Math.max(ray.oy(), ey)));
-        BodyHit best = null;
-        for (int row = r0; row <= r1; row++) {
-            for (int col = c0; col <= c1; col++) {
-                if (g.isSolid(col, row)) {
-                    RayHit h = ray.cast(g.cellRect(col, row));
-                    if (h != null && (best == null || h.distance() < best.distance())) {
-                        best = new BodyHit(b, h, row * g.cols() + col);
-                    }
-                }
-            }
-        }
-        return best;
-    }
+    /** The nearest hit of {@link #raycastFirst}, while it is found. */
+    private final ArrayList<BodyHit> firstHit = new ArrayList<>(1);
 
     // ---------------------------------------------------------------- looking inside
 
@@ -1067,14 +923,19 @@ public final class World {
      */
     public void cells(BoxConsumer out) {
         Check.notNull("out", out);
-        flush();
+        table.flush();
         broad.cells(out);
     }
 
     /** @return the name of the broad phase inside, for labels */
     @Override
     public String toString() {
-        return "World of " + size + " bodies on " + broad;
+        return "World of " + table.size() + " bodies on " + broad;
+    }
+
+    /** The grids' cell answers, for the tests that count the cells looked at. */
+    GridCollider grids() {
+        return grids;
     }
 
     /** The broad phase, for the tests that check a refused call changed nothing. */
@@ -1086,7 +947,7 @@ public final class World {
 
     private static final Predicate<Body> ALL = b -> true;
 
-    private boolean keep(Predicate<Body> filter, Body b) {
+    boolean keep(Predicate<Body> filter, Body b) {
         if (filter == ALL) {
             return true;
         }
@@ -1104,76 +965,38 @@ public final class World {
 
     /** The ids of the bodies whose boxes meet a box (padded by a few float steps), in the order added. */
     void gather(double left, double top, double right, double bottom) {
-        double pad = pad(left, top, right, bottom);
-        float x0 = (float) Math.max(-Float.MAX_VALUE, left - pad), y0 = (float) Math.max(-Float.MAX_VALUE, top - pad);
-        float x1 = (float) Math.min(Float.MAX_VALUE, right + pad), y1 = (float) Math.min(Float.MAX_VALUE, bottom + pad);
-        float w = (float) Math.min(Float.MAX_VALUE, Math.nextUp((double) x1 - x0));
-        float h = (float) Math.min(Float.MAX_VALUE, Math.nextUp((double) y1 - y0));
-        candCount = 0;
-        broad.query(x0, y0, w, h, collect);
-        int kept = 0;
-        for (int i = 0; i < candCount; i++) {
-            if (byId[cand[i]].dirtyIndex < 0) {
-                cand[kept++] = cand[i];  // a dirty body's box in the broad phase is stale
-            }
-        }
-        candCount = kept;
-        for (int i = 0; i < dirtyCount; i++) {
-            Body b = dirty[i];
-            if (b.fatX <= x1 && x0 <= (double) b.fatX + b.fatW && b.fatY <= y1 && y0 <= (double) b.fatY + b.fatH) {
-                collect.accept(b.id);
-            }
-        }
-        sortCandidates();
+        table.gather(left, top, right, bottom);
     }
 
+    /** A few float steps at a box's largest coordinate, and the smallest normal float. */
     static double pad(double left, double top, double right, double bottom) {
-        double m = Math.max(Math.max(Math.abs(left), Math.abs(right)), Math.max(Math.abs(top), Math.abs(bottom)));
-        return 4 * Math.ulp((float) Math.min(m, Float.MAX_VALUE / 4)) + Float.MIN_NORMAL;
+        return BodyTable.pad(left, top, right, bottom);
     }
-
-    /**
-     * Sorts the candidates by the order added (ties are met in that order): insertion sort for
-     * the few of a move's leg, a sort of (serial, id) keys for the many of a large query, so a
-     * query over the whole world costs k log k, not k squared.
-     */
-    private void sortCandidates() {
-        if (candCount <= 32) {
-            for (int i = 1; i < candCount; i++) {
-                int id = cand[i];
-                int s = byId[id].serial;
-                int j = i - 1;
-                while (j >= 0 && byId[cand[j]].serial > s) {
-                    cand[j + 1] = cand[j];
-                    j--;
-                }
-                cand[j + 1] = id;
-            }
-            return;
-        }
-        if (keys.length < candCount) {
-            keys = new long[Math.max(candCount, 2 * keys.length)];
-        }
-        for (int i = 0; i < candCount; i++) {
-            keys[i] = ((long) byId[cand[i]].serial << 32) | cand[i];
-        }
-        java.util.Arrays.sort(keys, 0, candCount);
-        for (int i = 0; i < candCount; i++) {
-            cand[i] = (int) keys[i];
-        }
-    }
-
-    /** The sort keys of a large query's candidates: serial above, id below. */
-    private long[] keys = new long[64];
 
     /** How many bodies the last {@link #gather} found. */
     int candidateCount() {
-        return candCount;
+        return table.candidateCount();
     }
 
     /** The i-th body the last {@link #gather} found, in the order added. */
     Body candidate(int i) {
-        return byId[cand[i]];
+        return table.candidate(i);
+    }
+
+    /** The candidates of a ray: the bodies whose boxes it meets, in no particular order. */
+    void rayCandidates(Ray ray) {
+        table.rayCandidates(ray);
+    }
+
+    /** Teleports a body (Body's moveTo, moveBy, turnTo and turnBy); checked before anything changes. */
+    void teleport(Body b, double tx, double ty, float angle, String what) {
+        table.teleport(b, tx, ty, angle, what);
+    }
+
+    /** The exception for a caller's list the world cannot add to. */
+    private static IllegalArgumentException refused(String name, UnsupportedOperationException e) {
+        return new IllegalArgumentException(name + " must be a list the world can add to (an ArrayList, say), "
+                + "not an unmodifiable one: " + e, e);
     }
 
     /** A body argument of this world, checked. */

@@ -659,6 +659,9 @@ class BadInputCatalogTest {
         if (type == Shape[].class) {
             return new Shape[] {new Rect(30, 30, 10, 10)};
         }
+        if (type == List.class && e.getParameters()[i].getName().matches("out|changes")) {
+            return new ArrayList<>();  // a list the method fills (issue 29's forms): the caller's, which takes adds
+        }
         if (type == List.class || type == Iterable.class || type == Collection.class) {
             return List.of(new Rect(30, 30, 10, 10));
         }

@@ -1,0 +1,109 @@
+package hitbox;
+
+import java.util.Comparator;
+import java.util.List;
+import java.util.function.Predicate;
+
+/**
+ * The queries of a {@link World}: what a point, a shape, a body and a ray meet, each answer
+ * put into the caller's list. The candidates come from the world's broad phase
+ * ({@code World.gather}, {@code World.rayCandidates}), a grid's body is answered by the
+ * {@link GridCollider}, and the filter is asked through the world ({@code World.keep}), which
+ * keeps it from changing the world. Nothing is made but the answers (and a ray's hits).
+ */
+final class WorldQueries {
+
+    /** Ray hits by distance, equal distances in the order the bodies were added. */
+    private static final Comparator<BodyHit> NEAREST = (p, q) -> p.distance() != q.distance()
+            ? Float.compare(p.distance(), q.distance()) : Integer.compare(p.body().serial, q.body().serial);
+
+    private final World world;
+    private final GridCollider grids;
+
+    WorldQueries(World world, GridCollider grids) {
+        this.world = world;
+        this.grids = grids;
+    }
+
+    /** The bodies the filter keeps whose shape holds a point, added to out in the order added. */
+    void point(float x, float y, Predicate<Body> filter, List<Body> out) {
+        world.gather(x, y, x, y);
+        for (int i = 0, n = world.candidateCount(); i < n; i++) {
+            Body b = world.candidate(i);
+            boolean in = b.grid != null ? grids.holds(b.grid, x, y) : b.shape().contains(x, y);
+            if (in && world.keep(filter, b)) {
+                out.add(b);
+            }
+        }
+    }
+
+    /** The bodies the filter keeps (not {@code except}) whose shape overlaps a shape, added to out in the order added. */
+    void shape(Shape shape, Body except, Predicate<Body> filter, List<Body> out) {
+        world.gather(shape.minX(), shape.minY(), shape.maxX(), shape.maxY());
+        for (int i = 0, n = world.candidateCount(); i < n; i++) {
+            Body b = world.candidate(i);
+            if (b == except) {
+                continue;
+            }
+            boolean meets = b.grid != null ? grids.meets(b.grid, shape) : b.shape().overlaps(shape);
+            if (meets && world.keep(filter, b)) {
+                out.add(b);
+            }
+        }
+    }
+
+    /** The bodies the filter keeps that a body overlaps now, added to out in the order added. */
+    void overlapping(Body body, Predicate<Body> filter, List<Body> out) {
+        if (body.grid == null) {
+            shape(body.shape(), body, filter, out);
+            return;
+        }
+        world.gather(body.boxX, body.boxY, (double) body.boxX + body.boxW, (double) body.boxY + body.boxH);
+        for (int i = 0, n = world.candidateCount(); i < n; i++) {
+            Body b = world.candidate(i);
+            if (b != body && b.grid == null && grids.meets(body.grid, b.shape()) && world.keep(filter, b)) {
+                out.add(b);
+            }
+        }
+    }
+
+    /**
+     * The hits of a ray on the bodies the filter keeps, nearest first, added to out; with
+     * {@code firstOnly} the nearest alone.
+     */
+    void ray(Ray ray, Predicate<Body> filter, boolean firstOnly, List<BodyHit> out) {
+        int from = out.size();
+        world.rayCandidates(ray);
+        BodyHit nearest = null;
+        for (int i = 0, n = world.candidateCount(); i < n; i++) {
+            Body b = world.candidate(i);
+            BodyHit hit;
+            if (b.grid != null) {
+                hit = grids.ray(b, b.grid, ray);
+            } else {
+                RayHit h = ray.cast(b.shape());
+                hit = h == null ? null : new BodyHit(b, h, -1);
+            }
+            if (hit != null && world.keep(filter, b)) {
+                if (firstOnly) {
+                    if (nearest == null || NEAREST.compare(hit, nearest) < 0) {
+                        nearest = hit;
+                    }
+                } else {
+                    out.add(hit);
+                }
+            }
+        }
+        if (firstOnly) {
+            if (nearest != null) {
+                out.add(nearest);
+            }
+        } else if (out.size() - from > 1) {
+            if (from == 0) {
+                out.sort(NEAREST);
+            } else {
+                out.subList(from, out.size()).sort(NEAREST);
+            }
+        }
+    }
+}
