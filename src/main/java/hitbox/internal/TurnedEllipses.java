@@ -74,9 +74,22 @@ public final class TurnedEllipses {
 
     /** The flat turned ellipse's segment (one radius 0, not aligned): ends rounded to float. */
     public static Segment flatSegment(Ellipse e) {
+        double[] xy = flatEnds(e, new double[4]);
+        return new Segment((float) xy[0], (float) xy[1], (float) xy[2], (float) xy[3]);
+    }
+
+    /**
+     * {@link #flatSegment}'s ends, the floats it holds, into {@code out} (x1, y1, x2, y2),
+     * for a caller that makes no segment.
+     */
+    public static double[] flatEnds(Ellipse e, double[] out) {
         double c = Math.cos(e.angle()), s = Math.sin(e.angle());
         double hx = e.rx() * c - e.ry() * s, hy = e.rx() * s + e.ry() * c; // one term is 0
-        return new Segment((float) (e.x() - hx), (float) (e.y() - hy), (float) (e.x() + hx), (float) (e.y() + hy));
+        out[0] = (float) (e.x() - hx);
+        out[1] = (float) (e.y() - hy);
+        out[2] = (float) (e.x() + hx);
+        out[3] = (float) (e.y() + hy);
+        return out;
     }
 
     /**
