@@ -40,8 +40,12 @@ import hitbox.*;
  * same way. The distance is then right to about {@link Tolerance#SEPARATION_CURVED} of the
  * shapes' size (the searches stop at a double's resolution of the slope; see there).
  *
- * <p>This class is longer than most (about 510 lines): the three kernels, the pruning that
- * keeps two polygons of many sides fast, and their small helpers, kept in one place.
+ * <p>A separation makes nothing but its answer: the cores, the closest points and what the
+ * kernels work in are a thread's {@code Scratch}, fetched once per call.
+ *
+ * <p>This class is longer than most (about 680 lines): the three kernels, the pruning that
+ * keeps two polygons of many sides fast, the scratch they work in, and their small helpers,
+ * kept in one place.
  */
 public final class Distances {
     private Distances() {

@@ -89,7 +89,9 @@ public final class Manifolds {
         if (a.maxY() != b.maxY()) {
             return a.maxY() > b.maxY();
         }
-        return a.toString().compareTo(b.toString()) > 0;
+        // Equal shapes come in either order alike (their texts compare equal); only others
+        // with the same box are told apart by their texts.
+        return !a.equals(b) && a.toString().compareTo(b.toString()) > 0;
     }
 
     /**

@@ -140,8 +140,11 @@ public final class TurnedEllipses {
                 if (r.w() == 0 || r.h() == 0) {
                     yield segmentIn(fr, a, b, r.x(), r.y(), right, bottom, false);
                 }
-                double[] xy = {r.x(), r.y(), right, r.y(), right, bottom, r.x(), bottom};
-                yield outlineIn(fr, a, b, xy) || Collide.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
+                // Its outline's edges in outlineIn's order (from the last corner round), no array made.
+                double x = r.x(), y = r.y();
+                yield segmentIn(fr, a, b, x, bottom, x, y, false) || segmentIn(fr, a, b, x, y, right, y, false)
+                        || segmentIn(fr, a, b, right, y, right, bottom, false) || segmentIn(fr, a, b, right, bottom, x, bottom, false)
+                        || Collide.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
             }
             case SEGMENT -> {
                 Segment g = (Segment) other;
@@ -149,7 +152,7 @@ public final class TurnedEllipses {
             }
             case POLYGON -> {
                 float[] raw = HiddenParts.raw((Polygon) other);
-                yield outlineIn(fr, a, b, Polygons.toDouble(raw)) || Polygons.contains(raw, e.x(), e.y());
+                yield outlineIn(fr, a, b, HiddenParts.corners((Polygon) other)) || Polygons.contains(raw, e.x(), e.y());
             }
         };
     }
