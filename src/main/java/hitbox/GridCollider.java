@@ -12,6 +12,11 @@ package hitbox;
  * counts the cells looked at, for the tests that pin that growth.
  */
 final class GridCollider {
+    /**
+     * How far past a cell's edge a ray still looks at the cell, relative to the cell's size:
+     * a millionth, far above the rounding of the cells' edges and of the ray's distances.
+     */
+    private static final double CELL_PAD = 1e-6;
 
     /** How many cells the answers looked at, since the world was made: an operation count for tests. */
     private long visited;
@@ -70,7 +75,7 @@ final class GridCollider {
         // A few float steps of the largest coordinate involved, and a millionth of a cell: the
         // rounding of the cells' edges and of Ray.cast's distances stays inside it.
         double pad = World.pad(Math.min(ox, 0), Math.min(oy, 0), Math.max(ox, w), Math.max(oy, h))
-                + 1e-6 * Math.max(g.cellWidth(), g.cellHeight());
+                + CELL_PAD * Math.max(g.cellWidth(), g.cellHeight());
         // The part of the ray inside the grid's rectangle (grown by the pad): [t0, t1].
         double t0 = 0, t1 = Math.min(ray.maxDistance(), Double.MAX_VALUE);
         span[0] = t0;

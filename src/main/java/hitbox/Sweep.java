@@ -150,7 +150,7 @@ public final class Sweep {
         }
         double from = e.t;
         // The search's loop here, with the overlap test written out: see SweptPairs.Search.
-        SweptPairs.Search s = new SweptPairs.Search(from, false);
+        SweptPairs.Search s = SweptPairs.search(from, false);
         while (s.searching()) {
             float t = s.t();
             float mx = x + t * vx, my = y + t * vy;
@@ -219,7 +219,7 @@ public final class Sweep {
         double g = SweptPairs.slack(x, vx) + SweptPairs.slack(y, vy);
         Earliest grown = SweptPairs.decided(e) ? e
                 : SweptPairs.circleCircleGrown(x, y, r, vx, vy, ox, oy, or, g);
-        float t = SweptPairs.answer(e, grown, u -> Collide.circleCircle(x + u * vx, y + u * vy, r, ox, oy, or),
+        float t = SweptPairs.answer(e, grown, SweptPairs.circleCircleAt(x, y, r, vx, vy, ox, oy, or),
                 x, vx, y, vy);
         return SweptPairs.hit(t, e, grown, false);
     }
@@ -255,9 +255,9 @@ public final class Sweep {
             return null;  // bad input: no hit, as documented
         }
         Earliest grown = SweptPairs.decided(e) ? e
-                : SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy),
+                : SweptPairs.circleRectGrown(SweptPairs.grownEntry(), cx, cy, r, SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy),
                 vx, vy, rectX, rectY, rectW, rectH);
-        float t = SweptPairs.answer(e, grown, u -> Collide.circleRect(cx + u * vx, cy + u * vy, r, rectX, rectY, rectW, rectH),
+        float t = SweptPairs.answer(e, grown, SweptPairs.circleRectAt(cx, cy, r, vx, vy, rectX, rectY, rectW, rectH),
                 cx, vx, cy, vy);
         return SweptPairs.hit(t, e, grown, false);
     }
@@ -290,7 +290,7 @@ public final class Sweep {
         Earliest grown = SweptPairs.decided(e) ? e
                 : SweptPairs.rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2,
                 SweptPairs.slack(x, vx), SweptPairs.slack(y, vy));
-        float t = SweptPairs.answer(e, grown, u -> Collide.lineRect(x1, y1, x2, y2, x + u * vx, y + u * vy, w, h),
+        float t = SweptPairs.answer(e, grown, SweptPairs.rectSegmentAt(x, y, w, h, vx, vy, x1, y1, x2, y2),
                 x, vx, y, vy);
         return SweptPairs.hit(t, e, grown, false);
     }
@@ -320,7 +320,7 @@ public final class Sweep {
         Earliest grown = SweptPairs.decided(e) ? e
                 : SweptPairs.circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2,
                 SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy));
-        float t = SweptPairs.answer(e, grown, u -> Collide.lineCircle(x1, y1, x2, y2, cx + u * vx, cy + u * vy, r),
+        float t = SweptPairs.answer(e, grown, SweptPairs.circleSegmentAt(cx, cy, r, vx, vy, x1, y1, x2, y2),
                 cx, vx, cy, vy);
         return SweptPairs.hit(t, e, grown, false);
     }
@@ -396,9 +396,9 @@ public final class Sweep {
         float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
         Earliest e = SweptPairs.circleRectEntry(cx, cy, r, -vx, -vy, x, y, w, h);
         Earliest grown = SweptPairs.decided(e) ? e
-                : SweptPairs.circleRectGrown(new Earliest(), cx, cy, r, SweptPairs.slack(x, vx), SweptPairs.slack(y, vy),
+                : SweptPairs.circleRectGrown(SweptPairs.grownEntry(), cx, cy, r, SweptPairs.slack(x, vx), SweptPairs.slack(y, vy),
                 -vx, -vy, x, y, w, h);
-        float t = SweptPairs.answer(e, grown, u -> Collide.circleRect(cx, cy, r, x + u * vx, y + u * vy, w, h),
+        float t = SweptPairs.answer(e, grown, SweptPairs.rectCircleAt(x, y, w, h, vx, vy, cx, cy, r),
                 x, vx, y, vy);
         return SweptPairs.hit(t, e, grown, true);
     }
@@ -441,7 +441,7 @@ public final class Sweep {
                 : SweptPairs.rectSegmentEntry(rectX, rectY, rectW, rectH, -vx, -vy, x1, y1, x2, y2,
                 Math.max(SweptPairs.slack(x1, vx), SweptPairs.slack(x2, vx)), Math.max(SweptPairs.slack(y1, vy), SweptPairs.slack(y2, vy)));
         float t = SweptPairs.answer(e, grown,
-                u -> Collide.lineRect(x1 + u * vx, y1 + u * vy, x2 + u * vx, y2 + u * vy, rectX, rectY, rectW, rectH),
+                SweptPairs.segmentRectAt(x1, y1, x2, y2, vx, vy, rectX, rectY, rectW, rectH),
                 x1, vx, y1, vy, x2, vx, y2, vy);
         return SweptPairs.hit(t, e, grown, true);
     }
@@ -484,7 +484,7 @@ public final class Sweep {
                 : SweptPairs.circleSegmentEntry(cx, cy, r, -vx, -vy, x1, y1, x2, y2,
                 Math.max(SweptPairs.slack(x1, vx), SweptPairs.slack(x2, vx)), Math.max(SweptPairs.slack(y1, vy), SweptPairs.slack(y2, vy)));
         float t = SweptPairs.answer(e, grown,
-                u -> Collide.lineCircle(x1 + u * vx, y1 + u * vy, x2 + u * vx, y2 + u * vy, cx, cy, r),
+                SweptPairs.segmentCircleAt(x1, y1, x2, y2, vx, vy, cx, cy, r),
                 x1, vx, y1, vy, x2, vx, y2, vy);
         return SweptPairs.hit(t, e, grown, true);
     }

@@ -101,10 +101,13 @@ public final class Containment {
         return convex(new Stadium(k.x1(), k.y1(), k.x2(), k.y2(), k.r()), b);
     }
 
-    /** A circle holding anything. */
+    /** A circle holding anything: the thread's disc, set to it (nothing the test calls sets it again). */
     public static boolean circleContains(Circle c, Shape b) {
-        return convex(new Disc(c.x(), c.y(), c.r()), b);
+        return convex(DISC.get().set(c.x(), c.y(), c.r()), b);
     }
+
+    /** A thread's disc for {@link #circleContains}, so that the question makes nothing. */
+    private static final ThreadLocal<Disc> DISC = ThreadLocal.withInitial(() -> new Disc(0, 0, 0));
 
     /** A rectangle holding anything. */
     public static boolean rectContains(Rect r, Shape b) {
@@ -325,12 +328,17 @@ public final class Containment {
 
     /** A closed disc. */
     private static final class Disc extends Hull {
-        final float x, y, r;
+        float x, y, r;
 
         Disc(float x, float y, float r) {
+            set(x, y, r);
+        }
+
+        Disc set(float x, float y, float r) {
             this.x = x;
             this.y = y;
             this.r = r;
+            return this;
         }
 
         @Override

@@ -54,7 +54,7 @@ public final class ConvexPolygonSweep {
         double te = clip.firstTime(1);
         float[] moved = scratch.moved(HiddenParts.raw(mover).length);
         boolean keeps = keepsConvex(mover, Math.max(Math.abs(vx), Math.abs(vy)));
-        SweptPairs.Search s = new SweptPairs.Search(te, true);
+        SweptPairs.Search s = scratch.search.reset(te, true);
         while (s.searching()) {
             float t = s.t();
             s.answer(movedOverlaps(mover, t * vx, t * vy, obstacle, moved, keeps, moverFace));
@@ -129,7 +129,8 @@ public final class ConvexPolygonSweep {
         double below = least - PROJECTION_ROUNDING * size;
         float a0 = t * vx, b0 = t * vy, a1 = until * vx, b1 = until * vy;
         int n = xy.length / 2;
-        int[] near = new int[n];
+        Scratch scratch = SCRATCH.get();
+        int[] near = scratch.near(n);
         int nearCount = 0;
         for (int k = 0; k < n; k++) {
             float x = xy[2 * k], y = xy[2 * k + 1];
@@ -141,10 +142,12 @@ public final class ConvexPolygonSweep {
         if (nearCount == 0) {
             return Float.POSITIVE_INFINITY;  // every corner stays clear of the obstacle over the span
         }
-        float[] moved = SCRATCH.get().moved(xy.length);
+        float[] moved = scratch.moved(xy.length);
         boolean keeps = keepsConvex(mover, Math.max(Math.abs(vx), Math.abs(vy)));
-        // The next step of each near corner's x and y, worked out again only once reached.
-        float[] steps = new float[2 * nearCount];
+        // The next step of each near corner's x and y, worked out again only once reached
+        // (the first 2 * nearCount of the scratch's array).
+        float[] steps = scratch.steps(2 * nearCount);
+        int stepCount = 2 * nearCount;
         for (int m = 0; m < nearCount; m++) {
             steps[2 * m] = SweptPairs.nextChange(t, xy[2 * near[m]], vx);
             steps[2 * m + 1] = SweptPairs.nextChange(t, xy[2 * near[m] + 1], vy);
@@ -161,8 +164,8 @@ public final class ConvexPolygonSweep {
             if (most <= below) {
                 // Clear until a near corner moves: the far ones cannot make it overlap.
                 next = Float.POSITIVE_INFINITY;
-                for (float step : steps) {
-                    next = Math.min(next, step);
+                for (int i = 0; i < stepCount; i++) {
+                    next = Math.min(next, steps[i]);
                 }
             } else {
                 if (movedOverlaps(mover, dx, dy, obstacle, moved, keeps, true)) {
@@ -178,7 +181,7 @@ public final class ConvexPolygonSweep {
             }
             t = next;
             first = false;
-            for (int i = 0; i < steps.length; i++) {
+            for (int i = 0; i < stepCount; i++) {
                 if (steps[i] <= t) {
                     steps[i] = SweptPairs.nextChange(t, xy[2 * near[i / 2] + (i & 1)], (i & 1) == 0 ? vx : vy);
                 }
@@ -337,16 +340,36 @@ public final class ConvexPolygonSweep {
     }
 
     /**
-     * Per thread, what a convex sweep works in: its clip, and arrays for moved coordinates,
-     * one per length (a sweep moves a polygon several times a call). Kept rather than made
-     * per call so that a sweep allocates nothing but its hit, whatever the JIT inlines.
+     * Per thread, what a convex sweep works in: its clip, its walk, the look-back's near
+     * corners and their next steps, and arrays for moved coordinates, one per length (a sweep
+     * moves a polygon several times a call). Kept rather than made per call so that a sweep
+     * allocates nothing but its hit, whatever the JIT inlines.
      */
     private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
 
     /** See {@link #SCRATCH}. */
     private static final class Scratch {
         public final Slabs.Clip clip = new Slabs.Clip();
+        final SweptPairs.Search search = new SweptPairs.Search(Slabs.INF, true);
         private float[][] byLength = new float[0][];
+        private int[] near = new int[16];
+        private float[] steps = new float[32];
+
+        /** An array of at least n ints, for the near corners. */
+        int[] near(int n) {
+            if (near.length < n) {
+                near = new int[Math.max(n, 2 * near.length)];
+            }
+            return near;
+        }
+
+        /** An array of at least n floats, for the near corners' next steps. */
+        float[] steps(int n) {
+            if (steps.length < n) {
+                steps = new float[Math.max(n, 2 * steps.length)];
+            }
+            return steps;
+        }
 
         /** An array of exactly {@code length} floats (the polygon tests read the whole array). */
         public float[] moved(int length) {

@@ -40,8 +40,12 @@ import hitbox.*;
  * same way. The distance is then right to about {@link Tolerance#SEPARATION_CURVED} of the
  * shapes' size (the searches stop at a double's resolution of the slope; see there).
  *
- * <p>This class is longer than most (about 510 lines): the three kernels, the pruning that
- * keeps two polygons of many sides fast, and their small helpers, kept in one place.
+ * <p>A separation makes nothing but its answer: the cores, the closest points and what the
+ * kernels work in are a thread's {@code Scratch}, fetched once per call.
+ *
+ * <p>This class is longer than most (about 680 lines): the three kernels, the pruning that
+ * keeps two polygons of many sides fast, the scratch they work in, and their small helpers,
+ * kept in one place.
  */
 public final class Distances {
     private Distances() {
@@ -64,34 +68,117 @@ public final class Distances {
     /**
      * A shape's core: a chain of straight edges (one vertex for a point, two for a segment,
      * a closed outline for a rectangle or polygon) or an ellipse with two different radii,
-     * and the radius around it.
-     *
-     * @param xy      the chain's vertices, x0, y0, x1, y1, ...; null for an ellipse (only read)
-     * @param closed  does the chain close back to its first vertex (an outline)?
-     * @param ellipse the ellipse, or null for a chain
-     * @param r       the radius around the core, 0 or more
+     * and the radius around it. Mutable, so that a thread's {@link Scratch} keeps two and
+     * {@link #between} makes none: {@link #core} sets one to a shape's, its vertices in the
+     * core's own arrays (a polygon's are its cached corners, only read).
      */
-    public record Core(double[] xy, boolean closed, Ellipse ellipse, double r) {
+    public static final class Core {
+        /** The chain's vertices, x0, y0, x1, y1, ...; null for an ellipse (only read). */
+        private double[] xy;
+        /** Does the chain close back to its first vertex (an outline)? */
+        private boolean closed;
+        /** The ellipse, or null for a chain. */
+        private Ellipse ellipse;
+        /** The radius around the core, 0 or more. */
+        private double r;
+        /** The arrays this core's own vertices are written into: a point's, two ends', four corners. */
+        private final double[] point = new double[2], ends = new double[4], corners = new double[8];
+
+        /**
+         * A core of the given parts.
+         *
+         * @param xy      the chain's vertices, x0, y0, x1, y1, ...; null for an ellipse (only read)
+         * @param closed  does the chain close back to its first vertex (an outline)?
+         * @param ellipse the ellipse, or null for a chain
+         * @param r       the radius around the core, 0 or more
+         */
+        public Core(double[] xy, boolean closed, Ellipse ellipse, double r) {
+            set(xy, closed, ellipse, r);
+        }
+
+        private Core set(double[] xy, boolean closed, Ellipse ellipse, double r) {
+            this.xy = xy;
+            this.closed = closed;
+            this.ellipse = ellipse;
+            this.r = r;
+            return this;
+        }
+
+        private Core point(double x, double y, double r) {
+            point[0] = x;
+            point[1] = y;
+            return set(point, false, null, r);
+        }
+
+        private Core ends(double x1, double y1, double x2, double y2, double r) {
+            ends[0] = x1;
+            ends[1] = y1;
+            ends[2] = x2;
+            ends[3] = y2;
+            return set(ends, false, null, r);
+        }
+
+        /** @return the chain's vertices; null for an ellipse */
+        public double[] xy() {
+            return xy;
+        }
+
+        /** @return does the chain close back to its first vertex? */
+        public boolean closed() {
+            return closed;
+        }
+
+        /** @return the ellipse, or null for a chain */
+        public Ellipse ellipse() {
+            return ellipse;
+        }
+
+        /** @return the radius around the core */
+        public double r() {
+            return r;
+        }
     }
 
-    /** The shape's core: the one switch over the kinds here. */
-    public static Core core(Shape s) {
+    /**
+     * A thread's working arrays, so that a separation makes nothing but its answer: the two
+     * cores, the closest points, and what the kernels below write into as they go. Fetched
+     * once per {@link #between} or {@link #apart} and handed down; no kernel here calls
+     * another that fetches it again.
+     */
+    private static final class Scratch {
+        final Core a = new Core(null, false, null, 0), b = new Core(null, false, null, 0);
+        /** The closest points, and a candidate pair of them. */
+        final double[] q = new double[4], t = new double[4];
+        /** A segment's foot, an ellipse's nearest point, an outline point with its tangent. */
+        final double[] feet = new double[2], near = new double[2], p = new double[4];
+        /** The sampled distances around a second ellipse. */
+        final double[] g = new double[ELLIPSE_SAMPLES];
+        /** The sorted chains' boxes, reaches and orders, grown to the largest chains seen. */
+        final double[] boxA = new double[4], boxB = new double[4];
+        double[] hiA = new double[0], loB = new double[0];
+        int[] oa = new int[0], ob = new int[0], merge = new int[0];
+    }
+
+    private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
+
+    /** The shape's core, written into {@code c}: the one switch over the kinds here. */
+    private static Core core(Shape s, Core c) {
         return switch (ShapeKind.of(s)) {
-            case ELLIPSE -> ellipseCore((Ellipse) s);
+            case ELLIPSE -> ellipseCore((Ellipse) s, c);
             case CAPSULE -> {
                 Capsule k = (Capsule) s;
-                yield new Core(new double[] {k.x1(), k.y1(), k.x2(), k.y2()}, false, null, k.r());
+                yield c.ends(k.x1(), k.y1(), k.x2(), k.y2(), k.r());
             }
             case CIRCLE -> {
-                Circle c = (Circle) s;
-                yield new Core(new double[] {c.x(), c.y()}, false, null, c.r());
+                Circle o = (Circle) s;
+                yield c.point(o.x(), o.y(), o.r());
             }
-            case RECT -> new Core(Polygons.corners((Rect) s, new double[8]), true, null, 0);
+            case RECT -> c.set(Polygons.corners((Rect) s, c.corners), true, null, 0);
             case SEGMENT -> {
                 Segment g = (Segment) s;
-                yield new Core(new double[] {g.x1(), g.y1(), g.x2(), g.y2()}, false, null, 0);
+                yield c.ends(g.x1(), g.y1(), g.x2(), g.y2(), 0);
             }
-            case POLYGON -> new Core(HiddenParts.corners((Polygon) s), true, null, 0); // cached, only read
+            case POLYGON -> c.set(HiddenParts.corners((Polygon) s), true, null, 0); // cached, only read
         };
     }
 
@@ -100,19 +187,19 @@ public final class Distances {
      * segment when it is flat (as {@link TurnedEllipses#flatSegment} when turned, as the
      * overlap test reads it), else the ellipse itself.
      */
-    private static Core ellipseCore(Ellipse e) {
+    private static Core ellipseCore(Ellipse e, Core c) {
         if (e.rx() == e.ry()) {
-            return new Core(new double[] {e.x(), e.y()}, false, null, e.rx());
+            return c.point(e.x(), e.y(), e.rx());
         }
         if (e.rx() == 0 || e.ry() == 0) {
             if (e.angle() == 0) {
-                return new Core(new double[] {(double) e.x() - e.rx(), (double) e.y() - e.ry(),
-                        (double) e.x() + e.rx(), (double) e.y() + e.ry()}, false, null, 0);
+                return c.ends((double) e.x() - e.rx(), (double) e.y() - e.ry(),
+                        (double) e.x() + e.rx(), (double) e.y() + e.ry(), 0);
             }
-            Segment g = TurnedEllipses.flatSegment(e);
-            return new Core(new double[] {g.x1(), g.y1(), g.x2(), g.y2()}, false, null, 0);
+            TurnedEllipses.flatEnds(e, c.ends);
+            return c.set(c.ends, false, null, 0);
         }
-        return new Core(null, false, e, 0);
+        return c.set(null, false, e, 0);
     }
 
     /**
@@ -126,8 +213,9 @@ public final class Distances {
         if (Overlaps.test(a, b)) {
             return null;
         }
-        double[] q = new double[4];
-        double gap = apart(core(a), core(b), q);
+        Scratch s = SCRATCH.get();
+        double[] q = s.q;
+        double gap = apart(core(a, s.a), core(b, s.b), q, s);
         return new Separation(Check.held(gap), Check.held(q[0]), Check.held(q[1]), Check.held(q[2]), Check.held(q[3]));
     }
 
@@ -136,7 +224,12 @@ public final class Distances {
      * (moved out by the radii) in {@code q}: a's x, y, then b's.
      */
     public static double apart(Core a, Core b, double[] q) {
-        double d = cores(a, b, q);
+        return apart(a, b, q, SCRATCH.get());
+    }
+
+    /** {@link #apart(Core, Core, double[])} with the thread's scratch. */
+    private static double apart(Core a, Core b, double[] q, Scratch s) {
+        double d = cores(a, b, q, s);
         double ra = a.r(), rb = b.r();
         if (ra == 0 && rb == 0) {
             return d;
@@ -183,17 +276,17 @@ public final class Distances {
     }
 
     /** The distance between two cores (without their radii), closest points in q. */
-    private static double cores(Core a, Core b, double[] q) {
+    private static double cores(Core a, Core b, double[] q, Scratch s) {
         if (a.ellipse() == null && b.ellipse() == null) {
-            return chains(a.xy(), a.closed(), b.xy(), b.closed(), q);
+            return chains(a.xy(), a.closed(), b.xy(), b.closed(), q, s);
         }
         if (a.ellipse() != null && b.ellipse() != null) {
-            return ellipses(a.ellipse(), b.ellipse(), q);
+            return ellipses(a.ellipse(), b.ellipse(), q, s);
         }
         if (a.ellipse() != null) {
-            return ellipseChain(a.ellipse(), b.xy(), b.closed(), q, false);
+            return ellipseChain(a.ellipse(), b.xy(), b.closed(), q, false, s);
         }
-        return ellipseChain(b.ellipse(), a.xy(), a.closed(), q, true);
+        return ellipseChain(b.ellipse(), a.xy(), a.closed(), q, true, s);
     }
 
     // ---------------------------------------------------------------- straight cores
@@ -219,7 +312,7 @@ public final class Distances {
      * projection) exceeds the best so far, with a slack of {@link #PROJECTION_ROUNDING} of the
      * coordinates over its rounding. The least is the same; only pairs that cannot beat it are skipped.
      */
-    public static double chains(double[] a, boolean closedA, double[] b, boolean closedB, double[] q) {
+    private static double chains(double[] a, boolean closedA, double[] b, boolean closedB, double[] q, Scratch s) {
         int na = a.length / 2, nb = b.length / 2;
         int ea = edges(na, closedA), eb = edges(nb, closedB);
         boolean sorted = (long) ea * eb > SORT_ABOVE;
@@ -227,15 +320,26 @@ public final class Distances {
         int[] oa = null, ob = null;
         double slack = 0;
         if (sorted) {
-            double[] ba = box(a), bb = box(b);
+            double[] ba = box(a, s.boxA), bb = box(b, s.boxB);
             double ux = (bb[0] + bb[2]) / 2 - (ba[0] + ba[2]) / 2, uy = (bb[1] + bb[3]) / 2 - (ba[1] + ba[3]) / 2;
             double len = Math.hypot(ux, uy);
             ux = len > 0 ? ux / len : 1;
             uy = len > 0 ? uy / len : 0;
-            hiA = reach(a, na, ea, ux, uy, true);
-            loB = reach(b, nb, eb, ux, uy, false);
-            oa = order(hiA, true);
-            ob = order(loB, false);
+            if (s.hiA.length < ea) {
+                s.hiA = new double[ea];
+                s.oa = new int[ea];
+            }
+            if (s.loB.length < eb) {
+                s.loB = new double[eb];
+                s.ob = new int[eb];
+            }
+            if (s.merge.length < Math.max(ea, eb)) {
+                s.merge = new int[Math.max(ea, eb)];
+            }
+            hiA = reach(a, na, ea, ux, uy, true, s.hiA);
+            loB = reach(b, nb, eb, ux, uy, false, s.loB);
+            oa = order(hiA, ea, true, s.oa, s.merge);
+            ob = order(loB, eb, false, s.ob, s.merge);
             for (double v : ba) {
                 slack = Math.max(slack, Math.abs(v));
             }
@@ -245,7 +349,7 @@ public final class Distances {
             slack *= PROJECTION_ROUNDING;
         }
         double best = Double.POSITIVE_INFINITY;
-        double[] t = new double[4], feet = new double[2];
+        double[] t = s.t, feet = s.feet;
         for (int k = 0; k < ea; k++) {
             int i = sorted ? oa[k] : k;
             if (sorted && loB[ob[0]] - hiA[i] > best + slack) {
@@ -278,9 +382,12 @@ public final class Distances {
         return best;
     }
 
-    /** The chain's box: min x, min y, max x, max y. */
-    private static double[] box(double[] xy) {
-        double[] r = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+    /** The chain's box into r: min x, min y, max x, max y. */
+    private static double[] box(double[] xy, double[] r) {
+        r[0] = Double.POSITIVE_INFINITY;
+        r[1] = Double.POSITIVE_INFINITY;
+        r[2] = Double.NEGATIVE_INFINITY;
+        r[3] = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < xy.length - 1; i += 2) {
             r[0] = Math.min(r[0], xy[i]);
             r[1] = Math.min(r[1], xy[i + 1]);
@@ -290,9 +397,8 @@ public final class Distances {
         return r;
     }
 
-    /** Each edge's reach along (ux, uy): the larger of its ends' if {@code high}, else the smaller. */
-    private static double[] reach(double[] xy, int n, int edges, double ux, double uy, boolean high) {
-        double[] r = new double[edges];
+    /** Each edge's reach along (ux, uy) into r: the larger of its ends' if {@code high}, else the smaller. */
+    private static double[] reach(double[] xy, int n, int edges, double ux, double uy, boolean high, double[] r) {
         for (int i = 0; i < edges; i++) {
             int i2 = n <= 1 ? i : (i + 1) % n;
             double p = ux * xy[2 * i] + uy * xy[2 * i + 1], p2 = ux * xy[2 * i2] + uy * xy[2 * i2 + 1];
@@ -301,18 +407,44 @@ public final class Distances {
         return r;
     }
 
-    /** The indices of the keys, in descending order of key if {@code descending}, else ascending. */
-    private static int[] order(double[] keys, boolean descending) {
-        Integer[] idx = new Integer[keys.length];
-        for (int i = 0; i < idx.length; i++) {
-            idx[i] = i;
+    /**
+     * The indices of the first n keys into {@code out}, in descending order of key if
+     * {@code descending}, else ascending; equal keys in the order of their indices (a stable
+     * merge sort, bottom up, through {@code tmp}: the order a stable sort of the indices gives).
+     */
+    private static int[] order(double[] keys, int n, boolean descending, int[] out, int[] tmp) {
+        for (int i = 0; i < n; i++) {
+            out[i] = i;
         }
-        java.util.Arrays.sort(idx, (x, y) -> descending ? Double.compare(keys[y], keys[x]) : Double.compare(keys[x], keys[y]));
-        int[] out = new int[idx.length];
-        for (int i = 0; i < out.length; i++) {
-            out[i] = idx[i];
+        int[] from = out, to = tmp;
+        for (int width = 1; width < n; width *= 2) {
+            for (int lo = 0; lo < n; lo += 2 * width) {
+                int mid = Math.min(lo + width, n), hi = Math.min(lo + 2 * width, n);
+                int i = lo, j = mid, k = lo;
+                while (i < mid && j < hi) {
+                    // The left run's first wins ties: stable.
+                    to[k++] = after(keys, from[i], from[j], descending) ? from[j++] : from[i++];
+                }
+                while (i < mid) {
+                    to[k++] = from[i++];
+                }
+                while (j < hi) {
+                    to[k++] = from[j++];
+                }
+            }
+            int[] swap = from;
+            from = to;
+            to = swap;
+        }
+        if (from != out) {
+            System.arraycopy(from, 0, out, 0, n);
         }
         return out;
+    }
+
+    /** Does index x's key come strictly after index y's in the order? */
+    private static boolean after(double[] keys, int x, int y, boolean descending) {
+        return (descending ? Double.compare(keys[y], keys[x]) : Double.compare(keys[x], keys[y])) > 0;
     }
 
     /**
@@ -434,13 +566,13 @@ public final class Distances {
      * The distance from an ellipse to a chain of straight edges, closest points in q: the
      * ellipse's first, or the chain's first if {@code chainFirst}.
      */
-    public static double ellipseChain(Ellipse e, double[] xy, boolean closed, double[] q, boolean chainFirst) {
+    private static double ellipseChain(Ellipse e, double[] xy, boolean closed, double[] q, boolean chainFirst, Scratch s) {
         int n = xy.length / 2, edges = edges(n, closed);
         double best = Double.POSITIVE_INFINITY;
-        double[] t = new double[4];
+        double[] t = s.t;
         for (int i = 0; i < edges; i++) {
             int i2 = n <= 1 ? i : (i + 1) % n;
-            double d = ellipseSegment(e, xy[2 * i], xy[2 * i + 1], xy[2 * i2], xy[2 * i2 + 1], t);
+            double d = ellipseSegment(e, xy[2 * i], xy[2 * i + 1], xy[2 * i2], xy[2 * i2 + 1], t, s.near);
             if (d < best) {
                 best = d;
                 System.arraycopy(t, 0, q, 0, 4);
@@ -467,8 +599,7 @@ public final class Distances {
      * segment, so its least is where its slope, {@code (P - near) . (B - A)}, changes sign:
      * found by bisection.
      */
-    public static double ellipseSegment(Ellipse e, double ax, double ay, double bx, double by, double[] q) {
-        double[] near = new double[2];
+    private static double ellipseSegment(Ellipse e, double ax, double ay, double bx, double by, double[] q, double[] near) {
         double ex = bx - ax, ey = by - ay;
         double s;
         if (ex == 0 && ey == 0 || slope(e, ax, ay, ex, ey, near) >= 0) {
@@ -522,10 +653,10 @@ public final class Distances {
      * of each point to e by {@link #ellipsePoint}, and each local least refined by bisection
      * on the sign of the slope along f's outline.
      */
-    public static double ellipses(Ellipse e, Ellipse f, double[] q) {
+    private static double ellipses(Ellipse e, Ellipse f, double[] q, Scratch s) {
         int n = ELLIPSE_SAMPLES;
-        double[] g = new double[n];
-        double[] p = new double[4], near = new double[2];
+        double[] g = s.g;
+        double[] p = s.p, near = s.near;
         for (int i = 0; i < n; i++) {
             onOutline(f, 2 * Math.PI * i / n, p);
             g[i] = ellipsePoint(e, p[0], p[1], near);
@@ -550,9 +681,9 @@ public final class Distances {
                     hi = m;
                 }
             }
-            // The refined point, and the sampled one in case the bracket held no change of sign.
-            for (double c : new double[] {2 * Math.PI * i / n, (lo + hi) / 2}) {
-                onOutline(f, c, p);
+            // The sampled point, in case the bracket held no change of sign, and the refined one.
+            for (int k = 0; k < 2; k++) {
+                onOutline(f, k == 0 ? 2 * Math.PI * i / n : (lo + hi) / 2, p);
                 double d = ellipsePoint(e, p[0], p[1], near);
                 if (d < best) {
                     best = put(q, near[0], near[1], p[0], p[1]) + d;

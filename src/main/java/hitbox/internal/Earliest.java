@@ -55,6 +55,20 @@ public final class Earliest {
         }
     }
 
+    /**
+     * Back to nothing found, as a new one starts, for a thread's entry used again.
+     *
+     * @return this entry
+     */
+    public Earliest reset() {
+        t = Slabs.INF;
+        nx = 0;
+        ny = 0;
+        inside = false;
+        until = Double.NEGATIVE_INFINITY;
+        return this;
+    }
+
     /** Did the shapes already overlap, or is there an entry within the limit? */
     public boolean found() {
         return inside || t != Slabs.INF;

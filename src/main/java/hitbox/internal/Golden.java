@@ -20,6 +20,11 @@ public final class Golden {
      * narrower than {@code width}: {argument, value} of the better of the last two points.
      */
     public static double[] least(DoubleUnaryOperator f, double lo, double hi, int steps, double width) {
+        return least(f, lo, hi, steps, width, new double[2]);
+    }
+
+    /** {@link #least(DoubleUnaryOperator, double, double, int, double)} into {@code out}; returns it. */
+    public static double[] least(DoubleUnaryOperator f, double lo, double hi, int steps, double width, double[] out) {
         double m1 = hi - G * (hi - lo), m2 = lo + G * (hi - lo);
         double f1 = f.applyAsDouble(m1), f2 = f.applyAsDouble(m2);
         for (int i = 0; i < steps && hi - lo > width; i++) {
@@ -37,7 +42,9 @@ public final class Golden {
                 f2 = f.applyAsDouble(m2);
             }
         }
-        return f1 < f2 ? new double[] {m1, f1} : new double[] {m2, f2};
+        out[0] = f1 < f2 ? m1 : m2;
+        out[1] = f1 < f2 ? f1 : f2;
+        return out;
     }
 
     /** How near an axis direction (radians) a searched least is taken to lie on it, if as short ({@link #onAxis}). */
@@ -54,13 +61,25 @@ public final class Golden {
      * The push f must be exact at the axis angles (the unit direction snapped to 0 and 1).
      */
     public static double[] onAxis(DoubleUnaryOperator f, double[] least, double slack) {
+        return onAxis(f, least, slack, new double[2]);
+    }
+
+    /**
+     * {@link #onAxis(DoubleUnaryOperator, double[], double)} into {@code out} (which may be
+     * {@code least} itself): {axis, push} if taken on the axis, else least's values.
+     */
+    public static double[] onAxis(DoubleUnaryOperator f, double[] least, double slack, double[] out) {
         double axis = Math.rint(least[0] / (Math.PI / 2)) * (Math.PI / 2);
-        if (Math.abs(axis - least[0]) < AXIS_NEAR) {
+        double x = least[0], v = least[1];
+        if (Math.abs(axis - x) < AXIS_NEAR) {
             double along = f.applyAsDouble(axis);
-            if (along <= least[1] + slack) {
-                return new double[] {axis, along};
+            if (along <= v + slack) {
+                x = axis;
+                v = along;
             }
         }
-        return least;
+        out[0] = x;
+        out[1] = v;
+        return out;
     }
 }

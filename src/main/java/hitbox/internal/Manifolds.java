@@ -26,7 +26,12 @@ import java.util.List;
  * second term is 0, and the first is Box2D's separation from the reference face when the
  * face is across the normal.
  *
- * <p>At about 830 lines this class is longer than most: the clipping, the depths, the
+ * <p>A call makes nothing but its answer (the {@link Manifold}; the {@link Contact} is
+ * {@link Contacts#between}'s): the pieces, the clipped edges and the candidate points live in
+ * a thread's {@link Scratch}, fetched once per call and handed down, reset at each call.
+ * (A concave polygon's convex pieces are still worked out per call, by {@link Clearance.Parts}.)
+ *
+ * <p>At about 1,000 lines this class is longer than most: the clipping, the depths, the
  * fallbacks and the one-point rule all read the same pieces, and only make sense together.
  *
  * <p>Reference: E. Catto, Box2D's {@code b2ClipPolygons} and {@code b2ClipSegments}; W.
@@ -52,13 +57,18 @@ public final class Manifolds {
         if (c == null) {
             return null;
         }
+        Scratch sc = SCRATCH.get();
+        sc.reset();
         // The points are worked out with the pair in one order, whichever came first, as the
         // pair tables do: so both orders give the same points, to the last bit, wherever the
-        // contact is the same one flipped.
+        // contact is the same one flipped. The other order works with the flipped contact's
+        // normal (as Contact.flipped makes it, -0 made 0) and hands back the points as found.
         if (later(a, b)) {
-            return points(b, a, c.flipped()).flipped();
+            points(b, a, -c.nx() + 0.0f, -c.ny() + 0.0f, c.depth(), sc);
+        } else {
+            points(a, b, c.nx(), c.ny(), c.depth(), sc);
         }
-        return points(a, b, c);
+        return new Manifold(c, sc.count, sc.x1, sc.y1, sc.depth1, sc.x2, sc.y2, sc.depth2);
     }
 
     /** Does a come after b in the order the points are worked out in: by kind, then by place? */
@@ -67,47 +77,139 @@ public final class Manifolds {
         if (ka != kb) {
             return ka > kb;
         }
-        double[] p = {a.minX(), a.minY(), a.maxX(), a.maxY()}, q = {b.minX(), b.minY(), b.maxX(), b.maxY()};
-        for (int i = 0; i < 4; i++) {
-            if (p[i] != q[i]) {
-                return p[i] > q[i];
-            }
+        if (a.minX() != b.minX()) {
+            return a.minX() > b.minX();
         }
-        return a.toString().compareTo(b.toString()) > 0;
+        if (a.minY() != b.minY()) {
+            return a.minY() > b.minY();
+        }
+        if (a.maxX() != b.maxX()) {
+            return a.maxX() > b.maxX();
+        }
+        if (a.maxY() != b.maxY()) {
+            return a.maxY() > b.maxY();
+        }
+        // Equal shapes come in either order alike (their texts compare equal); only others
+        // with the same box are told apart by their texts.
+        return !a.equals(b) && a.toString().compareTo(b.toString()) > 0;
     }
 
-    /** The manifold of overlapping a and b with their contact c. */
-    private static Manifold points(Shape a, Shape b, Contact c) {
-        double nx = c.nx(), ny = c.ny();
+    /**
+     * The points of overlapping a and b, whose contact has normal (nx, ny) from a to b and the
+     * given depth, into the scratch's answer.
+     */
+    private static void points(Shape a, Shape b, float nx, float ny, float depth, Scratch sc) {
+        sc.nx = nx;
+        sc.ny = ny;
+        sc.depth = depth;
         double scale = scale(a, b);
-        List<Piece> pa = pieces(a), pb = pieces(b);
+        List<Piece> pa = pieces(a, sc, sc.piecesA), pb = pieces(b, sc, sc.piecesB);
         if (pa == null || pb == null) {
-            return onePoint(a, pa, b, pb, c, scale);
+            onePoint(a, pa, b, pb, scale, sc);
+            return;
         }
-        List<double[]> points = new ArrayList<>();
-        for (Piece p : pa) {
-            for (Piece q : pb) {
+        Points points = sc.points.clear();
+        for (int i = 0; i < pa.size(); i++) {
+            for (int j = 0; j < pb.size(); j++) {
+                Piece p = pa.get(i), q = pb.get(j);
                 if (boxesMeet(p, q, scale)) {
-                    clip(p, q, nx, ny, pa, pb, scale, points);
+                    clip(p, q, nx, ny, pa, pb, scale, sc);
                 }
             }
         }
-        if (points.isEmpty()) {
+        if (points.n == 0) {
             // Crossing deeply: no incident edge lies in the reference piece. The overlap's
             // corners, piece by piece, and the deepest of them.
-            for (Piece p : pa) {
-                for (Piece q : pb) {
+            for (int i = 0; i < pa.size(); i++) {
+                for (int j = 0; j < pb.size(); j++) {
+                    Piece p = pa.get(i), q = pb.get(j);
                     if (boxesMeet(p, q, scale)) {
-                        overlapCorners(p, q, nx, ny, pa, pb, scale, points);
+                        overlapCorners(p, q, nx, ny, pa, pb, scale, sc);
                     }
                 }
             }
-            if (points.isEmpty()) {
-                return onePoint(a, pa, b, pb, c, scale);
+            if (points.n == 0) {
+                onePoint(a, pa, b, pb, scale, sc);
+                return;
             }
             keepDeepest(points, scale);
         }
-        return reduce(points, c, scale);
+        reduce(points, scale, sc);
+    }
+
+    // ---------------------------------------------------------------- a thread's scratch
+
+    /** The candidate points, x, y and depth each, in the order found. */
+    private static final class Points {
+        double[] xyd = new double[48];
+        /** How many points. */
+        int n;
+
+        Points clear() {
+            n = 0;
+            return this;
+        }
+
+        void add(double x, double y, double depth) {
+            if (3 * n + 3 > xyd.length) {
+                xyd = java.util.Arrays.copyOf(xyd, 2 * xyd.length);
+            }
+            xyd[3 * n] = x;
+            xyd[3 * n + 1] = y;
+            xyd[3 * n + 2] = depth;
+            n++;
+        }
+    }
+
+    /**
+     * A thread's working objects: the pieces (taken from a pool that a call starts again
+     * from), the lists they are handed in, the points, the edge being clipped, and the answer
+     * being made. Every array is grown to the largest seen and kept.
+     */
+    private static final class Scratch {
+        Piece[] pool = new Piece[8];
+        /** How many of the pool's pieces this call has taken. */
+        int used;
+        final ArrayList<Piece> piecesA = new ArrayList<>(), piecesB = new ArrayList<>();
+        final ArrayList<Piece> inscribedA = new ArrayList<>(), inscribedB = new ArrayList<>(), polygon = new ArrayList<>();
+        final Points points = new Points();
+        /** The incident edge as it is clipped, and the ends of two faces in line. */
+        final double[] edge = new double[4], ends = new double[8];
+        /** A rectangle's corners; a shape's outline as a polygon; the vertices without repeats. */
+        final double[] corners = new double[8];
+        double[] outlineP = new double[4 * (INSCRIBED / 2 + 1)], outlineQ = new double[4 * (INSCRIBED / 2 + 1)];
+        double[] inscribed = new double[2 * INSCRIBED], distinct = new double[16];
+        /** The polygon being clipped, in two buffers taken in turn. */
+        double[] clipA = new double[64], clipB = new double[64];
+        /** Deepest points of the one-point rule, and a support point. */
+        final double[] deepA = new double[2], deepB = new double[2], support = new double[2];
+        /** The contact's normal and depth the points are found with. */
+        float nx, ny, depth;
+        /** The answer: one or two points. */
+        int count;
+        float x1, y1, depth1, x2, y2, depth2;
+
+        void reset() {
+            used = 0;
+        }
+
+        /** A piece from the pool, for this call. */
+        Piece piece() {
+            if (used == pool.length) {
+                pool = java.util.Arrays.copyOf(pool, 2 * pool.length);
+            }
+            if (pool[used] == null) {
+                pool[used] = new Piece();
+            }
+            return pool[used++];
+        }
+    }
+
+    private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
+
+    /** An array of at least n, a's own if it is large enough. */
+    private static double[] atLeast(double[] a, int n) {
+        return a.length >= n ? a : new double[Math.max(n, 2 * a.length)];
     }
 
     // ---------------------------------------------------------------- the shapes as pieces
@@ -117,21 +219,36 @@ public final class Manifolds {
      * or, when {@code seg}, a segment (two ends) with a radius.
      */
     private static final class Piece {
-        final double[] xy;
-        final double r;
-        final boolean seg;
-        /** Half-planes {@code ux * x + uy * y <= c}, three numbers each. */
-        final double[] planes;
-        /** Faces: outward unit normal and the two ends, six numbers each. */
-        final double[] faces;
-        final double minX, minY, maxX, maxY;
+        /** The vertices, {@code n} numbers of them (the array may be longer). */
+        double[] xy = new double[16];
+        int n;
+        double r;
+        boolean seg;
+        /** Half-planes {@code ux * x + uy * y <= c}, three numbers each, {@code np} numbers. */
+        double[] planes = new double[24];
+        int np;
+        /** Faces: outward unit normal and the two ends, six numbers each, {@code nf} numbers. */
+        double[] faces = new double[48];
+        int nf;
+        double minX, minY, maxX, maxY;
 
-        Piece(double[] xy, double r, boolean seg) {
-            this.xy = xy;
+        /**
+         * Sets this piece to the first {@code n} numbers of {@code from} (read from the last
+         * vertex back if {@code reversed}), with radius r; a segment if {@code seg}.
+         */
+        Piece set(double[] from, int count, boolean reversed, double r, boolean seg) {
+            xy = atLeast(xy, count);
+            int verts = count / 2;
+            for (int i = 0; i < verts; i++) {
+                int k = reversed ? verts - 1 - i : i;
+                xy[2 * i] = from[2 * k];
+                xy[2 * i + 1] = from[2 * k + 1];
+            }
+            this.n = count;
             this.r = r;
             this.seg = seg;
             double x0 = Double.POSITIVE_INFINITY, y0 = x0, x1 = -x0, y1 = -x0;
-            for (int i = 0; i < xy.length; i += 2) {
+            for (int i = 0; i < count; i += 2) {
                 x0 = Math.min(x0, xy[i]);
                 x1 = Math.max(x1, xy[i]);
                 y0 = Math.min(y0, xy[i + 1]);
@@ -144,17 +261,21 @@ public final class Manifolds {
             if (seg) {
                 double ex = xy[2] - xy[0], ey = xy[3] - xy[1], len = Math.hypot(ex, ey);
                 double tx = ex / len, ty = ey / len, px = ty, py = -tx;
-                planes = new double[] {
-                    px, py, px * xy[0] + py * xy[1] + r,
-                    -px, -py, -px * xy[0] - py * xy[1] + r,
-                    tx, ty, tx * xy[2] + ty * xy[3],
-                    -tx, -ty, -tx * xy[0] - ty * xy[1]};
-                faces = new double[] {
-                    px, py, xy[0] + r * px, xy[1] + r * py, xy[2] + r * px, xy[3] + r * py,
-                    -px, -py, xy[2] - r * px, xy[3] - r * py, xy[0] - r * px, xy[1] - r * py};
+                put(planes, 0, px, py, px * xy[0] + py * xy[1] + r);
+                put(planes, 3, -px, -py, -px * xy[0] - py * xy[1] + r);
+                put(planes, 6, tx, ty, tx * xy[2] + ty * xy[3]);
+                put(planes, 9, -tx, -ty, -tx * xy[0] - ty * xy[1]);
+                np = 12;
+                put(faces, 0, px, py, xy[0] + r * px);
+                put(faces, 3, xy[1] + r * py, xy[2] + r * px, xy[3] + r * py);
+                put(faces, 6, -px, -py, xy[2] - r * px);
+                put(faces, 9, xy[3] - r * py, xy[0] - r * px, xy[1] - r * py);
+                nf = 12;
             } else {
-                int n = xy.length / 2, m = 0;
-                double[] pl = new double[3 * n], fa = new double[6 * n];
+                int n = verts, m = 0;
+                planes = atLeast(planes, 3 * n);
+                faces = atLeast(faces, 6 * n);
+                double[] pl = planes, fa = faces;
                 for (int i = 0; i < n; i++) {
                     int j = (i + 1) % n;
                     double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = Math.hypot(ex, ey);
@@ -173,62 +294,79 @@ public final class Manifolds {
                     fa[6 * m + 5] = xy[2 * j + 1];
                     m++;
                 }
-                planes = java.util.Arrays.copyOf(pl, 3 * m);
-                faces = java.util.Arrays.copyOf(fa, 6 * m);
+                np = 3 * m;
+                nf = 6 * m;
             }
+            return this;
+        }
+
+        private static void put(double[] a, int i, double x, double y, double z) {
+            a[i] = x;
+            a[i + 1] = y;
+            a[i + 2] = z;
         }
     }
 
-    /** The shape's straight pieces, or null for a round shape (one point). */
-    private static List<Piece> pieces(Shape s) {
+    /** The shape's straight pieces into {@code out} (cleared first), or null for a round shape (one point). */
+    private static List<Piece> pieces(Shape s, Scratch sc, List<Piece> out) {
+        out.clear();
         return switch (ShapeKind.of(s)) {
             case ELLIPSE, CIRCLE -> null;
             case CAPSULE -> {
                 Capsule k = (Capsule) s;
-                yield k.x1() == k.x2() && k.y1() == k.y2() ? null
-                        : List.of(new Piece(new double[] {k.x1(), k.y1(), k.x2(), k.y2()}, k.r(), true));
+                if (k.x1() == k.x2() && k.y1() == k.y2()) {
+                    yield null;
+                }
+                double[] ends = sc.edge;
+                ends[0] = k.x1();
+                ends[1] = k.y1();
+                ends[2] = k.x2();
+                ends[3] = k.y2();
+                out.add(sc.piece().set(ends, 4, false, k.r(), true));
+                yield out;
             }
-            case RECT -> straight(List.of(Polygons.corners((Rect) s, new double[8])));
+            case RECT -> straight(Polygons.corners((Rect) s, sc.corners), sc, out);
             case POLYGON -> {
                 Polygon p = (Polygon) s;
-                yield straight(p.isConvex() ? List.of(HiddenParts.corners(p)) : Clearance.Parts.of(p).pieces());
+                if (p.isConvex()) {
+                    yield straight(HiddenParts.corners(p), sc, out);
+                }
+                List<double[]> parts = Clearance.Parts.of(p).pieces();
+                for (int i = 0; i < parts.size(); i++) {
+                    if (straight(parts.get(i), sc, out) == null) {
+                        yield null;
+                    }
+                }
+                yield out;
             }
             case SEGMENT -> throw new IllegalArgumentException("a manifold needs two shapes with area, but a Segment has none");
         };
     }
 
     /**
-     * Convex vertex lists as pieces: repeated vertices dropped, turned to winding +1; two
-     * distinct vertices make a segment of radius 0, one a point (round: null).
+     * A convex vertex list added to {@code out} as a piece: repeated vertices dropped, turned
+     * to winding +1; two distinct vertices make a segment of radius 0, one a point (round:
+     * null, and the shape is round).
      */
-    private static List<Piece> straight(List<double[]> polygons) {
-        List<Piece> out = new ArrayList<>();
-        for (double[] xy : polygons) {
-            double[] v = distinct(xy);
-            int n = v.length / 2;
-            if (n == 1) {
-                return null;
-            }
-            if (n == 2) {
-                out.add(new Piece(v, 0, true));
-                continue;
-            }
-            if (Polygons.doubleSignedArea(v) < 0) {
-                double[] w = new double[v.length];
-                for (int i = 0; i < n; i++) {
-                    w[2 * i] = v[2 * (n - 1 - i)];
-                    w[2 * i + 1] = v[2 * (n - 1 - i) + 1];
-                }
-                v = w;
-            }
-            out.add(new Piece(v, 0, false));
+    private static List<Piece> straight(double[] xy, Scratch sc, List<Piece> out) {
+        int len = distinct(xy, xy.length, sc);
+        double[] v = sc.distinct;
+        int n = len / 2;
+        if (n == 1) {
+            return null;
         }
+        if (n == 2) {
+            out.add(sc.piece().set(v, len, false, 0, true));
+            return out;
+        }
+        out.add(sc.piece().set(v, len, Polygons.doubleSignedArea(v, n) < 0, 0, false));
         return out;
     }
 
-    private static double[] distinct(double[] xy) {
-        int n = xy.length / 2;
-        double[] out = new double[xy.length];
+    /** The first len numbers of xy without repeated vertices, into the scratch's {@code distinct}; returns how many numbers. */
+    private static int distinct(double[] xy, int len, Scratch sc) {
+        int n = len / 2;
+        double[] out = sc.distinct = atLeast(sc.distinct, len);
         int m = 0;
         for (int i = 0; i < n; i++) {
             double x = xy[2 * i], y = xy[2 * i + 1];
@@ -242,7 +380,7 @@ public final class Manifolds {
                 m++;
             }
         }
-        return java.util.Arrays.copyOf(out, 2 * m);
+        return 2 * m;
     }
 
     private static boolean boxesMeet(Piece p, Piece q, double scale) {
@@ -252,19 +390,20 @@ public final class Manifolds {
 
     /** The pair's size: their largest coordinate or extent, at least 1. */
     public static double scale(Shape a, Shape b) {
-        double s = 1;
-        for (Shape t : new Shape[] {a, b}) {
-            s = Math.max(s, Math.max(Math.max(Math.abs(t.minX()), Math.abs(t.maxX())), Math.max(Math.abs(t.minY()), Math.abs(t.maxY()))));
-            s = Math.max(s, Math.max(t.maxX() - t.minX(), t.maxY() - t.minY()));
-        }
-        return s;
+        return scale(scale(1, a), b);
+    }
+
+    /** The larger of s and the shape's largest coordinate or extent. */
+    private static double scale(double s, Shape t) {
+        s = Math.max(s, Math.max(Math.max(Math.abs(t.minX()), Math.abs(t.maxX())), Math.max(Math.abs(t.minY()), Math.abs(t.maxY()))));
+        return Math.max(s, Math.max(t.maxX() - t.minX(), t.maxY() - t.minY()));
     }
 
     // ---------------------------------------------------------------- clipping
 
     /** The clipped points of piece p (of a) against piece q (of b), normal (nx, ny) from a to b, into {@code out}. */
     private static void clip(Piece p, Piece q, double nx, double ny, List<Piece> pa, List<Piece> pb, double scale,
-                             List<double[]> out) {
+                             Scratch sc) {
         int fa = bestFace(p, nx, ny), fb = bestFace(q, -nx, -ny);
         if (fa < 0 || fb < 0) {
             return;
@@ -285,28 +424,32 @@ public final class Manifolds {
         double fx1 = ref.faces[f + 2], fy1 = ref.faces[f + 3], fx2 = ref.faces[f + 4], fy2 = ref.faces[f + 5];
         // The incident edge: the face most nearly against the reference face; a segment's
         // own segment, moved by its radius towards the reference.
-        double[] e;
+        double[] e = sc.edge;
         if (inc.seg) {
-            e = new double[] {inc.xy[0] - inc.r * ux, inc.xy[1] - inc.r * uy, inc.xy[2] - inc.r * ux, inc.xy[3] - inc.r * uy};
+            e[0] = inc.xy[0] - inc.r * ux;
+            e[1] = inc.xy[1] - inc.r * uy;
+            e[2] = inc.xy[2] - inc.r * ux;
+            e[3] = inc.xy[3] - inc.r * uy;
         } else {
-            e = incidentEdge(inc, ux, uy, scale);
+            incidentEdge(inc, ux, uy, scale, e, sc.ends);
         }
         // Clipped to the reference piece (all its half-planes but the face's own) and the
         // face's side lines.
-        for (int k = 0; k < ref.planes.length && e != null; k += 3) {
+        boolean left = true;
+        for (int k = 0; k < ref.np && left; k += 3) {
             // Face i lies on half-plane i (a segment's two sides are its first two planes).
             if (k / 3 != f / 6) {
-                e = clipTo(e, ref.planes[k], ref.planes[k + 1], ref.planes[k + 2]);
+                left = clipTo(e, ref.planes[k], ref.planes[k + 1], ref.planes[k + 2]);
             }
         }
         double tx = fx2 - fx1, ty = fy2 - fy1;
-        if (e != null && (tx != 0 || ty != 0)) {
-            e = clipTo(e, -tx, -ty, -tx * fx1 - ty * fy1);
+        if (left && (tx != 0 || ty != 0)) {
+            left = clipTo(e, -tx, -ty, -tx * fx1 - ty * fy1);
         }
-        if (e != null && (tx != 0 || ty != 0)) {
-            e = clipTo(e, tx, ty, tx * fx2 + ty * fy2);
+        if (left && (tx != 0 || ty != 0)) {
+            left = clipTo(e, tx, ty, tx * fx2 + ty * fy2);
         }
-        if (e == null) {
+        if (!left) {
             return;
         }
         // The ends behind the reference face (Box2D's separation <= 0); one in front is dropped,
@@ -318,7 +461,7 @@ public final class Manifolds {
             }
             double depth = depth(e[k], e[k + 1], nx, ny, pa, pb, scale);
             if (depth > SAME * scale) {
-                out.add(new double[] {e[k], e[k + 1], depth});
+                sc.points.add(e[k], e[k + 1], depth);
             }
         }
     }
@@ -333,10 +476,10 @@ public final class Manifolds {
      * squares, and a cosine slack of 1e-6 took the two faces of a corner of 179.93 degrees
      * for one line, or for a corner turned straight at the face.
      */
-    private static double[] incidentEdge(Piece inc, double ux, double uy, double scale) {
+    private static void incidentEdge(Piece inc, double ux, double uy, double scale, double[] e, double[] ends) {
         int g = bestFace(inc, -ux, -uy);
         double[] f = inc.faces;
-        for (int k = 0; k < f.length; k += 6) {
+        for (int k = 0; k < inc.nf; k += 6) {
             double slack = rounding(inc, g, inc, k, scale);
             if (k == g || offBy(f[k], f[k + 1], f[g], f[g + 1], -ux, -uy) > slack) {
                 continue;
@@ -344,23 +487,34 @@ public final class Manifolds {
             if (f[k] * f[g] + f[k + 1] * f[g + 1] > 0 && Math.abs(f[g] * f[k + 1] - f[g + 1] * f[k]) <= slack) {
                 // In line: from the nearer end to the farther, along the first face.
                 double tx = f[g + 4] - f[g + 2], ty = f[g + 5] - f[g + 3];
-                double[] ends = {f[g + 2], f[g + 3], f[g + 4], f[g + 5], f[k + 2], f[k + 3], f[k + 4], f[k + 5]};
+                System.arraycopy(f, g + 2, ends, 0, 4);
+                System.arraycopy(f, k + 2, ends, 4, 4);
                 int lo = 0, hi = 0;
                 for (int i = 2; i < 8; i += 2) {
                     double t = ends[i] * tx + ends[i + 1] * ty;
                     lo = t < ends[lo] * tx + ends[lo + 1] * ty ? i : lo;
                     hi = t > ends[hi] * tx + ends[hi + 1] * ty ? i : hi;
                 }
-                return new double[] {ends[lo], ends[lo + 1], ends[hi], ends[hi + 1]};
+                edge(e, ends[lo], ends[lo + 1], ends[hi], ends[hi + 1]);
+                return;
             }
             if (f[g + 4] == f[k + 2] && f[g + 5] == f[k + 3]) {
-                return new double[] {f[g + 4], f[g + 5], f[g + 4], f[g + 5]};
+                edge(e, f[g + 4], f[g + 5], f[g + 4], f[g + 5]);
+                return;
             }
             if (f[k + 4] == f[g + 2] && f[k + 5] == f[g + 3]) {
-                return new double[] {f[g + 2], f[g + 3], f[g + 2], f[g + 3]};
+                edge(e, f[g + 2], f[g + 3], f[g + 2], f[g + 3]);
+                return;
             }
         }
-        return new double[] {f[g + 2], f[g + 3], f[g + 4], f[g + 5]};
+        edge(e, f[g + 2], f[g + 3], f[g + 4], f[g + 5]);
+    }
+
+    private static void edge(double[] e, double x1, double y1, double x2, double y2) {
+        e[0] = x1;
+        e[1] = y1;
+        e[2] = x2;
+        e[3] = y2;
     }
 
     /**
@@ -389,7 +543,7 @@ public final class Manifolds {
     private static int bestFace(Piece p, double ux, double uy) {
         int best = -1;
         double most = Double.NEGATIVE_INFINITY;
-        for (int k = 0; k < p.faces.length; k += 6) {
+        for (int k = 0; k < p.nf; k += 6) {
             double s = p.faces[k] * ux + p.faces[k + 1] * uy;
             if (s > most) {
                 most = s;
@@ -399,18 +553,21 @@ public final class Manifolds {
         return best;
     }
 
-    /** Segment e (x1, y1, x2, y2) clipped to {@code px * x + py * y <= c}; null when nothing is left. */
-    private static double[] clipTo(double[] e, double px, double py, double c) {
+    /** Segment e (x1, y1, x2, y2) clipped to {@code px * x + py * y <= c}, in place; false when nothing is left. */
+    private static boolean clipTo(double[] e, double px, double py, double c) {
         double d1 = px * e[0] + py * e[1] - c, d2 = px * e[2] + py * e[3] - c;
         if (d1 <= 0 && d2 <= 0) {
-            return e;
+            return true;
         }
         if (d1 > 0 && d2 > 0) {
-            return null;
+            return false;
         }
         double t = d1 / (d1 - d2);
         double x = e[0] + t * (e[2] - e[0]), y = e[1] + t * (e[3] - e[1]);
-        return d1 > 0 ? new double[] {x, y, e[2], e[3]} : new double[] {e[0], e[1], x, y};
+        int end = d1 > 0 ? 0 : 2;
+        e[end] = x;
+        e[end + 1] = y;
+        return true;
     }
 
     /**
@@ -418,28 +575,44 @@ public final class Manifolds {
      * inscribed polygon), its corners with their depths into {@code out}.
      */
     private static void overlapCorners(Piece p, Piece q, double nx, double ny, List<Piece> pa, List<Piece> pb,
-                                       double scale, List<double[]> out) {
-        double[] poly = outline(q);
-        double[] planes = p.seg && p.r > 0 ? straight(List.of(outline(p))).get(0).planes : p.planes;
-        for (int k = 0; k < planes.length && poly.length > 0; k += 3) {
-            poly = clipPolygon(poly, planes[k], planes[k + 1], planes[k + 2]);
+                                       double scale, Scratch sc) {
+        double[] poly = outline(q, sc.outlineQ);
+        int len = outlineLength(q);
+        Piece clipper = p;
+        if (p.seg && p.r > 0) {
+            sc.polygon.clear();
+            clipper = straight(outline(p, sc.outlineP), sc, sc.polygon).get(0);
         }
-        for (int i = 0; i + 1 < poly.length; i += 2) {
+        double[] planes = clipper.planes;
+        for (int k = 0; k < clipper.np && len > 0; k += 3) {
+            // From the outline into one buffer, then from buffer to buffer in turn.
+            double[] to = poly == sc.clipA ? (sc.clipB = atLeast(sc.clipB, 2 * len)) : (sc.clipA = atLeast(sc.clipA, 2 * len));
+            len = clipPolygon(poly, len, planes[k], planes[k + 1], planes[k + 2], to);
+            poly = to;
+        }
+        for (int i = 0; i + 1 < len; i += 2) {
             double depth = depth(poly[i], poly[i + 1], nx, ny, pa, pb, scale);
             if (depth > SAME * scale) {
-                out.add(new double[] {poly[i], poly[i + 1], depth});
+                sc.points.add(poly[i], poly[i + 1], depth);
             }
         }
     }
 
-    /** A piece's outline as a polygon: its vertices, or a rounded segment's inscribed polygon. */
-    private static double[] outline(Piece q) {
+    /** How many numbers {@link #outline} gives for the piece. */
+    private static int outlineLength(Piece q) {
+        return !q.seg || q.r == 0 ? q.n : 4 * (INSCRIBED / 2 + 1);
+    }
+
+    /**
+     * A piece's outline as a polygon, {@link #outlineLength} numbers: its vertices, or a
+     * rounded segment's inscribed polygon written into {@code xy}.
+     */
+    private static double[] outline(Piece q, double[] xy) {
         if (!q.seg || q.r == 0) {
             return q.xy;
         }
         // Two half circles, each from one side's corner to the other's, the corners exact.
         int half = INSCRIBED / 2;
-        double[] xy = new double[4 * (half + 1)];
         double dx = q.planes[6], dy = q.planes[7], px = q.planes[0], py = q.planes[1];
         int k = 0;
         for (int end = 2; end >= 0; end -= 2) {
@@ -454,10 +627,12 @@ public final class Manifolds {
         return xy;
     }
 
-    /** Sutherland-Hodgman: the polygon clipped to {@code px * x + py * y <= c}. */
-    private static double[] clipPolygon(double[] poly, double px, double py, double c) {
-        int n = poly.length / 2;
-        double[] out = new double[4 * n];
+    /**
+     * Sutherland-Hodgman: the polygon of the first len numbers of poly clipped to
+     * {@code px * x + py * y <= c}, into {@code out} (room for twice len); returns how many numbers.
+     */
+    private static int clipPolygon(double[] poly, int len, double px, double py, double c, double[] out) {
+        int n = len / 2;
         int m = 0;
         for (int i = 0; i < n; i++) {
             int j = (i + 1) % n;
@@ -473,7 +648,7 @@ public final class Manifolds {
                 out[m++] = yi + t * (yj - yi);
             }
         }
-        return java.util.Arrays.copyOf(out, m);
+        return m;
     }
 
     // ---------------------------------------------------------------- depths
@@ -495,8 +670,8 @@ public final class Manifolds {
         double tol = SAME * scale;
         for (int round = 0; round <= pieces.size(); round++) {
             double far = t;
-            for (Piece p : pieces) {
-                double e = exit(p, px + t * ux, py + t * uy, ux, uy, tol);
+            for (int i = 0; i < pieces.size(); i++) {
+                double e = exit(pieces.get(i), px + t * ux, py + t * uy, ux, uy, tol);
                 if (e > 0) {
                     far = Math.max(far, t + e);
                 }
@@ -511,11 +686,7 @@ public final class Manifolds {
 
     /** How far from p along unit (ux, uy) the piece's closure ends; 0 when p is not in it. */
     private static double exit(Piece p, double px, double py, double ux, double uy, double tol) {
-        double best = 0;
-        double[] range = slab(p.planes, px, py, ux, uy, tol);
-        if (range != null && range[0] <= tol) {
-            best = Math.max(best, range[1]);
-        }
+        double best = Math.max(0, slabExit(p.planes, p.np, px, py, ux, uy, tol));
         if (p.seg && p.r > 0) {
             for (int k = 0; k < 4; k += 2) {
                 // The end caps: the larger root of |p + t u - s| = r, if p is in the disc.
@@ -531,13 +702,14 @@ public final class Manifolds {
     }
 
     /**
-     * The ray's parameter range inside the half-planes (Liang-Barsky): {lo, hi}, or null when
-     * it misses them.
+     * Where the ray leaves the half-planes (the first np numbers of {@code planes}), by its
+     * parameter range inside them (Liang-Barsky) from lo to hi: hi when the range starts at p
+     * or before (lo within tol), else 0 (as when it misses them).
      */
-    private static double[] slab(double[] planes, double px, double py, double ux, double uy, double tol) {
+    private static double slabExit(double[] planes, int np, double px, double py, double ux, double uy, double tol) {
         double reach = tol / SAME;
         double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
-        for (int k = 0; k < planes.length; k += 3) {
+        for (int k = 0; k < np; k += 3) {
             double along = planes[k] * ux + planes[k + 1] * uy;
             double gap = planes[k + 2] - (planes[k] * px + planes[k + 1] * py);
             if (along > 0) {
@@ -551,10 +723,10 @@ public final class Manifolds {
                 // would else be outside by its rounding divided by the tiny cosine.
                 lo = Math.max(lo, (along > -ALONG ? gap + AS_DEEP * reach : gap) / along);
             } else if (gap < -tol) {
-                return null;
+                return 0;
             }
         }
-        return lo <= hi + tol ? new double[] {lo, hi} : null;
+        return lo <= hi + tol && lo <= tol ? hi : 0;
     }
 
     // ---------------------------------------------------------------- choosing the points
@@ -567,72 +739,93 @@ public final class Manifolds {
     private static final double AS_DEEP = 1e-6;
 
     /** Keeps the deepest of the overlap's corners (and those as deep, to the rounding of floats). */
-    private static void keepDeepest(List<double[]> points, double scale) {
+    private static void keepDeepest(Points points, double scale) {
+        double[] p = points.xyd;
         double most = 0;
-        for (double[] p : points) {
-            most = Math.max(most, p[2]);
+        for (int i = 0; i < points.n; i++) {
+            most = Math.max(most, p[3 * i + 2]);
         }
         double cut = most - AS_DEEP * scale;
-        points.removeIf(p -> p[2] < cut);
+        int kept = 0;
+        for (int i = 0; i < points.n; i++) {
+            if (!(p[3 * i + 2] < cut)) {
+                System.arraycopy(p, 3 * i, p, 3 * kept++, 3);
+            }
+        }
+        points.n = kept;
     }
 
     /**
      * One or two of the points: the two farthest apart along the surface (ties to the deeper,
      * then the smaller x, then y), in the order of x, then y.
      */
-    private static Manifold reduce(List<double[]> points, Contact c, double scale) {
-        double tx = -c.ny(), ty = c.nx();
-        double[] lo = null, hi = null;
-        for (double[] p : points) {
-            if (lo == null || before(p, lo, tx, ty, scale)) {
-                lo = p;
+    private static void reduce(Points points, double scale, Scratch sc) {
+        double tx = -(double) sc.ny, ty = sc.nx;
+        double[] p = points.xyd;
+        int lo = -1, hi = -1;
+        for (int i = 0; i < points.n; i++) {
+            if (lo < 0 || before(p, 3 * i, 3 * lo, tx, ty, scale)) {
+                lo = i;
             }
-            if (hi == null || before(p, hi, -tx, -ty, scale)) {
-                hi = p;
+            if (hi < 0 || before(p, 3 * i, 3 * hi, -tx, -ty, scale)) {
+                hi = i;
             }
         }
-        double apart = Math.hypot(hi[0] - lo[0], hi[1] - lo[1]);
+        int l = 3 * lo, h = 3 * hi;
+        double apart = Math.hypot(p[h] - p[l], p[h + 1] - p[l + 1]);
         if (apart <= SAME * scale) {
-            double[] deepest = lo[2] >= hi[2] ? lo : hi;
-            return one(c, deepest[0], deepest[1], deepest[2]);
+            int deepest = p[l + 2] >= p[h + 2] ? l : h;
+            one(p[deepest], p[deepest + 1], p[deepest + 2], sc);
+            return;
         }
-        double[] first = lo, second = hi;
-        float x1 = (float) lo[0], y1 = (float) lo[1], x2 = (float) hi[0], y2 = (float) hi[1];
+        int first = l, second = h;
+        float x1 = (float) p[l], y1 = (float) p[l + 1], x2 = (float) p[h], y2 = (float) p[h + 1];
         if (x2 < x1 || x2 == x1 && y2 < y1) {
-            first = hi;
-            second = lo;
+            first = h;
+            second = l;
         }
-        if ((float) first[0] == (float) second[0] && (float) first[1] == (float) second[1]) {
-            return one(c, first[0], first[1], Math.max(first[2], second[2]));
+        if ((float) p[first] == (float) p[second] && (float) p[first + 1] == (float) p[second + 1]) {
+            one(p[first], p[first + 1], Math.max(p[first + 2], p[second + 2]), sc);
+            return;
         }
-        return new Manifold(c, 2, (float) first[0], (float) first[1], depthOf(first[2], c),
-                (float) second[0], (float) second[1], depthOf(second[2], c));
+        sc.count = 2;
+        sc.x1 = (float) p[first];
+        sc.y1 = (float) p[first + 1];
+        sc.depth1 = depthOf(p[first + 2], sc);
+        sc.x2 = (float) p[second];
+        sc.y2 = (float) p[second + 1];
+        sc.depth2 = depthOf(p[second + 2], sc);
     }
 
     /**
-     * Is p before q along (tx, ty): less far along it, or as far (to the rounding of floats)
-     * and deeper (to the same rounding), or then by y and x? (By y first, so that points placed symmetrically about a
-     * vertical line are chosen symmetrically.)
+     * Is the point at p[i] before the one at p[j] along (tx, ty): less far along it, or as
+     * far (to the rounding of floats) and deeper (to the same rounding), or then by y and x?
+     * (By y first, so that points placed symmetrically about a vertical line are chosen
+     * symmetrically.)
      */
-    private static boolean before(double[] p, double[] q, double tx, double ty, double scale) {
-        double dp = p[0] * tx + p[1] * ty, dq = q[0] * tx + q[1] * ty;
+    private static boolean before(double[] p, int i, int j, double tx, double ty, double scale) {
+        double dp = p[i] * tx + p[i + 1] * ty, dq = p[j] * tx + p[j + 1] * ty;
         if (Math.abs(dp - dq) > AS_DEEP * scale) {
             return dp < dq;
         }
-        if (Math.abs(p[2] - q[2]) > AS_DEEP * scale) {
-            return p[2] > q[2];
+        if (Math.abs(p[i + 2] - p[j + 2]) > AS_DEEP * scale) {
+            return p[i + 2] > p[j + 2];
         }
-        return p[1] < q[1] || p[1] == q[1] && p[0] < q[0];
+        return p[i + 1] < p[j + 1] || p[i + 1] == p[j + 1] && p[i] < p[j];
     }
 
-    private static Manifold one(Contact c, double x, double y, double depth) {
-        float d = depthOf(depth, c);
-        return new Manifold(c, 1, (float) x, (float) y, d, (float) x, (float) y, d);
+    /** The answer of one point. */
+    private static void one(double x, double y, double depth, Scratch sc) {
+        float d = depthOf(depth, sc);
+        sc.count = 1;
+        sc.x1 = sc.x2 = (float) x;
+        sc.y1 = sc.y2 = (float) y;
+        sc.depth1 = sc.depth2 = d;
     }
 
     /** A depth as a float in (0, the contact's depth]. */
-    private static float depthOf(double depth, Contact c) {
-        return Math.min(c.depth(), Math.max(Float.MIN_VALUE, (float) depth));
+    private static float depthOf(double depth, Scratch sc) {
+        return Math.min(sc.depth, Math.max(Float.MIN_VALUE, (float) depth));
     }
 
     // ---------------------------------------------------------------- one point
@@ -644,89 +837,94 @@ public final class Manifolds {
      * the middle of the overlap when both deepest points lie in the other shape. Its depth is
      * the contact's.
      */
-    private static Manifold onePoint(Shape a, List<Piece> piecesA, Shape b, List<Piece> piecesB, Contact c, double scale) {
+    private static void onePoint(Shape a, List<Piece> piecesA, Shape b, List<Piece> piecesB, double scale, Scratch sc) {
         boolean roundA = piecesA == null, roundB = piecesB == null;
-        double nx = c.nx(), ny = c.ny(), d = c.depth();
-        double[] pa, pb;
+        double nx = sc.nx, ny = sc.ny, d = sc.depth;
+        double[] pa = sc.deepA, pb = sc.deepB;
         if (roundA && !roundB) {
-            pa = support(a, nx, ny);
-            pb = new double[] {pa[0] - d * nx, pa[1] - d * ny};
+            support(a, nx, ny, pa, sc);
+            pb[0] = pa[0] - d * nx;
+            pb[1] = pa[1] - d * ny;
         } else if (roundB && !roundA) {
-            pb = support(b, -nx, -ny);
-            pa = new double[] {pb[0] + d * nx, pb[1] + d * ny};
+            support(b, -nx, -ny, pb, sc);
+            pa[0] = pb[0] + d * nx;
+            pa[1] = pb[1] + d * ny;
         } else {
-            pa = support(a, nx, ny);
-            pb = support(b, -nx, -ny);
+            support(a, nx, ny, pa, sc);
+            support(b, -nx, -ny, pb, sc);
         }
         double tol = Manifold.TOLERANCE * scale;
         // In both: a witness worked out from the other's (pa = pb + d n) need not be on its own
         // shape's outline (a concave polygon's contact is not its hull's).
-        boolean aInB = outside(b, pa[0], pa[1]) <= tol && outside(a, pa[0], pa[1]) <= tol;
-        boolean bInA = outside(a, pb[0], pb[1]) <= tol && outside(b, pb[0], pb[1]) <= tol;
-        double[] p;
+        boolean aInB = outside(b, pa[0], pa[1], sc) <= tol && outside(a, pa[0], pa[1], sc) <= tol;
+        boolean bInA = outside(a, pb[0], pb[1], sc) <= tol && outside(b, pb[0], pb[1], sc) <= tol;
         if (!aInB && !bInA) {
             // Neither deepest point lies in the other shape (a round shape in a concave
             // polygon's notch, say): the deepest corner of the overlap, a round shape taken
             // as its inscribed polygon.
-            Manifold m = deepestCorner(piecesA != null ? piecesA : inscribed(a), piecesB != null ? piecesB : inscribed(b),
-                    c, scale);
-            if (m != null) {
-                return m;
+            if (deepestCorner(piecesA != null ? piecesA : inscribed(a, sc, sc.inscribedA),
+                    piecesB != null ? piecesB : inscribed(b, sc, sc.inscribedB), scale, sc)) {
+                return;
             }
         }
         if (roundA != roundB) {
             double[] round = roundA ? pa : pb, other = roundA ? pb : pa;
             boolean roundIn = roundA ? aInB : bInA, otherIn = roundA ? bInA : aInB;
-            p = roundIn || !otherIn ? round : other;
+            double[] p = roundIn || !otherIn ? round : other;
+            one(p[0], p[1], d, sc);
         } else if (aInB == bInA) {
-            p = new double[] {(pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2};
+            one((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2, d, sc);
         } else {
-            p = aInB ? pa : pb;
+            double[] p = aInB ? pa : pb;
+            one(p[0], p[1], d, sc);
         }
-        return one(c, p[0], p[1], d);
     }
 
-    /** The deepest corners of the overlap of the two shapes' pieces, one or two; null if none. */
-    private static Manifold deepestCorner(List<Piece> pa, List<Piece> pb, Contact c, double scale) {
+    /** The deepest corners of the overlap of the two shapes' pieces, one or two, as the answer; false if none. */
+    private static boolean deepestCorner(List<Piece> pa, List<Piece> pb, double scale, Scratch sc) {
         if (pa == null || pb == null) {
-            return null;
+            return false;
         }
-        List<double[]> points = new ArrayList<>();
-        for (Piece p : pa) {
-            for (Piece q : pb) {
+        Points points = sc.points.clear();
+        for (int i = 0; i < pa.size(); i++) {
+            for (int j = 0; j < pb.size(); j++) {
+                Piece p = pa.get(i), q = pb.get(j);
                 if (boxesMeet(p, q, scale)) {
-                    overlapCorners(p, q, c.nx(), c.ny(), pa, pb, scale, points);
+                    overlapCorners(p, q, sc.nx, sc.ny, pa, pb, scale, sc);
                 }
             }
         }
-        if (points.isEmpty()) {
-            return null;
+        if (points.n == 0) {
+            return false;
         }
         keepDeepest(points, scale);
-        return reduce(points, c, scale);
+        reduce(points, scale, sc);
+        return true;
     }
 
     /** The number of corners of a round shape's inscribed polygon. */
     private static final int INSCRIBED = 64;
 
-    /** A round shape as its inscribed polygon, one piece; null for a shape of no extent. */
-    private static List<Piece> inscribed(Shape s) {
-        double[] xy = new double[2 * INSCRIBED];
+    /** A round shape as its inscribed polygon, one piece in {@code out}; null for a shape of no extent. */
+    private static List<Piece> inscribed(Shape s, Scratch sc, List<Piece> out) {
+        double[] xy = sc.inscribed, p = sc.support;
         for (int i = 0; i < INSCRIBED; i++) {
             double t = 2 * Math.PI * i / INSCRIBED;
-            double[] p = support(s, Math.cos(t), Math.sin(t));
+            support(s, Math.cos(t), Math.sin(t), p, sc);
             xy[2 * i] = p[0];
             xy[2 * i + 1] = p[1];
         }
-        return straight(List.of(xy));
+        out.clear();
+        return straight(xy, sc, out);
     }
 
-    /** The shape's point farthest along unit (ux, uy); the middle of a flat side that is farthest. */
-    public static double[] support(Shape s, double ux, double uy) {
-        return switch (ShapeKind.of(s)) {
+    /** The shape's point farthest along unit (ux, uy) into {@code out}; the middle of a flat side that is farthest. */
+    private static void support(Shape s, double ux, double uy, double[] out, Scratch sc) {
+        switch (ShapeKind.of(s)) {
             case CIRCLE -> {
                 Circle o = (Circle) s;
-                yield new double[] {o.x() + o.r() * ux, o.y() + o.r() * uy};
+                out[0] = o.x() + o.r() * ux;
+                out[1] = o.y() + o.r() * uy;
             }
             case ELLIPSE -> {
                 Ellipse e = (Ellipse) s;
@@ -735,48 +933,60 @@ public final class Manifolds {
                 double u = ux * cos + uy * sin, v = -ux * sin + uy * cos;
                 double au = (double) e.rx() * u, bv = (double) e.ry() * v, len = Math.hypot(au, bv);
                 double lx = len == 0 ? 0 : e.rx() * au / len, ly = len == 0 ? 0 : e.ry() * bv / len;
-                yield new double[] {e.x() + lx * cos - ly * sin, e.y() + lx * sin + ly * cos};
+                out[0] = e.x() + lx * cos - ly * sin;
+                out[1] = e.y() + lx * sin + ly * cos;
             }
             case CAPSULE -> {
                 Capsule k = (Capsule) s;
-                double[] end = farthest(new double[] {k.x1(), k.y1(), k.x2(), k.y2()}, ux, uy);
-                yield new double[] {end[0] + k.r() * ux, end[1] + k.r() * uy};
+                farthest(ends(sc.edge, k.x1(), k.y1(), k.x2(), k.y2()), 4, ux, uy, out);
+                out[0] += k.r() * ux;
+                out[1] += k.r() * uy;
             }
-            case RECT, POLYGON -> farthest(Polygons.corners(s), ux, uy);
+            case RECT -> farthest(Polygons.corners((Rect) s, sc.corners), 8, ux, uy, out);
+            case POLYGON -> {
+                double[] c = HiddenParts.corners((Polygon) s);
+                farthest(c, c.length, ux, uy, out);
+            }
             case SEGMENT -> {
                 Segment g = (Segment) s;
-                yield farthest(new double[] {g.x1(), g.y1(), g.x2(), g.y2()}, ux, uy);
+                farthest(ends(sc.edge, g.x1(), g.y1(), g.x2(), g.y2()), 4, ux, uy, out);
             }
-        };
+        }
     }
 
-    /** The vertex farthest along (ux, uy); the middle of those as far, to rounding. */
-    private static double[] farthest(double[] xy, double ux, double uy) {
+    private static double[] ends(double[] e, double x1, double y1, double x2, double y2) {
+        edge(e, x1, y1, x2, y2);
+        return e;
+    }
+
+    /** The vertex of the first len numbers of xy farthest along (ux, uy) into {@code out}; the middle of those as far, to rounding. */
+    private static void farthest(double[] xy, int len, double ux, double uy, double[] out) {
         double most = Double.NEGATIVE_INFINITY, size = 0;
-        for (int i = 0; i < xy.length; i += 2) {
+        for (int i = 0; i < len; i += 2) {
             most = Math.max(most, xy[i] * ux + xy[i + 1] * uy);
             size = Math.max(size, Math.abs(xy[i]) + Math.abs(xy[i + 1]));
         }
         double minT = Double.POSITIVE_INFINITY, maxT = Double.NEGATIVE_INFINITY;
-        double[] lo = null, hi = null;
-        for (int i = 0; i < xy.length; i += 2) {
+        int lo = -1, hi = -1;
+        for (int i = 0; i < len; i += 2) {
             if (xy[i] * ux + xy[i + 1] * uy >= most - SAME * Math.max(1, size)) {
                 double t = -xy[i] * uy + xy[i + 1] * ux;
                 if (t < minT) {
                     minT = t;
-                    lo = new double[] {xy[i], xy[i + 1]};
+                    lo = i;
                 }
                 if (t > maxT) {
                     maxT = t;
-                    hi = new double[] {xy[i], xy[i + 1]};
+                    hi = i;
                 }
             }
         }
-        return new double[] {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2};
+        out[0] = (xy[lo] + xy[hi]) / 2;
+        out[1] = (xy[lo + 1] + xy[hi + 1]) / 2;
     }
 
     /** How far the point lies outside the shape (0 or less: in its closure), roughly a distance. */
-    public static double outside(Shape s, double px, double py) {
+    private static double outside(Shape s, double px, double py, Scratch sc) {
         return switch (ShapeKind.of(s)) {
             case CIRCLE -> {
                 Circle o = (Circle) s;
@@ -806,9 +1016,11 @@ public final class Manifolds {
             }
             case POLYGON -> {
                 double best = Double.POSITIVE_INFINITY;
-                for (Piece p : pieces(s)) {
+                List<Piece> pieces = pieces(s, sc, sc.polygon);
+                for (int i = 0; i < pieces.size(); i++) {
+                    Piece p = pieces.get(i);
                     double worst = Double.NEGATIVE_INFINITY;
-                    for (int k = 0; k < p.planes.length; k += 3) {
+                    for (int k = 0; k < p.np; k += 3) {
                         worst = Math.max(worst, p.planes[k] * px + p.planes[k + 1] * py - p.planes[k + 2]);
                     }
                     best = Math.min(best, worst);

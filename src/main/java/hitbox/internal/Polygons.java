@@ -600,7 +600,11 @@ public final class Polygons {
      * {@link #exactDoubleSignedArea} for the exact one). Its sign follows {@link Lines#orient}.
      */
     public static double doubleSignedArea(double[] xy) {
-        int n = xy.length / 2;
+        return doubleSignedArea(xy, xy.length / 2);
+    }
+
+    /** {@link #doubleSignedArea(double[])} of the first n vertices of xy. */
+    public static double doubleSignedArea(double[] xy, int n) {
         double ox = xy[0];
         double oy = xy[1];
         double sum = 0;

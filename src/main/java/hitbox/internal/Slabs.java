@@ -78,7 +78,12 @@ public final class Slabs {
      * player landing exactly on a platform's corner lands.
      */
     public static Clip box(double loX, double hiX, double loY, double hiY, double vx, double vy) {
-        return new Clip().slab(loY, hiY, vy, 0, 1).slab(loX, hiX, vx, 1, 0);
+        return box(new Clip(), loX, hiX, loY, hiY, vx, vy);
+    }
+
+    /** {@link #box(double, double, double, double, double, double)} into an empty clip. */
+    public static Clip box(Clip into, double loX, double hiX, double loY, double hiY, double vx, double vy) {
+        return into.slab(loY, hiY, vy, 0, 1).slab(loX, hiX, vx, 1, 0);
     }
 
     /**

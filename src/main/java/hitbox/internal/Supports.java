@@ -44,7 +44,7 @@ public final class Supports {
                 Segment g = (Segment) s;
                 yield Math.max(g.x1() * nx + g.y1() * ny, g.x2() * nx + g.y2() * ny);
             }
-            case RECT -> reach(Polygons.corners((Rect) s, new double[8]), nx, ny);
+            case RECT -> rectReach((Rect) s, nx, ny);
             case POLYGON -> reach(HiddenParts.corners((Polygon) s), nx, ny); // cached, only read
         };
     }
@@ -59,45 +59,115 @@ public final class Supports {
     }
 
     /**
+     * {@link #reach} of the rectangle's corners ({@link Polygons#corners(Rect, double[])}'s,
+     * in its order), without making them: the same products, maxima and order, so the same
+     * value to the last bit.
+     */
+    private static double rectReach(Rect r, double nx, double ny) {
+        double x = r.x(), y = r.y(), right = x + r.w(), bottom = y + r.h();
+        double best = Math.max(Double.NEGATIVE_INFINITY, x * nx + y * ny);
+        best = Math.max(best, right * nx + y * ny);
+        best = Math.max(best, right * nx + bottom * ny);
+        return Math.max(best, x * nx + bottom * ny);
+    }
+
+    /**
      * The straight edges whose normals the search tries, as a closed outline of vertices:
      * a rectangle's or polygon's corners, a capsule's segment (its two sides), none for a
      * round shape; a segment, as a capsule's.
      */
     public static double[] straightEdges(Shape s) {
+        return straightEdges(s, new double[4], new double[8]).clone();
+    }
+
+    /** No straight edges. */
+    private static final double[] NONE = {};
+
+    /**
+     * {@link #straightEdges(Shape)} written into {@code ends} (a capsule's or segment's) or
+     * {@code corners} (a rectangle's), or a polygon's cached corners; only read.
+     */
+    private static double[] straightEdges(Shape s, double[] ends, double[] corners) {
         return switch (ShapeKind.of(s)) {
-            case ELLIPSE, CIRCLE -> new double[0];
+            case ELLIPSE, CIRCLE -> NONE;
             case CAPSULE -> {
                 Capsule k = (Capsule) s;
-                yield new double[] {k.x1(), k.y1(), k.x2(), k.y2()};
+                yield ends(ends, k.x1(), k.y1(), k.x2(), k.y2());
             }
             case SEGMENT -> {
                 Segment g = (Segment) s;
-                yield new double[] {g.x1(), g.y1(), g.x2(), g.y2()};
+                yield ends(ends, g.x1(), g.y1(), g.x2(), g.y2());
             }
-            case RECT, POLYGON -> Polygons.corners(s);
+            case RECT -> Polygons.corners((Rect) s, corners);
+            case POLYGON -> HiddenParts.corners((Polygon) s);
         };
     }
 
-    /** The push for direction angle t: how far b must move along (cos t, sin t) to clear a. */
-    private static double push(Shape a, Shape b, double t) {
-        double[] n = unit(t);
-        return support(a, n[0], n[1]) + support(b, -n[0], -n[1]);
+    private static double[] ends(double[] e, double x1, double y1, double x2, double y2) {
+        e[0] = x1;
+        e[1] = y1;
+        e[2] = x2;
+        e[3] = y2;
+        return e;
     }
 
     /**
-     * The unit direction at angle t, exact where it is an axis direction: cos and sin of such
-     * an angle round to about 6e-17, not 0, and the exact axis keeps a box's support exact.
+     * The push for direction angle t, how far b must move along (cos t, sin t) to clear a, as
+     * the function a golden search asks: one per thread, set to a pair for a search (a
+     * lambda taking the pair along was made per search).
      */
-    private static double[] unit(double t) {
+    private static final class Push implements java.util.function.DoubleUnaryOperator {
+        private Shape a, b;
+        private final double[] n = new double[2];
+
+        Push of(Shape a, Shape b) {
+            this.a = a;
+            this.b = b;
+            return this;
+        }
+
+        @Override
+        public double applyAsDouble(double t) {
+            unit(t, n);
+            return support(a, n[0], n[1]) + support(b, -n[0], -n[1]);
+        }
+    }
+
+    /**
+     * The unit direction at angle t into {@code out}, exact where it is an axis direction: cos
+     * and sin of such an angle round to about 6e-17, not 0, and the exact axis keeps a box's
+     * support exact.
+     */
+    private static double[] unit(double t, double[] out) {
         double nx = Math.cos(t), ny = Math.sin(t);
         if (Math.abs(nx) < Tolerance.AXIS_SNAP) {
-            return new double[] {0, Math.signum(ny)};
+            out[0] = 0;
+            out[1] = Math.signum(ny);
+        } else if (Math.abs(ny) < Tolerance.AXIS_SNAP) {
+            out[0] = Math.signum(nx);
+            out[1] = 0;
+        } else {
+            out[0] = nx;
+            out[1] = ny;
         }
-        if (Math.abs(ny) < Tolerance.AXIS_SNAP) {
-            return new double[] {Math.signum(nx), 0};
-        }
-        return new double[] {nx, ny};
+        return out;
     }
+
+    /** The four axis directions, exact. */
+    private static final double[][] AXES = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
+
+    /**
+     * A thread's working objects for {@link #contact}: the candidates, the samples, a
+     * direction, a search's answer, the search's function, and the straight edges' ends.
+     */
+    private static final class Scratch {
+        double[] found = new double[3 * 96];
+        final double[] f = new double[STEPS], u = new double[2], least = new double[2];
+        final double[] ends = new double[4], corners = new double[8];
+        final Push push = new Push();
+    }
+
+    private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
 
     /**
      * The contact of two overlapping convex shapes, normal from a to b. Every candidate
@@ -109,27 +179,28 @@ public final class Supports {
      * mirror image, whose candidates are the mirrored ones, picks the mirrored direction.
      */
     public static Contact contact(Shape a, Shape b) {
-        double[] found = new double[3 * 96];
+        Scratch sc = SCRATCH.get();
+        double[] found = sc.found, u = sc.u;
         int n = 0;
         // The straight edges' normals first, exact where the least is flat. A cone of equally
         // short directions (a circle or a capsule's end centred on a corner) has such normals
         // for its ends: for convex shapes it is a corner of the one shape taken off the
         // other's segment or point, whose sides are straight edges of the two.
-        for (Shape s : new Shape[] {a, b}) {
-            double[] xy = straightEdges(s);
+        for (int k = 0; k < 2; k++) {
+            double[] xy = straightEdges(k == 0 ? a : b, sc.ends, sc.corners);
             int corners = xy.length / 2;
             for (int i = 0; i < corners; i++) {
                 int j = (i + 1) % corners;
                 double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1];
                 if (ex != 0 || ey != 0) {
-                    found = candidate(found, n++, a, b, unit(Math.atan2(ex, -ey)));
-                    found = candidate(found, n++, a, b, unit(Math.atan2(-ex, ey)));
+                    found = candidate(found, n++, a, b, unit(Math.atan2(ex, -ey), u));
+                    found = candidate(found, n++, a, b, unit(Math.atan2(-ex, ey), u));
                 }
             }
         }
         // Then the four axis directions, exact: the rule's pick from a cone of equally short
         // directions can be an axis inside it.
-        for (double[] axis : new double[][] {{0, 1}, {0, -1}, {1, 0}, {-1, 0}}) {
+        for (double[] axis : AXES) {
             found = candidate(found, n++, a, b, axis);
         }
         // Then each local least of 72 samples, refined by golden-section search. Where the
@@ -138,19 +209,21 @@ public final class Supports {
         // equally short to a double's resolution; one that near an axis, and as short there
         // to the support sums' rounding, is taken on the axis (Golden.onAxis).
         double size = size(a, b);
-        double[] f = new double[STEPS];
+        double[] f = sc.f;
+        Push push = sc.push.of(a, b);
         for (int i = 0; i < STEPS; i++) {
-            f[i] = push(a, b, 2 * Math.PI * i / STEPS);
+            f[i] = push.applyAsDouble(2 * Math.PI * i / STEPS);
         }
         for (int i = 0; i < STEPS; i++) {
             double prev = f[(i + STEPS - 1) % STEPS], next = f[(i + 1) % STEPS];
             if (f[i] <= prev && f[i] <= next) {
-                double[] least = Golden.least(t -> push(a, b, t), 2 * Math.PI * (i - 1) / STEPS,
-                        2 * Math.PI * (i + 1) / STEPS, 80, Tolerance.SUPPORT_ANGLE);
-                least = Golden.onAxis(t -> push(a, b, t), least, Tolerance.SUPPORT_SUM_ROUNDING * size);
-                found = candidate(found, n++, a, b, unit(least[0]));
+                double[] least = Golden.least(push, 2 * Math.PI * (i - 1) / STEPS,
+                        2 * Math.PI * (i + 1) / STEPS, 80, Tolerance.SUPPORT_ANGLE, sc.least);
+                Golden.onAxis(push, least, Tolerance.SUPPORT_SUM_ROUNDING * size, least);
+                found = candidate(found, n++, a, b, unit(least[0], u));
             }
         }
+        sc.found = found;
         // The one place a direction is chosen: everything within the slack of the least.
         double least = Double.POSITIVE_INFINITY;
         for (int i = 0; i < n; i++) {
@@ -185,7 +258,8 @@ public final class Supports {
      */
     private static double size(Shape a, Shape b) {
         double most = 1;
-        for (Shape s : new Shape[] {a, b}) {
+        for (int k = 0; k < 2; k++) {
+            Shape s = k == 0 ? a : b;
             most = Math.max(most, Math.max(Math.max(Math.abs(s.minX()), Math.abs(s.maxX())),
                     Math.max(Math.abs(s.minY()), Math.abs(s.maxY()))));
         }

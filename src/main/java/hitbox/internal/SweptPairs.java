@@ -8,11 +8,12 @@ import hitbox.*;
  * entry to the float {@code t} Sweep promises: the largest float at which the mover, moved
  * as a sketch moves it, does not overlap.
  *
- * <p>This class is longer than most (about 660 lines) because it holds both halves of every
+ * <p>This class is longer than most (about 820 lines) because it holds both halves of every
  * swept pair, the exact entries (each also grown by the rounding slack of the float
  * positions) and the two ways from an entry to the promised float: visiting the float
- * positions one by one ({@link #answer}) and the walk ({@link Search}); split, each half
- * would be a list of pairs that only the other half reads.
+ * positions one by one ({@link #answer}) and the walk ({@link Search}), with the thread's
+ * entries, walk and overlap tests they work in; split, each half would be a list of pairs
+ * that only the other half reads.
  */
 public final class SweptPairs {
     private SweptPairs() {
@@ -21,10 +22,53 @@ public final class SweptPairs {
     /** The answer when the shapes already overlap at the start. */
     public static final Hit OVERLAPPING = new Hit(0, 0, 0, Side.NONE);
 
+    // ---------------------------------------------------------------- a thread's scratch
+    // A sweep makes nothing but its Hit: its entries, its walk and its overlap test are a
+    // thread's own objects, reset for each sweep. An exact entry is always the thread's
+    // exact one, a grown entry its grown one, so that a sweep holds both at once; nothing
+    // here sweeps again while a caller holds them (a sweep's overlap tests do not sweep).
+
+    /** A thread's exact and grown entries, its clip, its walk and its overlap test of a moved pair. */
+    private static final class Scratch {
+        final Earliest exact = new Earliest(), grown = new Earliest();
+        final Slabs.Clip clip = new Slabs.Clip();
+        final Search search = new Search(Slabs.INF, false);
+        final Moved moved = new Moved();
+    }
+
+    private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
+
+    /** The thread's exact entry, reset: found nothing yet. */
+    private static Earliest exactEntry() {
+        return SCRATCH.get().exact.reset();
+    }
+
+    /** The thread's clip, emptied, for one entry to read at once ({@link Earliest#clip}). */
+    private static Slabs.Clip clip() {
+        return SCRATCH.get().clip.reset();
+    }
+
+    /** {@link Slabs#box} in the thread's clip. */
+    private static Slabs.Clip box(double loX, double hiX, double loY, double hiY, double vx, double vy) {
+        return Slabs.box(clip(), loX, hiX, loY, hiY, vx, vy);
+    }
+
+    /** The thread's grown entry, reset, for the entries grown by the rounding slack. */
+    public static Earliest grownEntry() {
+        return SCRATCH.get().grown.reset();
+    }
+
+    /**
+     * The thread's walk, started from te as {@link Search#Search(double, boolean)} starts,
+     * for a caller that writes the walk's loop out (no other walk may be in use meanwhile).
+     */
+    public static Search search(double te, boolean exactEntry) {
+        return SCRATCH.get().search.reset(te, exactEntry);
+    }
+
     // ---------------------------------------------------------------- the pairs, as entries
-    // Each entry makes its one Earliest first and returns it with nothing found for bad
-    // input, never null: one allocation and no merge with null, so the JIT, inlining the
-    // entry and the search into the Sweep method, can keep it in registers.
+    // Each entry takes the thread's entry (exact or grown) and returns it with nothing found
+    // for bad input, never null.
 
     /** Time of impact of two boxes in double, the motion given in double; 0 if overlapping. */
     public static double rectRectTime(float x, float y, float w, float h, double vx, double vy,
@@ -46,14 +90,14 @@ public final class SweptPairs {
     /** Box against box, with the face entered; the motion in double (the rest of a move). */
     public static Earliest rectRectEntry(float x, float y, float w, float h, double vx, double vy,
                                   float ox, float oy, float ow, float oh) {
-        Earliest e = new Earliest();
+        Earliest e = exactEntry();
         if (!(w >= 0 && h >= 0 && ow >= 0 && oh >= 0)) {
             return e;  // a negative size (or NaN) is no box: no entry, as documented
         }
         if (RawTests.rectRect(x, y, w, h, ox, oy, ow, oh)) {
             e.inside = true;
         } else if (Discs.finite(vx, vy)) {
-            e.clip(Slabs.box(ox - ((double) x + w), ((double) ox + ow) - x,
+            e.clip(box(ox - ((double) x + w), ((double) ox + ow) - x,
                     oy - ((double) y + h), ((double) oy + oh) - y, vx, vy), 1);
         }
         return e;
@@ -61,7 +105,7 @@ public final class SweptPairs {
 
     public static Earliest circleCircleEntry(float x, float y, float r, float vx, float vy,
                                               float ox, float oy, float or) {
-        Earliest e = new Earliest();
+        Earliest e = exactEntry();
         if (Check.notFinite(x, y, r, vx, vy) || Check.notFinite(ox, oy, or, 0, 0) || r < 0 || or < 0) {
             return e;  // no entry (a negative radius is no circle, as documented)
         }
@@ -80,14 +124,14 @@ public final class SweptPairs {
      */
     public static Earliest circleCircleGrown(float x, float y, float r, float vx, float vy,
                                              float ox, float oy, float or, double grow) {
-        Earliest e = new Earliest();
+        Earliest e = grownEntry();
         e.disc((double) x - ox, (double) y - oy, vx, vy, (double) r + or + grow, 1);
         return e;
     }
 
     public static Earliest circleRectEntry(float cx, float cy, float r, float vx, float vy,
                                             float rx, float ry, float rw, float rh) {
-        Earliest e = new Earliest();
+        Earliest e = exactEntry();
         if (Check.notFinite(cx, cy, r, vx, vy) || Check.notFinite(rx, ry, rw, rh, 0) || r < 0 || rw < 0 || rh < 0) {
             return e;  // no entry (a negative size is no shape, as documented)
         }
@@ -119,10 +163,10 @@ public final class SweptPairs {
         e.disc(cx - cr, cy - ct, vx, vy, rd, 1);
         e.disc(cx - cl, cy - cb, vx, vy, rd, 1);
         e.disc(cx - cr, cy - cb, vx, vy, rd, 1);
-        e.clip(new Slabs.Clip()
+        e.clip(clip()
                 .slab(left - r - cx, right + r - cx, vx, 1, 0)
                 .slab(top - cy, bottom - cy, vy, 0, 1), 1);
-        e.clip(new Slabs.Clip()
+        e.clip(clip()
                 .slab(top - r - cy, bottom + r - cy, vy, 0, 1)
                 .slab(left - cx, right - cx, vx, 1, 0), 1);
         return e;
@@ -130,7 +174,7 @@ public final class SweptPairs {
 
     public static Earliest rectSegmentEntry(float x, float y, float w, float h, float vx, float vy,
                                              float x1, float y1, float x2, float y2) {
-        return rectSegmentEntry(x, y, w, h, vx, vy, x1, y1, x2, y2, 0, 0);
+        return rectSegmentEntry(exactEntry(), x, y, w, h, vx, vy, x1, y1, x2, y2, 0, 0);
     }
 
     /**
@@ -140,12 +184,16 @@ public final class SweptPairs {
      */
     public static Earliest rectSegmentEntry(float x, float y, float w, float h, float vx, float vy,
                                             float x1, float y1, float x2, float y2, double gx, double gy) {
-        Earliest e = new Earliest();
+        return rectSegmentEntry(grownEntry(), x, y, w, h, vx, vy, x1, y1, x2, y2, gx, gy);
+    }
+
+    private static Earliest rectSegmentEntry(Earliest e, float x, float y, float w, float h, float vx, float vy,
+                                             float x1, float y1, float x2, float y2, double gx, double gy) {
         if (Check.notFinite(x, y, w, h, vx) || Check.notFinite(vy, x1, y1, x2, y2) || !(w > 0 && h > 0)) {
             return e;  // no entry
         }
         double left = x, right = (double) x + w, top = y, bottom = (double) y + h;
-        Slabs.Clip clip = new Slabs.Clip()
+        Slabs.Clip clip = clip()
                 .slab(Math.min(y1, y2) - bottom - gy, Math.max(y1, y2) - top + gy, vy, 0, 1)
                 .slab(Math.min(x1, x2) - right - gx, Math.max(x1, x2) - left + gx, vx, 1, 0);
         double ex = (double) x2 - x1, ey = (double) y2 - y1;
@@ -167,7 +215,7 @@ public final class SweptPairs {
 
     public static Earliest circleSegmentEntry(float cx, float cy, float r, float vx, float vy,
                                                float x1, float y1, float x2, float y2) {
-        return circleSegmentEntry(cx, cy, r, vx, vy, x1, y1, x2, y2, 0, 0);
+        return circleSegmentEntry(exactEntry(), cx, cy, r, vx, vy, x1, y1, x2, y2, 0, 0);
     }
 
     /**
@@ -178,7 +226,11 @@ public final class SweptPairs {
      */
     public static Earliest circleSegmentEntry(float cx, float cy, float rf, float vx, float vy,
                                               float x1, float y1, float x2, float y2, double gx, double gy) {
-        Earliest e = new Earliest();
+        return circleSegmentEntry(grownEntry(), cx, cy, rf, vx, vy, x1, y1, x2, y2, gx, gy);
+    }
+
+    private static Earliest circleSegmentEntry(Earliest e, float cx, float cy, float rf, float vx, float vy,
+                                               float x1, float y1, float x2, float y2, double gx, double gy) {
         if (Check.notFinite(cx, cy, rf, vx, vy) || Check.notFinite(x1, y1, x2, y2, 0) || !(rf > 0)) {
             return e;  // no entry
         }
@@ -197,7 +249,7 @@ public final class SweptPairs {
             double along = ex * px + ey * py;
             double half = r * len + Math.abs(ey) * gx + Math.abs(ex) * gy;
             double ga = Math.abs(ex) * gx + Math.abs(ey) * gy;
-            e.clip(new Slabs.Clip()
+            e.clip(clip()
                     .slab(-half - across, half - across, -ey * vx + ex * vy, -ey / len, ex / len)
                     .slab(-along - ga, len2 - along + ga, ex * vx + ey * vy, ex / len, ey / len), 1);
         }
@@ -211,11 +263,11 @@ public final class SweptPairs {
      */
     public static Earliest rectRectGrown(float x, float y, float w, float h, float vx, float vy,
                                          float ox, float oy, float ow, float oh, double gx, double gy) {
-        Earliest e = new Earliest();
+        Earliest e = grownEntry();
         if (!(w >= 0 && h >= 0 && ow >= 0 && oh >= 0)) {
             return e;
         }
-        e.clip(Slabs.box(ox - ((double) x + w) - gx, ((double) ox + ow) - x + gx,
+        e.clip(box(ox - ((double) x + w) - gx, ((double) ox + ow) - x + gx,
                 oy - ((double) y + h) - gy, ((double) oy + oh) - y + gy, vx, vy), 1);
         return e;
     }
@@ -232,6 +284,98 @@ public final class SweptPairs {
     }
 
     // ---------------------------------------------------------------- from entry to answer
+
+    /**
+     * The overlap tests of the pairs on plain floats, as {@link #answer} asks them, written
+     * once as a thread's object: set for one sweep by the methods below, it makes nothing a
+     * lambda capturing the sweep's floats would (one per sweep; too big a method to inline,
+     * {@link #answer} let it escape). Each test moves the mover's coordinates {@code x + u * vx},
+     * {@code y + u * vy} in float, as a sketch moves them, and keeps the rest as given.
+     */
+    private static final class Moved implements OverlapAt {
+        static final int CIRCLE_CIRCLE = 0, CIRCLE_RECT = 1, RECT_CIRCLE = 2, RECT_SEGMENT = 3,
+                CIRCLE_SEGMENT = 4, SEGMENT_RECT = 5, SEGMENT_CIRCLE = 6;
+        private int pair;
+        /** The mover's moving coordinates (a segment's two ends) and its motion. */
+        private float x, y, x2, y2, vx, vy;
+        /** The standing arguments, in the order the test takes them. */
+        private float f0, f1, f2, f3, f4, f5;
+
+        Moved set(int pair, float x, float y, float x2, float y2, float vx, float vy,
+                  float f0, float f1, float f2, float f3, float f4, float f5) {
+            this.pair = pair;
+            this.x = x;
+            this.y = y;
+            this.x2 = x2;
+            this.y2 = y2;
+            this.vx = vx;
+            this.vy = vy;
+            this.f0 = f0;
+            this.f1 = f1;
+            this.f2 = f2;
+            this.f3 = f3;
+            this.f4 = f4;
+            this.f5 = f5;
+            return this;
+        }
+
+        @Override
+        public boolean at(float u) {
+            return switch (pair) {
+                case CIRCLE_CIRCLE -> RawTests.circleCircle(x + u * vx, y + u * vy, f0, f1, f2, f3);
+                case CIRCLE_RECT -> RawTests.circleRect(x + u * vx, y + u * vy, f0, f1, f2, f3, f4);
+                case RECT_CIRCLE -> RawTests.circleRect(f0, f1, f2, x + u * vx, y + u * vy, f3, f4);
+                case RECT_SEGMENT -> RawTests.lineRect(f0, f1, f2, f3, x + u * vx, y + u * vy, f4, f5);
+                case CIRCLE_SEGMENT -> RawTests.lineCircle(f0, f1, f2, f3, x + u * vx, y + u * vy, f4);
+                case SEGMENT_RECT -> RawTests.lineRect(x + u * vx, y + u * vy, x2 + u * vx, y2 + u * vy, f0, f1, f2, f3);
+                default -> RawTests.lineCircle(x + u * vx, y + u * vy, x2 + u * vx, y2 + u * vy, f0, f1, f2);
+            };
+        }
+    }
+
+    private static Moved moved() {
+        return SCRATCH.get().moved;
+    }
+
+    /** A circle at (x, y) moved by u (vx, vy): does it overlap the circle (ox, oy, or)? The thread's test, set. */
+    public static OverlapAt circleCircleAt(float x, float y, float r, float vx, float vy, float ox, float oy, float or) {
+        return moved().set(Moved.CIRCLE_CIRCLE, x, y, 0, 0, vx, vy, r, ox, oy, or, 0, 0);
+    }
+
+    /** A circle at (cx, cy) moved by u (vx, vy) against a standing rectangle. */
+    public static OverlapAt circleRectAt(float cx, float cy, float r, float vx, float vy,
+                                         float rectX, float rectY, float rectW, float rectH) {
+        return moved().set(Moved.CIRCLE_RECT, cx, cy, 0, 0, vx, vy, r, rectX, rectY, rectW, rectH, 0);
+    }
+
+    /** A rectangle at (x, y) moved by u (vx, vy) against a standing circle. */
+    public static OverlapAt rectCircleAt(float x, float y, float w, float h, float vx, float vy, float cx, float cy, float r) {
+        return moved().set(Moved.RECT_CIRCLE, x, y, 0, 0, vx, vy, cx, cy, r, w, h, 0);
+    }
+
+    /** A rectangle at (x, y) moved by u (vx, vy) against a standing segment. */
+    public static OverlapAt rectSegmentAt(float x, float y, float w, float h, float vx, float vy,
+                                          float x1, float y1, float x2, float y2) {
+        return moved().set(Moved.RECT_SEGMENT, x, y, 0, 0, vx, vy, x1, y1, x2, y2, w, h);
+    }
+
+    /** A circle at (cx, cy) moved by u (vx, vy) against a standing segment. */
+    public static OverlapAt circleSegmentAt(float cx, float cy, float r, float vx, float vy,
+                                            float x1, float y1, float x2, float y2) {
+        return moved().set(Moved.CIRCLE_SEGMENT, cx, cy, 0, 0, vx, vy, x1, y1, x2, y2, r, 0);
+    }
+
+    /** A segment moved by u (vx, vy) against a standing rectangle. */
+    public static OverlapAt segmentRectAt(float x1, float y1, float x2, float y2, float vx, float vy,
+                                          float rectX, float rectY, float rectW, float rectH) {
+        return moved().set(Moved.SEGMENT_RECT, x1, y1, x2, y2, vx, vy, rectX, rectY, rectW, rectH, 0, 0);
+    }
+
+    /** A segment moved by u (vx, vy) against a standing circle. */
+    public static OverlapAt segmentCircleAt(float x1, float y1, float x2, float y2, float vx, float vy,
+                                            float cx, float cy, float r) {
+        return moved().set(Moved.SEGMENT_CIRCLE, x1, y1, x2, y2, vx, vy, cx, cy, r, 0, 0, 0);
+    }
 
     /** Does the mover, moved by {@code t} times its motion in float, overlap the obstacle? */
     @FunctionalInterface
@@ -508,7 +652,7 @@ public final class SweptPairs {
      * callers whose overlap test is not worth writing out as the search's loop.
      */
     public static float lastClear(double te, OverlapAt overlapAt) {
-        Search s = new Search(te, false);
+        Search s = search(te, false);
         while (s.searching()) {
             s.answer(overlapAt.at(s.t()));
         }
@@ -537,7 +681,7 @@ public final class SweptPairs {
     public static final class Search {
         private static final int START = 0, DOWN = 1, UP = 2, HALVE = 3, DONE = 4;
 
-        private final float start;
+        private float start;
         /** How far from the start the next step down or up goes. */
         private double d;
         /**
@@ -563,10 +707,19 @@ public final class SweptPairs {
          * mover has not moved into 0 itself.
          */
         public Search(double te, boolean exactEntry) {
+            reset(te, exactEntry);
+        }
+
+        /** This walk started again, from te, as {@link #Search(double, boolean)} starts one; returns it. */
+        public Search reset(double te, boolean exactEntry) {
             start = (float) Math.min(Math.max(te, 0), 1);
             d = Math.ulp(start);
+            clear = 0;
+            hit = 0;
+            hitPast = false;
             t = te == Slabs.INF ? Float.POSITIVE_INFINITY : start;  // -infinity (and an exact 0) gave 0
             phase = te == Slabs.INF || te == Double.NEGATIVE_INFINITY || exactEntry && te == 0 ? DONE : START;
+            return this;
         }
 
         /**

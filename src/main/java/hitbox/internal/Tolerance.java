@@ -44,8 +44,10 @@ package hitbox.internal;
  *   <li>the world: the slide's {@code Mover.SKIN} (1/64 pixel, the gap a slanted surface keeps
  *       from a body that slides on it), {@code Mover.PLANE_TIE} (1e-12 of a motion, how far
  *       into a plane its projection may round), {@code Mover.AXIS_TIE} (1e-6, how near an axis
- *       a normal is taken as the axis) and {@code CharacterBody.SLOPE_TIE} (1e-6 of a cosine,
- *       so that a 45-degree slope is ground at a 45-degree limit);</li>
+ *       a normal is taken as the axis), {@code CharacterBody.SLOPE_TIE} (1e-6 of a cosine,
+ *       so that a 45-degree slope is ground at a 45-degree limit) and
+ *       {@code GridCollider.CELL_PAD} (1e-6 of a cell, how far past its edge a ray still looks
+ *       at a grid's cell);</li>
  *   <li>guard bands and roundings: {@code RawTests.FILTER_BELOW} and
  *       {@code RawTests.FILTER_ABOVE} (1 -/+ 2^-18, the band outside which the float squares
  *       of {@code Collide.circleCircle} decide) and {@code RawTests.FILTER_TINY} (2^-100, below

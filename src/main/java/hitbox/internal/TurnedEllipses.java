@@ -74,9 +74,22 @@ public final class TurnedEllipses {
 
     /** The flat turned ellipse's segment (one radius 0, not aligned): ends rounded to float. */
     public static Segment flatSegment(Ellipse e) {
+        double[] xy = flatEnds(e, new double[4]);
+        return new Segment((float) xy[0], (float) xy[1], (float) xy[2], (float) xy[3]);
+    }
+
+    /**
+     * {@link #flatSegment}'s ends, the floats it holds, into {@code out} (x1, y1, x2, y2),
+     * for a caller that makes no segment.
+     */
+    public static double[] flatEnds(Ellipse e, double[] out) {
         double c = Math.cos(e.angle()), s = Math.sin(e.angle());
         double hx = e.rx() * c - e.ry() * s, hy = e.rx() * s + e.ry() * c; // one term is 0
-        return new Segment((float) (e.x() - hx), (float) (e.y() - hy), (float) (e.x() + hx), (float) (e.y() + hy));
+        out[0] = (float) (e.x() - hx);
+        out[1] = (float) (e.y() - hy);
+        out[2] = (float) (e.x() + hx);
+        out[3] = (float) (e.y() + hy);
+        return out;
     }
 
     /**
@@ -127,8 +140,11 @@ public final class TurnedEllipses {
                 if (r.w() == 0 || r.h() == 0) {
                     yield segmentIn(fr, a, b, r.x(), r.y(), right, bottom, false);
                 }
-                double[] xy = {r.x(), r.y(), right, r.y(), right, bottom, r.x(), bottom};
-                yield outlineIn(fr, a, b, xy) || RawTests.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
+                // Its outline's edges in outlineIn's order (from the last corner round), no array made.
+                double x = r.x(), y = r.y();
+                yield segmentIn(fr, a, b, x, bottom, x, y, false) || segmentIn(fr, a, b, x, y, right, y, false)
+                        || segmentIn(fr, a, b, right, y, right, bottom, false) || segmentIn(fr, a, b, right, bottom, x, bottom, false)
+                        || RawTests.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
             }
             case SEGMENT -> {
                 Segment g = (Segment) other;
@@ -136,7 +152,7 @@ public final class TurnedEllipses {
             }
             case POLYGON -> {
                 float[] raw = HiddenParts.raw((Polygon) other);
-                yield outlineIn(fr, a, b, Polygons.toDouble(raw)) || Polygons.contains(raw, e.x(), e.y());
+                yield outlineIn(fr, a, b, HiddenParts.corners((Polygon) other)) || Polygons.contains(raw, e.x(), e.y());
             }
         };
     }

@@ -23,7 +23,7 @@ import java.util.List;
  * <p>The gap between convex pieces is {@code -(h_A(n) + h_B(-n))} maximised over the
  * direction n, as in {@link Supports}; a concave polygon obstacle is its convex pieces.
  *
- * <p>This class is longer than most (about 470 lines) because it holds both forms, a mover against a
+ * <p>This class is longer than most (about 510 lines) because it holds both forms, a mover against a
  * standing shape and two bodies that both move and turn, which share the gap searches and
  * the advancement's stopping rule; split apart, each would need the other's private gap code.
  */
@@ -115,7 +115,8 @@ public final class TurningSweep {
         if (Overlaps.test(a, b)) {
             return SweptPairs.OVERLAPPING;
         }
-        List<float[]> piecesA = floatPieces(a);
+        Scratch sc = SCRATCH.get();
+        List<float[]> piecesA = floatPieces(a, sc.piecesA);
         double spinA = Math.abs(turnA) * reach(HiddenParts.raw(a), pax, pay);
         double spinB = Math.abs(turnB) * reach(HiddenParts.raw(b), pbx, pby);
         double rvx = (double) vax - vbx, rvy = (double) vay - vby;
@@ -123,10 +124,10 @@ public final class TurningSweep {
         if (speed == 0) {
             return null;
         }
-        List<float[]> piecesB = floatPieces(b);
-        List<double[]> pa = placeholders(piecesA), at = placeholders(piecesB);
+        List<float[]> piecesB = floatPieces(b, sc.piecesB);
+        List<double[]> pa = placeholders(piecesA, sc.placedA, sc.byLengthA), at = placeholders(piecesB, sc.placedB, sc.byLengthB);
         double t = 0;
-        double[] normal = new double[2], scratch = new double[2];
+        double[] normal = sc.normal, scratch = sc.other;
         for (int step = 0; step < MAX_STEPS; step++) {
             double gap = gapBetween(piecesA, pax, pay, vax, vay, turnA, piecesB, pbx, pby, vbx, vby, turnB, t, pa, at, normal);
             if (Double.isNaN(gap)) {
@@ -165,9 +166,16 @@ public final class TurningSweep {
         return reach;
     }
 
-    /** A polygon's convex pieces as float vertex lists (a convex one is one piece), exact copies. */
-    private static List<float[]> floatPieces(Polygon p) {
-        List<float[]> out = new ArrayList<>();
+    /**
+     * A polygon's convex pieces as float vertex lists (a convex one is one piece: its own
+     * vertices, only read), exact copies, into {@code out}.
+     */
+    private static List<float[]> floatPieces(Polygon p, List<float[]> out) {
+        out.clear();
+        if (p.isConvex()) {
+            out.add(HiddenParts.raw(p));
+            return out;
+        }
         for (Object piece : ConvexSweep.pieces(p)) {
             double[] xy = (double[]) piece;
             float[] f = new float[xy.length];
@@ -179,14 +187,47 @@ public final class TurningSweep {
         return out;
     }
 
-    /** An array per piece, for its vertices placed at a time. */
-    private static List<double[]> placeholders(List<float[]> pieces) {
-        List<double[]> out = new ArrayList<>();
-        for (float[] f : pieces) {
-            out.add(new double[f.length]);
+    /**
+     * An array per piece, for its vertices placed at a time, into {@code out}: the thread's
+     * own, one per length, for a polygon of one piece (most polygons); made for several.
+     */
+    private static List<double[]> placeholders(List<float[]> pieces, List<double[]> out, ByLength kept) {
+        out.clear();
+        for (int i = 0; i < pieces.size(); i++) {
+            int n = pieces.get(i).length;
+            out.add(pieces.size() == 1 ? kept.of(n) : new double[n]);
         }
         return out;
     }
+
+    /** Arrays of doubles kept by their length. */
+    private static final class ByLength {
+        private double[][] kept = new double[0][];
+
+        /** The kept array of exactly n doubles (the gap tests read the whole array). */
+        double[] of(int n) {
+            if (n >= kept.length) {
+                kept = java.util.Arrays.copyOf(kept, Math.max(n + 1, 2 * kept.length));
+            }
+            if (kept[n] == null) {
+                kept[n] = new double[n];
+            }
+            return kept[n];
+        }
+    }
+
+    /**
+     * A thread's lists and arrays for the sweep of two movers, so that two convex polygons'
+     * sweep makes nothing but its hit.
+     */
+    private static final class Scratch {
+        final List<float[]> piecesA = new ArrayList<>(), piecesB = new ArrayList<>();
+        final List<double[]> placedA = new ArrayList<>(), placedB = new ArrayList<>();
+        final ByLength byLengthA = new ByLength(), byLengthB = new ByLength();
+        final double[] normal = new double[2], other = new double[2];
+    }
+
+    private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
 
     /**
      * The least gap at time t between a's pieces and b's, each placed by its body's motion
@@ -201,8 +242,8 @@ public final class TurningSweep {
         double gap = Double.POSITIVE_INFINITY;
         for (int i = 0; i < piecesA.size(); i++) {
             double[] a = at(piecesA.get(i), pax, pay, vax, vay, turnA, t, pa.get(i));
-            for (double[] b : pb) {
-                gap = Math.min(gap, polygonGap(a, b, normal, gap));
+            for (int k = 0; k < pb.size(); k++) {
+                gap = Math.min(gap, polygonGap(a, pb.get(k), normal, gap));
             }
         }
         return gap;
