@@ -57,10 +57,6 @@ import hitbox.internal.*;
  * {@link Shape#overlaps} to test it, or a sweep or ray cast to find where a moving shape
  * first touches it.
  *
- * <p>This class is longer than most (about 450 lines): besides the record, it is the home of
- * the contact's raw-float forms for the tutorial's pairs, of the tie rule's statement, and of
- * {@link #manifold}, each with the documentation a learner reads.
- *
  * @param nx    the normal's x: the normal has length 1 and points from a to b
  * @param ny    the normal's y (y grows down, so ny &gt; 0 means b is below a)
  * @param depth how far apart to move the shapes along the normal so that they just touch,

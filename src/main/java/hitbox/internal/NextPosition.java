@@ -1,7 +1,5 @@
 package hitbox.internal;
 
-import hitbox.Collide;
-
 /**
  * The tutorial's next-position check against one box, one axis at a time, in
  * {@link SideSets}' bits ({@code LEFT_RIGHT} for a blocked move across, {@code TOP_BOTTOM}

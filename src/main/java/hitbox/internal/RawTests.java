@@ -5,6 +5,11 @@ package hitbox.internal;
  * exact, and section 10's pairs. {@code Collide} holds the promise (the javadoc, the names a
  * learner reads) and answers by calling these; the kernels call these directly, so no kernel
  * calls back up into the API. Each method's contract is its {@code Collide} namesake's.
+ *
+ * <p>This class is longer than most (about 450 lines): it is every raw test's body, one
+ * method per pair, the few the API no longer names (a rectangle first against a circle, a
+ * circle or a rectangle holding the other) kept because the browser's plain-float forms
+ * answer by them.
  */
 public final class RawTests {
     private RawTests() {
