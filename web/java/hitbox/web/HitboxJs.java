@@ -16,7 +16,8 @@ import org.teavm.jso.JSExportClasses;
  * are made here; the classes listed below bring their own methods: Collide (the tutorial's
  * tests), Shape, World, Body and Grid.
  */
-@JSExportClasses({CollideJs.class, ShapeJs.class, WorldJs.class, BodyJs.class, GridJs.class})
+@JSExportClasses({CollideJs.class, SnapJs.class, ShapeJs.class, WorldJs.class, BodyJs.class, GridJs.class,
+    CharacterJs.class})
 public final class HitboxJs {
     private HitboxJs() {
     }
