@@ -89,7 +89,7 @@ public final class Supports {
      * an angle round to about 6e-17, not 0, and the exact axis keeps a box's support exact.
      */
     private static double[] unit(double t) {
-        double nx = Math.cos(t), ny = Math.sin(t);
+        double nx = StrictMath.cos(t), ny = StrictMath.sin(t);
         if (Math.abs(nx) < Tolerance.AXIS_SNAP) {
             return new double[] {0, Math.signum(ny)};
         }
