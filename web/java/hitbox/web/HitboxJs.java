@@ -164,4 +164,28 @@ public final class HitboxJs {
     public static int[] fmaVectors(int seed, int count) {
         return Vectors.fmaCases(seed, count);
     }
+
+    /**
+     * The sines' and cosines' records (Vectors.trigCases), for the bit-for-bit test.
+     *
+     * @param seed  the seed
+     * @param count how many angles
+     * @return the records
+     */
+    @JSExport
+    public static int[] trigVectors(int seed, int count) {
+        return Vectors.trigCases(seed, count);
+    }
+
+    /**
+     * The platform methods' records (Vectors.mathCases), for the bit-for-bit test.
+     *
+     * @param seed  the seed
+     * @param count how many calls
+     * @return the records
+     */
+    @JSExport
+    public static int[] mathVectors(int seed, int count) {
+        return Vectors.mathCases(seed, count);
+    }
 }
