@@ -38,6 +38,8 @@ export function flat(points: Points): number[];
 export function separationCircleCircle(x1: number, y1: number, r1: number, x2: number, y2: number, r2: number): number;
 export function sweepRectRect(x: number, y: number, w: number, h: number, vx: number, vy: number,
                               ox: number, oy: number, ow: number, oh: number): number;
+/** The WebAssembly module's own exports, for the tests; not part of the API. */
+export const raw: unknown;
 /** Milliseconds the module took to load and compile. */
 export const loadMillis: number;
 
@@ -100,6 +102,8 @@ export interface BodyHit { body: Body; distance: number; x: number; y: number; n
 export class World {
   constructor();
   add(shape: Shape): Body;
+  /** A body that walks: stands on ground, walks slopes, climbs steps (Java's CharacterBody). */
+  addCharacter(shape: Shape): Character;
   addGrid(grid: Grid): Body;
   remove(body: Body): void;
   size(): number;
@@ -109,6 +113,41 @@ export class World {
   overlapping(body: Body): Body[];
   raycast(ox: number, oy: number, dx: number, dy: number, maxDistance: number): BodyHit | null;
 }
+
+/** The values a Character's setters set. */
+export interface CharacterSettings { maxSlope: number; stepHeight: number; snap: number; upX: number; upY: number; }
+
+/** A body that walks (world.addCharacter): move every frame, then read onGround, onWall, onCeiling. */
+export interface Character {
+  readonly body: Body;
+  readonly onGround: boolean;
+  readonly onWall: boolean;
+  readonly onCeiling: boolean;
+  /** The body it stands on, or null. */
+  readonly ground: Body | null;
+  /** The normal of the ground it stands on, pointing out of it, or null. */
+  readonly groundNormal: { x: number; y: number } | null;
+  readonly settings: CharacterSettings;
+  move(dx: number, dy: number, reaction: Reaction | null): Collision[];
+  /** Degrees, from 0 to less than 90 (45 by default): steeper surfaces are walls. */
+  maxSlope(degrees: number): Character;
+  /** Pixels (0 by default): how high a step it climbs. */
+  stepHeight(px: number): Character;
+  /** Pixels (0 by default): how far down it keeps to the ground walking down. */
+  snap(px: number): Character;
+  /** Which way is up ((0, -1) by default); (0, 0) for a top-down game. */
+  up(x: number, y: number): Character;
+}
+
+/** Snapping to a ground line (tutorial section 7). */
+export const Snap: {
+  /** The top that stands a rectangle of height h on the ground line, never in it. */
+  standY(h: number, groundY: number): number;
+  /** Whether the rectangle's bottom is at or below the ground line (y + h >= groundY). */
+  onGround(y: number, h: number, groundY: number): boolean;
+  /** Its top after landing: standY when on the ground, else y. */
+  landY(y: number, h: number, groundY: number): number;
+};
 
 export class Grid {
   constructor(cols: number, rows: number, cellSize: number);

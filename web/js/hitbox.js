@@ -23,6 +23,8 @@ export const Collide = x.Collide;
 export const World = x.World;
 /** A grid of cells: terrain, moves that slide along solid cells, line of sight, paths. */
 export const Grid = x.Grid;
+/** Snapping to a ground line (tutorial section 7): Snap.onGround(y, h, groundY), Snap.standY(h, groundY), Snap.landY(y, h, groundY). */
+export const Snap = x.Snap;
 
 export { flat };
 

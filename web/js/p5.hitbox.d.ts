@@ -41,7 +41,8 @@ export interface CollideFunctions {
   collidePointArcVector(p: V, a: V, arcRadius: number, arcHeading: number, arcAngle: number, buffer?: number): boolean;
 }
 export const functions: CollideFunctions;
-export function hitboxAddon(p5: any, fn: any): void;
+/** The add-on for p5 2.x: p5.registerAddon(hitboxAddon). Setup waits for the module. */
+export function hitboxAddon(p5: any, fn: any, lifecycles?: any): void;
 export function addTo(target: object): void;
 /** Resolves to the Hitbox module once its WebAssembly has loaded. */
 export const ready: Promise<typeof import('./hitbox.js')>;

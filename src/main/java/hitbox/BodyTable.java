@@ -45,7 +45,7 @@ final class BodyTable {
 
     /** A new body, placed by its pose; checked before anything changes. */
     Body add(Shape home, double px, double py, double tx, double ty, float angle, Grid grid) {
-        double cos = angle == 0 ? 1 : Math.cos(angle), sin = angle == 0 ? 0 : Math.sin(angle);
+        double cos = angle == 0 ? 1 : StrictMath.cos(angle), sin = angle == 0 ? 0 : StrictMath.sin(angle);
         Poses.extents(home, px, py, cos, sin, scratch);
         float[] box = box(px + tx, py + ty, scratch, "x, y and angle");
         int id = freeCount > 0 ? freeIds[--freeCount] : nextId++;
@@ -119,8 +119,8 @@ final class BodyTable {
         double cos = b.cos, sin = b.sin;
         double[] ex = b.extents;
         if (angle != b.angle) {
-            cos = angle == 0 ? 1 : Math.cos(angle);
-            sin = angle == 0 ? 0 : Math.sin(angle);
+            cos = angle == 0 ? 1 : StrictMath.cos(angle);
+            sin = angle == 0 ? 0 : StrictMath.sin(angle);
             Poses.extents(b.home, b.pivotX, b.pivotY, cos, sin, scratch);
             ex = scratch;
         }

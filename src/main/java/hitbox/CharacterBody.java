@@ -45,7 +45,7 @@ public final class CharacterBody {
 
     private final Body body;
     private float maxSlope = 45;
-    private double cosMaxSlope = Math.cos(Math.toRadians(45));
+    private double cosMaxSlope = StrictMath.cos(Math.toRadians(45));
     private float stepHeight;
     private float snap;
     private double upX;
@@ -337,7 +337,7 @@ public final class CharacterBody {
             throw new IllegalArgumentException("degrees must be less than 90 (a wall is not ground), was " + degrees);
         }
         maxSlope = degrees;
-        cosMaxSlope = Math.cos(Math.toRadians(degrees));
+        cosMaxSlope = StrictMath.cos(Math.toRadians(degrees));
         return this;
     }
 

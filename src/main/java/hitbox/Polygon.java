@@ -187,8 +187,8 @@ public final class Polygon implements Shape {
         Check.positive("width w", w);
         Check.positive("height h", h);
         Check.finite("angle", angle);
-        double cos = Math.cos(angle);
-        double sin = Math.sin(angle);
+        double cos = StrictMath.cos(angle);
+        double sin = StrictMath.sin(angle);
         double hx = w / 2.0;
         double hy = h / 2.0;
         double[] corners = {-hx, -hy, hx, -hy, hx, hy, -hx, hy};
@@ -243,8 +243,8 @@ public final class Polygon implements Shape {
         float[] xy = new float[2 * sides];
         for (int i = 0; i < sides; i++) {
             double a = angle + 2 * Math.PI * i / sides;
-            xy[2 * i] = (float) (cx + radius * Math.cos(a));
-            xy[2 * i + 1] = (float) (cy + radius * Math.sin(a));
+            xy[2 * i] = (float) (cx + radius * StrictMath.cos(a));
+            xy[2 * i + 1] = (float) (cy + radius * StrictMath.sin(a));
         }
         return rounded(xy, "cx = " + cx + ", cy = " + cy + ", radius = " + radius + ", sides = " + sides + ", angle = " + angle);
     }

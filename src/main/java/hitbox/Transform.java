@@ -205,7 +205,7 @@ public final class Transform {
                 default -> new double[] {0, -1};
             };
         }
-        return new double[] {Math.cos(angle), Math.sin(angle)};
+        return new double[] {StrictMath.cos(angle), StrictMath.sin(angle)};
     }
 
     /**

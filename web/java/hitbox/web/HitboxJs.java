@@ -16,7 +16,8 @@ import org.teavm.jso.JSExportClasses;
  * are made here; the classes listed below bring their own methods: Collide (the tutorial's
  * tests), Shape, World, Body and Grid.
  */
-@JSExportClasses({CollideJs.class, ShapeJs.class, WorldJs.class, BodyJs.class, GridJs.class})
+@JSExportClasses({CollideJs.class, SnapJs.class, ShapeJs.class, WorldJs.class, BodyJs.class, GridJs.class,
+    CharacterJs.class})
 public final class HitboxJs {
     private HitboxJs() {
     }
@@ -162,5 +163,29 @@ public final class HitboxJs {
     @JSExport
     public static int[] fmaVectors(int seed, int count) {
         return Vectors.fmaCases(seed, count);
+    }
+
+    /**
+     * The sines' and cosines' records (Vectors.trigCases), for the bit-for-bit test.
+     *
+     * @param seed  the seed
+     * @param count how many angles
+     * @return the records
+     */
+    @JSExport
+    public static int[] trigVectors(int seed, int count) {
+        return Vectors.trigCases(seed, count);
+    }
+
+    /**
+     * The platform methods' records (Vectors.mathCases), for the bit-for-bit test.
+     *
+     * @param seed  the seed
+     * @param count how many calls
+     * @return the records
+     */
+    @JSExport
+    public static int[] mathVectors(int seed, int count) {
+        return Vectors.mathCases(seed, count);
     }
 }

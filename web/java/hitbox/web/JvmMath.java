@@ -26,6 +26,10 @@ import java.util.Random;
  *     <td>{@link #toRadians}: one product, as the JDK</td></tr>
  * <tr><td>{@code -x} ({@code float}, {@code double})</td><td>{@code 0 - x}: +0.0 for -(+0.0)</td>
  *     <td>{@link #negate(float)}, {@link #negate(double)}: the sign bit flipped</td></tr>
+ * <tr><td>{@code Math.ulp(double)}</td><td>{@code Double.MIN_VALUE} for every negative number</td>
+ *     <td>{@link #ulp}</td></tr>
+ * <tr><td>{@code Math.scalb(double, int)}</td><td>infinity for some large finite results</td>
+ *     <td>{@link #scalb}: the JDK's steps</td></tr>
  * <tr><td>{@code Random.nextInt(int)}</td><td>another bounding method</td>
  *     <td>{@link #nextInt}: the one {@code java.util.Random} specifies</td></tr>
  * </table>
@@ -38,6 +42,49 @@ public final class JvmMath {
     private static final double DEGREES_TO_RADIANS = 0.017453292519943295;
 
     private JvmMath() {
+    }
+
+    /**
+     * {@code Math.ulp(double)}: the gap from |d| to the next double away from zero. TeaVM's
+     * answers {@code Double.MIN_VALUE} for every negative d.
+     *
+     * @param d the number
+     * @return its ulp: NaN for NaN, infinity for the infinities
+     */
+    public static double ulp(double d) {
+        int e = (int) (Double.doubleToRawLongBits(d) >>> 52) & 0x7ff;
+        if (e == 0x7ff) {
+            return Math.abs(d);
+        }
+        if (e <= 52) {   // the ulp is below the smallest normal: a subnormal power of two
+            return Double.longBitsToDouble(1L << Math.max(0, e - 1));
+        }
+        return Double.longBitsToDouble((long) (e - 52) << 52);
+    }
+
+    /**
+     * {@code Math.scalb(double, int)}: d times 2^n, in the JDK's steps (the remainder of n by 512
+     * first, then 2^512 or 2^-512 at a time), so that a result near or below the smallest
+     * normal rounds where the JVM's does. TeaVM's answers infinity for some large finite results
+     * (scalb(-0.74, 1018) is -Infinity there).
+     *
+     * @param d the number
+     * @param n the power of two
+     * @return d * 2^n, rounded as the JVM rounds it
+     */
+    public static double scalb(double d, int n) {
+        // Beyond this every finite non-zero d has gone to 0 or infinity, and the loop stays short.
+        int limit = 2099;
+        n = Math.max(-limit, Math.min(limit, n));
+        int rest = n % 512;   // the sign of n, as the JDK's
+        d *= Double.longBitsToDouble((long) (1023 + rest) << 52);
+        n -= rest;
+        double step = n < 0 ? 0x1p-512 : 0x1p512;
+        while (n != 0) {
+            d *= step;
+            n -= n < 0 ? -512 : 512;
+        }
+        return d;
     }
 
     /**

@@ -46,7 +46,7 @@ public final class Vectors {
     private int[] out = new int[1 << 16];
     private int size;
     private int[] ends;
-    /** Does the case being made reach Math.sin or Math.cos (a turned ellipse, a sweep, a world move)? */
+    /** Does the case being made reach sine or cosine (a turned ellipse, a sweep, a world move)? */
     private boolean turning;
     private boolean[] turned;
 
@@ -85,10 +85,10 @@ public final class Vectors {
     }
 
     /**
-     * Which cases reach {@code Math.sin} and {@code Math.cos}: those with a turned ellipse, and
-     * the sweeps and world moves (the curved sweeps search directions by angle). The JVM
-     * answers those from its own intrinsics, the browser from its JavaScript engine's, and the
-     * Java specification lets either differ from the correctly rounded value by an ulp.
+     * Which cases reach sine and cosine: those with a turned ellipse, and the sweeps and world
+     * moves (the curved sweeps search directions by angle). The library calls
+     * {@code StrictMath}'s, fdlibm's on every JVM and {@link Fdlibm} on the browser build,
+     * so these must be alike too; the test counts them, to say how many there were.
      *
      * @param seed  the generator's seed
      * @param count how many cases
@@ -544,6 +544,154 @@ public final class Vectors {
         int[] result = new int[v.size];
         System.arraycopy(v.out, 0, result, 0, v.size);
         return result;
+    }
+
+    /**
+     * {@code StrictMath.sin} and {@code cos} of angles from a seed: small, medium, huge, near
+     * multiples of pi/2 (where the reduction cancels), and any double. On the browser build
+     * these calls go to {@link Fdlibm}; on the JVM, to its fdlibm.
+     *
+     * @param seed  the generator's seed
+     * @param count how many angles
+     * @return the bits of three doubles for each angle: it, its sine, its cosine
+     */
+    public static int[] trigCases(long seed, int count) {
+        Vectors v = new Vectors(seed);
+        for (int i = 0; i < count; i++) {
+            double x = v.trigOperand();
+            v.put(x);
+            v.put(StrictMath.sin(x));
+            v.put(StrictMath.cos(x));
+        }
+        int[] result = new int[v.size];
+        System.arraycopy(v.out, 0, result, 0, v.size);
+        return result;
+    }
+
+    /**
+     * The platform methods the library calls, by {@link #mathCases}' numbers (all but
+     * {@code Math.tan}, which only CharacterBody's step-up height reaches: docs/browser.md).
+     */
+    static final String[] MATH_OPS = {
+        "Math.min(double, double)", "Math.max(double, double)", "Math.min(float, float)", "Math.max(float, float)",
+        "Math.abs(double)", "Math.abs(float)", "Math.sqrt", "Math.nextUp(double)", "Math.nextDown(double)",
+        "Math.nextUp(float)", "Math.nextDown(float)", "Math.ulp(double)", "Math.ulp(float)", "Math.atan2",
+        "Math.signum(double)", "Math.signum(float)", "Math.floor", "Math.copySign(double, double)", "Math.scalb",
+        "(int) double", "(long) double", "(int) float", "(float) double", "Math.floorMod(int, int)",
+        "Math.floorDiv(int, int)", "Math.ceil", "Math.copySign(float, float)",
+    };
+
+    /**
+     * The platform's own methods that the library calls, on awkward arguments (zeros of both
+     * signs, NaN, infinities, the smallest and largest numbers, near-ties, and the library's
+     * usual magnitudes): TeaVM's class library answers some of them otherwise than the JVM.
+     *
+     * @param seed  the generator's seed
+     * @param count how many calls
+     * @return for each call seven ints: which method ({@link #MATH_OPS}), its two arguments'
+     *         bits as doubles, and its answer's bits as a double
+     */
+    public static int[] mathCases(long seed, int count) {
+        Vectors v = new Vectors(seed);
+        for (int i = 0; i < count; i++) {
+            int op = i % MATH_OPS.length;
+            double a = v.mathOperand(), b = v.mathOperand();
+            float fa = (float) a, fb = (float) b;
+            int ia = (int) v.next(), ib = v.below(3) == 0 ? v.below(7) - 3 : (int) v.next();
+            if (ib == 0) {
+                ib = 1;
+            }
+            double r;
+            switch (op) {
+                case 0: r = Math.min(a, b); break;
+                case 1: r = Math.max(a, b); break;
+                case 2: r = Math.min(fa, fb); break;
+                case 3: r = Math.max(fa, fb); break;
+                case 4: r = Math.abs(a); break;
+                case 5: r = Math.abs(fa); break;
+                case 6: r = Math.sqrt(a); break;
+                case 7: r = Math.nextUp(a); break;
+                case 8: r = Math.nextDown(a); break;
+                case 9: r = Math.nextUp(fa); break;
+                case 10: r = Math.nextDown(fa); break;
+                case 11: r = Math.ulp(a); break;
+                case 12: r = Math.ulp(fa); break;
+                case 13: r = Math.atan2(a, b); break;
+                case 14: r = Math.signum(a); break;
+                case 15: r = Math.signum(fa); break;
+                case 16: r = Math.floor(a); break;
+                case 17: r = Math.copySign(a, b); break;
+                case 18: r = Math.scalb(a, ib % 2200); b = ib % 2200; break;
+                case 19: r = (int) a; break;
+                case 20: r = (long) a; break;
+                case 21: r = (int) fa; break;
+                case 22: r = fa; break;
+                case 23: r = Math.floorMod(ia, ib); a = ia; b = ib; break;
+                case 24: r = Math.floorDiv(ia, ib); a = ia; b = ib; break;
+                case 25: r = Math.ceil(a); break;
+                default: r = Math.copySign(fa, fb); break;
+            }
+            v.put(op);
+            v.put(a);
+            v.put(b);
+            v.put(r);
+        }
+        int[] result = new int[v.size];
+        System.arraycopy(v.out, 0, result, 0, v.size);
+        return result;
+    }
+
+    private double mathOperand() {
+        int r = below(8);
+        if (r == 0) {
+            double[] odd = {0.0, -0.0, Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.MIN_VALUE,
+                -Double.MIN_VALUE, Double.MAX_VALUE, Double.MIN_NORMAL, 1.0, -1.0, 0.5, -0.5, 2.5, Float.MIN_VALUE,
+                Float.MAX_VALUE, Float.MIN_NORMAL, 0x1p31, -0x1p31, 0x1p63, 1e300, -1e-300};
+            return odd[below(odd.length)];
+        }
+        double unit = (next() >>> 11) * 0x1p-53;
+        if (r < 5) {
+            return (float) ((unit - 0.5) * 64);           // the library's floats
+        }
+        if (r < 7) {
+            return (unit - 0.5) * 64;                     // doubles of the same size
+        }
+        return fmaOperand();                              // any double
+    }
+
+    /**
+     * The angle {@link #trigCases} asks about at an index, for a failure message.
+     *
+     * @param seed  the generator's seed
+     * @param index which angle
+     * @return the angle
+     */
+    public static double trigAngle(long seed, int index) {
+        Vectors v = new Vectors(seed);
+        double x = 0;
+        for (int i = 0; i <= index; i++) {
+            x = v.trigOperand();
+        }
+        return x;
+    }
+
+    private double trigOperand() {
+        double unit = (next() >>> 11) * 0x1p-53;
+        switch (below(6)) {
+            case 0:
+                return (unit - 0.5) * 16;                                  // the library's angles
+            case 1:
+                return (float) ((unit - 0.5) * 4000);                      // a float angle
+            case 2:
+                return (unit - 0.5) * 0x1p21;                              // medium: the reduction's 33-bit pi/2
+            case 3:
+                // near n * pi/2: the reduction cancels most bits
+                return Math.nextAfter((1 + below(100_000)) * (Math.PI / 2), below(2) == 0 ? 0 : 1e9) + (below(4) - 2) * Math.ulp(1.0);
+            case 4:
+                return Math.scalb(unit - 0.5, below(1100) - 60);            // up to 2^1039: the long reduction
+            default:
+                return fmaOperand();                                       // any double, NaN and infinities too
+        }
     }
 
     private double fmaOperand() {

@@ -3,6 +3,7 @@ package hitbox.web;
 import hitbox.Body;
 import hitbox.BodyEvent;
 import hitbox.BodyHit;
+import hitbox.CharacterBody;
 import hitbox.Collision;
 import hitbox.CollisionFilter;
 import hitbox.Ray;
@@ -62,10 +63,44 @@ public final class WorldJs {
         bodies.remove(body.body);
     }
 
+    /**
+     * Adds a body that walks: it stands on ground, walks slopes, climbs steps
+     * ({@link hitbox.CharacterBody}).
+     *
+     * @param shape the character's shape
+     * @return the new character; its body is {@code character.body}
+     */
+    @JSExport
+    public CharacterJs addCharacter(ShapeJs shape) {
+        CharacterBody c = world.addCharacter(shape.shape);
+        return new CharacterJs(c, this, wrap(c.body()));
+    }
+
     private BodyJs wrap(Body b) {
         BodyJs js = new BodyJs(b, next++);
         bodies.put(b, js);
         return js;
+    }
+
+    /** The wrapper of a body of this world. */
+    BodyJs wrapped(Body b) {
+        return bodies.get(b);
+    }
+
+    /** The filter that reacts to every body as the string says, null for "SLIDE". */
+    static CollisionFilter filter(String reaction) {
+        Reaction r = reaction == null ? Reaction.SLIDE : Reaction.valueOf(reaction);
+        return (m, o) -> r;
+    }
+
+    /** A move's collisions as JavaScript objects. */
+    JSArray<JSObject> collisions(List<Collision> met) {
+        JSArray<JSObject> out = JSArray.create();
+        for (Collision c : met) {
+            out.push(collision(bodies.get(c.other()), c.reaction().name(), c.hit().t(), c.hit().nx(), c.hit().ny(),
+                    c.hit().side().name(), c.x(), c.y(), c.landed()));
+        }
+        return out;
     }
 
     /** @return how many bodies the world holds */
@@ -98,15 +133,7 @@ public final class WorldJs {
      */
     @JSExport
     public JSArray<JSObject> move(BodyJs body, float dx, float dy, String reaction) {
-        Reaction r = reaction == null ? Reaction.SLIDE : Reaction.valueOf(reaction);
-        CollisionFilter filter = (m, o) -> r;
-        List<Collision> met = world.move(body.body, dx, dy, filter);
-        JSArray<JSObject> out = JSArray.create();
-        for (Collision c : met) {
-            out.push(collision(bodies.get(c.other()), c.reaction().name(), c.hit().t(), c.hit().nx(), c.hit().ny(),
-                    c.hit().side().name(), c.x(), c.y(), c.landed()));
-        }
-        return out;
+        return collisions(world.move(body.body, dx, dy, filter(reaction)));
     }
 
     /**

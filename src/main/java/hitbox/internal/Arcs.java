@@ -67,9 +67,9 @@ public final class Arcs {
         double s = arc[0], e = arc[1];
         double u = ((double) px - x) / a, v = ((double) py - y) / b;
         if (mode == OPEN || mode == CHORD) {
-            double ax = Math.cos(s), ay = Math.sin(s);
-            double bx = Math.cos(s + e), by = Math.sin(s + e);
-            double mx = Math.cos(s + e / 2), my = Math.sin(s + e / 2);
+            double ax = StrictMath.cos(s), ay = StrictMath.sin(s);
+            double bx = StrictMath.cos(s + e), by = StrictMath.sin(s + e);
+            double mx = StrictMath.cos(s + e / 2), my = StrictMath.sin(s + e / 2);
             double side = (bx - ax) * (v - ay) - (by - ay) * (u - ax);
             double arcSide = (bx - ax) * (my - ay) - (by - ay) * (mx - ax);
             return side != 0 && (side > 0) == (arcSide > 0);

@@ -136,7 +136,7 @@ public final class Containment {
                     yield box(x, loX, hiX, y, loY, hiY, TurnedEllipses.flatSegment(e));
                 }
                 // A turned ellipse's half-width is a square root: within the tolerance.
-                double c = Math.cos(e.angle()), s = Math.sin(e.angle());
+                double c = StrictMath.cos(e.angle()), s = StrictMath.sin(e.angle());
                 double hw = Math.hypot(e.rx() * c, e.ry() * s), hh = Math.hypot(e.rx() * s, e.ry() * c);
                 yield nearWithin(e.x(), hw, x, loX, hiX) && nearWithin(e.y(), hh, y, loY, hiY);
             }
@@ -302,7 +302,7 @@ public final class Containment {
                 return false;
             }
             java.util.function.DoubleUnaryOperator minus = t -> {
-                double u = a * Math.cos(t), v = b * Math.sin(t);
+                double u = a * StrictMath.cos(t), v = b * StrictMath.sin(t);
                 return -gauge(dx + u * cos - v * sin, dy + u * sin + v * cos);
             };
             double step = 2 * Math.PI / SAMPLES;
@@ -358,7 +358,7 @@ public final class Containment {
 
         @Override
         boolean ellipse(Ellipse e) {
-            return r > 0 && outline(e.x(), e.y(), e.rx(), e.ry(), Math.cos(e.angle()), Math.sin(e.angle()));
+            return r > 0 && outline(e.x(), e.y(), e.rx(), e.ry(), StrictMath.cos(e.angle()), StrictMath.sin(e.angle()));
         }
 
         @Override
@@ -407,7 +407,7 @@ public final class Containment {
 
         @Override
         boolean ellipse(Ellipse e) {
-            return r > 0 && outline(e.x(), e.y(), e.rx(), e.ry(), Math.cos(e.angle()), Math.sin(e.angle()));
+            return r > 0 && outline(e.x(), e.y(), e.rx(), e.ry(), StrictMath.cos(e.angle()), StrictMath.sin(e.angle()));
         }
 
         @Override
@@ -469,8 +469,8 @@ public final class Containment {
         Oval(Ellipse e) {
             this.e = e;
             boolean aligned = TurnedEllipses.aligned(e);
-            this.cos = aligned ? 1 : Math.cos(e.angle());
-            this.sin = aligned ? 0 : Math.sin(e.angle());
+            this.cos = aligned ? 1 : StrictMath.cos(e.angle());
+            this.sin = aligned ? 0 : StrictMath.sin(e.angle());
         }
 
         @Override
@@ -491,7 +491,7 @@ public final class Containment {
 
         @Override
         boolean ellipse(Ellipse f) {
-            return outline(f.x(), f.y(), f.rx(), f.ry(), Math.cos(f.angle()), Math.sin(f.angle()));
+            return outline(f.x(), f.y(), f.rx(), f.ry(), StrictMath.cos(f.angle()), StrictMath.sin(f.angle()));
         }
 
         @Override

@@ -317,7 +317,7 @@ public final class ConvexSweep {
             return switch (ShapeKind.of(shape)) {
                 case ELLIPSE -> {
                     Ellipse e = (Ellipse) shape;
-                    double c = e.angle() == 0 ? 1 : Math.cos(e.angle()), s = e.angle() == 0 ? 0 : Math.sin(e.angle());
+                    double c = e.angle() == 0 ? 1 : StrictMath.cos(e.angle()), s = e.angle() == 0 ? 0 : StrictMath.sin(e.angle());
                     yield new Round(shape, false, e.x(), e.y(), 0, 0, e.rx(), e.ry(), c, s);
                 }
                 case CAPSULE -> {
@@ -399,7 +399,7 @@ public final class ConvexSweep {
         double best = Double.NEGATIVE_INFINITY, bx = 1, by = 0;
         boolean ring = true;
         for (int i = 0; i < DIRECTIONS; i++) {
-            double nx = Math.cos(2 * Math.PI * i / DIRECTIONS), ny = Math.sin(2 * Math.PI * i / DIRECTIONS);
+            double nx = StrictMath.cos(2 * Math.PI * i / DIRECTIONS), ny = StrictMath.sin(2 * Math.PI * i / DIRECTIONS);
             double g = gap(a, b, dx, dy, ex, ey, nx, ny);
             if (g > best) {
                 best = g;
@@ -435,13 +435,13 @@ public final class ConvexSweep {
             // seldom an edge normal): still a lower bound, since every direction's gap is one.
             double lo = Math.atan2(by, bx) - 2 * Math.PI / DIRECTIONS, hi = lo + 4 * Math.PI / DIRECTIONS;
             // The largest gap is the least of its negative.
-            double[] r = Golden.least(t -> -gap(a, b, dx, dy, ex, ey, Math.cos(t), Math.sin(t)), lo, hi, steps,
+            double[] r = Golden.least(t -> -gap(a, b, dx, dy, ex, ey, StrictMath.cos(t), StrictMath.sin(t)), lo, hi, steps,
                     Tolerance.SWEEP_ANGLE);
             double m = r[0], g = -r[1];
             if (g > best) {
                 best = g;
-                bx = Math.cos(m);
-                by = Math.sin(m);
+                bx = StrictMath.cos(m);
+                by = StrictMath.sin(m);
             }
         }
         n[0] = bx;

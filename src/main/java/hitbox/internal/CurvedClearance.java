@@ -221,7 +221,7 @@ public final class CurvedClearance {
      * such an angle round to about 6e-17, not 0 (as in {@link Supports}).
      */
     private static double[] unit(double angle) {
-        double nx = Math.cos(angle), ny = Math.sin(angle);
+        double nx = StrictMath.cos(angle), ny = StrictMath.sin(angle);
         if (Math.abs(nx) < Tolerance.AXIS_SNAP) {
             return new double[] {0, Math.signum(ny)};
         }

@@ -552,7 +552,7 @@ public final class Distances {
      * into the ellipse's frame, Eberly's closest point there, and back.
      */
     public static double ellipsePoint(Ellipse e, double px, double py, double[] near) {
-        double c = e.angle() == 0 ? 1 : Math.cos(e.angle()), s = e.angle() == 0 ? 0 : Math.sin(e.angle());
+        double c = e.angle() == 0 ? 1 : StrictMath.cos(e.angle()), s = e.angle() == 0 ? 0 : StrictMath.sin(e.angle());
         double dx = px - e.x(), dy = py - e.y();
         double u = dx * c + dy * s, v = -dx * s + dy * c;
         double d = Ellipses.distance(e.rx(), e.ry(), u, v, near);
@@ -638,9 +638,9 @@ public final class Distances {
 
     /** A point of ellipse f's outline, at eccentric angle t, into {@code p}; its tangent into p[2], p[3]. */
     private static void onOutline(Ellipse f, double t, double[] p) {
-        double c = f.angle() == 0 ? 1 : Math.cos(f.angle()), s = f.angle() == 0 ? 0 : Math.sin(f.angle());
-        double u = f.rx() * Math.cos(t), v = f.ry() * Math.sin(t);
-        double du = -f.rx() * Math.sin(t), dv = f.ry() * Math.cos(t);
+        double c = f.angle() == 0 ? 1 : StrictMath.cos(f.angle()), s = f.angle() == 0 ? 0 : StrictMath.sin(f.angle());
+        double u = f.rx() * StrictMath.cos(t), v = f.ry() * StrictMath.sin(t);
+        double du = -f.rx() * StrictMath.sin(t), dv = f.ry() * StrictMath.cos(t);
         p[0] = f.x() + (u * c - v * s);
         p[1] = f.y() + (u * s + v * c);
         p[2] = du * c - dv * s;

@@ -619,7 +619,7 @@ public final class Manifolds {
             double sign = end == 2 ? 1 : -1;
             for (int i = 0; i <= half; i++) {
                 double t = -Math.PI / 2 + Math.PI * i / half;
-                double c = i == 0 || i == half ? 0 : Math.cos(t), sn = i == 0 ? -1 : i == half ? 1 : Math.sin(t);
+                double c = i == 0 || i == half ? 0 : StrictMath.cos(t), sn = i == 0 ? -1 : i == half ? 1 : StrictMath.sin(t);
                 xy[k++] = q.xy[end] + sign * q.r * (c * dx + sn * px);
                 xy[k++] = q.xy[end + 1] + sign * q.r * (c * dy + sn * py);
             }
@@ -910,7 +910,7 @@ public final class Manifolds {
         double[] xy = sc.inscribed, p = sc.support;
         for (int i = 0; i < INSCRIBED; i++) {
             double t = 2 * Math.PI * i / INSCRIBED;
-            support(s, Math.cos(t), Math.sin(t), p, sc);
+            support(s, StrictMath.cos(t), StrictMath.sin(t), p, sc);
             xy[2 * i] = p[0];
             xy[2 * i + 1] = p[1];
         }
@@ -928,7 +928,7 @@ public final class Manifolds {
             }
             case ELLIPSE -> {
                 Ellipse e = (Ellipse) s;
-                double cos = e.angle() == 0 ? 1 : Math.cos(e.angle()), sin = e.angle() == 0 ? 0 : Math.sin(e.angle());
+                double cos = e.angle() == 0 ? 1 : StrictMath.cos(e.angle()), sin = e.angle() == 0 ? 0 : StrictMath.sin(e.angle());
                 // In the ellipse's own axes: the point (a^2 u, b^2 v) / |(a u, b v)|.
                 double u = ux * cos + uy * sin, v = -ux * sin + uy * cos;
                 double au = (double) e.rx() * u, bv = (double) e.ry() * v, len = Math.hypot(au, bv);
@@ -994,7 +994,7 @@ public final class Manifolds {
             }
             case ELLIPSE -> {
                 Ellipse e = (Ellipse) s;
-                double cos = e.angle() == 0 ? 1 : Math.cos(e.angle()), sin = e.angle() == 0 ? 0 : Math.sin(e.angle());
+                double cos = e.angle() == 0 ? 1 : StrictMath.cos(e.angle()), sin = e.angle() == 0 ? 0 : StrictMath.sin(e.angle());
                 double dx = px - e.x(), dy = py - e.y();
                 double lx = dx * cos + dy * sin, ly = -dx * sin + dy * cos;
                 double a = e.rx(), b = e.ry();

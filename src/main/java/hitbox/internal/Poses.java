@@ -82,7 +82,7 @@ public final class Poses {
                 Ellipse e = (Ellipse) home;
                 double x = turnX(e.x() - px, e.y() - py, cos, sin), y = turnY(e.x() - px, e.y() - py, cos, sin);
                 double a = e.angle() + Math.atan2(sin, cos);
-                double c = Math.cos(a), s = Math.sin(a);
+                double c = StrictMath.cos(a), s = StrictMath.sin(a);
                 double hx = Math.hypot(e.rx() * c, e.ry() * s), hy = Math.hypot(e.rx() * s, e.ry() * c);
                 minX = x - hx;
                 maxX = x + hx;

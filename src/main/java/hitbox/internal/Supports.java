@@ -139,7 +139,7 @@ public final class Supports {
      * support exact.
      */
     private static double[] unit(double t, double[] out) {
-        double nx = Math.cos(t), ny = Math.sin(t);
+        double nx = StrictMath.cos(t), ny = StrictMath.sin(t);
         if (Math.abs(nx) < Tolerance.AXIS_SNAP) {
             out[0] = 0;
             out[1] = Math.signum(ny);

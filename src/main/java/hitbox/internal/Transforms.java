@@ -249,7 +249,7 @@ public final class Transforms {
             return new Ellipse(x, y, size("the radius rx", rx * k), size("the radius ry", ry * k), (float) angle);
         }
         // M = L R(angle) diag(rx, ry): the image of the unit circle under M
-        double cos = Math.cos(e.angle()), sin = Math.sin(e.angle());
+        double cos = StrictMath.cos(e.angle()), sin = StrictMath.sin(e.angle());
         double b00 = cos * rx, b01 = -sin * ry, b10 = sin * rx, b11 = cos * ry;
         double m00 = a.m00() * b00 + a.m01() * b10, m01 = a.m00() * b01 + a.m01() * b11;
         double m10 = a.m10() * b00 + a.m11() * b10, m11 = a.m10() * b01 + a.m11() * b11;

@@ -27,7 +27,7 @@ public final class TurnedEllipses {
         if (aligned(e)) {
             return e.rx();
         }
-        double c = Math.cos(e.angle()), s = Math.sin(e.angle());
+        double c = StrictMath.cos(e.angle()), s = StrictMath.sin(e.angle());
         return widen(Math.hypot(e.rx() * c, e.ry() * s));
     }
 
@@ -36,7 +36,7 @@ public final class TurnedEllipses {
         if (aligned(e)) {
             return e.ry();
         }
-        double c = Math.cos(e.angle()), s = Math.sin(e.angle());
+        double c = StrictMath.cos(e.angle()), s = StrictMath.sin(e.angle());
         return widen(Math.hypot(e.rx() * s, e.ry() * c));
     }
 
@@ -60,7 +60,7 @@ public final class TurnedEllipses {
      */
     public record Frame(double x, double y, double c, double s) {
         public Frame(Ellipse e) {
-            this(e.x(), e.y(), Math.cos(e.angle()), Math.sin(e.angle()));
+            this(e.x(), e.y(), StrictMath.cos(e.angle()), StrictMath.sin(e.angle()));
         }
 
         public double u(double px, double py) {
@@ -83,7 +83,7 @@ public final class TurnedEllipses {
      * for a caller that makes no segment.
      */
     public static double[] flatEnds(Ellipse e, double[] out) {
-        double c = Math.cos(e.angle()), s = Math.sin(e.angle());
+        double c = StrictMath.cos(e.angle()), s = StrictMath.sin(e.angle());
         double hx = e.rx() * c - e.ry() * s, hy = e.rx() * s + e.ry() * c; // one term is 0
         out[0] = (float) (e.x() - hx);
         out[1] = (float) (e.y() - hy);
@@ -232,7 +232,7 @@ public final class TurnedEllipses {
         double a1 = p.rx(), b1 = p.ry();
         double cu = f.u(q.x(), q.y()) * b1, cv = f.v(q.x(), q.y()) * a1;
         double phi = (double) q.angle() - p.angle();
-        double c = Math.cos(phi), s = Math.sin(phi);
+        double c = StrictMath.cos(phi), s = StrictMath.sin(phi);
         // M's columns: q's two half axes in the scaled frame.
         double m00 = b1 * c * q.rx(), m10 = a1 * s * q.rx();
         double m01 = -b1 * s * q.ry(), m11 = a1 * c * q.ry();
@@ -244,7 +244,7 @@ public final class TurnedEllipses {
         double A = Math.sqrt(big), B = Math.sqrt(small);
         // The circle's centre (the origin) relative to q's centre, in q's own axes.
         double ox = -cu, oy = -cv;
-        double cp = Math.cos(psi), sp = Math.sin(psi);
+        double cp = StrictMath.cos(psi), sp = StrictMath.sin(psi);
         double x = ox * cp + oy * sp, y = -ox * sp + oy * cp;
         if (Ellipses.side(x, y, 0, 0, A, B) <= 0) {
             return true;
@@ -258,7 +258,7 @@ public final class TurnedEllipses {
         if (e.angle() == 0) {
             return base + Math.hypot(e.rx() * nx, e.ry() * ny);
         }
-        double c = Math.cos(e.angle()), s = Math.sin(e.angle());
+        double c = StrictMath.cos(e.angle()), s = StrictMath.sin(e.angle());
         return base + Math.hypot(e.rx() * (nx * c + ny * s), e.ry() * (-nx * s + ny * c));
     }
 }

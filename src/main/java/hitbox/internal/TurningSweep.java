@@ -43,7 +43,7 @@ public final class TurningSweep {
 
     /** {@link #at(float[], double, double, double, double, double, double)} into {@code out}, returned. */
     private static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t, double[] out) {
-        double c = turn == 0 ? 1 : Math.cos(t * turn), s = turn == 0 ? 0 : Math.sin(t * turn);
+        double c = turn == 0 ? 1 : StrictMath.cos(t * turn), s = turn == 0 ? 0 : StrictMath.sin(t * turn);
         for (int i = 0; i + 1 < xy.length; i += 2) {
             double x = xy[i] - px, y = xy[i + 1] - py;
             out[i] = px + t * vx + c * x - s * y;
@@ -446,17 +446,17 @@ public final class TurningSweep {
             double g = (Math.sqrt(5) - 1) / 2;
             for (int i = 0; i < 60; i++) {
                 double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-                if (separation(a, piece, obstacle, Math.cos(m1), Math.sin(m1)) > separation(a, piece, obstacle, Math.cos(m2), Math.sin(m2))) {
+                if (separation(a, piece, obstacle, StrictMath.cos(m1), StrictMath.sin(m1)) > separation(a, piece, obstacle, StrictMath.cos(m2), StrictMath.sin(m2))) {
                     hi = m2;
                 } else {
                     lo = m1;
                 }
             }
-            double m = (lo + hi) / 2, gm = separation(a, piece, obstacle, Math.cos(m), Math.sin(m));
+            double m = (lo + hi) / 2, gm = separation(a, piece, obstacle, StrictMath.cos(m), StrictMath.sin(m));
             if (gm > bestGap) {
                 bestGap = gm;
-                bx = Math.cos(m);
-                by = Math.sin(m);
+                bx = StrictMath.cos(m);
+                by = StrictMath.sin(m);
             }
         }
         if (bestGap < best) {
@@ -471,8 +471,8 @@ public final class TurningSweep {
         int na = a.length / 2, nb = piece.length / 2;
         double[] d = new double[2 * DIRECTIONS + 4 * (na + nb)];
         for (int i = 0; i < DIRECTIONS; i++) {
-            d[2 * i] = Math.cos(2 * Math.PI * i / DIRECTIONS);
-            d[2 * i + 1] = Math.sin(2 * Math.PI * i / DIRECTIONS);
+            d[2 * i] = StrictMath.cos(2 * Math.PI * i / DIRECTIONS);
+            d[2 * i + 1] = StrictMath.sin(2 * Math.PI * i / DIRECTIONS);
         }
         int k = 2 * DIRECTIONS;
         for (double[] xy : new double[][] {a, piece}) {

@@ -7,7 +7,7 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
 /**
- * The browser build's stand-ins (ExactFma, JvmMath) against the JVM's own methods, bit for bit,
+ * The browser build's stand-ins (ExactFma, JvmMath, Fdlibm) against the JVM's own methods, bit for bit,
  * on special values and millions of random arguments: here on the JVM, so a difference is the
  * stand-in's; the browser test then shows that the WebAssembly build computes them alike.
  */
@@ -54,6 +54,79 @@ class JvmMathTest {
                 for (double c : SPECIAL) {
                     same(Math.fma(a, b, c), ExactFma.fma(a, b, c), "fma(" + a + ", " + b + ", " + c + ")");
                 }
+            }
+        }
+    }
+
+    @Test
+    void ulpAndAtan2_sameBitsAsTheJvm() {
+        SplittableRandom r = new SplittableRandom(7);
+        for (int i = 0; i < 1_000_000; i++) {
+            double y = any(r), x = r.nextInt(3) == 0 ? any(r) : (r.nextDouble() - 0.5) * 64;
+            if (r.nextInt(4) == 0) {
+                y = (r.nextDouble() - 0.5) * 64;
+            }
+            same(Math.ulp(y), JvmMath.ulp(y), "ulp(" + y + ")");
+            same(Math.atan2(y, x), Fdlibm.atan2(y, x), "atan2(" + y + ", " + x + ")");
+            same(Math.atan2(x, y), Fdlibm.atan2(x, y), "atan2(" + x + ", " + y + ")");
+        }
+        for (double y : SPECIAL) {
+            same(Math.ulp(y), JvmMath.ulp(y), "ulp(" + y + ")");
+            for (double x : SPECIAL) {
+                same(Math.atan2(y, x), Fdlibm.atan2(y, x), "atan2(" + y + ", " + x + ")");
+            }
+        }
+    }
+
+    @Test
+    void scalb_sameBitsAsTheJvm() {
+        SplittableRandom r = new SplittableRandom(6);
+        for (int i = 0; i < 1_000_000; i++) {
+            double d = any(r);
+            int n = r.nextInt(4) == 0 ? r.nextInt() : r.nextInt(-2200, 2200);
+            same(Math.scalb(d, n), JvmMath.scalb(d, n), "scalb(" + d + ", " + n + ")");
+        }
+        for (double d : SPECIAL) {
+            for (int n : new int[] {0, 1, -1, 511, 512, 513, -511, -512, -513, 1023, 1024, -1074, -1075, 2098, 2099, 2100,
+                -2099, -2100, Integer.MAX_VALUE, Integer.MIN_VALUE}) {
+                same(Math.scalb(d, n), JvmMath.scalb(d, n), "scalb(" + d + ", " + n + ")");
+            }
+        }
+    }
+
+    @Test
+    void sinCos_sameBitsAsStrictMath() {
+        SplittableRandom r = new SplittableRandom(5);
+        for (int i = 0; i < 1_000_000; i++) {
+            double x;
+            switch (i % 6) {
+                case 0:
+                    x = (r.nextDouble() - 0.5) * 16;                       // the library's angles
+                    break;
+                case 1:
+                    x = (float) ((r.nextDouble() - 0.5) * 4000);           // float angles
+                    break;
+                case 2:
+                    x = (r.nextDouble() - 0.5) * 0x1p21;                   // medium: reduced by pi/2 in 33-bit pieces
+                    break;
+                case 3:
+                    // near n * pi/2, where the reduction cancels: a second and third step
+                    x = (1 + r.nextInt(1 << 20)) * (Math.PI / 2) + (r.nextInt(9) - 4) * Math.ulp((1 << 20) * Math.PI);
+                    break;
+                case 4:
+                    x = Math.scalb(r.nextDouble() - 0.5, r.nextInt(-60, 1030));   // huge: the long reduction by 2/pi's bits
+                    break;
+                default:
+                    x = any(r);
+                    break;
+            }
+            same(StrictMath.sin(x), Fdlibm.sin(x), "sin(" + x + ")");
+            same(StrictMath.cos(x), Fdlibm.cos(x), "cos(" + x + ")");
+        }
+        for (double x : SPECIAL) {
+            for (double y : new double[] {x, -x, x * Math.PI, Math.PI / 2 * x}) {
+                same(StrictMath.sin(y), Fdlibm.sin(y), "sin(" + y + ")");
+                same(StrictMath.cos(y), Fdlibm.cos(y), "cos(" + y + ")");
             }
         }
     }

@@ -20,9 +20,10 @@ import org.teavm.model.instructions.NumericOperandType;
 /**
  * A TeaVM class transformer for the browser build: every call of a Java platform method that
  * TeaVM's class library (0.16.0) lacks ({@code Math.fma}) or answers otherwise than the JVM
- * ({@code Math.hypot}, {@code round}, {@code rint}, {@code IEEEremainder}, {@code toRadians},
- * {@code Random.nextInt(int)}) becomes a call of its stand-in in {@code hitbox.web}
- * ({@code ExactFma}, {@code JvmMath}), whose answers are the JVM's.
+ * ({@code Math.hypot}, {@code round}, {@code rint}, {@code IEEEremainder}, {@code toRadians}, {@code scalb}, {@code ulp}, {@code atan2},
+ * {@code Random.nextInt(int)}, and {@code StrictMath.sin}/{@code cos}, which it answers from
+ * the JavaScript engine) becomes a call of its stand-in in {@code hitbox.web} ({@code ExactFma},
+ * {@code JvmMath}, {@code Fdlibm}), whose answers are the JVM's.
  *
  * <p>And every {@code float} or {@code double} negation becomes {@code JvmMath.negate}: TeaVM
  * 0.16.0's WebAssembly GC code generator writes {@code -x} as {@code 0 - x}, which is +0.0 where
@@ -51,6 +52,13 @@ public final class JvmMathOnWasm implements ClassHolderTransformer {
         STATIC.put(math("rint", D, D), jvm("rint", D, D));
         STATIC.put(math("IEEEremainder", D, D, D), jvm("IEEEremainder", D, D, D));
         STATIC.put(math("toRadians", D, D), jvm("toRadians", D, D));
+        STATIC.put(math("scalb", D, I, D), jvm("scalb", D, I, D));
+        STATIC.put(math("ulp", D, D), jvm("ulp", D, D));
+        STATIC.put(math("atan2", D, D, D), new MethodReference("hitbox.web.Fdlibm", "atan2", D, D, D));
+        // The library calls StrictMath.sin/cos (fdlibm on every JVM); TeaVM's would ask the
+        // JavaScript engine's Math.sin/cos, which may differ from fdlibm in the last bit.
+        STATIC.put(new MethodReference("java.lang.StrictMath", "sin", D, D), new MethodReference("hitbox.web.Fdlibm", "sin", D, D));
+        STATIC.put(new MethodReference("java.lang.StrictMath", "cos", D, D), new MethodReference("hitbox.web.Fdlibm", "cos", D, D));
         VIRTUAL.put(new MethodReference("java.util.Random", "nextInt", I, I), jvm("nextInt", RANDOM, I, I));
     }
 
@@ -68,7 +76,8 @@ public final class JvmMathOnWasm implements ClassHolderTransformer {
     @Override
     public void transformClass(ClassHolder cls, ClassHolderTransformerContext context) {
         // The stand-ins call the platform's methods themselves (JvmMath.hypot calls Math.sqrt).
-        boolean standIn = cls.getName().equals("hitbox.web.ExactFma") || cls.getName().equals("hitbox.web.JvmMath");
+        boolean standIn = cls.getName().equals("hitbox.web.ExactFma") || cls.getName().equals("hitbox.web.JvmMath")
+                || cls.getName().equals("hitbox.web.Fdlibm");
         for (MethodHolder method : cls.getMethods()) {
             if (method.getProgram() == null) {
                 continue;
