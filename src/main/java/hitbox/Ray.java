@@ -190,7 +190,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
         if (badRay(ox, oy, dx, dy, maxDistance) || Check.notFinite(rectX, rectY, rectW, rectH, 0)) {
             return Float.POSITIVE_INFINITY;
         }
-        return distance(rectParam(ox, oy, dx, dy, RayCast.limit(dx, dy, maxDistance), rectX, rectY, rectW, rectH), dx, dy);
+        return RayCast.rectDistance(ox, oy, dx, dy, maxDistance, rectX, rectY, rectW, rectH);
     }
 
     /**
@@ -229,7 +229,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
     }
 
     private static float distance(double s, float dx, float dy) {
-        return s == Slabs.INF ? Float.POSITIVE_INFINITY : (float) (s * RayCast.length(dx, dy));
+        return RayCast.distance(s, dx, dy);
     }
 
     /**
@@ -267,14 +267,6 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
     private static double circleParam(float ox, float oy, float dx, float dy, double limit, float cx, float cy, float r) {
         double s = Discs.entry((double) ox - cx, (double) oy - cy, dx, dy, r, limit);
         return s < 0 ? 0 : s;
-    }
-
-    private static double rectParam(float ox, float oy, float dx, float dy, double limit, float rx, float ry, float rw, float rh) {
-        if (Collide.rectPoint(rx, ry, rw, rh, ox, oy)) {
-            return 0;
-        }
-        return Slabs.boxTime((double) rx - ox, (double) rx + rw - ox, (double) ry - oy, (double) ry + rh - oy,
-                dx, dy, limit);
     }
 
     /**

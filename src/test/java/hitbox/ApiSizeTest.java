@@ -34,8 +34,11 @@ import org.junit.jupiter.api.Test;
  */
 class ApiSizeTest {
 
-    /** The count after issue 30's trim; lower it when the API shrinks, never raise it without a reason in the docs. */
-    static final int LIMIT = 424;
+    /**
+     * The count after issue 30's trim (424) and issue 29's nine world calls (433); lower it when
+     * the API shrinks, never raise it without a reason in the docs.
+     */
+    static final int LIMIT = 433;
 
     @Test
     void publicMethods_countedByReflection_stayWithinTheLimit() throws IOException, URISyntaxException, ClassNotFoundException {

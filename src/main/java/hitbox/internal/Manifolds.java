@@ -618,8 +618,7 @@ public final class Manifolds {
         for (int end = 2; end >= 0; end -= 2) {
             double sign = end == 2 ? 1 : -1;
             for (int i = 0; i <= half; i++) {
-                double t = -Math.PI / 2 + Math.PI * i / half;
-                double c = i == 0 || i == half ? 0 : StrictMath.cos(t), sn = i == 0 ? -1 : i == half ? 1 : StrictMath.sin(t);
+                double c = HALF_COS[i], sn = HALF_SIN[i];
                 xy[k++] = q.xy[end] + sign * q.r * (c * dx + sn * px);
                 xy[k++] = q.xy[end + 1] + sign * q.r * (c * dy + sn * py);
             }
@@ -905,12 +904,38 @@ public final class Manifolds {
     /** The number of corners of a round shape's inscribed polygon. */
     private static final int INSCRIBED = 64;
 
+    /**
+     * The directions of the inscribed polygon's corners, {@code 2 pi i / INSCRIBED}: the same
+     * angles on every call, so their cosines and sines are worked out once (by StrictMath, the
+     * same bits on every platform) instead of 64 times a call.
+     */
+    private static final double[] ROUND_COS = new double[INSCRIBED], ROUND_SIN = new double[INSCRIBED];
+
+    /**
+     * A rounded segment's half circle, from {@code -pi / 2} to {@code pi / 2} in
+     * {@code INSCRIBED / 2} steps, its two ends exact (0 and -1, 0 and 1).
+     */
+    private static final double[] HALF_COS = new double[INSCRIBED / 2 + 1], HALF_SIN = new double[INSCRIBED / 2 + 1];
+
+    static {
+        for (int i = 0; i < INSCRIBED; i++) {
+            double t = 2 * Math.PI * i / INSCRIBED;
+            ROUND_COS[i] = StrictMath.cos(t);
+            ROUND_SIN[i] = StrictMath.sin(t);
+        }
+        int half = INSCRIBED / 2;
+        for (int i = 0; i <= half; i++) {
+            double t = -Math.PI / 2 + Math.PI * i / half;
+            HALF_COS[i] = i == 0 || i == half ? 0 : StrictMath.cos(t);
+            HALF_SIN[i] = i == 0 ? -1 : i == half ? 1 : StrictMath.sin(t);
+        }
+    }
+
     /** A round shape as its inscribed polygon, one piece in {@code out}; null for a shape of no extent. */
     private static List<Piece> inscribed(Shape s, Scratch sc, List<Piece> out) {
         double[] xy = sc.inscribed, p = sc.support;
         for (int i = 0; i < INSCRIBED; i++) {
-            double t = 2 * Math.PI * i / INSCRIBED;
-            support(s, StrictMath.cos(t), StrictMath.sin(t), p, sc);
+            support(s, ROUND_COS[i], ROUND_SIN[i], p, sc);
             xy[2 * i] = p[0];
             xy[2 * i + 1] = p[1];
         }

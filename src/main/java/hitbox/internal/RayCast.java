@@ -54,7 +54,7 @@ public final class RayCast {
     public void consider(int slot) {
         phase.tally++;
         double[] box = phase.box;
-        float d = Ray.distanceToRect(ox, oy, dx, dy, maxDistance,
+        float d = rectDistance(ox, oy, dx, dy, maxDistance,
                 (float) box[4 * slot], (float) box[4 * slot + 2], phase.ws[slot], phase.hs[slot]);
         if (d != Float.POSITIVE_INFINITY) {
             if (hitCount == hits.length) {
@@ -119,5 +119,23 @@ public final class RayCast {
      */
     public static double length(double dx, double dy) {
         return Math.sqrt(dx * dx + dy * dy);
+    }
+
+    /**
+     * How far along a checked ray (finite, not of length 0) its origin is from the rectangle,
+     * +Infinity if it misses within {@code maxDistance}; 0 from inside: the body of
+     * {@code Ray.distanceToRect}, which checks the arguments first.
+     */
+    public static float rectDistance(float ox, float oy, float dx, float dy, float maxDistance,
+                                     float rx, float ry, float rw, float rh) {
+        double s = RawTests.rectPoint(rx, ry, rw, rh, ox, oy) ? 0
+                : Slabs.boxTime((double) rx - ox, (double) rx + rw - ox, (double) ry - oy, (double) ry + rh - oy,
+                        dx, dy, limit(dx, dy, maxDistance));
+        return distance(s, dx, dy);
+    }
+
+    /** A ray parameter (in units of the direction) as a distance in float; +Infinity for {@link Slabs#INF}. */
+    public static float distance(double s, float dx, float dy) {
+        return s == Slabs.INF ? Float.POSITIVE_INFINITY : (float) (s * length(dx, dy));
     }
 }
