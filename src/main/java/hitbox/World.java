@@ -57,9 +57,10 @@ import java.util.function.Predicate;
  * its edges is open here); a ray walks its cells along the ray.
  *
  * <h2>Bad input</h2>
- * A null, a NaN or infinite number, a removed body or another world's body throws an
- * {@link IllegalArgumentException} naming the parameter or the rule. Changing the world (add,
- * remove, move, turn, layers) from inside a filter or a query's filter throws an
+ * A null, a NaN or infinite number or another world's body throws an
+ * {@link IllegalArgumentException} naming the parameter or the rule. A removed body throws an
+ * {@link IllegalStateException} wherever it is used, here as in its own methods. Changing the
+ * world (add, remove, move, turn, layers) from inside a filter or a query's filter throws an
  * {@link IllegalStateException}. A filter that throws is reported as an
  * {@link IllegalArgumentException} naming {@code filter}, the filter's exception as its cause
  * (an {@code IllegalStateException} passes as it is). Every refused call leaves the world
@@ -219,9 +220,9 @@ public final class World {
      * {@link #step()} reports the EXIT of its contacts.
      *
      * @param body a body of this world, not null
-     * @throws IllegalArgumentException if {@code body} is null, was removed, or is another
-     *                                  world's
-     * @throws IllegalStateException    if called from inside a callback of this world
+     * @throws IllegalArgumentException if {@code body} is null or another world's
+     * @throws IllegalStateException    if the body was removed, or this is called from inside
+     *                                  a callback of this world
      */
     public void remove(Body body) {
         own("body", body);
@@ -269,10 +270,11 @@ public final class World {
      * @param dy   the move this frame, y part
      * @return what it met, in the order met (empty if nothing), never null; where it ended is
      *         {@link Body#shape()}
-     * @throws IllegalArgumentException if {@code body} is null, removed, another world's or a
-     *                                  grid's, dx or dy is NaN or infinite, or the move leaves
-     *                                  the float range
-     * @throws IllegalStateException    if called from inside a callback of this world
+     * @throws IllegalArgumentException if {@code body} is null, another world's or a grid's,
+     *                                  dx or dy is NaN or infinite, or the move leaves the
+     *                                  float range
+     * @throws IllegalStateException    if the body was removed, or this is called from inside
+     *                                  a callback of this world
      */
     public Collisions move(Body body, float dx, float dy) {
         return move(body, dx, dy, SLIDE);
@@ -294,11 +296,12 @@ public final class World {
      * @return what it met, in the order met (empty if nothing), never null; where it ended is
      *         {@link Body#shape()}
      * @throws IllegalArgumentException if an argument is null, dx or dy is NaN or infinite,
-     *                                  the body was removed, is another world's or a grid's,
-     *                                  the move leaves the float range, or the filter threw
-     *                                  (then the world is as it was)
-     * @throws IllegalStateException    if called from inside a callback of this world, or the
-     *                                  filter tried to change the world
+     *                                  the body is another world's or a grid's, the move
+     *                                  leaves the float range, or the filter threw (then the
+     *                                  world is as it was)
+     * @throws IllegalStateException    if the body was removed, this is called from inside a
+     *                                  callback of this world, or the filter tried to change
+     *                                  the world
      */
     public Collisions move(Body body, float dx, float dy, CollisionFilter filter) {
         checkMove(body, dx, dy, filter);
@@ -558,8 +561,9 @@ public final class World {
      * @param body a body of this world, not null
      * @param out  the caller's list, which gets the bodies added (in no particular order;
      *             nothing is removed from it), not null
-     * @throws IllegalArgumentException if an argument is null, or the body was removed or is
-     *                                  another world's, or {@code out} cannot be added to
+     * @throws IllegalArgumentException if an argument is null, the body is another world's,
+     *                                  or {@code out} cannot be added to
+     * @throws IllegalStateException    if the body was removed
      */
     public void contacts(Body body, List<Body> out) {
         own("body", body);
@@ -577,8 +581,8 @@ public final class World {
      * @param a a body of this world, not null
      * @param b another body of this world, not null
      * @return true if they were in contact at the last step
-     * @throws IllegalArgumentException if an argument is null, or a body was removed or is
-     *                                  another world's
+     * @throws IllegalArgumentException if an argument is null, or a body is another world's
+     * @throws IllegalStateException    if a body was removed
      */
     public boolean inContact(Body a, Body b) {
         own("a", a);
@@ -798,7 +802,8 @@ public final class World {
      *
      * @param body a body of this world, not null
      * @return the bodies, in the order added, unmodifiable; empty if none, never null
-     * @throws IllegalArgumentException if {@code body} is null, removed or another world's
+     * @throws IllegalArgumentException if {@code body} is null or another world's
+     * @throws IllegalStateException    if the body was removed
      */
     public List<Body> overlapping(Body body) {
         return overlapping(body, ALL);
@@ -810,8 +815,9 @@ public final class World {
      * @param body   a body of this world, not null
      * @param filter which bodies to keep, not null
      * @return the bodies, in the order added, unmodifiable; empty if none, never null
-     * @throws IllegalArgumentException if an argument is null, the body is removed or another
-     *                                  world's, or {@code filter} threw
+     * @throws IllegalArgumentException if an argument is null, the body is another world's,
+     *                                  or {@code filter} threw
+     * @throws IllegalStateException    if the body was removed
      */
     public List<Body> overlapping(Body body, Predicate<Body> filter) {
         List<Body> out = new ArrayList<>();
@@ -827,9 +833,9 @@ public final class World {
      * @param filter which bodies to keep, not null
      * @param out    the caller's list: the bodies are added after what it holds, in the order
      *               added; not null
-     * @throws IllegalArgumentException if an argument is null, the body is removed or another
-     *                                  world's, {@code filter} threw, or {@code out} cannot be
-     *                                  added to
+     * @throws IllegalArgumentException if an argument is null, the body is another world's,
+     *                                  {@code filter} threw, or {@code out} cannot be added to
+     * @throws IllegalStateException    if the body was removed
      */
     public void overlapping(Body body, Predicate<Body> filter, List<Body> out) {
         own("body", body);
@@ -1003,7 +1009,8 @@ public final class World {
     Body own(String name, Body body) {
         Check.notNull(name, body);
         if (body.world == null) {
-            throw new IllegalArgumentException(name + " was removed from its world: " + body);
+            // One kind for a removed body, as its own methods throw: the state is wrong, not the value.
+            throw new IllegalStateException(name + " was removed from its world: " + body);
         }
         if (body.world != this) {
             throw new IllegalArgumentException(name + " belongs to another world: " + body);

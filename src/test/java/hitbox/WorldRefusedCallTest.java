@@ -85,7 +85,8 @@ class WorldRefusedCallTest {
         refused(IllegalArgumentException.class, "filter", () -> w.move(player, 1, 1, null));
         refused(IllegalArgumentException.class, "another world", () -> w.move(new World().add(new Circle(0, 0, 1)), 1, 1));
         refused(IllegalArgumentException.class, "another world", () -> w.remove(new World().add(new Circle(0, 0, 1))));
-        refused(IllegalArgumentException.class, "removed", () -> {
+        // A removed body is one kind of refusal wherever it is used: the world's methods and its own.
+        refused(IllegalStateException.class, "removed", () -> {
             World other = new World();
             Body dead = other.add(new Circle(0, 0, 1));
             other.remove(dead);
@@ -94,10 +95,13 @@ class WorldRefusedCallTest {
         build();
         w.remove(rider);
         String before = snapshot();
-        assertThrows(IllegalArgumentException.class, () -> w.remove(rider));
-        assertThrows(IllegalArgumentException.class, () -> w.move(rider, 1, 1));
+        assertThrows(IllegalStateException.class, () -> w.remove(rider));
+        assertThrows(IllegalStateException.class, () -> w.move(rider, 1, 1));
         assertThrows(IllegalStateException.class, () -> rider.moveTo(1, 1));
-        assertThrows(IllegalArgumentException.class, () -> w.overlapping(rider));
+        assertThrows(IllegalStateException.class, () -> rider.data("x"));
+        assertThrows(IllegalStateException.class, () -> w.overlapping(rider));
+        assertThrows(IllegalStateException.class, () -> w.contacts(rider, new java.util.ArrayList<>()));
+        assertThrows(IllegalStateException.class, () -> w.inContact(rider, player));
         assertEquals(before, snapshot());
         refused(IllegalArgumentException.class, "grid", () -> w.move(w.bodies().get(5), 1, 1));
         refused(IllegalStateException.class, "grid", () -> w.bodies().get(5).moveTo(1, 1));
