@@ -74,11 +74,11 @@ public record Hit(float t, float nx, float ny, Side side) {
     }
 
     /**
-     * Did the mover land on top of the obstacle? Same as {@code side().landed()}.
+     * Did the mover land on top of the obstacle? Same as {@code side() == Side.TOP}.
      *
      * @return true if the obstacle's top side was hit
      */
     public boolean landed() {
-        return side.landed();
+        return side == Side.TOP;
     }
 }

@@ -2,22 +2,17 @@ package hitbox;
 
 import hitbox.internal.*;
 
-import java.util.Arrays;
 import java.util.List;
-import java.util.function.IntConsumer;
 
 /**
  * Many objects: the tutorial's loop over a list of obstacles, written once. Ask whether a shape
- * hits {@link #any any} of them, the index of the {@link #first first} one it hits, how many
- * it hits ({@link #count count}), {@link #all all} their indices, or visit each hit with
- * {@link #each each}:
+ * hits {@link #any any} of them, or the index of the {@link #first first} one it hits:
  * <pre>{@code
  * int i = Hits.first(player, walls);      // -1 if none
  * if (i >= 0) {
  *   Rect wall = walls.get(i);
  *   ...
  * }
- * Hits.each(bullet, enemies, i -> hit[i] = true);
  * }</pre>
  *
  * <p>Each test is {@link Shape#overlaps}, so the <a href="package-summary.html#touching">touching
@@ -29,11 +24,9 @@ import java.util.function.IntConsumer;
  * object as {@code shape} ({@code ==}) is skipped, so a ball can be tested against the list of
  * all the balls. An equal but separate shape is not skipped.
  *
- * <p>Costs: {@code any}, {@code first}, {@code count} and {@code each} allocate nothing;
- * {@code all} allocates the array it returns. The list and each element must not be null (an
- * {@link IllegalArgumentException} names the index); do not add to or remove from the list
- * during {@code each}: collect the indices with {@code all} first, then remove from the last.
- * An array of shapes is asked as {@code List.of(array)} or {@code Arrays.asList(array)}.
+ * <p>Costs: {@code any} and {@code first} allocate nothing. The list and each element must not
+ * be null (an {@link IllegalArgumentException} names the index). An array of shapes is asked
+ * as {@code List.of(array)} or {@code Arrays.asList(array)}.
  */
 public final class Hits {
     private Hits() {
@@ -68,56 +61,6 @@ public final class Hits {
         return next(Check.notNull("shape", shape), Check.notNull("others", others), 0);
     }
 
-    /**
-     * How many of the others the shape overlaps.
-     *
-     * @param shape  the shape, not null
-     * @param others the shapes to test against, not null and with no null element
-     * @return the number of overlapping shapes, 0 or more
-     * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
-     */
-    public static int count(Shape shape, List<? extends Shape> others) {
-        int n = 0;
-        for (int i = first(shape, others); i >= 0; i = next(shape, others, i + 1)) {
-            n++;
-        }
-        return n;
-    }
-
-    /**
-     * The indices of all the others that the shape overlaps, in order.
-     *
-     * @param shape  the shape, not null
-     * @param others the shapes to test against, not null and with no null element
-     * @return a new array of the overlapping shapes' indices, ascending; empty if none, never null
-     * @throws IllegalArgumentException if {@code shape}, {@code others} or an element is null
-     */
-    public static int[] all(Shape shape, List<? extends Shape> others) {
-        Found found = new Found();
-        each(shape, others, found::add);
-        return found.toArray();
-    }
-
-    /**
-     * Calls {@code action} with the index of each of the others that the shape overlaps, in
-     * order, allocating nothing.
-     *
-     * @param shape  the shape, not null
-     * @param others the shapes to test against, not null and with no null element; do not
-     *               add to or remove from it in {@code action}
-     * @param action what to do with each overlapping shape's index, not null
-     * @throws IllegalArgumentException if {@code shape}, {@code others}, an element or
-     *                                  {@code action} is null
-     */
-    public static void each(Shape shape, List<? extends Shape> others, IntConsumer action) {
-        Check.notNull("shape", shape);
-        Check.notNull("others", others);
-        Check.notNull("action", action);
-        for (int i = next(shape, others, 0); i >= 0; i = next(shape, others, i + 1)) {
-            action.accept(i);
-        }
-    }
-
     /** The first index from {@code from} on whose shape overlaps {@code shape} (never itself), or -1. */
     private static int next(Shape shape, List<? extends Shape> others, int from) {
         for (int i = from, n = others.size(); i < n; i++) {
@@ -131,7 +74,6 @@ public final class Hits {
 
     // ---- shared checks, also used by Motion -------------------------------------------
 
-    /** A fixed-size list view of the array (no copy), after checking it is there. */
     /** Element i of a list, or a learner's message naming the index if it is null. */
     static <T> T element(List<? extends T> list, int i, String name) {
         T t = list.get(i);
@@ -139,22 +81,5 @@ public final class Hits {
             throw new IllegalArgumentException(name + "[" + i + "] is null; remove it or give it a value");
         }
         return t;
-    }
-
-    /** A growing list of ints, so {@code all} makes one pass without boxing. */
-    private static final class Found {
-        private int[] items = new int[8];
-        private int size;
-
-        void add(int i) {
-            if (size == items.length) {
-                items = Arrays.copyOf(items, size * 2);
-            }
-            items[size++] = i;
-        }
-
-        int[] toArray() {
-            return Arrays.copyOf(items, size);
-        }
     }
 }

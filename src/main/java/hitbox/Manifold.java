@@ -154,17 +154,6 @@ public record Manifold(Contact contact, int pointCount, float x1, float y1, floa
         return index(i) == 0 ? depth1 : depth2;
     }
 
-    /**
-     * Point i as a vector.
-     *
-     * @param i the point, 0 or 1 (0 only, for one point)
-     * @return the point, never null
-     * @throws IndexOutOfBoundsException if i is not below {@link #pointCount()}
-     */
-    public Vec point(int i) {
-        return new Vec(x(i), y(i));
-    }
-
     private int index(int i) {
         if (i < 0 || i >= pointCount) {
             throw new IndexOutOfBoundsException("point index i must be 0" + (pointCount == 2 ? " or 1" : "")

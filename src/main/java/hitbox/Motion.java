@@ -37,7 +37,8 @@ import java.util.Set;
  * answer is the union over them, and a reversed speed can carry the mover into another
  * obstacle that lies closer than one frame's move ({@link #bounce} handles that).
  *
- * <p>Obstacles are rectangles, in a list or a {@link BroadPhase}; movers are rectangles or
+ * <p>Obstacles are rectangles in a list (for thousands, ask a {@link BroadPhase} or a
+ * {@link World} for the ones near the move); movers are rectangles or
  * circles. The next positions are computed as a sketch does, {@code x + vx} in
  * {@code float}, and tested with {@link Collide#rectRect} and {@link Collide#circleRect}. The
  * answer is an unmodifiable set of sides (see <a href="Side.html#sets">several sides at
@@ -95,27 +96,6 @@ public final class Motion {
             blocked |= NextPosition.circle(mover.x(), mover.y(), mover.r(), vx, vy, o.x(), o.y(), o.w(), o.h());
         }
         return SideSets.of(blocked);
-    }
-
-    /**
-     * Which axes of the rectangle's next move would run into any box of the broad phase: the
-     * same answer as {@link #blocked(Rect, float, float, List)} over the same boxes, asking
-     * only the ones near the move.
-     *
-     * <p>A NaN speed blocks nothing (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param mover     the moving rectangle, not null
-     * @param vx        its horizontal speed, pixels per frame
-     * @param vy        its vertical speed, pixels per frame (down is positive)
-     * @param obstacles the obstacles' boxes, not null
-     * @return the blocked axes' sides, an unmodifiable set, empty if the move is free, never
-     *         null
-     * @throws IllegalArgumentException if {@code mover} or {@code obstacles} is null
-     */
-    public static Set<Side> blocked(Rect mover, float vx, float vy, BroadPhase obstacles) {
-        Check.notNull("mover", mover);
-        Check.notNull("obstacles", obstacles);
-        return SideSets.of(BroadPhaseHits.rectBlocked(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy, obstacles));
     }
 
     /** The OR of the next-position check over a list, in SideSets' bits. */
@@ -195,30 +175,6 @@ public final class Motion {
         Check.notNull("obstacles", obstacles);
         float x = box.x(), y = box.y(), w = box.w(), h = box.h();
         return bounce(x, y, w, h, vx, vy, width, height, (nvx, nvy) -> rectBits(x, y, w, h, nvx, nvy, obstacles));
-    }
-
-    /**
-     * {@link #bounce(Rect, float, float, List, float, float)} among the boxes of a broad
-     * phase: the same step, so a sketch with thousands of obstacles changes one argument.
-     *
-     * <p>A NaN speed blocks nothing and stays NaN; a NaN window size crosses no edge (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param box       the box, not null
-     * @param vx        its horizontal speed
-     * @param vy        its vertical speed
-     * @param obstacles the obstacles' boxes, not null
-     * @param width     the window's width
-     * @param height    the window's height
-     * @return where the box is after this frame, its new speeds, and what blocked it, never null
-     * @throws IllegalArgumentException if {@code box} or {@code obstacles} is null
-     */
-    public static Step bounce(Rect box, float vx, float vy, BroadPhase obstacles, float width, float height) {
-        Check.notNull("box", box);
-        Check.notNull("obstacles", obstacles);
-        float x = box.x(), y = box.y(), w = box.w(), h = box.h();
-        return bounce(x, y, w, h, vx, vy, width, height,
-                (nvx, nvy) -> BroadPhaseHits.rectBlocked(x, y, w, h, nvx, nvy, obstacles));
     }
 
     /** Which axes a move with these speeds would block, against whatever obstacles, in SideSets' bits. */

@@ -5,9 +5,8 @@ import hitbox.internal.*;
 /**
  * What to do after a hit, given its {@link Contact}: push the shapes apart, bounce, or slide.
  *
- * <p>One call per question: {@link #pushOutA} and {@link #pushOutB} move a shape by a
- * contact, {@link #separate} moves one shape clear of another, {@link #bounce} and
- * {@link #slide} give a new velocity. Velocities belong to the sketch's own objects, so the
+ * <p>One call per question: {@link #pushOut} moves a shape by a contact, {@link #separate}
+ * moves one shape clear of another, {@link #bounce} and {@link #slide} give a new velocity. Velocities belong to the sketch's own objects, so the
  * velocity methods take plain floats and a normal and hand back the new value as a
  * {@link Vec}; nothing is changed in place. The contact's normal points from a to b, so "a"
  * and "b" below are the first and second shape given to {@link Contact#between}.
@@ -29,7 +28,7 @@ import hitbox.internal.*;
  *
  * <p>Which push-out to call (the package documentation says the same): {@link #separate}
  * when a shape must end up clear of another, exactly ({@code overlaps} false afterwards),
- * whatever the shapes; {@code pushOutA}/{@code pushOutB} when you already have the
+ * whatever the shapes; {@link #pushOut} when you already have the
  * {@link Contact} and want to move by its depth, or share the push between the two with
  * {@code share}; {@link Snap#pushOut} for a box against a box, along one axis, with the
  * {@link Side} it was pushed to (a platformer's tiles).
@@ -39,47 +38,30 @@ public final class Response {
     }
 
     /**
-     * Shape a pushed out of b by its share of the depth: moved against the normal by
-     * {@code share * depth}. Give b the rest with {@link #pushOutB pushOutB(b, contact, 1 - share)}
-     * and the two just touch: 1 moves a alone, 0.5 and 0.5 moves each half way, a light
-     * object can take more than a heavy one. Which push-out: this one moves by a contact you
-     * already have; {@link #separate} when a must end up clear, exactly; {@link Snap#pushOut}
-     * for two boxes, with the side.
-     *
+     * A shape pushed out of the other by its share of the contact's depth: moved against the
+     * contact's normal by {@code share * depth}. The contact is the one between this shape and
+     * the other ({@code Contact.between(shape, other)}); for the other shape, pass
+     * {@code contact.flipped()}. Shares that add up to 1 leave the two just touching:
+     * {@code pushOut(a, c, 1)} moves a alone; {@code pushOut(a, c, 0.5f)} and
+     * {@code pushOut(b, c.flipped(), 0.5f)} move each half way; a light object can take more
+     * than a heavy one. Which push-out: this one moves by a contact you already have;
+     * {@link #separate} when the shape must end up clear, exactly; {@link Snap#pushOut} for
+     * two boxes, with the side.
      * <p>A NaN {@code share} throws, naming it
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
      * @param <S>     the kind of shape
-     * @param a       the first shape of the contact, not null
-     * @param contact the contact between a and b, not null
-     * @param share   how much of the depth a moves, from 0 to 1
-     * @return a, moved, never null
-     * @throws IllegalArgumentException if a shape or the contact is null, share is outside
+     * @param shape   the shape to push, the first of the contact, not null
+     * @param contact the contact from this shape to the other (its normal points from this
+     *                shape into the other), not null
+     * @param share   how much of the depth the shape moves, from 0 to 1
+     * @return the shape, moved, never null
+     * @throws IllegalArgumentException if the shape or the contact is null, share is outside
      *                                  [0, 1], or the move gives a coordinate too large for a
      *                                  float
      */
-    public static <S extends Shape> S pushOutA(S a, Contact contact, float share) {
-        return translated(Check.notNull("a", a), contact, -share, share);
-    }
-
-    /**
-     * Shape b pushed out of a by its share of the depth: moved along the normal by
-     * {@code share * depth} (see {@link #pushOutA}).
-     *
-     * <p>A NaN {@code share} throws, naming it
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param <S>     the kind of shape
-     * @param b       the second shape of the contact, not null
-     * @param contact the contact between a and b, not null
-     * @param share   how much of the depth b moves, from 0 to 1
-     * @return b, moved, never null
-     * @throws IllegalArgumentException if a shape or the contact is null, share is outside
-     *                                  [0, 1], or the move gives a coordinate too large for a
-     *                                  float
-     */
-    public static <S extends Shape> S pushOutB(S b, Contact contact, float share) {
-        return translated(Check.notNull("b", b), contact, share, share);
+    public static <S extends Shape> S pushOut(S shape, Contact contact, float share) {
+        return translated(Check.notNull("shape", shape), contact, -share, share);
     }
 
     /**
@@ -142,10 +124,10 @@ public final class Response {
      * Shape a moved the shortest way out of b, so that afterwards {@code a.overlaps(b)} is
      * false, exactly, and the two touch to within float rounding. Shapes that do not overlap
      * come back unchanged. Which push-out: this one when a must end up clear of b, any pair
-     * with area; {@link #pushOutA(Shape, Contact, float)} to move by a contact you already have;
+     * with area; {@link #pushOut(Shape, Contact, float)} to move by a contact you already have;
      * {@link Snap#pushOut} for two boxes, with the side.
      *
-     * <p>Why more than {@link #pushOutA(Shape, Contact, float)}: a contact's normal and depth are
+     * <p>Why more than {@link #pushOut(Shape, Contact, float)}: a contact's normal and depth are
      * floats, so moving by them can leave the shapes overlapping by a rounding error (a few
      * millionths of a pixel), and a game loop that pushes out until {@code overlaps} is false
      * would never finish. This moves along the same normal, by the depth and then by the

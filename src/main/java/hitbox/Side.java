@@ -37,24 +37,6 @@ public enum Side {
     RIGHT;
 
     /**
-     * Did the mover land? True for {@link #TOP}: it stands on the obstacle and may jump again.
-     *
-     * @return true for {@link #TOP}
-     */
-    public boolean landed() {
-        return this == TOP;
-    }
-
-    /**
-     * Did the mover run into a wall?
-     *
-     * @return true for {@link #LEFT} or {@link #RIGHT}
-     */
-    public boolean isWall() {
-        return this == LEFT || this == RIGHT;
-    }
-
-    /**
      * The side across from this one: TOP and BOTTOM, LEFT and RIGHT; NONE stays NONE.
      *
      * @return the opposite side, never null

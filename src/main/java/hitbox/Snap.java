@@ -145,7 +145,7 @@ public final class Snap {
 
         /** @return true if the mover was pushed onto the obstacle's top: it stands and may jump */
         public boolean landed() {
-            return side.landed();
+            return side == Side.TOP;
         }
 
         /**
@@ -195,7 +195,7 @@ public final class Snap {
      *
      * <p>Which push-out: this one for two boxes, when the side matters (landed, bumped a
      * wall); {@link Response#separate} for any other pair, or a guaranteed clear result;
-     * {@link Response#pushOutA(Shape, Contact, float)} to move by a contact you already have (see the
+     * {@link Response#pushOut(Shape, Contact, float)} to move by a contact you already have (see the
      * <a href="package-summary.html#push-out">package documentation</a>).
      *
      * <p>Of the four ways out (up onto the top, down below the bottom, left, right) the

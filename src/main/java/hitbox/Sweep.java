@@ -80,7 +80,7 @@ import hitbox.internal.*;
  * {@code double}: for whole-number coordinates and velocities every decision (hit or not,
  * which side) is exact.
  *
- * <p>This class is longer than most (about 840 lines) because it is the public face of every
+ * <p>This class is longer than most (about 750 lines) because it is the public face of every
  * swept pair and of the turning sweep, each with its full javadoc; the maths is in
  * package-private kernels ({@code SweptPairs}, {@code MoveAndSlide}, {@code TurningSweep}).
  *
@@ -600,9 +600,10 @@ public final class Sweep {
      * advancement, each step shorter than the gap left divided by the fastest any point of
      * one can gain on the other, {@code |va - vb| + |turnA| Ra + |turnB| Rb} with R each
      * body's farthest vertex from its pivot); the hit is where the gap first falls below
-     * {@code 1e-3} pixels while closing in, at a t at which the two, each placed by
-     * {@link #turnedAt}, do not overlap; the normal points from a into b. Swapping the two
-     * bodies gives the same t and the opposite normal (to within that stopping rule).
+     * {@code 1e-3} pixels while closing in, at a t at which the two, each placed there (turned
+     * and moved as above in double precision, then rounded to floats), do not overlap; the
+     * normal points from a into b. Swapping the two bodies gives the same t and the opposite
+     * normal (to within that stopping rule).
      *
      * @param a       the first body where it starts, any polygon (a concave one is taken as
      *                its convex pieces), not null
@@ -637,42 +638,6 @@ public final class Sweep {
         Check.finite("vby", vby);
         Check.finite("turnB", turnB);
         return TurningSweep.timeOfImpact(a, pivotAX, pivotAY, vax, vay, turnA, b, pivotBX, pivotBY, vbx, vby, turnB);
-    }
-
-    /**
-     * The turning mover of {@link #turningTimeOfImpact} at time t: turned by
-     * {@code t * turn} about the pivot and moved by {@code t * (vx, vy)}. For drawing where
-     * it was hit.
-     *
-     * @param mover  the shape where it starts, not null
-     * @param pivotX the point it turns about, x
-     * @param pivotY the point it turns about, y
-     * @param vx     the pivot's motion this frame, x part
-     * @param vy     the pivot's motion this frame, y part
-     * @param turn   how far it turns this frame, radians
-     * @param t      the time, usually the hit's t
-     * @return the polygon at time t, never null
-     * @throws IllegalArgumentException if the mover is null, a number is NaN or infinite, or
-     *                                  the turned polygon would leave the float range or
-     *                                  collapse (vertices rounded onto each other)
-     */
-    public static Polygon turnedAt(Polygon mover, float pivotX, float pivotY, float vx, float vy, float turn, float t) {
-        checkArgs(mover, vx, vy, mover);
-        Check.finite("pivotX", pivotX);
-        Check.finite("pivotY", pivotY);
-        Check.finite("turn", turn);
-        Check.finite("t", t);
-        double[] xy = TurningSweep.at(mover.raw(), pivotX, pivotY, vx, vy, turn, t);
-        float[] f = new float[xy.length];
-        for (int i = 0; i < xy.length; i++) {
-            f[i] = (float) xy[i];
-        }
-        try {
-            return Polygon.of(f);
-        } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException("pivotX, pivotY, vx, vy, turn and t move the polygon out of the float range"
-                    + " or squash it: " + e.getMessage(), e);
-        }
     }
 
     // ---------------------------------------------------------------- move and slide
@@ -761,16 +726,6 @@ public final class Sweep {
         /** @return true if the box came down on the top of an obstacle: it stands, and may jump */
         public boolean landed() {
             return hit(Side.TOP);
-        }
-
-        /** @return true if the box went up into the bottom of an obstacle */
-        public boolean hitHead() {
-            return hit(Side.BOTTOM);
-        }
-
-        /** @return true if the box ran into the left or right side of an obstacle */
-        public boolean hitWall() {
-            return hit(Side.LEFT) || hit(Side.RIGHT);
         }
 
         /** @return true if the box hit anything at all */

@@ -94,8 +94,7 @@
  *       distance is {@link java.lang.Float#POSITIVE_INFINITY}, so {@code t <= 1} reads "hits
  *       this frame"; an index is -1, as in {@link java.util.List#indexOf}; a boolean is
  *       false; a set of sides is 0 ({@code NONE}); an array of answers is empty, never
- *       null ({@link hitbox.Grid#path} when there is no route, {@link hitbox.Hits#all} when
- *       nothing is hit). {@link hitbox.Side#NONE} is never "no
+ *       null ({@link hitbox.Grid#path} when there is no route). {@link hitbox.Side#NONE} is never "no
  *       result" on its own: it is the side of a result that has no side (a hit that started
  *       overlapping, a {@link hitbox.Snap.Push} that did not push).</li>
  *   <li><b>Exact, and conservative where it rounds.</b> Decisions are exact for floats; a
@@ -173,9 +172,10 @@
  * <ul>
  *   <li>{@link hitbox.Response#separate}: a shape must end up clear of another, exactly
  *       ({@code overlaps} is false afterwards), for any pair with area. The default.</li>
- *   <li>{@link hitbox.Response#pushOutA(hitbox.Shape, hitbox.Contact, float)} and {@code pushOutB}: you already
+ *   <li>{@link hitbox.Response#pushOut(hitbox.Shape, hitbox.Contact, float)}: you already
  *       have the {@link hitbox.Contact} and move by its depth, one shape or both (a
- *       {@code share} each); may leave a rounding hair of overlap.</li>
+ *       {@code share} each, the other with {@code contact.flipped()}); may leave a rounding
+ *       hair of overlap.</li>
  *   <li>{@link hitbox.Snap#pushOut(hitbox.Rect, hitbox.Rect)}: two boxes, pushed along one axis, with the
  *       {@link hitbox.Side} the mover was pushed to (landed, hit a wall): a platformer's
  *       tiles.</li>

@@ -70,7 +70,7 @@ class BadInputCatalogTest {
             "Polygon.translated", "Ellipse.translated", "Capsule.translated", "Shape.translated",
             "Circle.rotated", "Segment.rotated", "Polygon.rotated", "Ellipse.rotated", "Capsule.rotated", "Shape.rotated",
             "Transform.of", "Transform.translation", "Transform.rotation", "Transform.scaling", "Transform.apply", "Polygon.triangle", "Polygon.rotatedRect", "Polygon.regular", "Polygon.of",
-            "Ray.between", "Sweep.timeOfImpact", "Sweep.move", "Response.pushOutA", "Response.pushOutB",
+            "Ray.between", "Sweep.timeOfImpact", "Sweep.move", "Response.pushOut",
             "Grid.parse", "Grid.fillRandom", "Grid.move", "Grid.moveObstacles", "Grid.fromPixels",
             // A broad phase refuses a bad box outright (issue 11), so a stored box always holds.
             "BroadPhase.grid", "BroadPhase.put", "BroadPhase.query", "BroadPhase.raycast",

@@ -1,13 +1,12 @@
 package hitbox;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
-import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import java.util.function.Supplier;
+import java.util.stream.IntStream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -15,9 +14,11 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * Obstacles in a {@link BroadPhase} give exactly the answers of a list of them (the list's index
- * is the box's id): {@link BroadPhase#query(Shape, java.util.function.IntConsumer)} as
- * {@link Hits#all}, and {@link Motion} as its list form, for every structure, random worlds,
- * touching and far-away boxes, and movers far out, huge or flat; NaN and infinite speeds.
+ * is the box's id): {@link BroadPhase#query(Shape, java.util.function.IntConsumer)} as every
+ * listed box the query box {@link Shape#overlaps}, for every structure, random worlds,
+ * touching and far-away boxes, and boxes far out, huge or flat. (Motion's broad-phase forms,
+ * tested here against their list forms, went in issue 30: a sketch with thousands of
+ * obstacles asks a World.)
  */
 class BroadPhaseObstaclesTest {
 
@@ -74,15 +75,6 @@ class BroadPhaseObstaclesTest {
         }
     }
 
-    @Test
-    void nullObstacles_areRefusedByName() {
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> Motion.blocked(new Rect(0, 0, 1, 1), 1, 1, (BroadPhase) null));
-        assertEquals(true, e.getMessage().contains("obstacles"), e.getMessage());
-        e = assertThrows(IllegalArgumentException.class, () -> Motion.bounce(new Rect(0, 0, 1, 1), 1, 1, (BroadPhase) null, 100, 100));
-        assertEquals(true, e.getMessage().contains("obstacles"), e.getMessage());
-    }
-
     private static float coordinate(Random random, int world) {
         return world % 2 == 0 ? random.nextInt(200) : random.nextFloat() * 200;
     }
@@ -105,8 +97,8 @@ class BroadPhaseObstaclesTest {
         List<Integer> found = new ArrayList<>();
         b.query(new Rect(x, y, w, h), found::add);
         int[] ids = found.stream().mapToInt(Integer::intValue).sorted().toArray();
-        assertArrayEquals(Hits.all(new Rect(x, y, w, h), rects), ids, "all " + where);
-        assertEquals(Motion.blocked(new Rect(x, y, w, h), vx, vy, rects), Motion.blocked(new Rect(x, y, w, h), vx, vy, b), "rectBlocked " + where);
-        assertEquals(Motion.bounce(new Rect(x, y, w, h), vx, vy, rects, 300, 300), Motion.bounce(new Rect(x, y, w, h), vx, vy, b, 300, 300), "bounce " + where);
+        Rect box = new Rect(x, y, w, h);
+        int[] want = IntStream.range(0, rects.size()).filter(i -> box.overlaps(rects.get(i))).toArray();
+        assertArrayEquals(want, ids, "all " + where);
     }
 }

@@ -56,7 +56,7 @@ class ContactTest {
     })
     void side_isTheSideOfB_thatAIsAgainst(float nx, float ny, Side side) {
         assertEquals(side, new Contact(nx, ny, 1).side());
-        assertEquals(side == Side.TOP, new Contact(nx, ny, 1).side().landed());
+        assertEquals(side == Side.TOP, new Hit(0.5f, nx, ny, new Contact(nx, ny, 1).side()).landed(), "a hit with that side landed");
     }
 
     @Test

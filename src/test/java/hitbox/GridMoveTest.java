@@ -83,7 +83,7 @@ class GridMoveTest {
         Sweep.Move m = g.move(standing, 60, 1);
         assertEquals(37.5f - 10, m.x(), "stopped against the wall cell (3, 3)");
         assertEquals(47.5f, m.y());
-        assertTrue(m.hitWall());
+        assertTrue(m.hit(Side.LEFT) || m.hit(Side.RIGHT));
         assertTrue(m.landed());
         assertEquals(oracle(g, standing, 60, 1), m);
     }
@@ -94,7 +94,7 @@ class GridMoveTest {
         Rect under = new Rect(80, 45, 10, 10);
         Sweep.Move m = g.move(under, 0, -30);
         assertEquals(37.5f, m.y());
-        assertTrue(m.hitHead());
+        assertTrue(m.hit(Side.BOTTOM));
     }
 
     @Test

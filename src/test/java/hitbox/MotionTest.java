@@ -159,8 +159,6 @@ class MotionTest {
                 assertThrows(IllegalArgumentException.class, () -> Motion.blocked(r, 1, 1, (List<Rect>) null)).getMessage());
         assertEquals("obstacles must not be null",
                 assertThrows(IllegalArgumentException.class, () -> Motion.blocked(new Circle(0, 0, 1), 1, 1, (List<Rect>) null)).getMessage());
-        assertEquals("obstacles must not be null",
-                assertThrows(IllegalArgumentException.class, () -> Motion.blocked(r, 1, 1, (BroadPhase) null)).getMessage());
         List<Rect> withHole = Arrays.asList(r, null);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> Motion.blocked(new Rect(100, 100, 1, 1), 1, 1, withHole));

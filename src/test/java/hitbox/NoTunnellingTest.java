@@ -45,7 +45,7 @@ class NoTunnellingTest {
             assertTrue(t < 1, "box missed " + where);
             Hit boxHit = Sweep.timeOfImpact(box, vx, vy, wall);
             assertNotNull(boxHit, "box missed " + where);
-            assertEquals(upright, boxHit.side().isWall(), where);
+            assertEquals(upright, (boxHit.side() == Side.LEFT || boxHit.side() == Side.RIGHT), where);
             // Stopped at the impact, it touches the wall and is not inside it.
             assertFalse(Collide.rectRect(box.x() + boxHit.t() * vx * 0.999999f, box.y() + boxHit.t() * vy * 0.999999f, 2, 2,
                     wall.x(), wall.y(), wall.w(), wall.h()), where);

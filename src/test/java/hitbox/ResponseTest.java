@@ -33,14 +33,14 @@ class ResponseTest {
         "0.25, 9.25, 22.25",
     })
     void pushOut_sharesAddUp_toTheDepth(float shareA, float ay, float by) {
-        assertEquals(new Circle(5, ay, 1), Response.pushOutA(new Circle(5, 10, 1), DOWN_3, shareA));
-        assertEquals(new Circle(5, by, 1), Response.pushOutB(new Circle(5, 20, 1), DOWN_3, 1 - shareA));
+        assertEquals(new Circle(5, ay, 1), Response.pushOut(new Circle(5, 10, 1), DOWN_3, shareA));
+        assertEquals(new Circle(5, by, 1), Response.pushOut(new Circle(5, 20, 1), DOWN_3.flipped(), 1 - shareA));
     }
 
     @Test
     void pushOut_wholeWay_withShareOne() {
-        assertEquals(new Rect(5, 7, 2, 2), Response.pushOutA(new Rect(5, 10, 2, 2), DOWN_3, 1));
-        assertEquals(new Rect(5, 23, 2, 2), Response.pushOutB(new Rect(5, 20, 2, 2), DOWN_3, 1));
+        assertEquals(new Rect(5, 7, 2, 2), Response.pushOut(new Rect(5, 10, 2, 2), DOWN_3, 1));
+        assertEquals(new Rect(5, 23, 2, 2), Response.pushOut(new Rect(5, 20, 2, 2), DOWN_3.flipped(), 1));
     }
 
     @Test
@@ -48,18 +48,18 @@ class ResponseTest {
         Circle a = new Circle(0, 0, 10);
         Circle b = new Circle(15, 0, 10);
         Contact c = a.contact(b);
-        Circle movedA = Response.pushOutA(a, c, 1);
+        Circle movedA = Response.pushOut(a, c, 1);
         assertEquals(new Circle(-5, 0, 10), movedA);
         assertNull(movedA.contact(b), "touching after the push");
-        assertEquals(new Circle(20, 0, 10), Response.pushOutB(b, c, 1));
-        Circle halfA = Response.pushOutA(a, c, 0.5f);
-        Circle halfB = Response.pushOutB(b, c, 0.5f);
+        assertEquals(new Circle(20, 0, 10), Response.pushOut(b, c.flipped(), 1));
+        Circle halfA = Response.pushOut(a, c, 0.5f);
+        Circle halfB = Response.pushOut(b, c.flipped(), 0.5f);
         assertEquals(new Circle(-2.5f, 0, 10), halfA);
         assertEquals(new Circle(17.5f, 0, 10), halfB);
         assertFalse(halfA.overlaps(halfB));
-        Rect r = Response.pushOutA(new Rect(0, 0, 10, 10), new Contact(1, 0, 4), 1);
+        Rect r = Response.pushOut(new Rect(0, 0, 10, 10), new Contact(1, 0, 4), 1);
         assertEquals(new Rect(-4, 0, 10, 10), r);
-        Polygon p = Response.pushOutB(Polygon.of(0, 0, 4, 0, 0, 3), new Contact(0, -1, 2), 1);
+        Polygon p = Response.pushOut(Polygon.of(0, 0, 4, 0, 0, 3), new Contact(0, -1, 2).flipped(), 1);
         assertEquals(Polygon.of(0, -2, 4, -2, 0, 1), p);
     }
 
@@ -69,21 +69,17 @@ class ResponseTest {
         String message = Float.isNaN(share) || Float.isInfinite(share)
                 ? "share must be a finite number, was " + share
                 : "share must be between 0 and 1, was " + share;
-        assertEquals(message, assertThrows(IllegalArgumentException.class, () -> Response.pushOutB(new Rect(0, 0, 1, 1), DOWN_3, share)).getMessage());
+        assertEquals(message, assertThrows(IllegalArgumentException.class, () -> Response.pushOut(new Rect(0, 0, 1, 1), DOWN_3.flipped(), share)).getMessage());
         assertEquals(message, assertThrows(IllegalArgumentException.class,
-                () -> Response.pushOutA(new Circle(0, 0, 1), DOWN_3, share)).getMessage());
+                () -> Response.pushOut(new Circle(0, 0, 1), DOWN_3, share)).getMessage());
     }
 
     @Test
     void pushOut_badArguments_throwNamingThem() {
         assertEquals("contact must not be null",
-                assertThrows(IllegalArgumentException.class, () -> Response.pushOutA(new Circle(0, 0, 1), null, 1)).getMessage());
-        assertEquals("contact must not be null",
-                assertThrows(IllegalArgumentException.class, () -> Response.pushOutB(new Circle(0, 0, 1), null, 1)).getMessage());
-        assertEquals("a must not be null",
-                assertThrows(IllegalArgumentException.class, () -> Response.pushOutA((Circle) null, DOWN_3, 1)).getMessage());
-        assertEquals("b must not be null",
-                assertThrows(IllegalArgumentException.class, () -> Response.pushOutB((Circle) null, DOWN_3, 1)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> Response.pushOut(new Circle(0, 0, 1), null, 1)).getMessage());
+        assertEquals("shape must not be null",
+                assertThrows(IllegalArgumentException.class, () -> Response.pushOut((Circle) null, DOWN_3, 1)).getMessage());
     }
 
     // ------------------------------------------------------------------------ bounce and slide
@@ -206,8 +202,8 @@ class ResponseTest {
         Contact c = a.contact(b);
         Assume.that(c != null);
         float share = quarters / 4f;
-        Shape movedA = Response.pushOutA(a, c, share);
-        Shape movedB = Response.pushOutB(b, c, 1 - share);
+        Shape movedA = Response.pushOut(a, c, share);
+        Shape movedB = Response.pushOut(b, c.flipped(), 1 - share);
         assertTrue(ContactFixtures.overlapMeasure(movedA, movedB) <= ContactFixtures.FREE_MEASURE,
                 () -> movedA + " and " + movedB + " should only touch");
     }

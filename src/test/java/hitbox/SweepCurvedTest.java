@@ -191,7 +191,7 @@ class SweepCurvedTest {
                     assertNotNull(hit, m + " missed " + w + " at " + degrees);
                     assertTrue(upright ? Math.abs(hit.t() * vx) < half : Math.abs(hit.t() * vy) < half, "stopped before the wall: " + m + " " + w + " " + hit);
                     assertFalse(moved(m, hit.t(), vx, vy).overlaps(w), m + " " + w + " " + hit);
-                    assertEquals(upright, hit.side().isWall(), m + " " + w + " " + hit + " at " + degrees);
+                    assertEquals(upright, (hit.side() == Side.LEFT || hit.side() == Side.RIGHT), m + " " + w + " " + hit + " at " + degrees);
                 }
             }
         }

@@ -37,8 +37,8 @@ class SweepMoveTest {
         assertEquals(4f, m.vx());
         assertEquals(0f, m.vy());
         assertTrue(m.landed());
-        assertFalse(m.hitWall());
-        assertFalse(m.hitHead());
+        assertFalse(m.hit(Side.LEFT) || m.hit(Side.RIGHT));
+        assertFalse(m.hit(Side.BOTTOM));
     }
 
     @Test
@@ -58,7 +58,7 @@ class SweepMoveTest {
         assertEquals(55f, m.x());
         assertEquals(5f, m.y());
         assertTrue(m.landed());
-        assertFalse(m.hitWall(), "a seam between tiles is not a wall");
+        assertFalse(m.hit(Side.LEFT) || m.hit(Side.RIGHT), "a seam between tiles is not a wall");
     }
 
     @Test
@@ -69,7 +69,7 @@ class SweepMoveTest {
         assertEquals(0f, m.vx());
         assertEquals(10f, m.vy());
         assertTrue(m.hit(Side.LEFT));
-        assertTrue(m.hitWall());
+        assertTrue(m.hit(Side.LEFT) || m.hit(Side.RIGHT));
         assertFalse(m.landed());
     }
 
@@ -86,7 +86,7 @@ class SweepMoveTest {
         assertEquals(25f, m.y());
         assertEquals(3f, m.x());
         assertEquals(0f, m.vy());
-        assertTrue(m.hitHead());
+        assertTrue(m.hit(Side.BOTTOM));
     }
 
     @Test
@@ -98,14 +98,14 @@ class SweepMoveTest {
         assertEquals(0f, m.vx());
         assertEquals(0f, m.vy());
         assertTrue(m.landed());
-        assertTrue(m.hitWall());
+        assertTrue(m.hit(Side.LEFT) || m.hit(Side.RIGHT));
     }
 
     @Test
     void move_veryFastIntoAThinWall_stopsAgainstIt() {
         Sweep.Move m = Sweep.move(new Rect(0, 0, 2, 2), 10_000, 0, List.of(new Rect(5000, -10, 0.5f, 20)));
         assertEquals(4998f, m.x());
-        assertTrue(m.hitWall());
+        assertTrue(m.hit(Side.LEFT) || m.hit(Side.RIGHT));
     }
 
     @Test
@@ -114,7 +114,7 @@ class SweepMoveTest {
         Rect wall = new Rect(40, -100, 10, 200);
         Sweep.Move m = Sweep.move(BOX, 50, 0, List.of(stuckIn, wall));
         assertEquals(30f, m.x(), "walks out of the first and stops at the second");
-        assertTrue(m.hitWall());
+        assertTrue(m.hit(Side.LEFT) || m.hit(Side.RIGHT));
     }
 
     @Test

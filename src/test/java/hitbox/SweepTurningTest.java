@@ -23,13 +23,13 @@ class SweepTurningTest {
         Rect post = new Rect(241, 241, 2, 2); // at 45 degrees, 58 px from the hub
         float turn = (float) (Math.PI / 2);
         assertFalse(blade.overlaps(post), "clear at the start");
-        assertFalse(Sweep.turnedAt(blade, 200, 200, 0, 0, turn, 1).overlaps(post), "clear at the end");
+        assertFalse(turnedAt(blade, 200, 200, 0, 0, turn, 1).overlaps(post), "clear at the end");
         assertNull(Sweep.timeOfImpact(blade.bounds(), 0, 0, post), "the straight sweep sees nothing");
         Hit hit = Sweep.turningTimeOfImpact(blade, 200, 200, 0, 0, turn, post);
         assertNotNull(hit, "the turning sweep hits the post");
         assertTrue(hit.t() > 0.4 && hit.t() < 0.5, "t " + hit.t());
-        assertFalse(Sweep.turnedAt(blade, 200, 200, 0, 0, turn, hit.t()).overlaps(post), "clear at the hit");
-        assertTrue(Sweep.turnedAt(blade, 200, 200, 0, 0, turn, hit.t() + 0.01f).overlaps(post), "into it just after");
+        assertFalse(turnedAt(blade, 200, 200, 0, 0, turn, hit.t()).overlaps(post), "clear at the hit");
+        assertTrue(turnedAt(blade, 200, 200, 0, 0, turn, hit.t() + 0.01f).overlaps(post), "into it just after");
         // Turning clockwise on screen, the blade's lower-right half meets the post: the normal points into the post, down-left of it.
         assertTrue(hit.nx() * -1 + hit.ny() * 1 > 0, "normal " + hit);
     }
@@ -44,7 +44,7 @@ class SweepTurningTest {
             Hit hit = Sweep.turningTimeOfImpact(blade, 100, 100, 0, 0, turn, wall);
             assertNotNull(hit, "hits " + wall);
             assertEquals(0.5, hit.t(), 0.03, "t for " + wall);
-            assertFalse(Sweep.turnedAt(blade, 100, 100, 0, 0, turn, hit.t()).overlaps(wall), "clear at the hit: " + wall);
+            assertFalse(turnedAt(blade, 100, 100, 0, 0, turn, hit.t()).overlaps(wall), "clear at the hit: " + wall);
         }
     }
 
@@ -54,7 +54,7 @@ class SweepTurningTest {
         Rect post = new Rect(241, 241, 2, 2);
         float turn = (float) (Math.PI / 2);
         Hit hit = Sweep.turningTimeOfImpact(blade, 200, 200, 0, 0, turn, post);
-        Polygon touching = Sweep.turnedAt(blade, 200, 200, 0, 0, turn, hit.t());
+        Polygon touching = turnedAt(blade, 200, 200, 0, 0, turn, hit.t());
         assertNull(Sweep.turningTimeOfImpact(touching, 200, 200, 0, 0, -turn, post), "turning away");
         Hit again = Sweep.turningTimeOfImpact(touching, 200, 200, 0, 0, turn, post);
         assertNotNull(again, "turning on into it");
@@ -95,7 +95,7 @@ class SweepTurningTest {
             }
             if (hit != null) {
                 hits++;
-                assertFalse(Sweep.turnedAt(mover, c.x(), c.y(), vx, vy, turn, hit.t()).overlaps(obstacle), "overlapping at the hit");
+                assertFalse(turnedAt(mover, c.x(), c.y(), vx, vy, turn, hit.t()).overlaps(obstacle), "overlapping at the hit");
             }
         }
         assertTrue(hits > 30, hits + " hits");
@@ -110,10 +110,26 @@ class SweepTurningTest {
         int steps = (int) Math.min(20000, Math.ceil(speed / 0.05) + 1);
         for (int k = 0; k <= steps; k++) {
             float t = (float) k / steps;
-            if (Sweep.turnedAt(mover, px, py, vx, vy, turn, t).overlaps(obstacle)) {
+            if (turnedAt(mover, px, py, vx, vy, turn, t).overlaps(obstacle)) {
                 return t;
             }
         }
         return 2;
+    }
+
+    /**
+     * The turning mover at time t, as the sweep's contract places it: each vertex turned by
+     * {@code t * turn} about the pivot and moved by {@code t * (vx, vy)}, in double precision,
+     * then rounded to floats (the test's own placement, not the library's).
+     */
+    private static Polygon turnedAt(Polygon mover, float px, float py, float vx, float vy, float turn, float t) {
+        double c = StrictMath.cos((double) t * turn), s = StrictMath.sin((double) t * turn);
+        float[] xy = new float[2 * mover.size()];
+        for (int i = 0; i < mover.size(); i++) {
+            double x = mover.x(i) - px, y = mover.y(i) - py;
+            xy[2 * i] = (float) (px + (double) t * vx + c * x - s * y);
+            xy[2 * i + 1] = (float) (py + (double) t * vy + s * x + c * y);
+        }
+        return Polygon.of(xy);
     }
 }

@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Test;
 
 import hitbox.Grid;
 import hitbox.Rect;
+import hitbox.Side;
 import hitbox.Sweep;
 import hitbox.processing.Overlay;
 import hitbox.sketchkit.Script;
@@ -93,8 +94,8 @@ class S09b_HybridGridTest {
             if (s.onGround) {
                 rowsStoodOn.add(g.rowAt(p.bottom()));
             }
-            walls[0] += s.last.hitWall() ? 1 : 0;
-            heads[0] += s.last.hitHead() ? 1 : 0;
+            walls[0] += (s.last.hit(Side.LEFT) || s.last.hit(Side.RIGHT)) ? 1 : 0;
+            heads[0] += s.last.hit(Side.BOTTOM) ? 1 : 0;
         }).run();
         assertTrue(rowsStoodOn.size() >= 2, "stood on the floor and at least one platform: rows " + rowsStoodOn);
         assertTrue(walls[0] > 0, "ran into a wall");
@@ -173,8 +174,8 @@ class S09b_HybridGridTest {
                 assertEquals(p.bottom(), g.cellY(g.rowAt(p.bottom())), "frame " + s.frameCount + ": snapped onto a row line");
                 rowsStoodOn.add(g.rowAt(p.bottom()));
             }
-            walls[0] += s.last.hitWall() ? 1 : 0;
-            heads[0] += s.last.hitHead() ? 1 : 0;
+            walls[0] += (s.last.hit(Side.LEFT) || s.last.hit(Side.RIGHT)) ? 1 : 0;
+            heads[0] += s.last.hit(Side.BOTTOM) ? 1 : 0;
         }).run();
         assertTrue(rowsStoodOn.size() >= 2, "stood on the floor and at least one platform: rows " + rowsStoodOn);
         assertTrue(walls[0] > 0, "ran into a wall");

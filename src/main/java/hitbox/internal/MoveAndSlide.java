@@ -71,7 +71,7 @@ public final class MoveAndSlide {
             }
             mx *= 1 - first;
             my *= 1 - first;
-            if (side.isWall()) {
+            if (side == Side.LEFT || side == Side.RIGHT) {
                 mx = 0;
                 keepVx = 0;
             } else {
