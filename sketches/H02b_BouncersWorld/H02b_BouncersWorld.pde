@@ -61,9 +61,12 @@ void setup() {
     float h = random(10, 26);
     obstacles.add(world.add(new Rect(random(0, width - w), random(0, height - h), w, h)).layers(OBSTACLE, BOUNCER));
   }
+  ArrayList<Body> inTheWay = new ArrayList<Body>();
   while (bouncers.size() < bouncerCount) {
     Rect r = new Rect(random(0, width - size), random(0, height - size), size, size);
-    if (world.queryShape(r, body -> body.category() == OBSTACLE).isEmpty()) {   // start clear of obstacles
+    inTheWay.clear();
+    world.queryShape(r, body -> body.category() == OBSTACLE, inTheWay);   // the obstacles r overlaps
+    if (inTheWay.isEmpty()) {   // start clear of obstacles
       Body body = world.add(r).layers(BOUNCER, WALL | OBSTACLE);
       bouncers.add(new Bouncer(body, randomSpeed(), randomSpeed()));
     }

@@ -49,12 +49,13 @@ import java.util.function.Predicate;
  * listeners, so nothing of the sketch runs while the world is changing.
  *
  * <h2>Queries</h2>
- * What a point, a box, a shape or a ray meets, and what a body overlaps now, each with an
- * optional filter ({@code Predicate<Body>}); answers are lists, bodies in the order they were
- * added, ray hits nearest first, unmodifiable. Each has a form that fills the caller's list
- * instead, which allocates nothing once the list has grown. A {@link Grid} added with
- * {@link #add(Grid)} is one body that acts as its solid cells (cells inside the grid; beyond
- * its edges is open here); a ray walks its cells along the ray.
+ * What a point, a shape (a box is a {@link Rect}) or a ray meets, and what a body overlaps
+ * now, each in two forms: the plain one asks about every body and hands back an unmodifiable
+ * list, bodies in the order they were added, ray hits nearest first; the other takes a filter
+ * ({@code Predicate<Body>}, {@code b -> true} for every body) and fills the caller's list,
+ * which allocates nothing once the list has grown: the form for a query every frame. A
+ * {@link Grid} added with {@link #add(Grid)} is one body that acts as its solid cells (cells
+ * inside the grid; beyond its edges is open here); a ray walks its cells along the ray.
  *
  * <h2>Bad input</h2>
  * A null, a NaN or infinite number or another world's body throws an
@@ -67,7 +68,7 @@ import java.util.function.Predicate;
  * exactly as it was: every body's pose and shape and the broad phase's boxes. Not
  * thread-safe.
  *
- * <p>This class is the face of the world, longer than most (about 1,000 lines, most of them
+ * <p>This class is the face of the world, longer than most (about 930 lines, most of them
  * javadoc of the public methods), over parts with one job each: the bodies with their poses
  * and boxes and the broad phase's upkeep ({@code BodyTable}), the contacts kept from step to
  * step ({@code ContactTracker}), a grid's body's cells ({@code GridCollider}), the queries
@@ -228,18 +229,6 @@ public final class World {
         own("body", body);
         checkNotInCallback("remove");
         table.remove(body);
-    }
-
-    /**
-     * Is the body in this world?
-     *
-     * @param body any body, not null
-     * @return true if it was added to this world and not removed
-     * @throws IllegalArgumentException if {@code body} is null
-     */
-    public boolean contains(Body body) {
-        Check.notNull("body", body);
-        return body.world == this;
     }
 
     /** @return how many bodies the world holds */
@@ -667,24 +656,8 @@ public final class World {
      * @throws IllegalArgumentException if x or y is NaN or infinite
      */
     public List<Body> queryPoint(float x, float y) {
-        return queryPoint(x, y, ALL);
-    }
-
-    /**
-     * The bodies the filter keeps whose shape holds a point: see {@link #queryPoint(float, float)}.
-     *
-     * <p>A NaN or infinite coordinate throws, naming it.
-     *
-     * @param x      the point's x
-     * @param y      the point's y
-     * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added, unmodifiable; empty if none, never null
-     * @throws IllegalArgumentException if x or y is NaN or infinite, {@code filter} is null or
-     *                                  threw
-     */
-    public List<Body> queryPoint(float x, float y, Predicate<Body> filter) {
         List<Body> out = new ArrayList<>();
-        queryPoint(x, y, filter, out);
+        queryPoint(x, y, ALL, out);
         return Collections.unmodifiableList(out);
     }
 
@@ -714,62 +687,16 @@ public final class World {
     }
 
     /**
-     * The bodies whose shape overlaps a box ({@link Shape#overlaps}, the touching rule).
-     *
-     * <p>A NaN or infinite number, or a negative size, throws, naming it.
-     *
-     * @param x the box's left edge
-     * @param y the box's top edge
-     * @param w the box's width, 0 or more
-     * @param h the box's height, 0 or more
-     * @return the bodies, in the order added, unmodifiable; empty if none, never null
-     * @throws IllegalArgumentException if a number is NaN or infinite, or a size negative
-     */
-    public List<Body> queryBox(float x, float y, float w, float h) {
-        return queryShape(new Rect(x, y, w, h), ALL);
-    }
-
-    /**
-     * The bodies the filter keeps whose shape overlaps a box: see
-     * {@link #queryBox(float, float, float, float)}.
-     *
-     * <p>A NaN or infinite number, or a negative size, throws, naming it.
-     *
-     * @param x      the box's left edge
-     * @param y      the box's top edge
-     * @param w      the box's width, 0 or more
-     * @param h      the box's height, 0 or more
-     * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added, unmodifiable; empty if none, never null
-     * @throws IllegalArgumentException if a number is NaN or infinite, a size negative, or
-     *                                  {@code filter} is null or threw
-     */
-    public List<Body> queryBox(float x, float y, float w, float h, Predicate<Body> filter) {
-        return queryShape(new Rect(x, y, w, h), filter);
-    }
-
-    /**
-     * The bodies whose shape overlaps a shape ({@link Shape#overlaps}).
+     * The bodies whose shape overlaps a shape ({@link Shape#overlaps}, the touching rule): a
+     * box is {@code queryShape(new Rect(x, y, w, h))}.
      *
      * @param shape the shape, not null
      * @return the bodies, in the order added, unmodifiable; empty if none, never null
      * @throws IllegalArgumentException if {@code shape} is null
      */
     public List<Body> queryShape(Shape shape) {
-        return queryShape(shape, ALL);
-    }
-
-    /**
-     * The bodies the filter keeps whose shape overlaps a shape.
-     *
-     * @param shape  the shape, not null
-     * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added, unmodifiable; empty if none, never null
-     * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
-     */
-    public List<Body> queryShape(Shape shape, Predicate<Body> filter) {
         List<Body> out = new ArrayList<>();
-        queryShape(shape, filter, out);
+        queryShape(shape, ALL, out);
         return Collections.unmodifiableList(out);
     }
 
@@ -806,22 +733,8 @@ public final class World {
      * @throws IllegalStateException    if the body was removed
      */
     public List<Body> overlapping(Body body) {
-        return overlapping(body, ALL);
-    }
-
-    /**
-     * The bodies the filter keeps that a body overlaps now.
-     *
-     * @param body   a body of this world, not null
-     * @param filter which bodies to keep, not null
-     * @return the bodies, in the order added, unmodifiable; empty if none, never null
-     * @throws IllegalArgumentException if an argument is null, the body is another world's,
-     *                                  or {@code filter} threw
-     * @throws IllegalStateException    if the body was removed
-     */
-    public List<Body> overlapping(Body body, Predicate<Body> filter) {
         List<Body> out = new ArrayList<>();
-        overlapping(body, filter, out);
+        overlapping(body, ALL, out);
         return Collections.unmodifiableList(out);
     }
 
@@ -859,20 +772,8 @@ public final class World {
      * @throws IllegalArgumentException if {@code ray} is null
      */
     public List<BodyHit> raycast(Ray ray) {
-        return raycast(ray, ALL);
-    }
-
-    /**
-     * Every body the filter keeps that a ray meets, nearest first: see {@link #raycast(Ray)}.
-     *
-     * @param ray    the ray, not null
-     * @param filter which bodies to keep, not null
-     * @return the hits, nearest first, unmodifiable; empty if none, never null
-     * @throws IllegalArgumentException if an argument is null, or {@code filter} threw
-     */
-    public List<BodyHit> raycast(Ray ray, Predicate<Body> filter) {
         List<BodyHit> out = new ArrayList<>();
-        raycast(ray, filter, out);
+        raycast(ray, ALL, out);
         return Collections.unmodifiableList(out);
     }
 

@@ -88,7 +88,9 @@ class WorldBruteForceTest {
                     }
                 }
                 assertEquals(want, w.queryPoint(x, y), "point " + x + ", " + y);
-                assertEquals(want.stream().filter(odd).toList(), w.queryPoint(x, y, odd));
+                List<Body> kept = new ArrayList<>();
+                w.queryPoint(x, y, odd, kept);
+                assertEquals(want.stream().filter(odd).toList(), kept);
                 found += want.size();
 
                 Shape probe = local(rnd).translated(x, y);
@@ -99,9 +101,11 @@ class WorldBruteForceTest {
                     }
                 }
                 assertEquals(want, w.queryShape(probe), "shape " + probe);
-                assertEquals(want.stream().filter(odd).toList(), w.queryShape(probe, odd));
+                kept.clear();
+                w.queryShape(probe, odd, kept);
+                assertEquals(want.stream().filter(odd).toList(), kept);
                 Rect box = new Rect(x, y, rnd.nextInt(50), rnd.nextInt(50));
-                assertEquals(all.stream().filter(b -> meets(b, box)).toList(), w.queryBox(box.x(), box.y(), box.w(), box.h()));
+                assertEquals(all.stream().filter(b -> meets(b, box)).toList(), w.queryShape(box));
 
                 Body some = all.get(rnd.nextInt(all.size()));
                 if (some.grid() == null) {

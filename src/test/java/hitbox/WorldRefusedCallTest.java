@@ -76,7 +76,7 @@ class WorldRefusedCallTest {
         refused(IllegalArgumentException.class, "angle", () -> w.add(new Circle(0, 0, 1), 0, 0, Float.NaN));
         refused(IllegalArgumentException.class, "float range", () -> w.add(new Circle(0, 0, 1), Float.MAX_VALUE, 0, 0));
         refused(IllegalArgumentException.class, "x", () -> w.queryPoint(Float.NaN, 0));
-        refused(IllegalArgumentException.class, "w", () -> w.queryBox(0, 0, -1, 0));
+        refused(IllegalArgumentException.class, "w", () -> w.queryShape(new Rect(0, 0, -1, 0)));
     }
 
     @Test
@@ -131,18 +131,18 @@ class WorldRefusedCallTest {
             return Reaction.SLIDE;
         }));
         Predicate<Body> adds = b -> w.add(new Circle(0, 0, 3)) != null;
-        refused(IllegalStateException.class, "inside a filter", () -> w.queryPoint(105, 50, adds));
+        refused(IllegalStateException.class, "inside a filter", () -> w.queryPoint(105, 50, adds, new ArrayList<>()));
         refused(IllegalStateException.class, "inside a filter", () -> w.queryShape(new Circle(100, 50, 50), b -> {
             w.remove(b);
             return true;
-        }));
+        }, new ArrayList<>()));
         refused(IllegalArgumentException.class, "filter threw", () -> w.raycast(new Ray(0, 50, 1, 0), b -> {
             throw new ArithmeticException("boom");
-        }));
+        }, new ArrayList<>()));
         refused(IllegalStateException.class, "inside a filter", () -> w.overlapping(player, b -> {
             w.step();
             return true;
-        }));
+        }, new ArrayList<>()));
     }
 
     @Test
