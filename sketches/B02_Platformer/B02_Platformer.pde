@@ -82,7 +82,7 @@ void placeCoins() {
 void draw() {
   // The moving platform: there and back, through nothing (it ignores everything), carrying
   // what stands on it.
-  if (lift.x() > 400 || lift.x() < 200) {
+  if (lift.pivotX() > 400 || lift.pivotX() < 200) {
     liftSpeed = -liftSpeed;
   }
   world.move(lift, liftSpeed, 0, (me, other) -> null);

@@ -18,7 +18,7 @@ boolean demoAirborne = false;
 
 void playDemo() {
   float[] s = demoSteps[demoStep];
-  float x = player.body().x();
+  float x = player.body().pivotX();
   boolean onGround = player.onGround();
   left = false;
   right = false;
@@ -40,7 +40,7 @@ void playDemo() {
       done = true;
     }
   } else {
-    done = abs(lift.x() - s[1]) < 10;
+    done = abs(lift.pivotX() - s[1]) < 10;
   }
   if (done) {
     demoStep = (demoStep + 1) % demoSteps.length;

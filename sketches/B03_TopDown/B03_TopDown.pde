@@ -5,9 +5,9 @@
  * Seen from above: rocks that turn, walls set at angles, and a ship that turns and thrusts. A
  * sketch draws a turning thing with pushMatrix(); translate(x, y); rotate(angle); and its shape
  * around (0, 0), and world.add(shape, x, y, angle) makes the body that stands exactly there,
- * so the collision tests test what you see: body.turnBy turns it, body.x(), body.y() and
- * body.angle() are what translate and rotate take, and body.shape() is the turned outline on
- * the screen. The ship is a CharacterBody with up(0, 0): seen from above there is no ground,
+ * so the collision tests test what you see: body.turnBy turns it, body.pivotX(),
+ * body.pivotY() and body.angle() are what translate and rotate take, and body.shape() is the
+ * turned outline on the screen. The ship is a CharacterBody with up(0, 0): seen from above there is no ground,
  * every surface is a wall, and ship.move(vx, vy) slides it along the walls and round the rocks
  * (Response.slide then drops the part of its velocity that went into them). The rocks and
  * walls ignore each other (a category and a mask); world.step() reports each time the ship
@@ -130,7 +130,7 @@ void draw() {
 void lookForTheShip() {
   sight = null;
   seen = false;
-  float x = ship.body().x(), y = ship.body().y();
+  float x = ship.body().pivotX(), y = ship.body().pivotY();
   if (dist(sentryX, sentryY, x, y) < 1) {
     return;
   }
@@ -141,12 +141,12 @@ void lookForTheShip() {
 
 // Off one edge of the window, on at the other.
 void wrap(Body b, float margin) {
-  float x = b.x(), y = b.y();
+  float x = b.pivotX(), y = b.pivotY();
   if (x < -margin) x += width + 2 * margin;
   if (x > width + margin) x -= width + 2 * margin;
   if (y < -margin) y += height + 2 * margin;
   if (y > height + margin) y -= height + 2 * margin;
-  if (x != b.x() || y != b.y()) {
+  if (x != b.pivotX() || y != b.pivotY()) {
     b.moveTo(x, y);
   }
 }
@@ -173,15 +173,15 @@ void drawScene() {
 // around (0, 0). body.shape() is this outline, where the screen shows it.
 void drawTurned(Body b) {
   pushMatrix();
-  translate(b.x(), b.y());
+  translate(b.pivotX(), b.pivotY());
   rotate(b.angle());
   Draw.shape(g, b.homeShape());
   popMatrix();
 }
 
 void drawSentry() {
-  float endX = seen || sight == null ? ship.body().x() : sight.hit().x();
-  float endY = seen || sight == null ? ship.body().y() : sight.hit().y();
+  float endX = seen || sight == null ? ship.body().pivotX() : sight.hit().x();
+  float endY = seen || sight == null ? ship.body().pivotY() : sight.hit().y();
   stroke(seen ? Palette.HIT : Palette.MISS);
   strokeWeight(2);
   line(sentryX, sentryY, endX, endY);

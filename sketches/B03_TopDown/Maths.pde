@@ -7,7 +7,7 @@ void drawMaths() {
   if (showMaths) {
     WorldDraw.debug(g, world);
     if (sight != null && !seen) {
-      Overlay.guide(g, sight.hit().x(), sight.hit().y(), ship.body().x(), ship.body().y());   // the rest of the way
+      Overlay.guide(g, sight.hit().x(), sight.hit().y(), ship.body().pivotX(), ship.body().pivotY());   // the rest of the way
     }
   }
   Overlay.label(g, 8, 8, (seen ? "the sentry sees the ship" : "the ship is hidden from the sentry")
@@ -21,7 +21,7 @@ void drawMaths() {
       : sight.body() == ship.body() ? "the ship, at " + Overlay.number(sight.distance()) + " px: seen"
       : name(sight.body()) + ", at " + Overlay.number(sight.distance()) + " px: hidden";
   Body b = ship.body();
-  String text = "ship: translate(" + Overlay.number(b.x()) + ", " + Overlay.number(b.y()) + "); rotate("
+  String text = "ship: translate(" + Overlay.number(b.pivotX()) + ", " + Overlay.number(b.pivotY()) + "); rotate("
       + Overlay.number(b.angle()) + ")\nworld.raycastFirst(sentry to ship): " + answer;
   for (Collision c : met) {
     text += "\nthe ship met " + name(c.other()) + ": " + c.reaction() + ", normal ("

@@ -84,8 +84,9 @@ export const Collide: {
 
 export interface Body {
   readonly id: number;
-  readonly x: number;
-  readonly y: number;
+  /** Where its pivot stands (Java's Body.pivotX/pivotY): for world.add(shape), the centre of the shape's bounds. */
+  readonly pivotX: number;
+  readonly pivotY: number;
   readonly angle: number;
   readonly shape: Shape;
   readonly isSensor: boolean;

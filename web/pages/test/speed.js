@@ -281,8 +281,8 @@ function hitboxScene(scene) {
     else shape = H.polygon([0, 2, 4, 6].flatMap((k) => [b.x + b.corners[k], b.y + b.corners[k + 1]]));
     shapes.push(shape);
     const body = world.add(shape);
-    body.dx = body.x - b.x;   // its pivot (the centre of its bounds) from the scene's point
-    body.dy = body.y - b.y;
+    body.dx = body.pivotX - b.x;   // its pivot (the centre of its bounds) from the scene's point
+    body.dy = body.pivotY - b.y;
     return body;
   });
   return {

@@ -50,7 +50,7 @@ const met: Collision[] = hero.move(3, 1, reaction).concat(world.move(wall, 1, 0,
 for (const c of met) {
   const other: Body = c.other;
   const landed: boolean = c.landed;
-  console.log(other.id, other.x, other.y, other.angle, other.shape.kind, other.isSensor, c.reaction, c.t, c.nx, c.ny, c.side, c.x, c.y, landed);
+  console.log(other.id, other.pivotX, other.pivotY, other.angle, other.shape.kind, other.isSensor, c.reaction, c.t, c.nx, c.ny, c.side, c.x, c.y, landed);
 }
 const state: boolean = hero.onGround || hero.onWall || hero.onCeiling;
 const ground: Body | null = hero.ground;

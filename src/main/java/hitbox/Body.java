@@ -6,13 +6,15 @@ import hitbox.internal.*;
  * A shape in a {@link World}, which can move and turn: made by {@link World#add(Shape)}.
  *
  * <p><b>Its shape, in its own frame.</b> A body keeps the shape it was made with and a
- * <em>pose</em>: a position ({@link #x()}, {@link #y()}) and an angle ({@link #angle()},
- * radians, clockwise on screen as Processing's {@code rotate()}, y down). The position is
- * where its pivot stands: for {@link World#add(Shape)} the centre of the shape's bounding box
- * as added, for {@link World#add(Shape, float, float, float)} the origin of the frame the shape
- * was given in, so a body made with {@code world.add(new Rect(-20, -10, 40, 20), x, y, a)}
- * is where {@code translate(x, y); rotate(a); rect(-20, -10, 40, 20);} draws. Turning turns
- * it about its position. {@link #shape()} is where it stands now, made when asked: a turned
+ * <em>pose</em>: a position, where its pivot stands ({@link #pivotX()}, {@link #pivotY()}),
+ * and an angle ({@link #angle()}, radians, clockwise on screen as Processing's
+ * {@code rotate()}, y down). The pivot is, for {@link World#add(Shape)}, the centre of the
+ * shape's bounding box as added (so {@code world.add(new Rect(40, 200, 20, 30)).pivotX()} is
+ * 50, not the rectangle's left edge 40), for {@link World#add(Shape, float, float, float)} the
+ * origin of the frame the shape was given in, so a body made with
+ * {@code world.add(new Rect(-20, -10, 40, 20), x, y, a)} is where
+ * {@code translate(x, y); rotate(a); rect(-20, -10, 40, 20);} draws. Turning turns it about
+ * its pivot. {@link #shape()} is where it stands now, made when asked: a turned
  * rectangle is a {@link Polygon}, a turned ellipse an {@link Ellipse} with its angle added, the
  * other kinds stay their kind. At angle 0 the shape is the shape added, each coordinate moved
  * by the same amount, so a rectangle keeps its exact size.
@@ -25,8 +27,9 @@ import hitbox.internal.*;
  *
  * <p><b>Layers</b>, Box2D's rule: each body has a category (the bits it is) and a mask (the
  * bits it meets). Two bodies meet only when each one's category is in the other's mask
- * ({@link #accepts}); by default every body is category 1 and meets all. Layers are applied
- * before any {@link CollisionFilter}, in {@link World#move} and the contacts of
+ * ({@code (a.category() & b.mask()) != 0 && (b.category() & a.mask()) != 0}); by default
+ * every body is category 1 and meets all. Layers are applied before any
+ * {@link CollisionFilter}, in {@link World#move} and the contacts of
  * {@link World#step()}; queries take their own filter. A <b>sensor</b> is reported but never
  * blocks nor is blocked: every move through it, or of it, crosses. A <b>one-way</b> body
  * blocks only a mover that meets its given side ({@link #oneWay(Side)}): a platform that is
@@ -51,8 +54,9 @@ public final class Body {
     final int serial;
     final Shape home;
     final Grid grid;
-    final double pivotX;
-    final double pivotY;
+    /** Where the pivot stands in the home shape's frame: the pivot when the translation is 0. */
+    final double homePivotX;
+    final double homePivotY;
     double tx;
     double ty;
     float angle;
@@ -88,13 +92,13 @@ public final class Body {
     /** The character this body is, or null. */
     CharacterBody character;
 
-    Body(World world, int id, int serial, Shape home, double pivotX, double pivotY, Grid grid) {
+    Body(World world, int id, int serial, Shape home, double homePivotX, double homePivotY, Grid grid) {
         this.world = world;
         this.id = id;
         this.serial = serial;
         this.home = home;
-        this.pivotX = pivotX;
-        this.pivotY = pivotY;
+        this.homePivotX = homePivotX;
+        this.homePivotY = homePivotY;
         this.grid = grid;
     }
 
@@ -157,17 +161,27 @@ public final class Body {
 
     // ---------------------------------------------------------------- the pose
 
-    /** @return the position's x: where the body's pivot stands now */
-    public float x() {
-        return (float) (pivotX + tx);
+    /**
+     * Where the body's pivot stands now, x: the point it turns about and {@link #moveTo} moves
+     * (for {@link World#add(Shape)} the centre of the shape's box as added, so
+     * {@code world.add(new Rect(40, 200, 20, 30)).pivotX()} is 50).
+     *
+     * @return the pivot's x
+     */
+    public float pivotX() {
+        return (float) (homePivotX + tx);
     }
 
-    /** @return the position's y: where the body's pivot stands now */
-    public float y() {
-        return (float) (pivotY + ty);
+    /**
+     * Where the body's pivot stands now, y (see {@link #pivotX()}).
+     *
+     * @return the pivot's y
+     */
+    public float pivotY() {
+        return (float) (homePivotY + ty);
     }
 
-    /** @return how far the body is turned about its position, in radians, clockwise on screen */
+    /** @return how far the body is turned about its pivot, in radians, clockwise on screen */
     public float angle() {
         return angle;
     }
@@ -184,14 +198,14 @@ public final class Body {
      */
     public Shape shape() {
         if (shape == null) {
-            shape = Poses.place(home, pivotX, pivotY, tx, ty, angle, cos, sin);
+            shape = Poses.place(home, homePivotX, homePivotY, tx, ty, angle, cos, sin);
         }
         return shape;
     }
 
     /**
      * The shape in the body's own frame: the shape it was added with (for
-     * {@link World#add(Shape)}, where it stood then; its position then was the centre of its
+     * {@link World#add(Shape)}, where it stood then; its pivot was the centre of its
      * box).
      *
      * @return the shape as added, never null
@@ -217,13 +231,14 @@ public final class Body {
     }
 
     /**
-     * Teleports the body: its position becomes (x, y), its angle stays. Nothing in the way is
-     * looked at.
+     * Teleports the body: its pivot moves to (x, y), so that {@link #pivotX()} and
+     * {@link #pivotY()} are x and y (not its box's corner: the shape moves with the pivot), its
+     * angle stays. Nothing in the way is looked at.
      *
      * <p>A NaN or infinite coordinate throws, naming it, and the body stays where it was.
      *
-     * @param x the new position's x
-     * @param y the new position's y
+     * @param x where the pivot goes, x
+     * @param y where the pivot goes, y
      * @return this body, for chaining, never null
      * @throws IllegalArgumentException if x or y is NaN or infinite, or the shape would leave
      *                                  the float range
@@ -234,7 +249,7 @@ public final class Body {
         Check.finite("x", x);
         Check.finite("y", y);
         World w = live("moveTo");
-        w.teleport(this, (double) x - pivotX, (double) y - pivotY, angle, "x and y");
+        w.teleport(this, (double) x - homePivotX, (double) y - homePivotY, angle, "x and y");
         return this;
     }
 
@@ -260,7 +275,7 @@ public final class Body {
     }
 
     /**
-     * Turns the body about its position to the given angle (a teleport).
+     * Turns the body about its pivot to the given angle (a teleport).
      *
      * <p>A NaN or infinite angle throws, naming it, and the body stays as it was.
      *
@@ -279,7 +294,7 @@ public final class Body {
     }
 
     /**
-     * Turns the body about its position by {@code da} (a teleport).
+     * Turns the body about its pivot by {@code da} (a teleport).
      *
      * <p>A NaN or infinite turn throws, naming it, and the body stays as it was.
      *
@@ -299,12 +314,7 @@ public final class Body {
 
     // ---------------------------------------------------------------- what it is
 
-    /** @return the world the body is in, or null once it was removed */
-    public World world() {
-        return world;
-    }
-
-    /** @return true while the body is in a world (false once removed) */
+    /** @return true from when the body is added to its world until it is removed from it (false after) */
     public boolean alive() {
         return world != null;
     }
@@ -343,13 +353,10 @@ public final class Body {
 
     /**
      * Do these two bodies meet, by Box2D's rule: each one's category is in the other's mask.
-     *
-     * @param other the other body, not null
-     * @return true if {@code (category & other.mask) != 0} and {@code (other.category & mask) != 0}
-     * @throws IllegalArgumentException if {@code other} is null
+     * The world's own rule, applied before any filter; not API (a sketch that needs it spells
+     * it out from {@link #category()} and {@link #mask()}).
      */
-    public boolean accepts(Body other) {
-        Check.notNull("other", other);
+    boolean accepts(Body other) {
         return (category & other.mask) != 0 && (other.category & mask) != 0;
     }
 
@@ -448,7 +455,7 @@ public final class Body {
     @Override
     public String toString() {
         String kind = grid != null ? "Grid" : home.getClass().getSimpleName();
-        return "Body#" + serial + "[" + kind + " at (" + x() + ", " + y() + "), angle " + angle
+        return "Body#" + serial + "[" + kind + " at (" + pivotX() + ", " + pivotY() + "), angle " + angle
                 + (world == null ? ", removed" : "") + (data != null ? ", " + data : "") + "]";
     }
 

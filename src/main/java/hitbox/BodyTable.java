@@ -104,7 +104,7 @@ final class BodyTable {
     /** Where a move left a body: its pose and shape, and its box (the pose's, grown to the shape's own extents). */
     void moved(Body m, Shape start, Shape end) {
         double ntx = m.tx + (Poses.refX(end) - Poses.refX(start)), nty = m.ty + (Poses.refY(end) - Poses.refY(start));
-        float[] box = box(m.pivotX + ntx, m.pivotY + nty, m.extents, "dx and dy");
+        float[] box = box(m.homePivotX + ntx, m.homePivotY + nty, m.extents, "dx and dy");
         // The shape's own extents too (no Rect made for them: a move's only new object is its shape).
         float x0 = Math.min(box[0], Math.nextDown((float) end.minX())), y0 = Math.min(box[1], Math.nextDown((float) end.minY()));
         float x1 = Math.max(box[0] + box[2], Math.nextUp((float) end.maxX())), y1 = Math.max(box[1] + box[3], Math.nextUp((float) end.maxY()));
@@ -121,10 +121,10 @@ final class BodyTable {
         if (angle != b.angle) {
             cos = angle == 0 ? 1 : StrictMath.cos(angle);
             sin = angle == 0 ? 0 : StrictMath.sin(angle);
-            Poses.extents(b.home, b.pivotX, b.pivotY, cos, sin, scratch);
+            Poses.extents(b.home, b.homePivotX, b.homePivotY, cos, sin, scratch);
             ex = scratch;
         }
-        float[] box = box(b.pivotX + tx, b.pivotY + ty, ex, what);
+        float[] box = box(b.homePivotX + tx, b.homePivotY + ty, ex, what);
         b.pose(tx, ty, angle, cos, sin, ex);
         setBox(b, box[0], box[1], box[2], box[3]);
     }

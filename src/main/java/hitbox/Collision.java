@@ -12,7 +12,7 @@ import hitbox.internal.*;
  * other's side that was met. A body the mover already overlapped when the move started is
  * reported first, with {@code t = 0}, a zero normal and {@link Side#NONE}
  * ({@link Hit#alreadyOverlapping()}). {@code x} and {@code y} are where the mover's
- * {@linkplain Body#x() position} was when they met, for drawing the contact.
+ * {@linkplain Body#pivotX() pivot} was when they met, for drawing the contact.
  *
  * @param mover    the body that was moved, never null
  * @param other    the body it met, never null (for a {@link Grid} added to the world, the

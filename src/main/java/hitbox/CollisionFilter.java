@@ -7,7 +7,7 @@ package hitbox;
  * world.move(player, vx, vy, (me, other) -> other == coin ? Reaction.CROSS : Reaction.SLIDE);
  * }</pre>
  * It is asked at most once per other body per {@link World#move}, only for bodies whose
- * {@linkplain Body#accepts layers} accept each other, and never for a
+ * {@linkplain Body#layers layers} accept each other, and never for a
  * {@linkplain Body#sensor(boolean) sensor} (always crossed). It may read the world but not
  * change it: adding, removing, moving or turning a body from inside throws an
  * {@link IllegalStateException}, and so does the move. A filter that throws leaves the world

@@ -508,11 +508,11 @@ final class Mover {
     }
 
     private static float poseX(Body m, Shape start, Shape at) {
-        return (float) (m.pivotX + m.tx + (Poses.refX(at) - Poses.refX(start)));
+        return (float) (m.homePivotX + m.tx + (Poses.refX(at) - Poses.refX(start)));
     }
 
     private static float poseY(Body m, Shape start, Shape at) {
-        return (float) (m.pivotY + m.ty + (Poses.refY(at) - Poses.refY(start)));
+        return (float) (m.homePivotY + m.ty + (Poses.refY(at) - Poses.refY(start)));
     }
 
     /**
@@ -613,7 +613,7 @@ final class Mover {
                 return;
             }
         }
-        found.add(new Collision(m, o, r, new Hit(0, 0, 0, Side.NONE), m.x(), m.y(), -1));
+        found.add(new Collision(m, o, r, new Hit(0, 0, 0, Side.NONE), m.pivotX(), m.pivotY(), -1));
     }
 
     /** The reaction to another body: null where the layers refuse, crossing for a sensor, else the filter's. */
@@ -767,8 +767,8 @@ final class Mover {
             float ny = side == Side.TOP ? 1 : side == Side.BOTTOM ? -1 : 0;
             int i = stopIndex[k];
             found.add(new Collision(m, obBody[i], Reaction.SLIDE, new Hit((float) Math.min(1, frame), nx, ny, side),
-                    (float) (m.pivotX + m.tx + ((double) stopX[k] - r.x())),
-                    (float) (m.pivotY + m.ty + ((double) stopY[k] - r.y())), obCell[i]));
+                    (float) (m.homePivotX + m.tx + ((double) stopX[k] - r.x())),
+                    (float) (m.homePivotY + m.ty + ((double) stopY[k] - r.y())), obCell[i]));
             time = frame;
         }
         return new Rect(end.x(), end.y(), r.w(), r.h());

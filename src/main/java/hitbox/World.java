@@ -307,7 +307,7 @@ public final class World {
         if (body.grid != null) {
             throw new IllegalArgumentException("body is a grid's body, which does not move");
         }
-        if (!Float.isFinite(body.x() + dx) || !Float.isFinite(body.y() + dy)
+        if (!Float.isFinite(body.pivotX() + dx) || !Float.isFinite(body.pivotY() + dy)
                 || !Float.isFinite(body.boxX + dx) || !Float.isFinite(body.boxY + dy)
                 || !Float.isFinite(body.boxX + body.boxW + dx) || !Float.isFinite(body.boxY + body.boxH + dy)) {
             throw new IllegalArgumentException("dx and dy move the body out of the float range: " + body + " by ("
@@ -339,14 +339,14 @@ public final class World {
         table.holdFlush = true;
         try {
             Collisions out;
-            float px = p.x(), py = p.y();
+            float px = p.pivotX(), py = p.pivotY();
             if (dy < 0) {
                 for (Body r : riders) {
                     mover.move(r, dx, dy, riderFilter(r));
                 }
                 out = moveOne(p, dx, dy, filter);  // a rider a ceiling stopped stops it too
                 // Stopped short (a ceiling): the riders come back down with it.
-                float cx = p.x() - px - dx, cy = p.y() - py - dy;
+                float cx = p.pivotX() - px - dx, cy = p.pivotY() - py - dy;
                 if (cx != 0 || cy != 0) {
                     for (Body r : riders) {
                         mover.move(r, cx, cy, riderFilter(r));
@@ -354,7 +354,7 @@ public final class World {
                 }
             } else {
                 out = moveOne(p, dx, dy, platform);
-                float ax = p.x() - px, ay = p.y() - py;
+                float ax = p.pivotX() - px, ay = p.pivotY() - py;
                 for (Body r : riders) {
                     mover.move(r, ax, ay, riderFilter(r));
                 }

@@ -44,9 +44,9 @@ class CharacterBodyTest {
         double tan = Math.tan(Math.toRadians(degrees));
         float vy = 0;
         for (int f = 0; f < 200; f++) {
-            float x = hero.body().x();
+            float x = hero.body().pivotX();
             vy = frame(hero, 2, vy);
-            assertEquals(x + 2, hero.body().x(), 1e-3, degrees + " degrees, frame " + f);
+            assertEquals(x + 2, hero.body().pivotX(), 1e-3, degrees + " degrees, frame " + f);
             assertTrue(hero.onGround(), degrees + " degrees, frame " + f + " in the air at " + hero.body().shape());
             Shape s = hero.body().shape();
             // Its foot stands on the ground's line: the floor, the slope or the plateau.
@@ -54,7 +54,7 @@ class CharacterBodyTest {
             assertTrue(s.maxY() <= foot + 1e-3 && s.maxY() >= foot - 0.1, degrees + " degrees, frame " + f + ": foot at "
                     + s.maxY() + ", ground at " + foot);
         }
-        assertTrue(hero.body().x() > 500, "stopped at " + hero.body().shape());
+        assertTrue(hero.body().pivotX() > 500, "stopped at " + hero.body().shape());
     }
 
     @Test
@@ -67,9 +67,9 @@ class CharacterBodyTest {
         }
         assertTrue(hero.onGround());
         for (int f = 0; f < 200; f++) {
-            float x = hero.body().x();
+            float x = hero.body().pivotX();
             vy = frame(hero, -2, vy);
-            assertEquals(x - 2, hero.body().x(), 1e-3, "frame " + f);
+            assertEquals(x - 2, hero.body().pivotX(), 1e-3, "frame " + f);
             assertTrue(hero.onGround(), "frame " + f + " left the ground at " + hero.body().shape());
         }
         CharacterBody noSnap = slopeWorld(30).addCharacter(new Rect(480, 200, 20, 30));
@@ -113,8 +113,8 @@ class CharacterBodyTest {
         float lowest = 0;
         for (int f = 0; f < 60; f++) {
             vy = frame(hero, 0, vy);
-            assertTrue(hero.body().y() >= lowest, "went up a steep slope");
-            lowest = hero.body().y();
+            assertTrue(hero.body().pivotY() >= lowest, "went up a steep slope");
+            lowest = hero.body().pivotY();
         }
         assertTrue(hero.body().shape().maxY() > 399, "did not slide down: " + hero.body().shape());
         // Walking into it from the floor does not climb it.
@@ -282,9 +282,9 @@ class CharacterBodyTest {
                 vy = frame(hero, 0, vy);
             }
             for (int f = 0; f < 180; f++) {
-                float x = hero.body().x();
+                float x = hero.body().pivotX();
                 vy = frame(hero, 2, vy);
-                assertEquals(x + 2, hero.body().x(), 1e-3, s + " snagged at frame " + f + ": " + hero.body().shape());
+                assertEquals(x + 2, hero.body().pivotX(), 1e-3, s + " snagged at frame " + f + ": " + hero.body().shape());
                 assertTrue(hero.onGround());
             }
             w.remove(hero.body());
@@ -301,11 +301,11 @@ class CharacterBodyTest {
             ship.move(0, 3);  // straight down into the wall
         }
         assertTrue(ship.onWall() && !ship.onGround() && ship.groundNormal() == null);
-        float x = ship.body().x(), y = ship.body().y();
+        float x = ship.body().pivotX(), y = ship.body().pivotY();
         for (int f = 0; f < 40; f++) {
             ship.move(2, 1.5f);  // mostly along it, pressing in
         }
-        double along = (ship.body().x() - x) * tx + (ship.body().y() - y) * ty;
+        double along = (ship.body().pivotX() - x) * tx + (ship.body().pivotY() - y) * ty;
         assertTrue(along > 0.99 * 40 * (2 * tx + 1.5 * ty), "slid only " + along);
         assertTrue(WorldSlideTest.gap(ship.body().shape(), wall.shape()) <= 0.1);
         // A round rock met off-centre: it gets round.
@@ -340,7 +340,8 @@ class CharacterBodyTest {
 
     @Test
     void badSettings_areRefusedAndChangeNothing() {
-        CharacterBody hero = new World().addCharacter(new Rect(0, 0, 10, 10)).maxSlope(30).stepHeight(4).snap(2).up(0, -2);
+        World w = new World();
+        CharacterBody hero = w.addCharacter(new Rect(0, 0, 10, 10)).maxSlope(30).stepHeight(4).snap(2).up(0, -2);
         assertThrows(IllegalArgumentException.class, () -> hero.maxSlope(90));
         assertThrows(IllegalArgumentException.class, () -> hero.maxSlope(-1));
         assertThrows(IllegalArgumentException.class, () -> hero.stepHeight(Float.NaN));
@@ -350,7 +351,6 @@ class CharacterBodyTest {
         assertEquals(4, hero.stepHeight());
         assertEquals(2, hero.snap());
         assertEquals(new Vec(0, -1), hero.up());
-        World w = hero.body().world();
         w.remove(hero.body());
         IllegalStateException e = assertThrows(IllegalStateException.class, () -> hero.move(1, 1));
         assertTrue(e.getMessage().contains("removed"), e.getMessage());

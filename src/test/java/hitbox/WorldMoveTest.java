@@ -88,7 +88,7 @@ class WorldMoveTest {
         Rect r = (Rect) b.shape();
         assertEquals(30.7f, r.w());
         assertEquals(5.9f, r.h());
-        b.moveTo(b.x(), b.y());
+        b.moveTo(b.pivotX(), b.pivotY());
         assertEquals(30.7f, ((Rect) b.shape()).w());
     }
 
@@ -221,7 +221,7 @@ class WorldMoveTest {
         // Halfway in and falling: falls through (it overlapped at the start).
         player.moveTo(100, 105);
         w.move(player, 0, 50);
-        assertEquals(155, player.y(), 1e-4);
+        assertEquals(155, player.pivotY(), 1e-4);
     }
 
     @Test
@@ -267,21 +267,21 @@ class WorldMoveTest {
         for (Shape s : movers) {
             Body b = w.add(s);
             w.move(b, 0, 100);  // land on the floor
-            float y = b.y();
+            float y = b.pivotY();
             for (int f = 0; f < 60; f++) {
-                float before = b.x();
+                float before = b.pivotX();
                 w.move(b, 3.3f, 2);  // walk right, pressing down
-                assertEquals(before + 3.3f, b.x(), 1e-3, s.getClass().getSimpleName() + " frame " + f);
-                assertEquals(y, b.y(), 1e-3);
+                assertEquals(before + 3.3f, b.pivotX(), 1e-3, s.getClass().getSimpleName() + " frame " + f);
+                assertEquals(y, b.pivotY(), 1e-3);
             }
             for (int f = 0; f < 80; f++) {
                 w.move(b, -5, 2);
             }
             assertEquals(16, b.shape().minX(), 1e-3, "stopped at the wall");
             for (int f = 0; f < 30; f++) {
-                float before = b.y();
+                float before = b.pivotY();
                 w.move(b, -2, -3.1f);  // up along the wall, pressing left
-                assertEquals(before - 3.1f, b.y(), 1e-3, s.getClass().getSimpleName() + " up the wall " + f);
+                assertEquals(before - 3.1f, b.pivotY(), 1e-3, s.getClass().getSimpleName() + " up the wall " + f);
             }
             w.remove(b);
         }

@@ -108,7 +108,7 @@ class WorldPropertiesTest {
         World w = WorldBruteForceTest.randomWorld(rnd, 3);
         for (Body b : w.bodies()) {
             Shape before = b.shape();
-            float x = b.x(), y = b.y(), a = b.angle();
+            float x = b.pivotX(), y = b.pivotY(), a = b.angle();
             b.moveTo(x + rnd.nextInt(2000) - 1000, y + rnd.nextInt(2000) - 1000);
             b.turnTo((float) (rnd.nextDouble() * 20 - 10));
             Shape turned = b.shape();

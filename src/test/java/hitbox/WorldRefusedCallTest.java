@@ -40,7 +40,7 @@ class WorldRefusedCallTest {
     private String snapshot() {
         StringBuilder s = new StringBuilder(w.toString()).append('\n');
         for (Body b : w.bodies()) {
-            s.append(b).append(' ').append(b.x()).append(',').append(b.y()).append(',').append(b.angle()).append(' ')
+            s.append(b).append(' ').append(b.pivotX()).append(',').append(b.pivotY()).append(',').append(b.angle()).append(' ')
                     .append(b.shape()).append(' ').append(b.bounds()).append(' ').append(b.category()).append('/')
                     .append(b.mask()).append(b.isSensor()).append(b.oneWay()).append(b.isCarrier()).append('\n');
         }
@@ -159,6 +159,6 @@ class WorldRefusedCallTest {
         }));
         assertEquals(before, snapshot());
         w.move(platform, 0, -30);
-        assertEquals(260, rider.y(), 1e-4);
+        assertEquals(260, rider.pivotY(), 1e-4);
     }
 }

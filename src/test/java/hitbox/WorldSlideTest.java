@@ -61,9 +61,9 @@ class WorldSlideTest {
         double tx = Math.cos(angle) * (forwards ? 1 : -1), ty = Math.sin(angle) * (forwards ? 1 : -1);
         String what = k + " on a slab at " + degrees + " degrees, " + (forwards ? "forwards" : "backwards");
         for (int f = 0; f < 60; f++) {
-            float px = b.x(), py = b.y();
+            float px = b.pivotX(), py = b.pivotY();
             Collisions got = w.move(b, (float) (tx * 2 - nx * 0.2), (float) (ty * 2 - ny * 0.2));  // along, pressing in
-            double along = (b.x() - px) * tx + (b.y() - py) * ty;
+            double along = (b.pivotX() - px) * tx + (b.pivotY() - py) * ty;
             assertTrue(along >= 0.99 * 2 && along <= 2 + 1e-3, what + ": frame " + f + " went " + along + " along the face");
             assertTrue(got.finished(), what + ": frame " + f + " gave up: " + got);
             assertFalse(b.shape().overlaps(slab.shape()), what + ": inside at frame " + f);
@@ -190,8 +190,8 @@ class WorldSlideTest {
         double nx = -Math.sin(Math.toRadians(30)), ny = Math.cos(Math.toRadians(30));
         double rest = (1 - c.hit().t()) * dy;
         double rx = 0 - 2 * (rest * ny) * nx, ry = rest - 2 * (rest * ny) * ny;
-        assertEquals(c.x() + rx, b.x(), 0.05);
-        assertEquals(c.y() + ry, b.y(), 0.05);
+        assertEquals(c.x() + rx, b.pivotX(), 0.05);
+        assertEquals(c.y() + ry, b.pivotY(), 0.05);
         assertEquals(nx, c.nx(), 1e-6);
         assertEquals(ny, c.ny(), 1e-6);
     }
@@ -206,7 +206,7 @@ class WorldSlideTest {
         float vy = 0;
         for (int f = 0; f < 100; f++) {
             vy += 0.5f;
-            float x = player.x();
+            float x = player.pivotX();
             Collisions got = world.move(player, 2, vy);
             for (Collision c : got) {
                 if (c.ny() > 0.5f) {
@@ -214,11 +214,11 @@ class WorldSlideTest {
                 }
             }
             assertTrue(got.finished(), "frame " + f + ": " + got);
-            assertTrue(player.x() > x, "frame " + f + ": no progress at " + player.shape());
+            assertTrue(player.pivotX() > x, "frame " + f + ": no progress at " + player.shape());
             assertFalse(player.shape().overlaps(ramp.shape()));
         }
         // Gravity's part along the slope is kept for a plain body, so it climbs slower than 2 a frame.
-        assertTrue(player.x() > 150, "only reached " + player.shape());
+        assertTrue(player.pivotX() > 150, "only reached " + player.shape());
         assertTrue(player.shape().maxY() < 300 - 0.575 * 150 + 1, "not on the ramp: " + player.shape());
     }
 

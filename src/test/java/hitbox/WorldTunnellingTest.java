@@ -90,7 +90,7 @@ class WorldTunnellingTest {
             // the mover held a hundredth of a pixel off the surface it last met overlaps nothing.
             float px = sx, py = sy, nx = first.nx(), ny = first.ny();
             for (int k = 0; k <= got.size(); k++) {
-                float qx = k < got.size() ? got.get(k).x() : b.x(), qy = k < got.size() ? got.get(k).y() : b.y();
+                float qx = k < got.size() ? got.get(k).x() : b.pivotX(), qy = k < got.size() ? got.get(k).y() : b.pivotY();
                 if (k > 0) {
                     nx = got.get(k - 1).nx();
                     ny = got.get(k - 1).ny();

@@ -112,12 +112,12 @@ class B02_PlatformerTest {
             boolean onLift = s.player.onGround() && s.player.body().shape().maxY() == s.lift.shape().minY()
                     && s.player.body().shape().maxX() > s.lift.shape().minX() && s.player.body().shape().minX() < s.lift.shape().maxX();
             if (onLift && last[2] == 1 && !s.left && !s.right) {
-                assertEquals(s.lift.x() - last[1], s.player.body().x() - last[0], 1e-3f,
+                assertEquals(s.lift.pivotX() - last[1], s.player.body().pivotX() - last[0], 1e-3f,
                         "frame " + s.frameCount + ": standing still on it, the player moves as the platform does");
                 carried[0]++;
             }
-            last[0] = s.player.body().x();
-            last[1] = s.lift.x();
+            last[0] = s.player.body().pivotX();
+            last[1] = s.lift.pivotX();
             last[2] = onLift ? 1 : 0;
         }).run();
         assertTrue(carried[0] > 40, "frames carried: " + carried[0]);
@@ -140,12 +140,12 @@ class B02_PlatformerTest {
             Shape p = s.player.body().shape();
             boolean grounded = s.player.onGround() && p.maxX() < 598;
             if (grounded && !Float.isNaN(last[0])) {
-                assertEquals(3, s.player.body().x() - last[0], 1e-3f, "frame " + s.frameCount + " at x " + p.minX()
+                assertEquals(3, s.player.body().pivotX() - last[0], 1e-3f, "frame " + s.frameCount + " at x " + p.minX()
                         + ": three pixels every frame, no stop at a seam, a slope or a step");
                 steps[0]++;
                 onFloor[0] += p.maxY() == 360 ? 1 : 0;
             }
-            last[0] = grounded ? s.player.body().x() : Float.NaN;
+            last[0] = grounded ? s.player.body().pivotX() : Float.NaN;
         }).run();
         assertTrue(steps[0] > 160, "frames run on the ground: " + steps[0]);
         assertTrue(onFloor[0] > 90, "of them along the floor of tiles: " + onFloor[0]);
@@ -169,12 +169,12 @@ class B02_PlatformerTest {
                 // Its lower left corner rests on the slope's line, within a skin.
                 assertEquals(slopeY(p.minX()), p.maxY(), 0.1, "frame " + s.frameCount + ": the corner on the slope");
                 if (!Float.isNaN(last[0])) {
-                    assertEquals(last[0], s.player.body().x(), "frame " + s.frameCount + ": no drift sideways");
-                    assertEquals(last[1], s.player.body().y(), "frame " + s.frameCount + ": nor down the slope");
+                    assertEquals(last[0], s.player.body().pivotX(), "frame " + s.frameCount + ": no drift sideways");
+                    assertEquals(last[1], s.player.body().pivotY(), "frame " + s.frameCount + ": nor down the slope");
                     still[0]++;
                 }
-                last[0] = s.player.body().x();
-                last[1] = s.player.body().y();
+                last[0] = s.player.body().pivotX();
+                last[1] = s.player.body().pivotY();
             }
         }).run();
         assertTrue(still[0] > 90, "frames standing still on the slope: " + still[0]);
@@ -197,16 +197,16 @@ class B02_PlatformerTest {
             Shape p = s.player.body().shape();
             boolean onSlope = s.player.onGround() && s.player.ground() == s.slope && p.minX() > 1;
             if (onSlope && !Float.isNaN(last[0]) && last[2] != 0) {
-                float dx = s.player.body().x() - last[0];
-                float dy = s.player.body().y() - last[1];
+                float dx = s.player.body().pivotX() - last[0];
+                float dy = s.player.body().pivotY() - last[1];
                 assertEquals(3 * last[2], dx, 1e-3f, "frame " + s.frameCount + ": three pixels sideways");
                 assertEquals(dx * 50 / 130, dy, 0.05f, "frame " + s.frameCount + ": along the slope");
                 assertEquals(slopeY(p.minX()), p.maxY(), 0.1, "frame " + s.frameCount + ": the corner on the slope");
                 down[0] += last[2] > 0 ? 1 : 0;
                 up[0] += last[2] < 0 ? 1 : 0;
             }
-            last[0] = onSlope ? s.player.body().x() : Float.NaN;
-            last[1] = s.player.body().y();
+            last[0] = onSlope ? s.player.body().pivotX() : Float.NaN;
+            last[1] = s.player.body().pivotY();
             last[2] = s.right ? 1 : s.left ? -1 : 0;
         }).run();
         assertTrue(down[0] > 20 && up[0] > 25, "frames walking down the slope: " + down[0] + ", up it: " + up[0]);

@@ -68,7 +68,7 @@ class B03_TopDownTest {
             all.add(wall.shape());
         }
         all.add(s.ship.body().shape());
-        Segment line = new Segment(s.sentryX, s.sentryY, s.ship.body().x(), s.ship.body().y());
+        Segment line = new Segment(s.sentryX, s.sentryY, s.ship.body().pivotX(), s.ship.body().pivotY());
         for (Body b : s.world.bodies()) {
             Shape shape = b.shape();
             assertTrue(b.angle() != 0 && shape instanceof Polygon, "a turned body stands as a polygon: " + b);
@@ -108,7 +108,7 @@ class B03_TopDownTest {
         g.beginDraw();
         for (Body b : s.world.bodies()) {
             g.pushMatrix();
-            g.translate(b.x(), b.y());
+            g.translate(b.pivotX(), b.pivotY());
             g.rotate(b.angle());
             Polygon drawn = (Polygon) Drawn.shape(g, b.homeShape());
             g.popMatrix();
@@ -137,8 +137,8 @@ class B03_TopDownTest {
             // The nose, (16, 0) in the ship's own frame, is the first corner of its shape now.
             Polygon p = (Polygon) ship.shape();
             float a = ship.angle();
-            assertEquals(ship.x() + 16 * (float) Math.cos(a), p.x(0), 1e-3f, "the nose x");
-            assertEquals(ship.y() + 16 * (float) Math.sin(a), p.y(0), 1e-3f, "the nose y");
+            assertEquals(ship.pivotX() + 16 * (float) Math.cos(a), p.x(0), 1e-3f, "the nose x");
+            assertEquals(ship.pivotY() + 16 * (float) Math.sin(a), p.y(0), 1e-3f, "the nose y");
         }).run();
         assertTrue(turned[0] >= 15, "frames turned left: " + turned[0]);
     }
@@ -151,7 +151,7 @@ class B03_TopDownTest {
             if (s.sight == null && !s.seen) {
                 return;   // the ship right on the sentry: no ray
             }
-            Ray ray = Ray.between(s.sentryX, s.sentryY, s.ship.body().x(), s.ship.body().y());
+            Ray ray = Ray.between(s.sentryX, s.sentryY, s.ship.body().pivotX(), s.ship.body().pivotY());
             RayHit toShip = ray.cast(s.ship.body().shape());
             assertNotNull(toShip, "the ray towards the ship's position reaches its outline");
             float nearestRock = Float.POSITIVE_INFINITY;   // or wall
@@ -209,27 +209,27 @@ class B03_TopDownTest {
             for (Collision c : s.met) {
                 if (c.other() == rock && met[0] < 0) {
                     met[0] = s.frameCount;
-                    assertTrue(ship.shape().minY() > rock.y(), "it meets the rock's lower half");
+                    assertTrue(ship.shape().minY() > rock.pivotY(), "it meets the rock's lower half");
                 }
             }
             if (met[0] > 0 && past[0] < 0 && ship.shape().maxY() < rock.shape().minY()) {
                 past[0] = s.frameCount;
             }
             if (met[0] > 0 && met[0] < s.frameCount && past[0] < 0) {
-                float moved = (float) Math.hypot(ship.x() - last[0], ship.y() - last[1]);
+                float moved = (float) Math.hypot(ship.pivotX() - last[0], ship.pivotY() - last[1]);
                 assertTrue(moved > 0.5f, "frame " + s.frameCount + ": round the rock, it never stops: moved " + moved);
             }
-            last[0] = ship.x();
-            last[1] = ship.y();
+            last[0] = ship.pivotX();
+            last[1] = ship.pivotY();
         }).run();
         assertTrue(met[0] > 0, "the ship met the rock");
         assertTrue(past[0] > met[0], "and got round it, above it: frames " + met[0] + ", " + past[0]);
         // What is drawn: the ship's colour on its body, above the rock.
         B03_TopDown s = r.sketch();
         Body ship = s.ship.body();
-        int x = Math.round(ship.x() + 4 * (float) Math.cos(ship.angle()));
-        int y = Math.round(ship.y() + 4 * (float) Math.sin(ship.angle()));
-        if (ship.y() > 0) {
+        int x = Math.round(ship.pivotX() + 4 * (float) Math.cos(ship.angle()));
+        int y = Math.round(ship.pivotY() + 4 * (float) Math.sin(ship.angle()));
+        if (ship.pivotY() > 0) {
             assertTrue(List.of(Palette.PLAYER, Palette.HIT).contains(r.lastFrame().get(x, y)), "the ship drawn at (" + x + ", " + y + ")");
         }
     }
@@ -250,28 +250,33 @@ class B03_TopDownTest {
                 touching |= c.other() == wall;
             }
             if (touching && !Float.isNaN(last[0])) {
-                float dx = ship.x() - last[0], dy = ship.y() - last[1];
+                float dx = ship.pivotX() - last[0], dy = ship.pivotY() - last[1];
                 float alongWall = dx * (float) Math.cos(1.0) + dy * (float) Math.sin(1.0);
                 assertTrue(alongWall > 0.5f, "frame " + s.frameCount + ": slides along the wall: (" + dx + ", " + dy + ")");
                 along[0]++;
             }
-            last[0] = ship.x();
-            last[1] = ship.y();
+            last[0] = ship.pivotX();
+            last[1] = ship.pivotY();
         }).run();
         assertTrue(along[0] > 10, "frames sliding along the wall: " + along[0]);
+    }
+
+    /** Do two bodies meet by their layers: Box2D's rule, each one's category in the other's mask. */
+    private static boolean meet(Body a, Body b) {
+        return (a.category() & b.mask()) != 0 && (b.category() & a.mask()) != 0;
     }
 
     @Test
     void rocks_ignoreEachOther_byTheirLayers() {
         B03_TopDown s = SketchRun.of(new B03_TopDown()).frames(1).run().sketch();
         for (Body a : s.rocks) {
-            assertTrue(a.accepts(s.ship.body()) && s.ship.body().accepts(a), "rock and ship meet");
+            assertTrue(meet(a, s.ship.body()), "rock and ship meet");
             for (Body b : s.rocks) {
-                assertFalse(a.accepts(b), "rocks do not meet rocks");
+                assertFalse(meet(a, b), "rocks do not meet rocks");
             }
             for (Body w : s.walls) {
-                assertTrue(w.accepts(s.ship.body()) && s.ship.body().accepts(w), "wall and ship meet");
-                assertFalse(a.accepts(w) || w.accepts(a), "rocks and walls do not meet");
+                assertTrue(meet(w, s.ship.body()), "wall and ship meet");
+                assertFalse(meet(a, w), "rocks and walls do not meet");
             }
         }
     }

@@ -25,18 +25,18 @@ public final class BodyJs {
         return id;
     }
 
-    /** @return the position's x */
+    /** @return where its pivot stands, x ({@code Body.pivotX}) */
     @JSExport
     @JSProperty
-    public float getX() {
-        return body.x();
+    public float getPivotX() {
+        return body.pivotX();
     }
 
-    /** @return the position's y */
+    /** @return where its pivot stands, y ({@code Body.pivotY}) */
     @JSExport
     @JSProperty
-    public float getY() {
-        return body.y();
+    public float getPivotY() {
+        return body.pivotY();
     }
 
     /** @return the angle, radians */

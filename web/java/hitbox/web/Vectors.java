@@ -517,8 +517,8 @@ public final class Vectors {
             } catch (RuntimeException e) {
                 thrown(e);
             }
-            put(mover.x());
-            put(mover.y());
+            put(mover.pivotX());
+            put(mover.pivotY());
         }
         put(world.step().size());
         for (Body b : bodies) {

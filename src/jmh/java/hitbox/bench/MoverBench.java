@@ -126,16 +126,16 @@ public class MoverBench {
                 }
                 walkerVy[l] = vy;
             }
-            if (b.x() > 370) {
+            if (b.pivotX() > 370) {
                 b.moveTo(15, l * LANE + 50 - 10);  // back to the lane's start
                 walkerVy[l] = 0;
             }
         }
         for (int i = 0; i < slider.length; i++) {
             Body b = slider[i];
-            float x = b.x(), y = b.y();
+            float x = b.pivotX(), y = b.pivotY();
             met += world.move(b, sliderV[2 * i], sliderV[2 * i + 1]).size();
-            if (Math.abs(b.x() - x) + Math.abs(b.y() - y) < 0.5f) {
+            if (Math.abs(b.pivotX() - x) + Math.abs(b.pivotY() - y) < 0.5f) {
                 sliderV[2 * i] = -sliderV[2 * i];  // held: turn back
                 sliderV[2 * i + 1] = -sliderV[2 * i + 1];
             }

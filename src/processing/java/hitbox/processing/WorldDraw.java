@@ -174,7 +174,7 @@ public final class WorldDraw {
         for (Collision c : collisions) {
             int colour = c.reaction() == Reaction.CROSS ? CROSSED : CONTACT;
             Body mover = c.mover();
-            Shape where = mover.shape().translated(c.x() - mover.x(), c.y() - mover.y());
+            Shape where = mover.shape().translated(c.x() - mover.pivotX(), c.y() - mover.pivotY());
             g.noFill();
             g.stroke(colour, 170);
             g.strokeWeight(1);

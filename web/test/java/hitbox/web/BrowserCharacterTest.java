@@ -101,7 +101,7 @@ class BrowserCharacterTest {
             }
             Vec n = hero.groundNormal();
             Rect b = hero.body().shape().bounds();
-            out.add(new int[] {bits(hero.body().x()), bits(hero.body().y()), bits(b.x()), bits(b.y()),
+            out.add(new int[] {bits(hero.body().pivotX()), bits(hero.body().pivotY()), bits(b.x()), bits(b.y()),
                 hero.onGround() ? 1 : 0, hero.onWall() ? 1 : 0, hero.onCeiling() ? 1 : 0,
                 n == null ? 0 : bits(n.x()), n == null ? 0 : bits(n.y()),
                 hero.ground() == null ? -1 : added.indexOf(hero.ground()), met.size()});

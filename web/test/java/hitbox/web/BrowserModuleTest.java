@@ -46,7 +46,7 @@ class BrowserModuleTest {
         Body player = w.add(new Rect(0, 0, 10, 10));
         w.add(new Rect(30, -50, 10, 100));
         List<Collision> met = w.move(player, 50, 5);
-        assertTrue(json.contains("\"moved\":[" + Float.floatToIntBits(player.x()) + "," + Float.floatToIntBits(player.y()) + ","
+        assertTrue(json.contains("\"moved\":[" + Float.floatToIntBits(player.pivotX()) + "," + Float.floatToIntBits(player.pivotY()) + ","
                 + met.size() + ",1,\"" + met.get(0).reaction() + "\"]"), json);
         int[] path = Grid.parse("....\n.##.\n....", 10).path(0, 0, 3, 2);
         assertTrue(json.contains("\"path\":" + Arrays.toString(path).replace(" ", "")), json);
