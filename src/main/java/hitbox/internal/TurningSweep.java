@@ -36,12 +36,10 @@ public final class TurningSweep {
     private static final int MAX_STEPS = 2000;
     private static final int DIRECTIONS = 32;
 
-    /** The mover's vertices at time t: turned by t * turn about the pivot, then moved by t * v. */
-    public static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t) {
-        return at(xy, px, py, vx, vy, turn, t, new double[xy.length]);
-    }
-
-    /** {@link #at(float[], double, double, double, double, double, double)} into {@code out}, returned. */
+    /**
+     * The mover's vertices at time t, into {@code out}, returned: turned by t * turn about the
+     * pivot, then moved by t * v.
+     */
     private static double[] at(float[] xy, double px, double py, double vx, double vy, double turn, double t, double[] out) {
         double c = turn == 0 ? 1 : StrictMath.cos(t * turn), s = turn == 0 ? 0 : StrictMath.sin(t * turn);
         for (int i = 0; i + 1 < xy.length; i += 2) {
