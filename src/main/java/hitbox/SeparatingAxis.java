@@ -24,8 +24,9 @@ import java.util.List;
  *
  * <p>This class lays the test open for drawing; it does not answer it. To ask whether two
  * polygons overlap, ask them: {@code a.overlaps(b)} (these axes, decided with exact
- * orientation signs), and {@code a.contact(b)} for the axis with the least overlap, oriented
- * from a to b, as the normal and depth of a {@link Contact}; both take concave polygons too.
+ * orientation signs), and {@code a.contact(b)} for the shortest push that parts them (the
+ * axis whose shadows need the least move apart), oriented from a to b, as the normal and depth
+ * of a {@link Contact}; both take concave polygons too.
  * {@link #axes} needs convex polygons and throws for a concave one, naming the vertex where it
  * bends inwards.
  *
