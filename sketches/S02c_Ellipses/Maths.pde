@@ -28,7 +28,7 @@ void drawMaths() {
   color colour = hit[n] ? Overlay.HIT : Overlay.MISS;
   String test;
   if (circleMode) {
-    test = "Collide.ellipseCircle: the circle's centre inside, or its distance\nto the outline < r = "
+    test = "e.overlaps(mouseCircle): the circle's centre inside, or its distance\nto the outline < r = "
         + Overlay.number(mouseR) + "  ->  " + (hit[n] ? "overlap" : "apart");
   } else {
     String formula = e.angle() != 0 ? "(u / rx)^2 + (v / ry)^2 < 1, u and v along the turned axes" : "(dx / rx)^2 + (dy / ry)^2 < 1";

@@ -7,15 +7,17 @@
  * centre). Give ellipse() a different width and height and the shape is an ellipse, which
  * no distance test fits; the tutorial has no test for it, so this sketch goes beyond it.
  *
- * ellipse(x, y, w, h) draws an ellipse with radii w / 2 and h / 2. A point is inside when
- * (dx / rx)^2 + (dy / ry)^2 < 1: Collide.ellipsePoint(x, y, rx, ry, mouseX, mouseY). A circle
- * against an ellipse is Collide.ellipseCircle, and two ellipses Collide.ellipseEllipse. Each
- * ellipse turns red while the mouse (a point, or a circle) is inside it, green otherwise.
+ * ellipse(x, y, w, h) draws an ellipse with radii w / 2 and h / 2: new Ellipse(x, y, rx, ry)
+ * holds the same centre and radii. A point is inside when (dx / rx)^2 + (dy / ry)^2 < 1:
+ * e.contains(mouseX, mouseY). A circle against an ellipse is e.overlaps(circle), with the
+ * circle a new Circle(x, y, r); two ellipses, or an ellipse and any other shape, the same
+ * e.overlaps(other). Each ellipse turns red while the mouse (a point, or a circle) is inside
+ * it, green otherwise.
  *
  * The fourth ellipse is turned: new Ellipse(x, y, rx, ry, angle) takes the angle as rotate()
- * does (radians, clockwise on screen). It has no raw-float test; the shape answers, by turning
- * the mouse into the ellipse's own frame, where the same formula holds, and Draw.shape(g, e)
- * draws it turned.
+ * does (radians, clockwise on screen). The same two calls answer for it, by turning the mouse
+ * into the ellipse's own frame, where the same formula holds, and Draw.shape(g, e) draws it
+ * turned.
  *
  * Try this: make an ellipse flat (a radius of 0: it has no inside any more); give the mouse
  * circle radius 0 and see it act as a point; squash an ellipse by changing its radii.
@@ -52,13 +54,11 @@ void draw() {
   for (int i = 0; i < ellipses.length; i++) {
     Ellipse e = ellipses[i];
     // The whole idea: is the mouse (a point, or a circle) inside this ellipse?
-    if (e.angle() != 0) {
-      // Turned: ask the shape, which takes the mouse into the ellipse's frame first.
-      hit[i] = circleMode ? e.overlaps(new Circle(mouseX, mouseY, mouseR)) : e.contains(mouseX, mouseY);
-    } else if (circleMode) {
-      hit[i] = Collide.ellipseCircle(e.x(), e.y(), e.rx(), e.ry(), mouseX, mouseY, mouseR);
+    if (circleMode) {
+      Circle mouseCircle = new Circle(mouseX, mouseY, mouseR);
+      hit[i] = e.overlaps(mouseCircle);
     } else {
-      hit[i] = Collide.ellipsePoint(e.x(), e.y(), e.rx(), e.ry(), mouseX, mouseY);
+      hit[i] = e.contains(mouseX, mouseY);
     }
     noStroke();
     fill(hit[i] ? Palette.HIT : Palette.MISS);

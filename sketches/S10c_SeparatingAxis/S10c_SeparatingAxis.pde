@@ -17,14 +17,15 @@
  * overlap, the one with the least overlap: the shortest way out.
  *
  * Where Hitbox differs: neither source writes the test out; this code is ours. Hitbox's
- * SeparatingAxis.overlaps(a, b) runs beside it (l lets it decide) and projects in double, so
- * it stays exact where these floats could round; it too counts shadows that only touch as a
- * gap, because touching is not colliding for every pair.
+ * box.overlaps(mover) runs beside it (l lets it decide): for two convex polygons it asks the
+ * same axes, with exact signs in double, so it stays exact where these floats could round; it
+ * too counts shadows that only touch as a gap, because touching is not colliding for every
+ * pair.
  *
  * Try this: bring a corner of the triangle close to a corner of the rectangle and watch
  * which axes still find a gap; press 4, 5 or 6 for more sides (more axes); press space to
  * stop the turning.
- * Keys: 3-6 the mouse shape's sides, space stops the turning, l SeparatingAxis.overlaps
+ * Keys: 3-6 the mouse shape's sides, space stops the turning, l box.overlaps(mover)
  * decides / the loop, d shows the maths (the shadows' numbers, the light that casts them).
  */
 import hitbox.*;
@@ -40,7 +41,7 @@ int sides = 3;
 Polygon box, mover;
 List<SeparatingAxis.Axis> axes;
 boolean overlapping;          // this frame's answer: the loop's, or the library's after l
-boolean hitboxSays;           // SeparatingAxis.overlaps, beside the loop
+boolean hitboxSays;           // box.overlaps(mover), beside the loop
 boolean hitboxDecides;        // l
 int separating = -1;          // the axis with the widest gap, or -1 if there is none
 int shown = -1;               // the axis drawn beside the shapes: that one, or the least overlap
@@ -73,7 +74,7 @@ void draw() {
     }
   }
   // No gap on any axis: overlapping. Hitbox's call beside it: the same question.
-  hitboxSays = SeparatingAxis.overlaps(box, mover);
+  hitboxSays = box.overlaps(mover);
   overlapping = hitboxDecides ? hitboxSays : separating < 0;
   shown = separating >= 0 ? separating : leastOverlap();
 
@@ -93,7 +94,7 @@ void draw() {
       : "axis " + (separating + 1) + " separates them: apart";
   Overlay.labelCentered(g, panelX / 2, mouseY > height - 90 ? 18 : height - 36, verdict, overlapping ? Overlay.HIT : Overlay.MISS);
   Overlay.hint(g, "move the triangle     3-6: sides     space: " + (turning ? "stop" : "start")
-      + " turning     l: " + (hitboxDecides ? "the loop" : "SeparatingAxis.overlaps") + " decides     d: show the maths");
+      + " turning     l: " + (hitboxDecides ? "the loop" : "box.overlaps(mover)") + " decides     d: show the maths");
 }
 
 // One axis per edge of p: the edge (dx, dy) turned a quarter, (dy, -dx), made length 1; on

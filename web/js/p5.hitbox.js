@@ -64,7 +64,7 @@ export const functions = {
   collidePointCircle(x, y, cx, cy, d) {
     return C.circlePoint(cx, cy, d / 2, x, y);
   },
-  /** collidePointEllipse(x, y, cx, cy, dx, dy), diameters: Collide.ellipsePoint. A point on the ellipse is not inside. */
+  /** collidePointEllipse(x, y, cx, cy, dx, dy), diameters: Collide.ellipsePoint (Java's Ellipse.contains). A point on the ellipse is not inside. */
   collidePointEllipse(x, y, cx, cy, dx, dy) {
     return C.ellipsePoint(cx, cy, dx / 2, dy / 2, x, y);
   },
@@ -74,7 +74,7 @@ export const functions = {
   },
   /**
    * collidePointLine(px, py, x1, y1, x2, y2, buffer = 0.1): is the point within buffer of the
-   * segment (Collide.capsulePoint, a capsule of radius buffer)? p5.collide2D compares the sum of
+   * segment (Collide.capsulePoint, Java's Capsule.contains: a capsule of radius buffer)? p5.collide2D compares the sum of
    * the point's distances to the ends with the length, within buffer: a band that narrows at
    * the ends; Hitbox's band has the same width all along and round ends. A buffer of 0 asks for
    * a point exactly on the segment (Collide.lineSide and the segment's box).

@@ -11,7 +11,8 @@ import hitbox.internal.*;
  * and behaves as its segment does against shapes with area (it collides by reaching into
  * their inside), but, like a circle of radius 0, never collides with a segment, a point or
  * another shape without area. Every pair is "is the distance less than the sum of the
- * radii?", compared exactly for whole numbers of modest size (see {@link Collide#capsuleCircle}).
+ * radii?", compared squared as exact signs of double products, so touching between whole
+ * numbers of modest size (up to about 2^20) is exact; against an ellipse, see {@link Ellipse}.
  *
  * @param x1 the segment's first end x
  * @param y1 the segment's first end y
@@ -47,10 +48,10 @@ public record Capsule(float x1, float y1, float x2, float y2, float r) implement
         return Overlaps.capsuleWith(this, Check.notNull("other", other));
     }
 
-    /** {@inheritDoc} Same as {@link Collide#capsulePoint}. */
+    /** {@inheritDoc} The point closer than {@code r} to the segment, compared exactly as the pairs are. */
     @Override
     public boolean contains(float px, float py) {
-        return Collide.capsulePoint(x1, y1, x2, y2, r, px, py);
+        return RawTests.capsulePoint(x1, y1, x2, y2, r, px, py);
     }
 
     /** {@inheritDoc} */

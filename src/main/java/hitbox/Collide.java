@@ -3,9 +3,12 @@ package hitbox;
 import hitbox.internal.*;
 
 /**
- * Collision tests, one static method per pair of shapes, on plain floats: the tutorial's
- * (circle/point, circle/circle, rectangle/point, rectangle/rectangle) and shapes its section
- * 10 leaves to "the right math" (lines, polygons, triangles, ellipses, capsules).
+ * The tutorial's collision tests, one static method per pair of shapes, on plain floats: the
+ * four it writes (circle/point, circle/circle, rectangle/point, rectangle/rectangle), the
+ * circle/rectangle and line tests it links to, and the polygon and triangle tests of its
+ * section 10, with the steps the sketches draw ({@link #rayCrossesEdge}, {@link #lineSide}) and
+ * the filled arc of a vision cone ({@link #arcPoint}). Every other pair (ellipses, capsules,
+ * one shape inside another) is asked of the shapes: {@code a.overlaps(b)}, {@code a.contains(b)}.
  *
  * <p>The tutorial's four are the {@code if} statements it writes, made exact: the arithmetic is
  * done in {@code double}, so for whole-number coordinates up to about a million a touching case
@@ -16,20 +19,18 @@ import hitbox.internal.*;
  * Infinite values are compared as the formulas compare them. The polygon methods throw only
  * for a null array ({@link IllegalArgumentException} naming it). Circles are centre and
  * radius; rectangles are top-left corner, width and height (Processing's {@code CORNER}
- * mode), named {@code rectX, rectY, rectW, rectH} where another shape comes first (an
- * ellipse's {@code rx} is its x radius, never a rectangle's x).
+ * mode), named {@code rectX, rectY, rectW, rectH} where another shape comes first.
  *
  * <p>The {@code line...} methods ({@link #lineLine}, {@link #lineCircle}, {@link #lineRect},
- * {@link #lineSide}, and the {@code ...Line} ones such as {@link #polygonLine}) take
- * <em>segments</em>: two end points, closed, as a {@link Segment} is. "Line" is the
- * tutorial's word and the method names keep it; everywhere else, {@link Sweep} and
- * {@link Ray} included, Hitbox says segment. {@link #lineSide} alone reads the whole line
- * through the two points.
+ * {@link #lineSide}, and {@link #polygonLine}) take <em>segments</em>: two end points, closed,
+ * as a {@link Segment} is. "Line" is the tutorial's word and the method names keep it;
+ * everywhere else, {@link Sweep} and {@link Ray} included, Hitbox says segment.
+ * {@link #lineSide} alone reads the whole line through the two points.
  *
- * <p>This class is longer than most (about 940 lines): it is the whole table of tests, one
- * public method per pair with its full javadoc (the ellipses and capsules included). Each
- * answers by calling its kernel in {@code hitbox.internal} ({@code RawTests}, which the
- * shapes' and the world's code call directly, so that nothing calls back up into this class).
+ * <p>This class is longer than most (about 490 lines): it is the tutorial's table of tests,
+ * one public method per pair with its full javadoc. Each answers by calling its kernel in
+ * {@code hitbox.internal} ({@code RawTests}, which the shapes' and the world's code call
+ * directly, so that nothing calls back up into this class).
  */
 public final class Collide {
     private Collide() {
@@ -153,62 +154,6 @@ public final class Collide {
      */
     public static boolean circleRect(float cx, float cy, float r, float rectX, float rectY, float rectW, float rectH) {
         return RawTests.circleRect(cx, cy, r, rectX, rectY, rectW, rectH);
-    }
-
-    /**
-     * Does the first rectangle hold the second: is no point of the second outside the first?
-     * Edges may lie on each other, so a rectangle contains itself.
-     *
-     * <p>{@code x2 >= x1 && x2 + w2 <= x1 + w1 && y2 >= y1 && y2 + h2 <= y1 + h1}: libGDX's
-     * {@code Rectangle.contains(Rectangle)} with its strict comparisons made non-strict, since
-     * by the <a href="package-summary.html#touching">touching rule</a> the outline belongs to
-     * neither shape and "inside" means the closures (see {@link Shape#contains(Shape)}). Exact
-     * for every float: each side is a sum of two floats, compared exactly. A rectangle of
-     * width or height 0 is its segment, ends included.
-     *
-     * <p>A NaN or infinite value in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x1 the outer rectangle's left edge
-     * @param y1 the outer rectangle's top edge
-     * @param w1 the outer rectangle's width
-     * @param h1 the outer rectangle's height
-     * @param x2 the inner rectangle's left edge
-     * @param y2 the inner rectangle's top edge
-     * @param w2 the inner rectangle's width
-     * @param h2 the inner rectangle's height
-     * @return true if the second rectangle, edges included, lies in the first, edges included
-     */
-    public static boolean rectContainsRect(float x1, float y1, float w1, float h1,
-                                           float x2, float y2, float w2, float h2) {
-        return RawTests.rectContainsRect(x1, y1, w1, h1, x2, y2, w2, h2);
-    }
-
-    /**
-     * Does the first circle hold the second: is the distance between the centres plus the
-     * second radius at most the first radius? Touching from inside counts, so a circle
-     * contains itself.
-     *
-     * <p>The tutorial has no containment test; this is its distance turned round,
-     * {@code dist(x1, y1, x2, y2) <= r1 - r2}, compared squared and
-     * exactly for every float; libGDX's {@code Circle.contains(Circle)} gives the same for
-     * circles with area. A circle of radius 0 is its centre: it contains only itself (a circle
-     * of radius 0 at the same place), and a circle contains it when the centre is in the
-     * circle or on its outline.
-     *
-     * <p>A NaN or infinite value in any argument answers false, and so does a negative size
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x1 the outer circle's centre x
-     * @param y1 the outer circle's centre y
-     * @param r1 the outer circle's radius
-     * @param x2 the inner circle's centre x
-     * @param y2 the inner circle's centre y
-     * @param r2 the inner circle's radius
-     * @return true if the second circle, outline included, lies in the first
-     */
-    public static boolean circleContainsCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
-        return RawTests.circleContainsCircle(x1, y1, r1, x2, y2, r2);
     }
 
     /**
@@ -500,335 +445,6 @@ public final class Collide {
     public static boolean trianglePoint(float x1, float y1, float x2, float y2, float x3, float y3,
                                         float px, float py) {
         return RawTests.trianglePoint(x1, y1, x2, y2, x3, y3, px, py);
-    }
-
-    // ---------------------------------------------------------------- ellipses
-
-    /**
-     * Is the point inside the ellipse? Touching the outline is not inside.
-     *
-     * <p>The ellipse's equation, {@code (dx / rectX)^2 + (dy / rectY)^2 < 1}, multiplied out so nothing is
-     * divided, and decided exactly for every float. An ellipse with a radius of 0 contains
-     * no point.
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x       the ellipse's centre x
-     * @param y       the ellipse's centre y
-     * @param radiusX its horizontal radius (half of {@code ellipse()}'s width)
-     * @param radiusY its vertical radius (half of {@code ellipse()}'s height)
-     * @param px      the point's x
-     * @param py      the point's y
-     * @return true if the point is strictly inside the ellipse
-     */
-    public static boolean ellipsePoint(float x, float y, float radiusX, float radiusY, float px, float py) {
-        return RawTests.ellipsePoint(x, y, radiusX, radiusY, px, py);
-    }
-
-    /**
-     * Do an ellipse and a circle overlap? Touching is not overlapping.
-     *
-     * <p>A circle of radius 0 is a point ({@link #ellipsePoint}); an ellipse with a radius of
-     * 0 is its flat box ({@link #circleRect}). Otherwise the circle's centre is tested
-     * against the ellipse and its distance to the outline (D. Eberly's robust bisection) is
-     * compared with r, unless the discs inside and around the ellipse or a few rounds of
-     * closest points settle it first by a margin of 1e-10 of the sizes: touching on the ellipse's axes is exact, and elsewhere the answer can
-     * be wrong only when the gap or overlap is below about 1e-12 of the sizes involved.
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x       the ellipse's centre x
-     * @param y       the ellipse's centre y
-     * @param radiusX its horizontal radius
-     * @param radiusY its vertical radius
-     * @param cx      the circle's centre x
-     * @param cy      the circle's centre y
-     * @param r       the circle's radius
-     * @return true if the insides overlap
-     */
-    public static boolean ellipseCircle(float x, float y, float radiusX, float radiusY, float cx, float cy, float r) {
-        return RawTests.ellipseCircle(x, y, radiusX, radiusY, cx, cy, r);
-    }
-
-    /**
-     * Do an ellipse and a rectangle overlap? Touching is not overlapping.
-     *
-     * <p>The rectangle's point nearest the centre (clamped, as in {@link #circleRect}) is
-     * tested with {@link #ellipsePoint}'s exact formula: an axis-aligned scaling turns the
-     * ellipse into a circle and keeps that point the nearest. An ellipse with a radius of 0
-     * is its flat box ({@link #rectRect}).
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x       the ellipse's centre x
-     * @param y       the ellipse's centre y
-     * @param radiusX its horizontal radius
-     * @param radiusY its vertical radius
-     * @param rectX      the rectangle's left edge
-     * @param rectY      the rectangle's top edge
-     * @param rectW      the rectangle's width
-     * @param rectH      the rectangle's height
-     * @return true if the insides overlap
-     */
-    public static boolean ellipseRect(float x, float y, float radiusX, float radiusY, float rectX, float rectY, float rectW, float rectH) {
-        return RawTests.ellipseRect(x, y, radiusX, radiusY, rectX, rectY, rectW, rectH);
-    }
-
-    /**
-     * Does a segment reach into an ellipse? A segment touching the outline does not.
-     *
-     * <p>Scaled by {@code radiusY} along x and {@code radiusX} along y, the ellipse is a
-     * circle of radius {@code radiusX * radiusY}, and the test is {@link #lineCircle}'s, in
-     * double (exact for whole numbers up to about 4,000). An ellipse with a radius of 0 has no
-     * inside: a segment never collides with it.
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x       the ellipse's centre x
-     * @param y       the ellipse's centre y
-     * @param radiusX its horizontal radius
-     * @param radiusY its vertical radius
-     * @param x1      the segment's first end x
-     * @param y1      the segment's first end y
-     * @param x2      the segment's second end x
-     * @param y2      the segment's second end y
-     * @return true if the segment reaches the ellipse's inside
-     */
-    public static boolean ellipseLine(float x, float y, float radiusX, float radiusY, float x1, float y1, float x2, float y2) {
-        return RawTests.ellipseLine(x, y, radiusX, radiusY, x1, y1, x2, y2);
-    }
-
-    /**
-     * Do two ellipses overlap? Touching is not overlapping.
-     *
-     * <p>The first is scaled into a circle (products of floats, exact in double), and the
-     * second's outline is measured from its centre with D. Eberly's robust bisection (unless
-     * discs or a few rounds of closest points settle it first by a margin of 1e-10): exact
-     * when they touch on the axes, and elsewhere wrong only when the gap or overlap is below
-     * about 1e-12 of the sizes involved. The two are taken in a fixed order, so swapping them
-     * never changes the answer. An ellipse with a radius of 0 is its flat box.
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x1       the first ellipse's centre x
-     * @param y1       the first ellipse's centre y
-     * @param radiusX1 the first ellipse's horizontal radius
-     * @param radiusY1 the first ellipse's vertical radius
-     * @param x2       the second ellipse's centre x
-     * @param y2       the second ellipse's centre y
-     * @param radiusX2 the second ellipse's horizontal radius
-     * @param radiusY2 the second ellipse's vertical radius
-     * @return true if the insides overlap
-     */
-    public static boolean ellipseEllipse(float x1, float y1, float radiusX1, float radiusY1,
-                                         float x2, float y2, float radiusX2, float radiusY2) {
-        return RawTests.ellipseEllipse(x1, y1, radiusX1, radiusY1, x2, y2, radiusX2, radiusY2);
-    }
-
-    /**
-     * Do a polygon and an ellipse overlap? Touching is not overlapping.
-     *
-     * <p>The ellipse's centre inside the polygon, or an edge reaching into the ellipse
-     * ({@link #ellipseLine}); an ellipse with a radius of 0 is its flat box
-     * ({@link #polygonRect}).
-     *
-     * <p>A NaN in any argument, a coordinate of {@code xy} included, answers false, and so does
-     * a negative size (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param xy      the polygon's vertices, as for {@link #polygonPoint}
-     * @param x       the ellipse's centre x
-     * @param y       the ellipse's centre y
-     * @param radiusX its horizontal radius
-     * @param radiusY its vertical radius
-     * @return true if the insides overlap
-     * @throws IllegalArgumentException if {@code xy} is null
-     * @throws IllegalArgumentException if {@code xy} is null
-     */
-    public static boolean polygonEllipse(float[] xy, float x, float y, float radiusX, float radiusY) {
-        return RawTests.polygonEllipse(xy, x, y, radiusX, radiusY);
-    }
-
-    /**
-     * Do an ellipse and a capsule overlap? Touching is not overlapping.
-     *
-     * <p>Is the capsule's segment closer to the ellipse than r? Most cases are settled at once
-     * by the discs inside and around the ellipse and a few rounds of closest points (each
-     * answer proved by a margin of 1e-10 of the sizes); the rest: the distance is found by
-     * bisection along the segment (the distance to a convex shape is convex along a line) on
-     * D. Eberly's point-to-ellipse distance: wrong only when the gap or overlap is below about
-     * 1e-9 of the sizes involved. A capsule of radius 0 is its segment ({@link #ellipseLine});
-     * an ellipse with a radius of 0 is its flat box ({@link #capsuleRect}).
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x       the ellipse's centre x
-     * @param y       the ellipse's centre y
-     * @param radiusX its horizontal radius
-     * @param radiusY its vertical radius
-     * @param x1      the capsule's segment, first end x
-     * @param y1      the capsule's segment, first end y
-     * @param x2      the capsule's segment, second end x
-     * @param y2      the capsule's segment, second end y
-     * @param r       the capsule's radius
-     * @return true if the insides overlap
-     */
-    public static boolean ellipseCapsule(float x, float y, float radiusX, float radiusY,
-                                         float x1, float y1, float x2, float y2, float r) {
-        return RawTests.ellipseCapsule(x, y, radiusX, radiusY, x1, y1, x2, y2, r);
-    }
-
-    // ---------------------------------------------------------------- capsules
-
-    /**
-     * Is the point inside the capsule (closer than r to its segment)? On the outline is not
-     * inside; a capsule of radius 0 contains no point.
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x1 the capsule's segment, first end x
-     * @param y1 the capsule's segment, first end y
-     * @param x2 the capsule's segment, second end x
-     * @param y2 the capsule's segment, second end y
-     * @param r  the capsule's radius
-     * @param px the point's x
-     * @param py the point's y
-     * @return true if the point is strictly inside
-     */
-    public static boolean capsulePoint(float x1, float y1, float x2, float y2, float r, float px, float py) {
-        return RawTests.capsulePoint(x1, y1, x2, y2, r, px, py);
-    }
-
-    /**
-     * Do a capsule and a circle overlap? The circle's centre closer to the capsule's segment
-     * than {@code r1 + r2}: {@link #circleCircle} with a segment for one centre, compared
-     * squared as exact signs of double products, so touching between whole numbers of modest
-     * size (up to about 2^20) is exact.
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x1 the capsule's segment, first end x
-     * @param y1 the capsule's segment, first end y
-     * @param x2 the capsule's segment, second end x
-     * @param y2 the capsule's segment, second end y
-     * @param r1 the capsule's radius
-     * @param cx the circle's centre x
-     * @param cy the circle's centre y
-     * @param r2 the circle's radius
-     * @return true if the insides overlap
-     */
-    public static boolean capsuleCircle(float x1, float y1, float x2, float y2, float r1, float cx, float cy, float r2) {
-        return RawTests.capsuleCircle(x1, y1, x2, y2, r1, cx, cy, r2);
-    }
-
-    /**
-     * Do a capsule and a rectangle overlap? Touching is not overlapping. A capsule of radius 0
-     * is its segment ({@link #lineRect}); a flat rectangle is a segment without its ends.
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x1 the capsule's segment, first end x
-     * @param y1 the capsule's segment, first end y
-     * @param x2 the capsule's segment, second end x
-     * @param y2 the capsule's segment, second end y
-     * @param r  the capsule's radius
-     * @param rectX the rectangle's left edge
-     * @param rectY the rectangle's top edge
-     * @param rectW the rectangle's width
-     * @param rectH the rectangle's height
-     * @return true if the insides overlap
-     */
-    public static boolean capsuleRect(float x1, float y1, float x2, float y2, float r,
-                                      float rectX, float rectY, float rectW, float rectH) {
-        return RawTests.capsuleRect(x1, y1, x2, y2, r, rectX, rectY, rectW, rectH);
-    }
-
-    /**
-     * Does a segment reach into a capsule? The segments closer than r; a segment touching the
-     * outline does not, and a capsule of radius 0 never collides with a segment.
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x1 the capsule's segment, first end x
-     * @param y1 the capsule's segment, first end y
-     * @param x2 the capsule's segment, second end x
-     * @param y2 the capsule's segment, second end y
-     * @param r  the capsule's radius
-     * @param x3 the segment's first end x
-     * @param y3 the segment's first end y
-     * @param x4 the segment's second end x
-     * @param y4 the segment's second end y
-     * @return true if the segment reaches the capsule's inside
-     */
-    public static boolean capsuleLine(float x1, float y1, float x2, float y2, float r,
-                                      float x3, float y3, float x4, float y4) {
-        return RawTests.capsuleLine(x1, y1, x2, y2, r, x3, y3, x4, y4);
-    }
-
-    /**
-     * Do two capsules overlap? Their segments closer than {@code r1 + r2}; touching is not
-     * overlapping.
-     *
-     * <p>A NaN in any argument answers false, and so does a negative size; infinite values
-     * are compared as the formula compares them (the
-     * <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param x1 the first capsule's segment, first end x
-     * @param y1 the first capsule's segment, first end y
-     * @param x2 the first capsule's segment, second end x
-     * @param y2 the first capsule's segment, second end y
-     * @param r1 the first capsule's radius
-     * @param x3 the second capsule's segment, first end x
-     * @param y3 the second capsule's segment, first end y
-     * @param x4 the second capsule's segment, second end x
-     * @param y4 the second capsule's segment, second end y
-     * @param r2 the second capsule's radius
-     * @return true if the insides overlap
-     */
-    public static boolean capsuleCapsule(float x1, float y1, float x2, float y2, float r1,
-                                         float x3, float y3, float x4, float y4, float r2) {
-        return RawTests.capsuleCapsule(x1, y1, x2, y2, r1, x3, y3, x4, y4, r2);
-    }
-
-    /**
-     * Do a polygon and a capsule overlap? The capsule's first end inside the polygon, or an
-     * edge closer than r to its segment. A capsule of radius 0 is its segment
-     * ({@link #polygonLine}).
-     *
-     * <p>A NaN in any argument, a coordinate of {@code xy} included, answers false, and so does
-     * a negative size (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param xy the polygon's vertices, as for {@link #polygonPoint}
-     * @param x1 the capsule's segment, first end x
-     * @param y1 the capsule's segment, first end y
-     * @param x2 the capsule's segment, second end x
-     * @param y2 the capsule's segment, second end y
-     * @param r  the capsule's radius
-     * @return true if the insides overlap
-     * @throws IllegalArgumentException if {@code xy} is null
-     * @throws IllegalArgumentException if {@code xy} is null
-     */
-    public static boolean polygonCapsule(float[] xy, float x1, float y1, float x2, float y2, float r) {
-        return RawTests.polygonCapsule(xy, x1, y1, x2, y2, r);
     }
 
     // ---------------------------------------------------------------- arcs

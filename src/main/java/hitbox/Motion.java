@@ -33,7 +33,7 @@ import java.util.Set;
  * the next position, not of the path: a mover faster than an obstacle is thick can jump over
  * it in one frame (use a swept test for bullets). It assumes the mover starts outside: one
  * that already overlaps the obstacle usually gets both axes every frame and jitters in
- * place; push it out first with {@link Snap#pushOut(Rect, Rect)}. With several obstacles the
+ * place; push it out first with {@link Snap#pushOut}. With several obstacles the
  * answer is the union over them, and a reversed speed can carry the mover into another
  * obstacle that lies closer than one frame's move ({@link #bounce} handles that).
  *

@@ -248,7 +248,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      */
     private static double capsuleParam(float ox, float oy, double dx, double dy, double limit,
                                        float x1, float y1, float x2, float y2, float r) {
-        if (Collide.capsulePoint(x1, y1, x2, y2, r, ox, oy)) {
+        if (RawTests.capsulePoint(x1, y1, x2, y2, r, ox, oy)) {
             return 0;
         }
         double s = Math.min(Discs.entry((double) ox - x1, (double) oy - y1, dx, dy, r, limit),
@@ -361,7 +361,7 @@ public record Ray(float ox, float oy, float dx, float dy, float maxDistance) {
      * segment's own frame); the normal points from the segment's nearest point to the hit.
      */
     private RayHit castCapsule(Capsule k, double limit) {
-        if (Collide.capsulePoint(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), ox, oy)) {
+        if (RawTests.capsulePoint(k.x1(), k.y1(), k.x2(), k.y2(), k.r(), ox, oy)) {
             return inside();
         }
         double s = capsuleParam(ox, oy, dx, dy, limit, k.x1(), k.y1(), k.x2(), k.y2(), k.r());

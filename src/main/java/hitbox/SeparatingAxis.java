@@ -22,8 +22,13 @@ import java.util.List;
  * coordinates up to about a million: projections are taken on the un-normalized edge
  * normal in double, where each product of two coordinate differences is exact.
  *
- * <p>Every method here needs convex polygons and throws for a concave one, naming the vertex
- * where it bends inwards; {@link Contact#between} handles concave polygons too.
+ * <p>This class lays the test open for drawing; it does not answer it. To ask whether two
+ * polygons overlap, ask them: {@code a.overlaps(b)} (these axes, decided with exact
+ * orientation signs), and {@code a.contact(b)} for the shortest push that parts them (the
+ * axis whose shadows need the least move apart), oriented from a to b, as the normal and depth
+ * of a {@link Contact}; both take concave polygons too.
+ * {@link #axes} needs convex polygons and throws for a concave one, naming the vertex where it
+ * bends inwards.
  *
  * <p>Reference: S. Gottschalk, "Separating axis theorem", 1996; C. Ericson, <i>Real-Time
  * Collision Detection</i>, 2005, section 5.2.1.
@@ -40,7 +45,7 @@ public final class SeparatingAxis {
      * line in that direction, and each shadow from {@code min * (nx, ny)} to
      * {@code max * (nx, ny)}.
      *
-     * <p>The values are rounded to float for drawing. {@link SeparatingAxis#overlaps} decides
+     * <p>The values are rounded to float for drawing. {@link Polygon#overlaps} decides
      * with exact arithmetic, so at very large coordinates an axis can show an overlap of 0
      * where the exact test sees a hair's-width overlap; for whole-number coordinates up to a
      * few thousand the two always agree.
@@ -149,37 +154,6 @@ public final class SeparatingAxis {
             }
         }
         return Collections.unmodifiableList(axes);
-    }
-
-    /**
-     * Do two convex polygons overlap? Polygons that only touch (share an edge or a corner) do
-     * not: the shadows must overlap by more than 0 on every axis.
-     *
-     * @param a the first polygon, convex
-     * @param b the second polygon, convex
-     * @return true if no axis separates them
-     * @throws IllegalArgumentException if a polygon is null or concave
-     */
-    public static boolean overlaps(Polygon a, Polygon b) {
-        convexCorners("a", a);
-        convexCorners("b", b);
-        // The same axes, asked with exact orientation signs (Polygons.convexOverlap).
-        return Polygons.convexOverlap(a.raw(), a.convexWinding(), b.raw(), b.convexWinding());
-    }
-
-    /**
-     * The contact between two convex polygons, or null when they do not overlap: the axis
-     * with the least overlap, oriented from a to b. Moving b along the normal by the depth
-     * makes the shadows on that axis just touch, and no shorter move separates the polygons.
-     * Ties follow the rule of {@link Contact}.
-     *
-     * @param a the first polygon, convex
-     * @param b the second polygon, convex
-     * @return the contact, normal from a to b, or null when apart
-     * @throws IllegalArgumentException if a polygon is null or concave
-     */
-    public static Contact contact(Polygon a, Polygon b) {
-        return FaceQuery.convexPolygons(convexCorners("a", a), a.convexWinding(), a.bounds(), convexCorners("b", b), b.convexWinding(), b.bounds());
     }
 
     private static double min(double[] p, double mx, double my) {

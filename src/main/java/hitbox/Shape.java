@@ -83,8 +83,7 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * <p>Exact, with no tolerance, for whole-number coordinates of modest size wherever the
      * answer is a polynomial sign: every pair of circles, rectangles, segments, polygons and
      * capsules, and points or straight shapes in an axis-aligned ellipse (rectangles and
-     * circles against any float, as {@link Collide#rectContainsRect} and
-     * {@link Collide#circleContainsCircle}). The curved pairs that are not (an ellipse
+     * circles against any float). The curved pairs that are not (an ellipse
      * holding a circle, capsule or ellipse, an ellipse inside a circle or capsule, and
      * anything in or around a turned ellipse) are searched in double and count as held when
      * within a relative 1e-9 of the container's size of touching from inside; a polygon

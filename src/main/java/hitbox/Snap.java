@@ -36,8 +36,10 @@ import hitbox.internal.*;
  * <p>After a push the two rectangles touch and do not overlap: {@link Collide#rectRect} says
  * false for them, and for whole-number coordinates the edges meet exactly. When the exact
  * touching position is not a float, the mover is placed within one float step of it, on the
- * side where {@code Collide.rectRect} says they do not overlap. The
- * raw-float methods check nothing and never throw (the <a href="package-summary.html#bad-input">NaN
+ * side where {@code Collide.rectRect} says they do not overlap. Every method here takes plain
+ * floats, as the tutorial's code keeps its rectangles (a {@link Rect}'s {@code x(), y(), w(),
+ * h()} go in as they are, and {@link Push#applyTo} puts the answer back into one); they check
+ * nothing and never throw (the <a href="package-summary.html#bad-input">NaN
  * rule</a>): a NaN or infinite value gives no push, {@link Side#NONE} and the position
  * unchanged. The answer for a push is a small immutable {@link Push}; it is never null,
  * because it always carries a position ({@link Side#NONE} and the mover's own when there was
@@ -225,23 +227,6 @@ public final class Snap {
     }
 
     /**
-     * Pushes the mover out of the obstacle along the axis of least overlap; see
-     * {@link #pushOut(float, float, float, float, float, float, float, float)}.
-     *
-     * @param mover    the rectangle to push, not null
-     * @param obstacle the rectangle it must leave, not null
-     * @return the mover's new position and the side hit, or {@link Side#NONE} and its own
-     *         position if they do not overlap, never null
-     * @throws IllegalArgumentException if {@code mover} or {@code obstacle} is null
-     */
-    public static Push pushOut(Rect mover, Rect obstacle) {
-        Check.notNull("mover", mover);
-        Check.notNull("obstacle", obstacle);
-        return pushOut(mover.x(), mover.y(), mover.w(), mover.h(),
-                obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
-    }
-
-    /**
      * Pushes the mover back out of the obstacle through the side it came in by, judging by
      * the speed it moved with this frame: for fast movers, where the least overlap can pick
      * the wrong side.
@@ -295,28 +280,6 @@ public final class Snap {
             side = dy * Math.abs((double) vx) <= dx * Math.abs((double) vy) ? vertical : horizontal;
         }
         return place(side, x, y, w, h, ox, oy, ow, oh);
-    }
-
-    /**
-     * Pushes the mover back out through the side it came in by; see
-     * {@link #pushBack(float, float, float, float, float, float, float, float, float, float)}.
-     *
-     * <p>A NaN speed gives no push: the side is {@link Side#NONE} and the position comes back
-     * unchanged (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param mover    the rectangle to push, after this frame's move, not null
-     * @param vx       the horizontal speed of this frame's move
-     * @param vy       the vertical speed of this frame's move
-     * @param obstacle the rectangle it must leave, not null
-     * @return the mover's new position and the side hit, or {@link Side#NONE} and its own
-     *         position if they do not overlap, never null
-     * @throws IllegalArgumentException if {@code mover} or {@code obstacle} is null
-     */
-    public static Push pushBack(Rect mover, float vx, float vy, Rect obstacle) {
-        Check.notNull("mover", mover);
-        Check.notNull("obstacle", obstacle);
-        return pushBack(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy,
-                obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
     }
 
     /** The mover placed against the obstacle's {@code side}, touching it. */

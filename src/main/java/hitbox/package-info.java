@@ -176,7 +176,7 @@
  *       have the {@link hitbox.Contact} and move by its depth, one shape or both (a
  *       {@code share} each, the other with {@code contact.flipped()}); may leave a rounding
  *       hair of overlap.</li>
- *   <li>{@link hitbox.Snap#pushOut(hitbox.Rect, hitbox.Rect)}: two boxes, pushed along one axis, with the
+ *   <li>{@link hitbox.Snap#pushOut}: two boxes, on plain floats, pushed along one axis, with the
  *       {@link hitbox.Side} the mover was pushed to (landed, hit a wall): a platformer's
  *       tiles.</li>
  * </ul>

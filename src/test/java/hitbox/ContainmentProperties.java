@@ -74,7 +74,7 @@ class ContainmentProperties {
         assertTrue(b.minY() >= a.minY() - slack && b.maxY() <= a.maxY() + slack, what);
         // and the bounding boxes, the broad phase's view, nest too
         Rect ab = a.bounds(), bb = b.bounds();
-        assertTrue(Collide.rectContainsRect(ab.x(), ab.y(), ab.w(), ab.h(), bb.x(), bb.y(), bb.w(), bb.h())
+        assertTrue(ab.contains(bb)
                 || !(a instanceof Ellipse) && !(b instanceof Ellipse), "boxes: " + what);
     }
 

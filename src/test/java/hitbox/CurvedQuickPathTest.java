@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The cheap first answers of the curved pairs (the discs and closest-point rounds in front of
- * {@link Collide#ellipseCapsule}) never disagree with the long way they stand in front of:
+ * {@code Ellipse.overlaps(Capsule)} and its kin) never disagree with the long way they stand in front of:
  * random, whole and half-pixel (touching-heavy) and far-apart cases.
  */
 class CurvedQuickPathTest {
@@ -48,10 +48,10 @@ class CurvedQuickPathTest {
                         + x1 + ", " + y1 + ", " + x2 + ", " + y2 + ", " + r;
                 assertEquals(slow, quick > 0, what);
             }
-            // An ellipse with equal radii is a circle, which Collide answers exactly: there the
+            // An ellipse with equal radii is a circle, which the shapes answer exactly: there the
             // truth is the exact distance to the segment, which the long way rounds at touching.
             assertEquals(a == b ? exactlyCloser(x, y, x1, y1, x2, y2, (double) a + r) : slow,
-                    Collide.ellipseCapsule(x, y, a, b, x1, y1, x2, y2, r));
+                    new Ellipse(x, y, a, b).overlaps(new Capsule(x1, y1, x2, y2, r)));
         }
         // The point of the quick path: it decides most cases.
         org.junit.jupiter.api.Assertions.assertTrue(decided > 150_000, "decided " + decided);
@@ -81,7 +81,7 @@ class CurvedQuickPathTest {
             }
             // Equal radii: a circle, answered exactly (see ellipseCapsuleQuickAgreesWithTheLongWay).
             assertEquals(a == b ? exactlyCloser(x, y, x2, y2, x2, y2, (double) a + a2) : slowCircle,
-                    Collide.ellipseCircle(x, y, a, b, x2, y2, a2), what);
+                    new Ellipse(x, y, a, b).overlaps(new Circle(x2, y2, a2)), what);
             // The ellipse pair, in the first's scaled frame, as Ellipses.ellipse takes it.
             double cx = qx * b, cy = qy * a, ea = (double) a2 * b, eb = (double) b2 * a, reach = (double) a * b;
             boolean slowEllipse = Ellipses.side(0, 0, cx, cy, ea, eb) <= 0 || Ellipses.distance(ea, eb, -cx, -cy, null) < reach;

@@ -48,12 +48,12 @@ class EllipseCapsuleGridTest {
                                              @ForAll @IntRange(min = 0, max = 8) int x4, @ForAll @IntRange(min = 0, max = 8) int y4,
                                              @ForAll @IntRange(min = 0, max = 4) int r1, @ForAll @IntRange(min = 0, max = 4) int r2) {
         long reach = r1 + r2;
-        assertEquals(within(x1, y1, x2, y2, x3, y3, reach), Collide.capsuleCircle(x1, y1, x2, y2, r1, x3, y3, r2),
+        assertEquals(within(x1, y1, x2, y2, x3, y3, reach), new Capsule(x1, y1, x2, y2, r1).overlaps(new Circle(x3, y3, r2)),
                 () -> "capsuleCircle " + x1 + "," + y1 + " " + x2 + "," + y2 + " r " + r1 + " circle " + x3 + "," + y3 + " r " + r2);
         boolean meet = meet(x1, y1, x2, y2, x3, y3, x4, y4);
         boolean expected = reach > 0 && (meet || within(x1, y1, x2, y2, x3, y3, reach) || within(x1, y1, x2, y2, x4, y4, reach)
                 || within(x3, y3, x4, y4, x1, y1, reach) || within(x3, y3, x4, y4, x2, y2, reach));
-        assertEquals(expected, Collide.capsuleCapsule(x1, y1, x2, y2, r1, x3, y3, x4, y4, r2), "capsuleCapsule");
+        assertEquals(expected, new Capsule(x1, y1, x2, y2, r1).overlaps(new Capsule(x3, y3, x4, y4, r2)), "capsuleCapsule");
     }
 
     /** Is (px, py) closer than reach to segment AB? In longs: exact. */

@@ -50,9 +50,10 @@ class EllipseWithEqualRadiiTest {
         boolean want = ddx * ddx + ddy * ddy < reach * reach;
         String where = "ellipse (" + ex + ", " + ey + ") radius " + big + " and (" + cx + ", " + cy + ") radius " + small;
         Ellipse e = new Ellipse(ex, ey, big, big, (float) Math.toRadians(angle));
-        assertEquals(want, Collide.ellipseCircle(ex, ey, big, big, cx, cy, small), "ellipseCircle, " + where);
-        assertEquals(want, Collide.ellipseEllipse(ex, ey, big, big, cx, cy, small, small), "ellipseEllipse, " + where);
-        assertEquals(want, Collide.ellipseEllipse(cx, cy, small, small, ex, ey, big, big), "ellipseEllipse swapped, " + where);
+        Ellipse aligned = new Ellipse(ex, ey, big, big);
+        assertEquals(want, aligned.overlaps(new Circle(cx, cy, small)), "unturned, Ellipse.overlaps(Circle), " + where);
+        assertEquals(want, aligned.overlaps(new Ellipse(cx, cy, small, small)), "unturned, Ellipse.overlaps(Ellipse), " + where);
+        assertEquals(want, new Ellipse(cx, cy, small, small).overlaps(aligned), "unturned, swapped, " + where);
         assertEquals(want, e.overlaps(new Circle(cx, cy, small)), "Ellipse.overlaps(Circle), " + where);
         assertEquals(want, new Circle(cx, cy, small).overlaps(e), "Circle.overlaps(Ellipse), " + where);
         assertEquals(want, e.overlaps(new Ellipse(cx, cy, small, small)), "Ellipse.overlaps(Ellipse), " + where);
@@ -63,7 +64,7 @@ class EllipseWithEqualRadiiTest {
         if (ddx == 0 && ddy == 0) {
             awayX = cx + 3;
         }
-        assertEquals(want, Collide.ellipseCapsule(ex, ey, big, big, cx, cy, awayX, awayY, small), "ellipseCapsule, " + where);
+        assertEquals(want, aligned.overlaps(new Capsule(cx, cy, awayX, awayY, small)), "unturned, Ellipse.overlaps(Capsule), " + where);
         assertEquals(want, e.overlaps(new Capsule(cx, cy, awayX, awayY, small)), "Ellipse.overlaps(Capsule), " + where);
     }
 }

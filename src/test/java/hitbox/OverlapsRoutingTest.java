@@ -12,8 +12,9 @@ import org.junit.jupiter.api.Test;
  * The routing of {@link Shape#overlaps} for all 36 ordered pairs of the six kinds: each
  * class calls its own kind's method of {@link Overlaps}, which hands earlier kinds the pair
  * swapped. Whichever shape is asked, and whether through {@code overlaps} or the library's
- * own {@link Overlaps#test}, the answer is the Collide method for the pair, written out
- * again here independently of Overlaps (a turned ellipse: the same answer both ways round).
+ * own {@link Overlaps#test}, the answer is the raw test for the pair (the Collide method, or
+ * for an ellipse or a capsule its {@link RawTests} body, which Collide no longer names), written
+ * out again here independently of Overlaps (a turned ellipse: the same answer both ways round).
  */
 class OverlapsRoutingTest {
 
@@ -66,7 +67,7 @@ class OverlapsRoutingTest {
         return Polygon.of(xy);
     }
 
-    /** The Collide method for the pair, or null for a pair with a turned ellipse (decided in its frame). */
+    /** The raw test for the pair, or null for a pair with a turned ellipse (decided in its frame). */
     private static Boolean collide(Shape a, Shape b) {
         if (a instanceof Ellipse e) {
             if (!TurnedEllipses.aligned(e) || b instanceof Ellipse f && !TurnedEllipses.aligned(f)) {
@@ -74,17 +75,17 @@ class OverlapsRoutingTest {
             }
             float x = e.x(), y = e.y(), rx = e.rx(), ry = e.ry();
             if (b instanceof Ellipse f) {
-                return Collide.ellipseEllipse(x, y, rx, ry, f.x(), f.y(), f.rx(), f.ry());
+                return RawTests.ellipseEllipse(x, y, rx, ry, f.x(), f.y(), f.rx(), f.ry());
             } else if (b instanceof Capsule k) {
-                return Collide.ellipseCapsule(x, y, rx, ry, k.x1(), k.y1(), k.x2(), k.y2(), k.r());
+                return RawTests.ellipseCapsule(x, y, rx, ry, k.x1(), k.y1(), k.x2(), k.y2(), k.r());
             } else if (b instanceof Circle c) {
-                return Collide.ellipseCircle(x, y, rx, ry, c.x(), c.y(), c.r());
+                return RawTests.ellipseCircle(x, y, rx, ry, c.x(), c.y(), c.r());
             } else if (b instanceof Rect r) {
-                return Collide.ellipseRect(x, y, rx, ry, r.x(), r.y(), r.w(), r.h());
+                return RawTests.ellipseRect(x, y, rx, ry, r.x(), r.y(), r.w(), r.h());
             } else if (b instanceof Segment s) {
-                return Collide.ellipseLine(x, y, rx, ry, s.x1(), s.y1(), s.x2(), s.y2());
+                return RawTests.ellipseLine(x, y, rx, ry, s.x1(), s.y1(), s.x2(), s.y2());
             }
-            return Collide.polygonEllipse(((Polygon) b).coordinates(), x, y, rx, ry);
+            return RawTests.polygonEllipse(((Polygon) b).coordinates(), x, y, rx, ry);
         }
         if (b instanceof Ellipse) {
             return collide(b, a);
@@ -92,15 +93,15 @@ class OverlapsRoutingTest {
         if (a instanceof Capsule k) {
             float x1 = k.x1(), y1 = k.y1(), x2 = k.x2(), y2 = k.y2(), r = k.r();
             if (b instanceof Capsule o) {
-                return Collide.capsuleCapsule(x1, y1, x2, y2, r, o.x1(), o.y1(), o.x2(), o.y2(), o.r());
+                return RawTests.capsuleCapsule(x1, y1, x2, y2, r, o.x1(), o.y1(), o.x2(), o.y2(), o.r());
             } else if (b instanceof Circle c) {
-                return Collide.capsuleCircle(x1, y1, x2, y2, r, c.x(), c.y(), c.r());
+                return RawTests.capsuleCircle(x1, y1, x2, y2, r, c.x(), c.y(), c.r());
             } else if (b instanceof Rect q) {
-                return Collide.capsuleRect(x1, y1, x2, y2, r, q.x(), q.y(), q.w(), q.h());
+                return RawTests.capsuleRect(x1, y1, x2, y2, r, q.x(), q.y(), q.w(), q.h());
             } else if (b instanceof Segment s) {
-                return Collide.capsuleLine(x1, y1, x2, y2, r, s.x1(), s.y1(), s.x2(), s.y2());
+                return RawTests.capsuleLine(x1, y1, x2, y2, r, s.x1(), s.y1(), s.x2(), s.y2());
             }
-            return Collide.polygonCapsule(((Polygon) b).coordinates(), x1, y1, x2, y2, r);
+            return RawTests.polygonCapsule(((Polygon) b).coordinates(), x1, y1, x2, y2, r);
         }
         if (b instanceof Capsule) {
             return collide(b, a);
@@ -109,7 +110,7 @@ class OverlapsRoutingTest {
     }
 
     @Test
-    void everyOrderedPair_routesToItsCollideMethod_andAnswersTheSameBothWays() {
+    void everyOrderedPair_routesToItsRawTest_andAnswersTheSameBothWays() {
         Random rnd = new Random(12);
         int[][] yes = new int[KINDS][KINDS], no = new int[KINDS][KINDS];
         for (int i = 0; i < 60_000; i++) {
@@ -122,7 +123,7 @@ class OverlapsRoutingTest {
             assertEquals(ab, Overlaps.test(b, a), () -> "Overlaps.test(b, a): " + what);
             Boolean expected = collide(a, b);
             if (expected != null) {
-                assertEquals(expected, ab, () -> "the Collide method for the pair: " + what);
+                assertEquals(expected, ab, () -> "the raw test for the pair: " + what);
             }
             if (ab) {
                 yes[ka][kb]++;

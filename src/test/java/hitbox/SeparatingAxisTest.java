@@ -125,8 +125,8 @@ class SeparatingAxisTest {
         "0, 0, 10, 0, 0, 10, true",      // the same square
     })
     void overlaps_squares(float ax, float ay, float as, float bx, float by, float bs, boolean expected) {
-        assertEquals(expected, SeparatingAxis.overlaps(square(ax, ay, as), square(bx, by, bs)));
-        assertEquals(expected, SeparatingAxis.overlaps(square(bx, by, bs), square(ax, ay, as)));
+        assertEquals(expected, square(ax, ay, as).overlaps(square(bx, by, bs)));
+        assertEquals(expected, square(bx, by, bs).overlaps(square(ax, ay, as)));
     }
 
     @ParameterizedTest
@@ -137,15 +137,15 @@ class SeparatingAxisTest {
         "0, 0, 2, true",      // inside
     })
     void overlaps_diamonds(float bx, float by, float br, boolean expected) {
-        assertEquals(expected, SeparatingAxis.overlaps(diamond(0, 0, 5), diamond(bx, by, br)));
-        assertEquals(expected, SeparatingAxis.overlaps(diamond(bx, by, br), diamond(0, 0, 5)));
+        assertEquals(expected, diamond(0, 0, 5).overlaps(diamond(bx, by, br)));
+        assertEquals(expected, diamond(bx, by, br).overlaps(diamond(0, 0, 5)));
     }
 
     @ParameterizedTest
     @CsvSource({"1000000, 0", "0, -1000000", "999999, 1000000"})
     void overlaps_hugeCoordinates_touchingStillTouching(float dx, float dy) {
-        assertFalse(SeparatingAxis.overlaps(diamond(dx, dy, 5), diamond(5 + dx, 5 + dy, 5)));
-        assertTrue(SeparatingAxis.overlaps(diamond(dx, dy, 5), diamond(4 + dx, 4 + dy, 5)));
+        assertFalse(diamond(dx, dy, 5).overlaps(diamond(5 + dx, 5 + dy, 5)));
+        assertTrue(diamond(dx, dy, 5).overlaps(diamond(4 + dx, 4 + dy, 5)));
     }
 
     @Test
@@ -153,12 +153,13 @@ class SeparatingAxisTest {
         Polygon l = Polygon.of(0, 0, 6, 0, 6, 2, 2, 2, 2, 6, 0, 6);
         Polygon sq = square(0, 0, 1);
         assertEquals("SAT needs convex polygons; polygon a is concave at vertex 3 (2.0, 2.0)",
-                assertThrows(IllegalArgumentException.class, () -> SeparatingAxis.overlaps(l, sq)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> SeparatingAxis.axes(l, sq)).getMessage());
         assertEquals("SAT needs convex polygons; polygon b is concave at vertex 3 (2.0, 2.0)",
-                assertThrows(IllegalArgumentException.class, () -> SeparatingAxis.contact(sq, l)).getMessage());
-        assertThrows(IllegalArgumentException.class, () -> SeparatingAxis.axes(l, sq));
+                assertThrows(IllegalArgumentException.class, () -> SeparatingAxis.axes(sq, l)).getMessage());
         assertEquals("a must not be null",
-                assertThrows(IllegalArgumentException.class, () -> SeparatingAxis.overlaps(null, sq)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> SeparatingAxis.axes(null, sq)).getMessage());
+        assertEquals("b must not be null",
+                assertThrows(IllegalArgumentException.class, () -> SeparatingAxis.axes(sq, null)).getMessage());
     }
 
     @Test
@@ -180,29 +181,29 @@ class SeparatingAxisTest {
         "1, 3, 2, -1, 0, 3",     // containment: b leaves through a's left edge
     })
     void contact_squares(float bx, float by, float bs, float nx, float ny, float depth) {
-        Contact c = SeparatingAxis.contact(square(0, 0, 10), square(bx, by, bs));
+        Contact c = square(0, 0, 10).contact(square(bx, by, bs));
         assertEquals(new Contact(nx, ny, depth), c);
         assertEquals(Raw.contactRectRect(0, 0, 10, 10, bx, by, bs, bs), c);
     }
 
     @Test
     void contact_diamonds_diagonalNormal_bothOrders() {
-        Contact c = SeparatingAxis.contact(diamond(0, 0, 5), diamond(4, 4, 5));
+        Contact c = diamond(0, 0, 5).contact(diamond(4, 4, 5));
         assertNotNull(c);
         assertEquals(Math.sqrt(0.5), c.nx(), 1e-6);
         assertEquals(Math.sqrt(0.5), c.ny(), 1e-6);
         assertEquals(Math.sqrt(2), c.depth(), 1e-6);
-        assertReversed(c, SeparatingAxis.contact(diamond(4, 4, 5), diamond(0, 0, 5)));
-        assertNull(SeparatingAxis.contact(diamond(0, 0, 5), diamond(5, 5, 5)));
+        assertReversed(c, diamond(4, 4, 5).contact(diamond(0, 0, 5)));
+        assertNull(diamond(0, 0, 5).contact(diamond(5, 5, 5)));
     }
 
     @ParameterizedTest
     @CsvSource({"1000000, 0", "0, 1000000", "-999999, 999999"})
     void contact_hugeCoordinates_sameContact(float dx, float dy) {
-        assertEquals(SeparatingAxis.contact(diamond(0, 0, 5), diamond(4, 4, 5)),
-                SeparatingAxis.contact(diamond(dx, dy, 5), diamond(4 + dx, 4 + dy, 5)));
-        assertEquals(SeparatingAxis.contact(square(0, 0, 10), square(1, 3, 2)),
-                SeparatingAxis.contact(square(dx, dy, 10), square(1 + dx, 3 + dy, 2)));
+        assertEquals(diamond(0, 0, 5).contact(diamond(4, 4, 5)),
+                diamond(dx, dy, 5).contact(diamond(4 + dx, 4 + dy, 5)));
+        assertEquals(square(0, 0, 10).contact(square(1, 3, 2)),
+                square(dx, dy, 10).contact(square(1 + dx, 3 + dy, 2)));
     }
 
     // ------------------------------------------------------------------------ properties
@@ -225,18 +226,18 @@ class SeparatingAxisTest {
     @Property
     void overlaps_agreesWithCollide_forRects(@ForAll("solidRect") Rect a, @ForAll("solidRect") Rect b) {
         assertEquals(Collide.rectRect(a.x(), a.y(), a.w(), a.h(), b.x(), b.y(), b.w(), b.h()),
-                SeparatingAxis.overlaps(poly(a), poly(b)));
+                poly(a).overlaps(poly(b)));
     }
 
     @Property
     void contact_agreesWithRectRect(@ForAll("solidRect") Rect a, @ForAll("solidRect") Rect b) {
         assertEquals(Raw.contactRectRect(a.x(), a.y(), a.w(), a.h(), b.x(), b.y(), b.w(), b.h()),
-                SeparatingAxis.contact(poly(a), poly(b)));
+                poly(a).contact(poly(b)));
     }
 
     @Property
     void overlaps_rotatedRects_agreeWithSampledPoints(@ForAll("rotatedRect") Polygon a, @ForAll("rotatedRect") Polygon b) {
-        boolean sat = SeparatingAxis.overlaps(a, b);
+        boolean sat = a.overlaps(b);
         // Sampled: a grid point inside both proves an overlap, so SAT must see it.
         if (sampledCommonPoint(a, b, 0.5)) {
             assertTrue(sat, "a grid point lies inside both");
@@ -250,8 +251,8 @@ class SeparatingAxisTest {
 
     @Property
     void overlaps_agreesWithContact_andAxes(@ForAll("convex") Polygon a, @ForAll("convex") Polygon b) {
-        boolean sat = SeparatingAxis.overlaps(a, b);
-        assertEquals(sat, SeparatingAxis.contact(a, b) != null);
+        boolean sat = a.overlaps(b);
+        assertEquals(sat, a.contact(b) != null);
         assertEquals(sat, SeparatingAxis.axes(a, b).stream().noneMatch(SeparatingAxis.Axis::separates));
         assertEquals(sat, ContactFixtures.overlapsRef(a, b));
     }
@@ -260,11 +261,11 @@ class SeparatingAxisTest {
     void contact_reversedOrder_translationInvariant_unitNormal(@ForAll("rotatedRect") Polygon a, @ForAll("rotatedRect") Polygon b,
                                                                 @ForAll @IntRange(min = -1000, max = 1000) int dx,
                                                                 @ForAll @IntRange(min = -1000, max = 1000) int dy) {
-        Contact c = SeparatingAxis.contact(a, b);
+        Contact c = a.contact(b);
         Assume.that(c != null);
         assertUnit(c);
-        ContactFixtures.assertReversedOrSymmetricTie(a, b, c, SeparatingAxis.contact(b, a));
-        Contact moved = SeparatingAxis.contact(a.translated(dx, dy), b.translated(dx, dy));
+        ContactFixtures.assertReversedOrSymmetricTie(a, b, c, b.contact(a));
+        Contact moved = a.translated(dx, dy).contact(b.translated(dx, dy));
         // Rotated corners are not whole numbers, so moving them rounds: the depth is close,
         // and where two directions (nearly) tie, rounding may pick the other one; then that
         // one must push the unmoved shapes apart just as well.
@@ -278,19 +279,19 @@ class SeparatingAxisTest {
     void contact_wholeNumbers_translationInvariantExactly(@ForAll("convex") Polygon a, @ForAll("convex") Polygon b,
                                                           @ForAll @IntRange(min = -1000000, max = 1000000) int dx,
                                                           @ForAll @IntRange(min = -1000000, max = 1000000) int dy) {
-        assertEquals(SeparatingAxis.contact(a, b), SeparatingAxis.contact(a.translated(dx, dy), b.translated(dx, dy)));
+        assertEquals(a.contact(b), a.translated(dx, dy).contact(b.translated(dx, dy)));
     }
 
     @Property(maxDiscardRatio = 20)
     void contact_pushingOut_leavesThemTouching(@ForAll("rotatedRect") Polygon a, @ForAll("rotatedRect") Polygon b) {
-        Contact c = SeparatingAxis.contact(a, b);
+        Contact c = a.contact(b);
         Assume.that(c != null);
         assertPushOutTouches(a, b, c);
     }
 
     @Property(tries = 60, maxDiscardRatio = 20)
     void contact_isTheMinimumTranslation(@ForAll("convex") Polygon a, @ForAll("convex") Polygon b) {
-        Contact c = SeparatingAxis.contact(a, b);
+        Contact c = a.contact(b);
         Assume.that(c != null);
         assertPushOutTouches(a, b, c);
         assertNoShorterMove(a, b, c);

@@ -67,8 +67,8 @@ class S10c_SeparatingAxisTest {
             boolean anySeparates = s.axes.stream().anyMatch(SeparatingAxis.Axis::separates);
             assertEquals(!s.overlapping, anySeparates, "some axis separates exactly when apart");
             assertEquals(!s.overlapping, s.separating >= 0, "the highlighted axis");
-            assertEquals(SeparatingAxis.overlaps(s.box, s.mover), s.hitboxSays);
-            assertEquals(s.hitboxSays, s.overlapping, "the written-out loop and SeparatingAxis.overlaps agree");
+            assertEquals(s.box.overlaps(s.mover), s.hitboxSays);
+            assertEquals(s.hitboxSays, s.overlapping, "the written-out loop and box.overlaps(mover) agree");
             // The first tab's axes, written out, are the ones the library lists, in its order.
             List<SeparatingAxis.Axis> libraryAxes = SeparatingAxis.axes(s.box, s.mover);
             assertEquals(libraryAxes.size(), s.axes.size());

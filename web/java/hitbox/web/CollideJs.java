@@ -8,7 +8,9 @@ import org.teavm.jso.JSExport;
 /**
  * The tutorial's tests ({@link Collide}) for JavaScript, as {@code Collide.circleCircle(...)}:
  * the same names, the same parameters (numbers; a polygon as an array [x0, y0, x1, y1, ...]).
- * Generated from Collide's signatures; each only calls its namesake.
+ * Generated from Collide's signatures; each only calls its namesake. The browser keeps a few
+ * more on plain floats (the ellipses, the capsules, one shape holding another), which Java asks
+ * of the shapes: those call the same bodies the shapes answer by ({@code RawTests}).
  */
 @JSClass(name = "Collide")
 public final class CollideJs {
@@ -115,7 +117,7 @@ public final class CollideJs {
     }
 
     /**
-     * {@link Collide#rectContainsRect}.
+     * Does the first rectangle hold the second (edges included)? {@code Rect.contains(Shape)} on plain floats; false for NaN, infinite or negative values.
      *
      * @param x1 as there
      * @param y1 as there
@@ -129,11 +131,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean rectContainsRect(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2) {
-        return Collide.rectContainsRect(x1, y1, w1, h1, x2, y2, w2, h2);
+        return RawTests.rectContainsRect(x1, y1, w1, h1, x2, y2, w2, h2);
     }
 
     /**
-     * {@link Collide#circleContainsCircle}.
+     * Does the first circle hold the second (outline included)? {@code Circle.contains(Shape)} on plain floats; false for NaN, infinite or negative values.
      *
      * @param x1 as there
      * @param y1 as there
@@ -145,7 +147,7 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean circleContainsCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
-        return Collide.circleContainsCircle(x1, y1, r1, x2, y2, r2);
+        return RawTests.circleContainsCircle(x1, y1, r1, x2, y2, r2);
     }
 
     /**
@@ -358,7 +360,7 @@ public final class CollideJs {
     }
 
     /**
-     * {@link Collide#ellipsePoint}.
+     * Is the point inside the ellipse? {@code Ellipse.contains(px, py)} on plain floats; false for NaN or negative values.
      *
      * @param x as there
      * @param y as there
@@ -370,11 +372,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean ellipsePoint(float x, float y, float radiusX, float radiusY, float px, float py) {
-        return Collide.ellipsePoint(x, y, radiusX, radiusY, px, py);
+        return RawTests.ellipsePoint(x, y, radiusX, radiusY, px, py);
     }
 
     /**
-     * {@link Collide#ellipseCircle}.
+     * Do an ellipse and a circle overlap? {@code Ellipse.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param x as there
      * @param y as there
@@ -387,11 +389,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean ellipseCircle(float x, float y, float radiusX, float radiusY, float cx, float cy, float r) {
-        return Collide.ellipseCircle(x, y, radiusX, radiusY, cx, cy, r);
+        return RawTests.ellipseCircle(x, y, radiusX, radiusY, cx, cy, r);
     }
 
     /**
-     * {@link Collide#ellipseRect}.
+     * Do an ellipse and a rectangle overlap? {@code Ellipse.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param x as there
      * @param y as there
@@ -405,11 +407,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean ellipseRect(float x, float y, float radiusX, float radiusY, float rectX, float rectY, float rectW, float rectH) {
-        return Collide.ellipseRect(x, y, radiusX, radiusY, rectX, rectY, rectW, rectH);
+        return RawTests.ellipseRect(x, y, radiusX, radiusY, rectX, rectY, rectW, rectH);
     }
 
     /**
-     * {@link Collide#ellipseLine}.
+     * Does a segment reach into an ellipse? {@code Ellipse.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param x as there
      * @param y as there
@@ -423,11 +425,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean ellipseLine(float x, float y, float radiusX, float radiusY, float x1, float y1, float x2, float y2) {
-        return Collide.ellipseLine(x, y, radiusX, radiusY, x1, y1, x2, y2);
+        return RawTests.ellipseLine(x, y, radiusX, radiusY, x1, y1, x2, y2);
     }
 
     /**
-     * {@link Collide#ellipseEllipse}.
+     * Do two ellipses overlap? {@code Ellipse.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param x1 as there
      * @param y1 as there
@@ -441,11 +443,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean ellipseEllipse(float x1, float y1, float radiusX1, float radiusY1, float x2, float y2, float radiusX2, float radiusY2) {
-        return Collide.ellipseEllipse(x1, y1, radiusX1, radiusY1, x2, y2, radiusX2, radiusY2);
+        return RawTests.ellipseEllipse(x1, y1, radiusX1, radiusY1, x2, y2, radiusX2, radiusY2);
     }
 
     /**
-     * {@link Collide#polygonEllipse}.
+     * Do a polygon and an ellipse overlap? {@code Polygon.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param xy as there
      * @param x as there
@@ -456,11 +458,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean polygonEllipse(float[] xy, float x, float y, float radiusX, float radiusY) {
-        return Collide.polygonEllipse(xy, x, y, radiusX, radiusY);
+        return RawTests.polygonEllipse(xy, x, y, radiusX, radiusY);
     }
 
     /**
-     * {@link Collide#ellipseCapsule}.
+     * Do an ellipse and a capsule overlap? {@code Ellipse.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param x as there
      * @param y as there
@@ -475,11 +477,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean ellipseCapsule(float x, float y, float radiusX, float radiusY, float x1, float y1, float x2, float y2, float r) {
-        return Collide.ellipseCapsule(x, y, radiusX, radiusY, x1, y1, x2, y2, r);
+        return RawTests.ellipseCapsule(x, y, radiusX, radiusY, x1, y1, x2, y2, r);
     }
 
     /**
-     * {@link Collide#capsulePoint}.
+     * Is the point inside the capsule? {@code Capsule.contains(px, py)} on plain floats; false for NaN or negative values.
      *
      * @param x1 as there
      * @param y1 as there
@@ -492,11 +494,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean capsulePoint(float x1, float y1, float x2, float y2, float r, float px, float py) {
-        return Collide.capsulePoint(x1, y1, x2, y2, r, px, py);
+        return RawTests.capsulePoint(x1, y1, x2, y2, r, px, py);
     }
 
     /**
-     * {@link Collide#capsuleCircle}.
+     * Do a capsule and a circle overlap? {@code Capsule.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param x1 as there
      * @param y1 as there
@@ -510,11 +512,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean capsuleCircle(float x1, float y1, float x2, float y2, float r1, float cx, float cy, float r2) {
-        return Collide.capsuleCircle(x1, y1, x2, y2, r1, cx, cy, r2);
+        return RawTests.capsuleCircle(x1, y1, x2, y2, r1, cx, cy, r2);
     }
 
     /**
-     * {@link Collide#capsuleRect}.
+     * Do a capsule and a rectangle overlap? {@code Capsule.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param x1 as there
      * @param y1 as there
@@ -529,11 +531,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean capsuleRect(float x1, float y1, float x2, float y2, float r, float rectX, float rectY, float rectW, float rectH) {
-        return Collide.capsuleRect(x1, y1, x2, y2, r, rectX, rectY, rectW, rectH);
+        return RawTests.capsuleRect(x1, y1, x2, y2, r, rectX, rectY, rectW, rectH);
     }
 
     /**
-     * {@link Collide#capsuleLine}.
+     * Does a segment reach into a capsule? {@code Capsule.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param x1 as there
      * @param y1 as there
@@ -548,11 +550,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean capsuleLine(float x1, float y1, float x2, float y2, float r, float x3, float y3, float x4, float y4) {
-        return Collide.capsuleLine(x1, y1, x2, y2, r, x3, y3, x4, y4);
+        return RawTests.capsuleLine(x1, y1, x2, y2, r, x3, y3, x4, y4);
     }
 
     /**
-     * {@link Collide#capsuleCapsule}.
+     * Do two capsules overlap? {@code Capsule.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param x1 as there
      * @param y1 as there
@@ -568,11 +570,11 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean capsuleCapsule(float x1, float y1, float x2, float y2, float r1, float x3, float y3, float x4, float y4, float r2) {
-        return Collide.capsuleCapsule(x1, y1, x2, y2, r1, x3, y3, x4, y4, r2);
+        return RawTests.capsuleCapsule(x1, y1, x2, y2, r1, x3, y3, x4, y4, r2);
     }
 
     /**
-     * {@link Collide#polygonCapsule}.
+     * Do a polygon and a capsule overlap? {@code Polygon.overlaps} on plain floats; false for NaN or negative values.
      *
      * @param xy as there
      * @param x1 as there
@@ -584,7 +586,7 @@ public final class CollideJs {
      */
     @JSExport
     public static boolean polygonCapsule(float[] xy, float x1, float y1, float x2, float y2, float r) {
-        return Collide.polygonCapsule(xy, x1, y1, x2, y2, r);
+        return RawTests.polygonCapsule(xy, x1, y1, x2, y2, r);
     }
 
     /**

@@ -18,6 +18,7 @@ import hitbox.Separation;
 import hitbox.Shape;
 import hitbox.Sweep;
 import hitbox.World;
+import hitbox.internal.RawTests;
 import java.util.List;
 
 /**
@@ -433,10 +434,10 @@ public final class Vectors {
                 case 5 -> put(Collide.lineLine(x1, y1, x2, y2, x3, y3, a, b));
                 case 6 -> put(Collide.lineCircle(x1, y1, x2, y2, x3, y3, a));
                 case 7 -> put(Collide.lineRect(x1, y1, x2, y2, x3, y3, a, b));
-                case 8 -> put(Collide.ellipsePoint(x1, y1, a, b, x2, y2));
+                case 8 -> put(RawTests.ellipsePoint(x1, y1, a, b, x2, y2));
                 case 9 -> put(Collide.trianglePoint(x1, y1, x2, y2, x3, y3, a, b));
                 case 10 -> put(Collide.lineSide(x1, y1, x2, y2, x3, y3));
-                default -> put(Collide.ellipseEllipse(x1, y1, a, b, x2, y2, c, d));
+                default -> put(RawTests.ellipseEllipse(x1, y1, a, b, x2, y2, c, d));
             }
         } finally {
             put(which);

@@ -215,7 +215,7 @@ public final class PeerExactness {
         BigDecimal rx2 = b(rx).multiply(b(rx)), ry2 = b(ry).multiply(b(ry));
         int c = dx.multiply(dx).multiply(ry2).add(dy.multiply(dy).multiply(rx2)).compareTo(rx2.multiply(ry2));
         if (c == 0) return null;
-        return new boolean[] {c < 0, Collide.ellipsePoint(x, y, rx, ry, px, py),
+        return new boolean[] {c < 0, new hitbox.Ellipse(x, y, rx, ry).contains(px, py),
                 new com.badlogic.gdx.math.Ellipse(x, y, 2 * rx, 2 * ry).contains(px, py)};
     }
 
@@ -245,7 +245,7 @@ public final class PeerExactness {
         hitbox.Capsule k = new hitbox.Capsule(x1, y1, x2, y2, rad);
         Convex shape = NarrowPeers.dyn4j(k);
         Transform at = NarrowPeers.dyn4jAt(k);
-        return new boolean[] {c < 0, Collide.capsulePoint(x1, y1, x2, y2, rad, px, py),
+        return new boolean[] {c < 0, k.contains(px, py),
                 shape.contains(new org.dyn4j.geometry.Vector2(px, py), at, false)};
     }
 

@@ -4,7 +4,6 @@ import java.util.Random;
 import java.util.concurrent.TimeUnit;
 
 import hitbox.Capsule;
-import hitbox.Collide;
 import hitbox.Contact;
 import hitbox.Ellipse;
 import hitbox.Hit;
@@ -42,6 +41,7 @@ public class ShapesBench {
     float[] x2 = new float[N + 1], y2 = new float[N + 1];
     Ellipse[] ellipses = new Ellipse[N + 1];
     Capsule[] capsules = new Capsule[N + 1];
+    hitbox.Circle[] circles = new hitbox.Circle[N + 1];
     Convex[] dynEllipses = new Convex[N + 1], dynCapsules = new Convex[N + 1], dynCircles = new Convex[N + 1];
     Transform[] eT = new Transform[N + 1], cT = new Transform[N + 1], tT = new Transform[N + 1], bT = new Transform[N + 1];
     Ellipse[] turned = new Ellipse[N + 1];
@@ -67,6 +67,7 @@ public class ShapesBench {
             ellipses[i] = new Ellipse(x[i], y[i], a[i], b[i]);
             dynEllipses[i] = new org.dyn4j.geometry.Ellipse(2 * a[i], 2 * b[i]);
             dynCircles[i] = new Circle(b[i]);
+            circles[i] = new hitbox.Circle(x[i], y[i], b[i]);
             eT[i] = new Transform();
             eT[i].setTranslation(x[i], y[i]);
             // A capsule along x, length 2 a, radius b / 2 (dyn4j's Capsule(width, height) is the same, centred).
@@ -108,7 +109,7 @@ public class ShapesBench {
     public int ellipseEllipse_hitbox() {
         int n = 0;
         for (int i = 0; i < N; i++) {
-            if (Collide.ellipseEllipse(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], a[i + 1], b[i + 1])) {
+            if (ellipses[i].overlaps(ellipses[i + 1])) {
                 n++;
             }
         }
@@ -130,7 +131,7 @@ public class ShapesBench {
     public int ellipseCircle_hitbox() {
         int n = 0;
         for (int i = 0; i < N; i++) {
-            if (Collide.ellipseCircle(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], b[i + 1])) {
+            if (ellipses[i].overlaps(circles[i + 1])) {
                 n++;
             }
         }
@@ -152,7 +153,7 @@ public class ShapesBench {
     public int capsuleCapsule_hitbox() {
         int n = 0;
         for (int i = 0; i < N; i++) {
-            if (Collide.capsuleCapsule(x[i], y[i], x2[i], y2[i], b[i] / 2, x[i + 1], y[i + 1], x2[i + 1], y2[i + 1], b[i + 1] / 2)) {
+            if (capsules[i].overlaps(capsules[i + 1])) {
                 n++;
             }
         }
@@ -174,7 +175,7 @@ public class ShapesBench {
     public int capsuleCircle_hitbox() {
         int n = 0;
         for (int i = 0; i < N; i++) {
-            if (Collide.capsuleCircle(x[i], y[i], x2[i], y2[i], b[i] / 2, x[i + 1], y[i + 1], b[i + 1])) {
+            if (capsules[i].overlaps(circles[i + 1])) {
                 n++;
             }
         }
@@ -281,35 +282,12 @@ public class ShapesBench {
         return s;
     }
 
-    /** Ellipse i against circle / ellipse i + 1 in the package's inner maths. */
-    @Benchmark
-    public int ellipseCircleInner_hitbox() {
-        int n = 0;
-        for (int i = 0; i < N; i++) {
-            if (Collide.ellipseCircle(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], b[i + 1])) {
-                n++;
-            }
-        }
-        return n;
-    }
-
-    @Benchmark
-    public int ellipseEllipseInner_hitbox() {
-        int n = 0;
-        for (int i = 0; i < N; i++) {
-            if (Collide.ellipseEllipse(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], a[i + 1], b[i + 1])) {
-                n++;
-            }
-        }
-        return n;
-    }
-
-    /** Ellipse i against capsule i + 1, raw floats. */
+    /** Ellipse i against capsule i + 1. */
     @Benchmark
     public int ellipseCapsule_hitbox() {
         int n = 0;
         for (int i = 0; i < N; i++) {
-            if (Collide.ellipseCapsule(x[i], y[i], a[i], b[i], x[i + 1], y[i + 1], x2[i + 1], y2[i + 1], b[i + 1] / 2)) {
+            if (ellipses[i].overlaps(capsules[i + 1])) {
                 n++;
             }
         }

@@ -170,7 +170,7 @@ public final class Containment {
         };
     }
 
-    /** {@link Collide#rectContainsRect}: finite values, sizes 0 or more. */
+    /** Does the first rectangle hold the second ({@code Rect.contains(Rect)}): finite values, sizes 0 or more. */
     public static boolean rectRect(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2) {
         return x2 >= x1 && y2 >= y1 && notPast(x2, w2, x1, w1) && notPast(y2, h2, y1, h1);
     }
@@ -191,7 +191,7 @@ public final class Containment {
         return within(cx, -r, r, x, 0, w) && within(cy, -r, r, y, 0, h);
     }
 
-    /** {@link Collide#circleContainsCircle}: finite values, sizes 0 or more. */
+    /** Does the first circle hold the second ({@code Circle.contains(Circle)}): finite values, sizes 0 or more. */
     public static boolean circleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
         return new Disc(x1, y1, r1).holds(x2, y2, r2);
     }

@@ -4,7 +4,8 @@ import hitbox.*;
 
 /**
  * The one table behind {@link Shape#overlaps}: every pair of shape kinds, in either order,
- * routed to the {@link Collide} method for that pair.
+ * routed to the {@link RawTests} method for that pair (the body of {@link Collide}'s method of
+ * the same name, for the tutorial's pairs).
  *
  * <p>The kinds are taken in {@link ShapeKind}'s order (ellipse, capsule, circle, rectangle, segment, polygon): the pair is
  * handed to the method of its earlier kind, with the arguments swapped if they came the
@@ -25,7 +26,7 @@ import hitbox.*;
  * kind does not compile until every kind's method has its case.
  *
  * <table>
- *   <caption>Which Collide method answers each pair</caption>
+ *   <caption>Which RawTests method answers each pair</caption>
  *   <tr><th></th><th>Circle</th><th>Rect</th><th>Segment</th><th>Polygon</th><th>Ellipse</th><th>Capsule</th></tr>
  *   <tr><th>Circle</th><td>circleCircle</td><td>circleRect</td><td>lineCircle</td><td>polygonCircle</td><td></td><td></td></tr>
  *   <tr><th>Rect</th><td></td><td>rectRect</td><td>lineRect</td><td>polygonRect</td><td></td><td></td></tr>

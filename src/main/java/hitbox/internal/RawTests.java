@@ -4,12 +4,14 @@ package hitbox.internal;
  * The bodies of {@code hitbox.Collide}'s tests on plain floats: the tutorial's {@code if}s made
  * exact, and section 10's pairs. {@code Collide} holds the promise (the javadoc, the names a
  * learner reads) and answers by calling these; the kernels call these directly, so no kernel
- * calls back up into the API. Each method's contract is its {@code Collide} namesake's.
+ * calls back up into the API. Each method's contract is its {@code Collide} namesake's, where
+ * it has one: for a float NaN or a negative size, false.
  *
  * <p>This class is longer than most (about 450 lines): it is every raw test's body, one
- * method per pair, the few the API no longer names (a rectangle first against a circle, a
- * circle or a rectangle holding the other) kept because the browser's plain-float forms
- * answer by them.
+ * method per pair. The ones the API no longer names on floats (the ellipses' and capsules'
+ * pairs, a rectangle first against a circle, a circle or a rectangle holding the other) are
+ * the bodies of the shapes' answers ({@code Ellipse} and {@code Capsule} state how exactly
+ * each pair is decided), and the browser's plain-float forms answer by them.
  */
 public final class RawTests {
     private RawTests() {
