@@ -15,8 +15,8 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * Obstacles in a {@link BroadPhase} give exactly the answers of a list of them (the list's index
- * is the box's id): {@link BroadPhase#query(Shape, java.util.function.IntConsumer)} as
- * {@link Hits#all}, and {@link Motion} as its list form, for every structure, random worlds,
+ * is the box's id): {@link BroadPhase#query(float, float, float, float, java.util.function.IntConsumer)}
+ * as {@link Hits#all}, and {@link Motion} as its list form, for every structure, random worlds,
  * touching and far-away boxes, and movers far out, huge or flat; NaN and infinite speeds.
  */
 class BroadPhaseObstaclesTest {
@@ -103,7 +103,7 @@ class BroadPhaseObstaclesTest {
     private static void check(BroadPhase b, List<Rect> rects, float x, float y, float w, float h, float vx, float vy) {
         String where = "(" + x + ", " + y + ", " + w + ", " + h + ") moving (" + vx + ", " + vy + ")";
         List<Integer> found = new ArrayList<>();
-        b.query(new Rect(x, y, w, h), found::add);
+        b.query(x, y, w, h, found::add);
         int[] ids = found.stream().mapToInt(Integer::intValue).sorted().toArray();
         assertArrayEquals(Hits.all(new Rect(x, y, w, h), rects), ids, "all " + where);
         assertEquals(Motion.blocked(new Rect(x, y, w, h), vx, vy, rects), Motion.blocked(new Rect(x, y, w, h), vx, vy, b), "rectBlocked " + where);

@@ -24,11 +24,11 @@ public final class BroadPhaseHits {
      * sums never hides a candidate), or every id when the box is not an ordinary one.
      */
     public static void candidates(BroadPhase obstacles, float x, float y, float w, float h, IntConsumer out) {
-        Check.notNull("obstacles", obstacles);
+        AbstractBroadPhase stored = stored(obstacles);
         boolean ordinary = Float.isFinite(x) && Float.isFinite(y) && Float.isFinite(w) && Float.isFinite(h)
                 && w >= 0 && h >= 0 && Float.isFinite(x + w) && Float.isFinite(y + h);
         if (!ordinary) {
-            obstacles.forEach(out);
+            stored.forEach(out);
             return;
         }
         float padX = 4 * Math.ulp(Math.max(Math.abs(x), Math.abs(x + w))) + Float.MIN_NORMAL;
@@ -36,7 +36,7 @@ public final class BroadPhaseHits {
         float qw = w + 2 * padX;
         float qh = h + 2 * padY;
         if (!Float.isFinite(x - padX) || !Float.isFinite(y - padY) || !Float.isFinite(qw) || !Float.isFinite(qh)) {
-            obstacles.forEach(out);
+            stored.forEach(out);
             return;
         }
         obstacles.query(x - padX, y - padY, qw, qh, out);
@@ -52,9 +52,18 @@ public final class BroadPhaseHits {
         // The box that holds the mover at all three next positions the per-axis check tries.
         float right = Math.max(x, nx) + w;
         float bottom = Math.max(y, ny) + h;
+        AbstractBroadPhase stored = stored(obstacles);
         int[] blocked = {0};
-        candidates(obstacles, left, top, right - left, bottom - top, id -> blocked[0] |=
-                NextPosition.rect(x, y, w, h, vx, vy, obstacles.x(id), obstacles.y(id), obstacles.w(id), obstacles.h(id)));
+        candidates(stored, left, top, right - left, bottom - top, id -> blocked[0] |=
+                NextPosition.rect(x, y, w, h, vx, vy, stored.x(id), stored.y(id), stored.w(id), stored.h(id)));
         return blocked[0];
+    }
+
+    /**
+     * The broad phase as the structure behind every factory of {@link BroadPhase}, which
+     * reads a stored box by its id.
+     */
+    private static AbstractBroadPhase stored(BroadPhase obstacles) {
+        return (AbstractBroadPhase) Check.notNull("obstacles", obstacles);
     }
 }
