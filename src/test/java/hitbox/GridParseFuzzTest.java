@@ -17,18 +17,18 @@ class GridParseFuzzTest {
     @FuzzTest(maxDuration = "5m")
     void parse(FuzzedDataProvider data) {
         float cellWidth = data.consumeBoolean() ? data.consumeFloat() : data.consumeInt(1, 64);
-        float cellHeight = data.consumeBoolean() ? data.consumeFloat() : cellWidth;
+        float cellHeight = cellWidth;  // a map is read with square cells
         String map = data.consumeRemainingAsString();
         Grid grid;
         try {
-            grid = Grid.parse(map, cellWidth, cellHeight);
+            grid = Grid.parse(map, cellWidth);
         } catch (IllegalArgumentException expected) {
             assertTrue(expected.getMessage() != null && !expected.getMessage().isBlank());
             return;
         }
         assertTrue(grid.cols() > 0 && grid.rows() > 0);
         // Every cell is a digit terrain, so the map's text reads back to the same cells.
-        Grid again = Grid.parse(grid.toMap(), cellWidth, cellHeight);
+        Grid again = Grid.parse(grid.toMap(), cellWidth);
         assertEquals(grid.toMap(), again.toMap());
         for (int row = 0; row < grid.rows(); row++) {
             for (int col = 0; col < grid.cols(); col++) {
@@ -37,8 +37,8 @@ class GridParseFuzzTest {
             }
         }
         // The pixel tests answer without throwing, anywhere.
-        grid.rectOverlapsSolid(cellWidth / 3, cellHeight / 2, cellWidth, cellHeight);
-        grid.circleOverlapsSolid(grid.width() / 2, grid.height() / 2, cellWidth);
+        grid.overlapsSolid(new Rect(cellWidth / 3, cellHeight / 2, cellWidth, cellHeight));
+        grid.overlapsSolid(new Circle(grid.width() / 2, grid.height() / 2, cellWidth));
         grid.overlapsSolid(grid.cellRect(grid.cols() - 1, grid.rows() - 1));
     }
 }
