@@ -1,19 +1,15 @@
-import java.util.List;
-
 // The maths (d): what the last move looked at, and the fields only this overlay needs.
 
 boolean showMaths = false;
 Rect before;          // where the player was before the last move
 float movedX = 0;     // and the motion it was given
 float movedY = 0;
-List<Rect> checked = new ArrayList<Rect>();   // the obstacle cells grid.move looked at
 
 // Called before each move.
 void remember(Rect from, float speedX, float speedY) {
   before = from;
   movedX = speedX;
   movedY = speedY;
-  checked = grid.moveObstacles(from, speedX, speedY);
 }
 
 // Hitbox's grid.move: the box the move swept, turned into cells by dividing by the cell size;
@@ -45,8 +41,14 @@ void drawMaths() {
   }
   stroke(Overlay.GUIDE);
   strokeWeight(2);
-  for (Rect cell : checked) {
-    Draw.shape(g, cell);
+  int solid = 0;
+  for (int r = r0; r <= r1; r++) {
+    for (int c = c0; c <= c1; c++) {
+      if (grid.isSolid(c, r)) {   // beyond the map's edge counts as solid too
+        Draw.shape(g, grid.cellRect(c, r));
+        solid++;
+      }
+    }
   }
   // The swept box itself, and the motion.
   stroke(Palette.NEUTRAL);
@@ -81,7 +83,7 @@ void drawMaths() {
       + ", y " + Overlay.number(top) + " to " + Overlay.number(bottom)
       + "\ncols " + Overlay.number(left) + " / " + (int) cellWidth + " -> " + c0 + " to " + Overlay.number(right) + " / " + (int) cellWidth + " -> " + c1
       + "\nrows " + Overlay.number(top) + " / " + (int) cellWidth + " -> " + r0 + " to " + Overlay.number(bottom) + " / " + (int) cellWidth + " -> " + r1
-      + "\n" + (c1 - c0 + 1) * (r1 - r0 + 1) + " cells under it, " + checked.size() + " solid: the only ones checked"
+      + "\n" + (c1 - c0 + 1) * (r1 - r0 + 1) + " cells under it, " + solid + " solid: the only ones checked"
       + "\nhit: " + (sides.length() > 0 ? sides : "nothing");
   Overlay.label(g, 8, 30, text, last.hitAnything() ? Overlay.HIT : Overlay.MISS);
 }

@@ -51,7 +51,7 @@ String[] level = {
   "............##...........",
   "#########################",
 };
-Grid grid = Grid.parse(join(level, "\n"), cellWidth, cellHeight);  // Hitbox's copy of the map
+Grid grid = Grid.parse(join(level, "\n"), cellWidth);  // Hitbox's copy of the map (square cells)
 
 float gravity = 0.55;
 float jumpSpeed = 10.5;

@@ -54,14 +54,13 @@ import java.util.function.IntConsumer;
  *       size or id, or a null argument throws an {@link IllegalArgumentException} that names
  *       the parameter, such as {@code "w must be >= 0, was -1.0"}, and the structure is as it
  *       was.</li>
- *   <li>While {@link #pairs}, {@link #query}, {@link #raycast} or {@link #forEach} is
- *       running, its callback may read ({@link #x}, {@link #query}, ...) but not change the
+ *   <li>While {@link #pairs}, {@link #query}, {@link #raycast} or {@link #forEachBox} is
+ *       running, its callback may read ({@link #contains}, {@link #query}, ...) but not change the
  *       structure: {@link #put}, {@link #remove} and {@link #clear} then throw an
  *       {@link IllegalStateException}. Collect the ids, change afterwards.</li>
  *   <li>Once it has grown to its size, moving boxes with {@code put} and asking for pairs or
- *       box queries allocates nothing. A shape query makes a small {@link Rect} for each box
- *       it tests exactly; {@link #raycast} sorts its hits and may allocate for very many of
- *       them. Not thread-safe: one thread at a time.</li>
+ *       box queries allocates nothing; {@link #raycast} sorts its hits and may allocate for
+ *       very many of them. Not thread-safe: one thread at a time.</li>
  *   <li>Each structure's {@code toString()} is the name of its factory, for labels.</li>
  * </ul>
  */
@@ -96,18 +95,6 @@ public interface BroadPhase {
      */
     static BroadPhase grid() {
         return new HashGridBroadPhase(0);
-    }
-
-    /**
-     * A uniform hash grid with cells of the given size: as {@link #grid()}, for when you know
-     * the right size (about the size of the larger boxes: most boxes should fit in a cell).
-     *
-     * @param cellSize the width and height of a cell of the finest grid, more than 0
-     * @return an empty grid, never null
-     * @throws IllegalArgumentException if {@code cellSize} is NaN, infinite, 0 or negative
-     */
-    static BroadPhase grid(float cellSize) {
-        return new HashGridBroadPhase(Check.positive("cellSize", cellSize));
     }
 
     /**
@@ -210,50 +197,6 @@ public interface BroadPhase {
     boolean contains(int id);
 
     /**
-     * The left edge of a stored box.
-     *
-     * @param id the box's id
-     * @return its left edge, as given to {@link #put}
-     * @throws IllegalArgumentException if no box is stored under the id
-     */
-    float x(int id);
-
-    /**
-     * The top edge of a stored box.
-     *
-     * @param id the box's id
-     * @return its top edge, as given to {@link #put}
-     * @throws IllegalArgumentException if no box is stored under the id
-     */
-    float y(int id);
-
-    /**
-     * The width of a stored box.
-     *
-     * @param id the box's id
-     * @return its width, as given to {@link #put}
-     * @throws IllegalArgumentException if no box is stored under the id
-     */
-    float w(int id);
-
-    /**
-     * The height of a stored box.
-     *
-     * @param id the box's id
-     * @return its height, as given to {@link #put}
-     * @throws IllegalArgumentException if no box is stored under the id
-     */
-    float h(int id);
-
-    /**
-     * Visits every stored id once, in no particular order, without boxing.
-     *
-     * @param out receives each id, not null
-     * @throws IllegalArgumentException if {@code out} is null
-     */
-    void forEach(IntConsumer out);
-
-    /**
      * Visits every stored box once, with its id, in no particular order: for drawing them all.
      *
      * @param out receives each id and box, not null
@@ -285,18 +228,6 @@ public interface BroadPhase {
      *                                  {@code out} is null
      */
     void query(float x, float y, float w, float h, IntConsumer out);
-
-    /**
-     * Reports every stored box that the shape overlaps, once each, in no particular order:
-     * exactly the boxes {@code b} with {@code shape.overlaps(b)}, by the same tests as
-     * {@link Shape#overlaps}. A circle finds what an explosion reaches; a segment, what a
-     * laser crosses.
-     *
-     * @param shape the shape, not null
-     * @param out   receives the id of each box found, not null
-     * @throws IllegalArgumentException if {@code shape} or {@code out} is null
-     */
-    void query(Shape shape, IntConsumer out);
 
     /**
      * Visits the boxes a ray goes into, nearest first (equal distances: smaller id first),

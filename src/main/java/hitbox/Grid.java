@@ -10,8 +10,9 @@ import java.util.Arrays;
  *
  * <p>The grid has {@code cols} columns and {@code rows} rows of cells, each
  * {@code cellWidth} by {@code cellHeight} pixels, with cell (0, 0) at the top-left corner of
- * the window, so cell ({@code col}, {@code row}) covers the pixels from
- * ({@link #cellX cellX(col)}, {@link #cellY cellY(row)}) to the next cell's corner. A cell's
+ * the window, so cell ({@code col}, {@code row}) covers the pixels of
+ * {@link #cellRect cellRect(col, row)}, from {@code col * cellWidth} across and
+ * {@code row * cellHeight} down to the next cell's corner. A cell's
  * terrain is an {@code int}: {@link #EMPTY} (0) is open floor, {@link #SOLID} (1) is wall,
  * and any other number is a terrain type of your own (water, a door, the goal), solid unless
  * you name it in {@link #passable(int...)}.
@@ -20,8 +21,8 @@ import java.util.Arrays;
  * <ul>
  *   <li>Cell by cell, like a maze game's player: {@link #canMove(int, int, int, int)} says
  *       whether the step to a neighbouring cell is free.</li>
- *   <li>In pixels, the tutorial's hybrid check: {@link #rectOverlapsSolid} says whether a
- *       rectangle anywhere on screen overlaps a solid cell, testing only the cells it covers,
+ *   <li>In pixels, the tutorial's hybrid check: {@link #overlapsSolid} says whether a
+ *       shape anywhere on screen overlaps a solid cell, testing only the cells it covers,
  *       by the <a href="package-summary.html#touching">touching rule</a> (standing right
  *       against a wall is not hitting it).</li>
  * </ul>
@@ -40,7 +41,7 @@ import java.util.Arrays;
  *     #########
  *     """, 32);
  * }</pre>
- * Or filled at random, reproducibly, with {@link #fillRandom(float, long, int, int)}.
+ * Or filled at random, reproducibly, with {@link #fillRandom}.
  *
  * <p>A grid is the sketch's level, not a value: {@link #set} and the fill methods change it.
  * It is not safe to change from one thread while another reads it. Reading and writing maps
@@ -131,7 +132,7 @@ public final class Grid {
 
     /**
      * Reads a map from text, with cells 1 pixel in size (so pixels and cells are the same
-     * numbers); see {@link #parse(String, float, float)} for the format.
+     * numbers); see {@link #parse(String, float)} for the format.
      *
      * @param map the map, one line per row
      * @return a new grid holding the map, never null
@@ -140,29 +141,11 @@ public final class Grid {
      *                                  message names the line and column
      */
     public static Grid parse(String map) {
-        return parse(map, 1, 1);
+        return GridMaps.parse(map, 1, 1);
     }
 
     /**
-     * Reads a map from text, with square cells; see {@link #parse(String, float, float)} for
-     * the format.
-     *
-     * <p>A NaN or infinite {@code float} argument throws, naming it
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param map      the map, one line per row
-     * @param cellSize a cell's width and height in pixels, more than 0
-     * @return a new grid holding the map, never null
-     * @throws IllegalArgumentException if the map is null or empty, its rows are not all the
-     *                                  same width, it holds an unknown character (the message
-     *                                  names the line and column), or the cell size is bad
-     */
-    public static Grid parse(String map, float cellSize) {
-        return parse(map, checkedCellSize(cellSize), cellSize);
-    }
-
-    /**
-     * Reads a map from text: one line per row, one character per cell.
+     * Reads a map from text, with square cells: one line per row, one character per cell.
      *
      * <ul>
      *   <li>{@code '#'} is {@link #SOLID};</li>
@@ -178,21 +161,21 @@ public final class Grid {
      * <p>A NaN or infinite {@code float} argument throws, naming it
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
      *
-     * @param map        the map, one line per row
-     * @param cellWidth  a cell's width in pixels, more than 0
-     * @param cellHeight a cell's height in pixels, more than 0
+     * @param map      the map, one line per row
+     * @param cellSize a cell's width and height in pixels, more than 0
      * @return a new grid holding the map, never null
      * @throws IllegalArgumentException if the map is null or empty, its rows are not all the
      *                                  same width, it holds an unknown character (the message
-     *                                  names the line and column, counting from 1), or a cell
+     *                                  names the line and column, counting from 1), or the cell
      *                                  size is bad
      */
-    public static Grid parse(String map, float cellWidth, float cellHeight) {
-        return GridMaps.parse(map, cellWidth, cellHeight);
+    public static Grid parse(String map, float cellSize) {
+        return GridMaps.parse(map, checkedCellSize(cellSize), cellSize);
     }
 
+
     /**
-     * The map as text, in the format {@link #parse(String, float, float)} reads: {@code '.'}
+     * The map as text, in the format {@link #parse(String, float)} reads: {@code '.'}
      * for {@link #EMPTY}, {@code '#'} for {@link #SOLID}, the digit for terrains 2 to 9 and
      * {@code '?'} for any other number; rows separated by {@code \n}.
      *
@@ -230,14 +213,14 @@ public final class Grid {
         return cellHeight;
     }
 
-    /** @return the grid's width in pixels, {@code cellX(cols())} */
+    /** @return the grid's width in pixels, {@code cols() * cellWidth()} */
     public float width() {
-        return cellX(cols);
+        return GridLines.edge(cols, cellWidth);
     }
 
-    /** @return the grid's height in pixels, {@code cellY(rows())} */
+    /** @return the grid's height in pixels, {@code rows() * cellHeight()} */
     public float height() {
-        return cellY(rows);
+        return GridLines.edge(rows, cellHeight);
     }
 
     // ---- cells ------------------------------------------------------------------------
@@ -302,8 +285,8 @@ public final class Grid {
      *
      * @param col the column, any number
      * @param row the row, any number
-     * @return true if the cell is outside the grid or its terrain is solid (see
-     *         {@link #isSolidTerrain})
+     * @return true if the cell is outside the grid or its terrain is solid: {@link #SOLID}
+     *         or any other number but {@link #EMPTY} not named in {@link #passable(int...)}
      */
     public boolean isSolid(int col, int row) {
         return !inGrid(col, row) || isSolidTerrain(cells[row * cols + col]);
@@ -312,11 +295,8 @@ public final class Grid {
     /**
      * Is this terrain number solid in this grid? {@link #EMPTY} never is, {@link #SOLID}
      * always is, and any other number is unless it was named in {@link #passable(int...)}.
-     *
-     * @param terrain the terrain number
-     * @return true if a cell with this terrain blocks movement
      */
-    public boolean isSolidTerrain(int terrain) {
+    private boolean isSolidTerrain(int terrain) {
         if (terrain == EMPTY) {
             return false;
         }
@@ -370,17 +350,6 @@ public final class Grid {
         return c == (int) c && r == (int) r && !isSolid((int) c, (int) r);
     }
 
-    /** @return how many cells of the grid are solid */
-    public int countSolid() {
-        int count = 0;
-        for (int t : cells) {
-            if (isSolidTerrain(t)) {
-                count++;
-            }
-        }
-        return count;
-    }
-
     /**
      * Sets every cell to the same terrain.
      *
@@ -393,23 +362,6 @@ public final class Grid {
         Arrays.fill(cells, terrain);
         changes++;
         return this;
-    }
-
-    /**
-     * Fills the grid at random: a given fraction of the cells become {@link #SOLID}, the rest
-     * {@link #EMPTY}; see {@link #fillRandom(float, long, int, int)}, which also keeps a start
-     * cell free.
-     *
-     * <p>A NaN {@code fraction} throws, naming it
-     * (the <a href="package-summary.html#bad-input">NaN rule</a>).
-     *
-     * @param fraction the share of cells to make solid, from 0 to 1 (0.2 for 20%)
-     * @param seed     the random seed: the same seed gives the same grid
-     * @return this grid, for chaining, never null
-     * @throws IllegalArgumentException if {@code fraction} is not between 0 and 1
-     */
-    public Grid fillRandom(float fraction, long seed) {
-        return fill(fraction, seed, -1);
     }
 
     /**
@@ -437,11 +389,7 @@ public final class Grid {
      * @throws IndexOutOfBoundsException if the free cell is not in the grid
      */
     public Grid fillRandom(float fraction, long seed, int freeCol, int freeRow) {
-        return fill(fraction, seed, index(freeCol, freeRow));
-    }
-
-    private Grid fill(float fraction, long seed, int free) {
-        GridMaps.fillRandom(cells, fraction, seed, free);
+        GridMaps.fillRandom(cells, fraction, seed, index(freeCol, freeRow));
         changes++;
         return this;
     }
@@ -450,47 +398,27 @@ public final class Grid {
 
     /**
      * The column under a pixel x. A pixel exactly on the line between two columns belongs to
-     * the one on its right, so {@code colAt(cellX(col)) == col}. The answer may be outside the
-     * grid (negative, or {@code cols()} or more), where {@link #isSolid} says solid.
+     * the one on its right, so the column of a cell's left edge ({@link #cellRect}) is the
+     * cell's. The answer may be outside the grid (negative, or {@code cols()} or more), where
+     * {@link #isSolid} says solid.
      *
      * @param px the x in pixels
-     * @return the column whose cell spans px: {@code cellX(col) <= px < cellX(col + 1)}; -1
-     *         for NaN
+     * @return the column whose cell spans px, left edge included; -1 for NaN
      */
     public int colAt(float px) {
-        return cellIndex(px, cellWidth);
+        return GridLines.cellIndex(px, cellWidth);
     }
 
     /**
      * The row under a pixel y. A pixel exactly on the line between two rows belongs to the
-     * one below it, so {@code rowAt(cellY(row)) == row}. The answer may be outside the grid.
+     * one below it, so the row of a cell's top edge ({@link #cellRect}) is the cell's. The
+     * answer may be outside the grid.
      *
      * @param py the y in pixels
-     * @return the row whose cell spans py: {@code cellY(row) <= py < cellY(row + 1)}; -1 for
-     *         NaN
+     * @return the row whose cell spans py, top edge included; -1 for NaN
      */
     public int rowAt(float py) {
-        return cellIndex(py, cellHeight);
-    }
-
-    /**
-     * The left edge of a column's cells, in pixels; works for columns outside the grid too.
-     *
-     * @param col the column
-     * @return {@code col * cellWidth()}
-     */
-    public float cellX(int col) {
-        return edge(col, cellWidth);
-    }
-
-    /**
-     * The top edge of a row's cells, in pixels; works for rows outside the grid too.
-     *
-     * @param row the row
-     * @return {@code row * cellHeight()}
-     */
-    public float cellY(int row) {
-        return edge(row, cellHeight);
+        return GridLines.cellIndex(py, cellHeight);
     }
 
     /**
@@ -519,10 +447,12 @@ public final class Grid {
     }
 
     /**
-     * A cell as a rectangle in pixels, for drawing or for testing against shapes. Works for
-     * cells outside the grid too, any int column and row, with the boundaries of
-     * {@link #cellX} and {@link #cellY}; a cell beyond the float range (about 3e38 pixels
-     * away) is held back at its edge.
+     * A cell as a rectangle in pixels, for drawing or for testing against shapes: its left
+     * edge is the float nearest {@code col * cellWidth()}, its top the float nearest
+     * {@code row * cellHeight()}, and it reaches to the next cell's, so cells tile without
+     * gaps, the lines every pixel test of the grid goes by. Works for cells outside the grid
+     * too, any int column and row; a cell beyond the float range (about 3e38 pixels away) is
+     * held back at its edge.
      *
      * @param col the column
      * @param row the row
@@ -543,54 +473,24 @@ public final class Grid {
 
     /** Cell boundaries: the float nearest i * size. Every pixel test goes through this. */
     private static float edge(long i, float size) {
-        return (float) (i * (double) size);
+        return GridLines.edge(i, size);
     }
 
-    /** The cell index i with edge(i) <= p < edge(i + 1), saturated to the int range. */
-    private static int cellIndex(float p, float size) {
-        if (Float.isNaN(p)) {
-            return -1;
-        }
-        double guess = Math.floor(p / (double) size);
-        if (guess >= Integer.MAX_VALUE) {
-            return Integer.MAX_VALUE;
-        }
-        if (guess <= Integer.MIN_VALUE) {
-            return Integer.MIN_VALUE;
-        }
-        long i = (long) guess;
-        // The division's rounding can be a cell off next to a boundary: settle it with the
-        // same float boundaries that cellX draws.
-        while (i > Integer.MIN_VALUE && edge(i, size) > p) {
-            i--;
-        }
-        while (i < Integer.MAX_VALUE && edge(i + 1, size) <= p) {
-            i++;
-        }
-        return (int) i;
+    private float cellX(int col) {
+        return edge(col, cellWidth);
+    }
+
+    private float cellY(int row) {
+        return edge(row, cellHeight);
     }
 
     // ---- shapes in pixels against solid cells -----------------------------------------
 
     /**
-     * Does a rectangle in pixels overlap a solid cell? The tutorial's hybrid check, visiting
-     * only the cells the rectangle covers.
-     *
-     * <p>Each solid cell is tested with {@link Collide#rectRect}, so touching a solid cell's
-     * edge does not count: a player standing exactly on a floor of solid cells, or right
-     * against a wall, is not overlapping it. Reaching past the grid's edges counts as
-     * overlapping solid. Allocates nothing; a NaN gives false.
-     *
-     * @param x the rectangle's left edge
-     * @param y the rectangle's top edge
-     * @param w the rectangle's width
-     * @param h the rectangle's height
-     * @return true if the rectangle overlaps a solid cell or the outside of the grid
+     * A rectangle against the solid cells it covers, each by {@link Collide#rectRect}: the
+     * tutorial's hybrid check, allocating nothing.
      */
-    public boolean rectOverlapsSolid(float x, float y, float w, float h) {
-        if (Check.nan(x, y, w, h, 0) || w < 0 || h < 0) {
-            return false;
-        }
+    private boolean rectOverlaps(float x, float y, float w, float h) {
         double right = (double) x + w;
         double bottom = (double) y + h;
         if (reachesOutside(x, right, y, bottom)) {
@@ -616,20 +516,10 @@ public final class Grid {
     }
 
     /**
-     * Does a circle in pixels overlap a solid cell? Visits only the cells under the circle's
-     * bounds, testing each solid one with {@link Collide#circleRect}, so touching does not
-     * count. Reaching past the grid's edges counts as overlapping solid. Allocates nothing; a
-     * NaN gives false.
-     *
-     * @param cx the circle's centre x
-     * @param cy the circle's centre y
-     * @param r  the circle's radius
-     * @return true if the circle overlaps a solid cell or the outside of the grid
+     * A circle against the solid cells under its bounds, each by {@link Collide#circleRect},
+     * allocating nothing.
      */
-    public boolean circleOverlapsSolid(float cx, float cy, float r) {
-        if (Check.nan(cx, cy, r, 0, 0) || r < 0) {
-            return false;
-        }
+    private boolean circleOverlaps(float cx, float cy, float r) {
         double left = (double) cx - r;
         double right = (double) cx + r;
         double top = (double) cy - r;
@@ -657,11 +547,12 @@ public final class Grid {
     }
 
     /**
-     * Does a shape in pixels overlap a solid cell? Circles and rectangles go to
-     * {@link #circleOverlapsSolid} and {@link #rectOverlapsSolid}; other shapes are tested with
-     * {@link Shape#overlaps} against each solid cell under their bounds (so they work for the
-     * pairs {@code overlaps} answers). Reaching past the grid's edges counts as overlapping
-     * solid.
+     * Does a shape in pixels overlap a solid cell? The tutorial's hybrid check: only the cells
+     * under the shape's bounds are visited, and each solid one is tested as
+     * {@link Shape#overlaps} tests the shape against the cell's rectangle ({@link #cellRect}),
+     * so touching a solid cell's edge does not count: a player standing exactly on a floor of
+     * solid cells, or right against a wall, is not overlapping it. Reaching past the grid's
+     * edges counts as overlapping solid. A circle or a rectangle allocates nothing.
      *
      * @param shape the shape, not null
      * @return true if the shape overlaps a solid cell or the outside of the grid
@@ -671,11 +562,11 @@ public final class Grid {
         return switch (ShapeKind.of(Check.notNull("shape", shape))) {
             case CIRCLE -> {
                 Circle c = (Circle) shape;
-                yield circleOverlapsSolid(c.x(), c.y(), c.r());
+                yield circleOverlaps(c.x(), c.y(), c.r());
             }
             case RECT -> {
                 Rect r = (Rect) shape;
-                yield rectOverlapsSolid(r.x(), r.y(), r.w(), r.h());
+                yield rectOverlaps(r.x(), r.y(), r.w(), r.h());
             }
             case ELLIPSE, CAPSULE, SEGMENT, POLYGON -> cellsOverlap(shape);
         };
@@ -797,8 +688,9 @@ public final class Grid {
      *
      * <p>The result is exactly {@link Sweep#move Sweep.move(mover, vx, vy, cells)} with
      * {@code cells} the rectangles of every solid cell, row by row, the cells beyond the
-     * grid's edges included (they are solid, as {@link #isSolid} says); but only the cells
-     * under the box swept this frame are looked at ({@link #moveObstacles}). As with
+     * grid's edges included (they are solid, as {@link #isSolid} says); but only the solid
+     * cells under the box swept this frame, from where the box starts to where the whole
+     * motion would take it, are looked at. As with
      * {@code Sweep.move}, a cell the box already overlaps at the start is ignored for this
      * move, so a box stuck in a wall can walk out of it.
      *
@@ -812,23 +704,6 @@ public final class Grid {
      */
     public Sweep.Move move(Rect mover, float vx, float vy) {
         return GridMove.move(this, mover, vx, vy);
-    }
-
-    /**
-     * The solid cells {@link #move} looks at for this move, as rectangles, row by row: the
-     * solid cells (in the grid or beyond its edges) under the box spanned by where the mover
-     * starts and where the whole motion would take it. For drawing what the move checked.
-     *
-     * @param mover the box, where it starts
-     * @param vx    its motion this frame, x part
-     * @param vy    its motion this frame, y part
-     * @return the cells' rectangles, an unmodifiable list (as every list the shapes and
-     *         questions hand back), never null
-     * @throws IllegalArgumentException as {@link #move} does: if {@code mover} is null, or the
-     *                                  velocity is NaN or infinite
-     */
-    public java.util.List<Rect> moveObstacles(Rect mover, float vx, float vy) {
-        return java.util.Collections.unmodifiableList(GridMove.obstacles(this, mover, vx, vy));
     }
 
     /**

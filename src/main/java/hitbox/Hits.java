@@ -17,8 +17,10 @@ import java.util.List;
  *
  * <p>Each test is {@link Shape#overlaps}, so the <a href="package-summary.html#touching">touching
  * rule</a> holds: an obstacle the shape only touches is not hit. Indices are in list order,
- * first to last. For thousands of obstacles keep their boxes in a {@link BroadPhase} and ask it
- * ({@link BroadPhase#query(Shape, java.util.function.IntConsumer)}).
+ * first to last. For thousands of obstacles keep their boxes in a {@link BroadPhase}, ask it for
+ * the boxes under the shape's {@link Shape#bounds() bounds}
+ * ({@link BroadPhase#query(float, float, float, float, java.util.function.IntConsumer)}), and
+ * test only those.
  *
  * <p>A shape is never counted as hitting <em>itself</em>: an element that is the very same
  * object as {@code shape} ({@code ==}) is skipped, so a ball can be tested against the list of

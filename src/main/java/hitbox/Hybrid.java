@@ -136,7 +136,7 @@ public final class Hybrid {
     public static Result check(PixelMask a, int ax, int ay, PixelMask b, int bx, int by) {
         Check.notNull("a", a);
         Check.notNull("b", b);
-        if (a.isEmpty() || b.isEmpty()) {
+        if (a.count() == 0 || b.count() == 0) {
             return APART_BY_CIRCLES;
         }
         // The solid pixels' bounds, as unit squares, where each mask is placed.

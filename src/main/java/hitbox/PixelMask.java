@@ -216,11 +216,6 @@ public final class PixelMask {
         return count;
     }
 
-    /** @return true if no pixel is solid (such a mask collides with nothing) */
-    public boolean isEmpty() {
-        return count == 0;
-    }
-
     /**
      * The smallest rectangle holding every solid pixel, in this mask's coordinates: a tighter
      * hit box than the image's own size when the sprite has transparent margins.
@@ -228,7 +223,7 @@ public final class PixelMask {
      * @return the bounds, each pixel counted as a unit square; null if no pixel is solid
      */
     public Rect bounds() {
-        return isEmpty() ? null : new Rect(minX, minY, maxX - minX + 1, maxY - minY + 1);
+        return count == 0 ? null : new Rect(minX, minY, maxX - minX + 1, maxY - minY + 1);
     }
 
     // ---------------------------------------------------------------- collision
@@ -286,7 +281,7 @@ public final class PixelMask {
     private long scan(PixelMask other, int dx, int dy, boolean stopAtFirst) {
         Check.notNull("other", other);
         long none = stopAtFirst ? NONE : 0;
-        if (isEmpty() || other.isEmpty()) {
+        if (count == 0 || other.count == 0) {
             return none;
         }
         // Only where both masks' solid bounds meet, in this mask's coordinates (long: no overflow).

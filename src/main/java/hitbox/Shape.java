@@ -126,8 +126,8 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      *       {@link Ellipse} (an ellipse whose two radii round to the same float is a circle
      *       again).</li>
      *   <li>{@link Rect}: a rect when the transform keeps the axes (a move, an axis scale or
-     *       mirror, a quarter turn, {@link Transform#keepsAxes}); otherwise a {@link Polygon}
-     *       of its four corners.</li>
+     *       mirror, a quarter turn: exactly {@code m01 = m10 = 0} or {@code m00 = m11 = 0});
+     *       otherwise a {@link Polygon} of its four corners.</li>
      *   <li>{@link Segment}, {@link Polygon}, {@link Ellipse}: the same kind (an ellipse's
      *       image is an ellipse, exactly, with new radii and angle).</li>
      *   <li>{@link Capsule}: a capsule under a similarity; a capsule stretched one way has

@@ -59,16 +59,6 @@ public final class TerrainColors {
     }
 
     /**
-     * Is this colour in the key?
-     *
-     * @param color the colour (the alpha is ignored)
-     * @return true if {@link #put} named it
-     */
-    public boolean has(int color) {
-        return find(color & 0xFFFFFF) >= 0;
-    }
-
-    /**
      * The terrain a colour stands for.
      *
      * @param color the colour (the alpha is ignored)

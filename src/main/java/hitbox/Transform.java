@@ -162,9 +162,10 @@ public final class Transform {
     }
 
     /**
-     * A scale about the origin, as Processing's {@code scale(sx, sy)}. A negative factor
-     * mirrors; 0 squashes everything onto a line or a point (a <em>singular</em> transform,
-     * see {@link Shape#transformed}).
+     * A scale about the origin, as Processing's {@code scale(sx, sy)}, and its
+     * {@code scale(s)} as {@code scaling(s, s)}. A negative factor mirrors; 0 squashes
+     * everything onto a line or a point (a <em>singular</em> transform, see
+     * {@link Shape#transformed}).
      *
      * @param sx the factor for x
      * @param sy the factor for y
@@ -175,18 +176,6 @@ public final class Transform {
         Check.finite("sx", sx);
         Check.finite("sy", sy);
         return new Transform(sx + 0.0, 0, 0, 0, sy + 0.0, 0);
-    }
-
-    /**
-     * A scale by the same factor both ways, as Processing's {@code scale(s)}.
-     *
-     * @param s the factor
-     * @return the transform, never null
-     * @throws IllegalArgumentException if {@code s} is NaN or infinite
-     */
-    public static Transform scaling(float s) {
-        Check.finite("s", s);
-        return new Transform(s + 0.0, 0, 0, 0, s + 0.0, 0);
     }
 
     /**
@@ -230,10 +219,10 @@ public final class Transform {
      * where it was (to within rounding).
      *
      * @return the inverse, never null
-     * @throws IllegalArgumentException if the transform is singular (its {@link #determinant()}
-     *                                  is 0: it squashes the plane onto a line or a point, which
-     *                                  no transform can undo), or an entry of the inverse is
-     *                                  beyond the float range
+     * @throws IllegalArgumentException if the transform is singular (its determinant
+     *                                  {@code m00 m11 - m01 m10} is 0: it squashes the plane onto
+     *                                  a line or a point, which no transform can undo), or an
+     *                                  entry of the inverse is beyond the float range
      */
     public Transform inverse() {
         double det = m00 * m11 - m01 * m10;
@@ -323,68 +312,6 @@ public final class Transform {
     /** @return the entry m12 (how far y' is moved), rounded to float */
     public float m12() {
         return (float) m12;
-    }
-
-    /**
-     * The determinant {@code m00 m11 - m01 m10}, in double: how the transform scales areas
-     * (negative when it mirrors, 0 when it is singular).
-     *
-     * @return the determinant
-     */
-    public double determinant() {
-        return m00 * m11 - m01 * m10;
-    }
-
-    /**
-     * Does the transform mirror (turn clockwise outlines anticlockwise)? True when the
-     * determinant is negative.
-     *
-     * @return true for a reflection
-     */
-    public boolean isReflection() {
-        return determinant() < 0;
-    }
-
-    /**
-     * Does the transform squash the plane onto a line or a point (determinant 0)?
-     *
-     * @return true when singular
-     */
-    public boolean isSingular() {
-        return determinant() == 0;
-    }
-
-    /**
-     * Is the transform a move only (its linear part is exactly the identity)?
-     *
-     * @return true for a translation, the identity included
-     */
-    public boolean isTranslation() {
-        return m00 == 1 && m01 == 0 && m10 == 0 && m11 == 1;
-    }
-
-    /**
-     * Does the transform keep horizontal lines horizontal and vertical ones vertical: an axis
-     * scale (mirrors included) or a quarter turn, with any move, exactly? A {@link Rect}
-     * stays a rectangle under such a transform.
-     *
-     * @return true if the axes go to the axes
-     */
-    public boolean keepsAxes() {
-        return (m01 == 0 && m10 == 0) || (m00 == 0 && m11 == 0);
-    }
-
-    /**
-     * Is the transform a similarity: a turn, a mirror, a uniform scale and a move, exactly
-     * (the two columns of the linear part equally long and at right angles, in double)? A
-     * circle stays a circle under a similarity. Transforms built from float sines and cosines
-     * may miss by a rounding; {@link Shape#transformed} decides a circle's kind by its radii
-     * instead.
-     *
-     * @return true for a similarity, a singular scale by 0 included
-     */
-    public boolean isSimilarity() {
-        return m00 * m01 + m10 * m11 == 0 && m00 * m00 + m10 * m10 == m01 * m01 + m11 * m11;
     }
 
     /**

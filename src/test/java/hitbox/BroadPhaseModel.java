@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.fail;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -29,7 +30,8 @@ final class BroadPhaseModel {
         Map<String, Supplier<BroadPhase>> m = new LinkedHashMap<>();
         m.put("bruteForce", BroadPhase::bruteForce);
         m.put("grid", BroadPhase::grid);
-        m.put("grid(7.0)", () -> BroadPhase.grid(7));
+        // the grid's cell arithmetic at a fixed size that is no power of two (its factory picks the size itself)
+        m.put("grid(7.0)", () -> new hitbox.internal.HashGridBroadPhase(7));
         m.put("quadtree", BroadPhase::quadtree);
         m.put("sweepAndPrune", BroadPhase::sweepAndPrune);
         m.put("dynamicTree", BroadPhase::dynamicTree);
@@ -121,9 +123,21 @@ final class BroadPhaseModel {
         return out;
     }
 
+    /**
+     * The boxes a shape overlaps, asked as a sketch asks: the box query over the shape's
+     * bounds, then {@link Shape#overlaps} on each box found (read back with forEachBox).
+     */
     static Set<Integer> queryOf(BroadPhase bp, Shape shape) {
+        Map<Integer, Rect> stored = new HashMap<>();
+        bp.forEachBox((id, x, y, w, h) -> stored.put(id, new Rect(x, y, w, h)));
+        Rect b = shape.bounds();
         Set<Integer> out = new TreeSet<>();
-        bp.query(shape, id -> assertTrue(out.add(id), bp + " reported " + id + " twice for " + shape));
+        bp.query(b.x(), b.y(), b.w(), b.h(), id -> {
+            assertTrue(stored.containsKey(id), bp + " reported " + id + ", which it does not store");
+            if (shape.overlaps(stored.get(id))) {
+                assertTrue(out.add(id), bp + " reported " + id + " twice for " + shape);
+            }
+        });
         return out;
     }
 
@@ -151,8 +165,8 @@ final class BroadPhaseModel {
         assertEquals(boxes.size(), bp.size(), bp + " size, " + when);
         assertEquals(contents(), contentsOf(bp), bp + " contents, " + when);
         Set<Integer> ids = new HashSet<>();
-        bp.forEach(id -> assertTrue(ids.add(id), bp + " forEach gave " + id + " twice"));
-        assertEquals(boxes.keySet(), ids, bp + " forEach, " + when);
+        bp.forEachBox((id, x, y, w, h) -> assertTrue(ids.add(id), bp + " forEachBox gave " + id + " twice"));
+        assertEquals(boxes.keySet(), ids, bp + " forEachBox, " + when);
         Set<String> want = pairs(), got = pairsOf(bp);
         if (!want.equals(got)) {
             Set<String> missing = new TreeSet<>(want), extra = new TreeSet<>(got);

@@ -14,8 +14,8 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * Obstacles in a {@link BroadPhase} give exactly the answers of a list of them (the list's index
- * is the box's id): {@link BroadPhase#query(Shape, java.util.function.IntConsumer)} as every
- * listed box the query box {@link Shape#overlaps}, for every structure, random worlds,
+ * is the box's id): {@link BroadPhase#query(float, float, float, float, java.util.function.IntConsumer)}
+ * as every listed box the query box {@link Shape#overlaps}, for every structure, random worlds,
  * touching and far-away boxes, and boxes far out, huge or flat. (Motion's broad-phase forms,
  * tested here against their list forms, went in issue 30: a sketch with thousands of
  * obstacles asks a World.)
@@ -95,7 +95,7 @@ class BroadPhaseObstaclesTest {
     private static void check(BroadPhase b, List<Rect> rects, float x, float y, float w, float h, float vx, float vy) {
         String where = "(" + x + ", " + y + ", " + w + ", " + h + ") moving (" + vx + ", " + vy + ")";
         List<Integer> found = new ArrayList<>();
-        b.query(new Rect(x, y, w, h), found::add);
+        b.query(x, y, w, h, found::add);
         int[] ids = found.stream().mapToInt(Integer::intValue).sorted().toArray();
         Rect box = new Rect(x, y, w, h);
         int[] want = IntStream.range(0, rects.size()).filter(i -> box.overlaps(rects.get(i))).toArray();

@@ -136,10 +136,9 @@ class GridImagesTest {
     @Test
     void terrainColors_matchOnRedGreenBlue_andRefuseAColourForTwoTerrains() {
         TerrainColors key = key();
-        assertTrue(key.has(0x3070E0));
-        assertTrue(key.has(BLUE));
-        assertTrue(key.has(0x003070E0), "the alpha is ignored");
-        assertFalse(key.has(0xFF3070E1));
+        assertEquals(3, key.terrainOf(BLUE));
+        assertEquals(3, key.terrainOf(0x003070E0), "the alpha is ignored");
+        assertThrows(IllegalArgumentException.class, () -> key.terrainOf(0xFF3070E1), "not in the key");
         assertEquals(3, key.terrainOf(0x3070E0));
         assertEquals(BLUE, key.colorOf(3));
         assertEquals(3, key.size());

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.GridMove;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -57,7 +59,7 @@ class GridMoveTest {
      */
     @Test
     void move_endingTouchingACellPastTheDoubleSum_stillLands() {
-        Grid g = Grid.parse("........2\n...#....#", 3.0f, 13.3f);
+        Grid g = tallCells(Grid.parse("........2\n...#....#"), 3.0f, 13.3f);
         Rect m = new Rect(25.5f, -19.95f, 2.25f, 13.3f);
         Sweep.Move want = oracle(g, m, -4.5f, 6.65f);
         assertEquals(0f, want.vy(), "the oracle lands on cell (8, 0)");
@@ -119,14 +121,24 @@ class GridMoveTest {
     }
 
     @Test
-    void moveObstacles_areTheSolidCellsUnderTheSweptBox() {
+    void move_looksAtTheSolidCellsUnderTheSweptBox() {
         Grid g = level();
         Rect player = new Rect(40, 40, 10, 10);
-        List<Rect> cells = g.moveObstacles(player, 2, 3);
+        List<Rect> cells = GridMove.obstacles(g, player, 2, 3);
         // Swept box: x 40 to 52, y 40 to 53, over columns 3 and 4 and rows 3 and 4: solid (3, 3) and (3, 4).
         assertEquals(List.of(g.cellRect(3, 3), g.cellRect(3, 4)), cells);
-        assertTrue(g.moveObstacles(new Rect(40, 40, 10, 10), 0, 0).size() <= 2);
-        assertThrows(UnsupportedOperationException.class, () -> cells.add(player), "handed back unmodifiable");
+        assertTrue(GridMove.obstacles(g, new Rect(40, 40, 10, 10), 0, 0).size() <= 2);
+    }
+
+    /** The map's cells in a grid of cells {@code w} by {@code h} (a map is read with square cells). */
+    static Grid tallCells(Grid map, float w, float h) {
+        Grid g = new Grid(map.cols(), map.rows(), w, h);
+        for (int row = 0; row < map.rows(); row++) {
+            for (int col = 0; col < map.cols(); col++) {
+                g.set(col, row, map.get(col, row));
+            }
+        }
+        return g;
     }
 
     @Test
@@ -202,7 +214,7 @@ class GridMoveTest {
             Sweep.Move m = g.move(p, vx, vy);
             assertEquals(oracle(g, p, vx, vy), m, "frame " + frame);
             p = new Rect(m.x(), m.y(), p.w(), p.h());
-            assertFalse(g.rectOverlapsSolid(p.x(), p.y(), p.w(), p.h()), "frame " + frame + ": inside a wall at " + p);
+            assertFalse(g.overlapsSolid(new Rect(p.x(), p.y(), p.w(), p.h())), "frame " + frame + ": inside a wall at " + p);
             vx = m.vx() == 0 ? -Math.signum(vx + 0.1f) * 2.5f : vx;
             vy = m.vy();
             if (m.landed() && random.nextInt(30) == 0) {

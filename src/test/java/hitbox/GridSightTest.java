@@ -150,9 +150,9 @@ class GridSightTest {
         float anyX = (float) (-2 * g.cellWidth() + random.nextDouble() * (g.width() + 4 * g.cellWidth()));
         float anyY = (float) (-2 * g.cellHeight() + random.nextDouble() * (g.height() + 4 * g.cellHeight()));
         return switch (random.nextInt(5)) {
-            case 0 -> new float[] {g.cellX(col), g.cellY(row)};
-            case 1 -> new float[] {g.cellX(col), anyY};
-            case 2 -> new float[] {anyX, g.cellY(row)};
+            case 0 -> new float[] {g.cellRect(col, 0).x(), g.cellRect(0, row).y()};
+            case 1 -> new float[] {g.cellRect(col, 0).x(), anyY};
+            case 2 -> new float[] {anyX, g.cellRect(0, row).y()};
             case 3 -> new float[] {g.cellCenterX(col), g.cellCenterY(row)};
             default -> new float[] {anyX, anyY};
         };
@@ -185,7 +185,7 @@ class GridSightTest {
     @Property(tries = 20)
     void lineOfSight_bigGrid_matchesLineRectAlongTheLine(@ForAll long seed) {
         Random random = new Random(seed);
-        Grid g = new Grid(400, 300, 7.3f, 5).fillRandom(0.02f, seed);
+        Grid g = new Grid(400, 300, 7.3f, 5).fillRandom(0.02f, seed, 0, 0);
         for (int i = 0; i < 50; i++) {
             float x0 = random.nextFloat() * g.width();
             float y0 = random.nextFloat() * g.height();

@@ -73,7 +73,7 @@ class TransformProperties {
                 Combinators.combine(c, c, c, c, r).as(Capsule::new),
                 Combinators.combine(c, c, r, Arbitraries.integers().between(3, 9), a).as(Polygon::regular),
                 Combinators.combine(c, c, r).as((x, y, k) -> TransformTest.comb(4).transformed(
-                        Transform.scaling(k / 40).then(Transform.translation(x, y)))));
+                        Transform.scaling(k / 40, k / 40).then(Transform.translation(x, y)))));
     }
 
     @Provide

@@ -58,7 +58,7 @@ class WorldContactsTest {
         for (int round = 0; round < 40; round++) {
             World w = WorldBruteForceTest.randomWorld(rnd, 20 + rnd.nextInt(60));
             Grid grid = new Grid(10, 10, 30);
-            grid.fillRandom(0.1f, rnd.nextLong());
+            grid.fillRandom(0.1f, rnd.nextLong(), 0, 0);
             if (rnd.nextBoolean()) {
                 w.add(grid);
             }

@@ -48,7 +48,7 @@ class WorldGridRayTest {
             float cw = rnd.nextBoolean() ? 10 : 1 + (float) rnd.nextDouble() * 20;
             float ch = rnd.nextBoolean() ? cw : 1 + (float) rnd.nextDouble() * 20;
             Grid g = new Grid(cols, rows, cw, ch);
-            g.fillRandom(rnd.nextInt(4) == 0 ? 0.02f : 0.25f, rnd.nextLong());
+            g.fillRandom(rnd.nextInt(4) == 0 ? 0.02f : 0.25f, rnd.nextLong(), 0, 0);
             World w = new World();
             Body body = w.add(g);
             for (int k = 0; k < 40; k++) {
@@ -75,11 +75,11 @@ class WorldGridRayTest {
         float ox, oy;
         switch (rnd.nextInt(3)) {
             case 0 -> {  // on a cell corner
-                ox = g.cellX(rnd.nextInt(g.cols() + 3) - 1);
-                oy = g.cellY(rnd.nextInt(g.rows() + 3) - 1);
+                ox = g.cellRect(rnd.nextInt(g.cols() + 3) - 1, 0).x();
+                oy = g.cellRect(0, rnd.nextInt(g.rows() + 3) - 1).y();
             }
             case 1 -> {  // on a cell edge
-                ox = g.cellX(rnd.nextInt(g.cols() + 1));
+                ox = g.cellRect(rnd.nextInt(g.cols() + 1), 0).x();
                 oy = (float) (rnd.nextDouble() * (h + 40) - 20);
             }
             default -> {
@@ -98,8 +98,8 @@ class WorldGridRayTest {
                 dy = rnd.nextBoolean() ? 1 : -1;
             }
             case 2 -> {  // to another corner
-                dx = g.cellX(rnd.nextInt(g.cols() + 1)) - ox;
-                dy = g.cellY(rnd.nextInt(g.rows() + 1)) - oy;
+                dx = g.cellRect(rnd.nextInt(g.cols() + 1), 0).x() - ox;
+                dy = g.cellRect(0, rnd.nextInt(g.rows() + 1)).y() - oy;
                 if (dx == 0 && dy == 0) {
                     dx = 1;
                 }

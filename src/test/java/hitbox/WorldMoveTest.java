@@ -303,7 +303,7 @@ class WorldMoveTest {
         int met = 0;
         for (int i = 0; i < 300; i++) {
             Rect start = new Rect(40 + rnd.nextInt(240), 40 + rnd.nextInt(120), 6 + rnd.nextInt(20), 6 + rnd.nextInt(20));
-            if (g.rectOverlapsSolid(start.x(), start.y(), start.w(), start.h())) {
+            if (g.overlapsSolid(new Rect(start.x(), start.y(), start.w(), start.h()))) {
                 continue;
             }
             Body b = w.add(start);
@@ -321,7 +321,7 @@ class WorldMoveTest {
         assertTrue(met > 50);
         Body ball = w.add(new Circle(100, 100, 8));
         w.move(ball, 500, 300);
-        assertFalse(g.rectOverlapsSolid(ball.shape().bounds().x() + 1, ball.shape().bounds().y() + 1, 14, 14));
+        assertFalse(g.overlapsSolid(new Rect(ball.shape().bounds().x() + 1, ball.shape().bounds().y() + 1, 14, 14)));
         assertEquals(1, w.queryPoint(5, 5).size());
         assertTrue(w.queryPoint(50, 50).isEmpty());
     }

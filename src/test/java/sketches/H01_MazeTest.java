@@ -168,7 +168,7 @@ class H01_MazeTest {
         float[] start = new float[2];
         SketchRun.Result<H01_Maze> r = SketchRun.of(new H01_Maze()).script(script).everyFrame(s -> {
             Rect b = s.box;
-            assertFalse(s.grid.rectOverlapsSolid(b.x(), b.y(), b.w(), b.h()), "the box overlaps a building at " + b);
+            assertFalse(s.grid.overlapsSolid(new Rect(b.x(), b.y(), b.w(), b.h())), "the box overlaps a building at " + b);
             assertEquals(s.grid.colAt(s.playerX()), s.playerIndexX);
             if (s.frameCount == 3) {
                 start[0] = b.x();

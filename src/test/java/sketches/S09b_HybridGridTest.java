@@ -21,6 +21,7 @@ import hitbox.Sweep;
 import hitbox.processing.Overlay;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
+import hitbox.internal.GridMove;
 
 /**
  * A pixel player on a tile map. By default, the section's hybrid written out: the pixel turned
@@ -46,7 +47,7 @@ class S09b_HybridGridTest {
         assertFalse(ground.get(0), "it starts in the air");
         assertTrue(s.onGround, "it has landed");
         float bottom = s.player.bottom();
-        assertEquals(bottom, s.grid.cellY(s.grid.rowAt(bottom)), "standing exactly on a row line: " + bottom);
+        assertEquals(bottom, s.grid.cellRect(0, s.grid.rowAt(bottom)).y(), "standing exactly on a row line: " + bottom);
         assertTrue(s.grid.isSolid(s.grid.colAt(s.player.x()), s.grid.rowAt(bottom))
                 || s.grid.isSolid(s.grid.colAt(s.player.right() - 0.01f), s.grid.rowAt(bottom)), "on a solid tile");
         assertEquals(0f, s.vy, "and stopped falling");
@@ -81,12 +82,12 @@ class S09b_HybridGridTest {
                 return;   // frame 1 ran the default, before l
             }
             assertTrue(s.hitboxDecides);
-            assertFalse(g.rectOverlapsSolid(p.x(), p.y(), p.w(), p.h()), "frame " + s.frameCount + ": inside a tile at " + p);
+            assertFalse(g.overlapsSolid(new Rect(p.x(), p.y(), p.w(), p.h())), "frame " + s.frameCount + ": inside a tile at " + p);
             // The frame's move is exactly Grid.move from where the player was.
             Sweep.Move expected = g.move(s.before, s.movedX, s.movedY);
             assertEquals(expected, s.last, "frame " + s.frameCount);
-            assertEquals(g.moveObstacles(s.before, s.movedX, s.movedY), s.checked);
-            assertTrue(s.checked.size() <= 9, "a move of a few pixels checks a few tiles: " + s.checked.size());
+            int checked = GridMove.obstacles(g, s.before, s.movedX, s.movedY).size();
+            assertTrue(checked <= 9, "a move of a few pixels checks a few tiles: " + checked);
             if (previous[0] != null) {
                 assertEquals(previous[0], s.before, "each move starts where the last one ended");
             }
@@ -111,7 +112,7 @@ class S09b_HybridGridTest {
         s.gravity = 6;
         s.player = new Rect(400, 0, 18, 28);
         SketchRun.of(s).frames(40).everyFrame(k -> assertFalse(
-                k.grid.rectOverlapsSolid(k.player.x(), k.player.y(), k.player.w(), k.player.h()), "inside a tile")).run();
+                k.grid.overlapsSolid(new Rect(k.player.x(), k.player.y(), k.player.w(), k.player.h())), "inside a tile")).run();
         assertTrue(s.onGround);
         assertEquals(8 * 24f, s.player.bottom(), "on the first tiles below x 400: row 8's top");
     }
@@ -123,7 +124,8 @@ class S09b_HybridGridTest {
         SketchRun.Result<S09b_HybridGrid> off = SketchRun.of(new S09b_HybridGrid()).script(plain).run();
         SketchRun.Result<S09b_HybridGrid> on = SketchRun.of(new S09b_HybridGrid()).script(maths).run();
         assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame()) > 1000, "the overlay changes what is drawn");
-        Rect tile = on.sketch().checked.get(0);
+        S09b_HybridGrid k = on.sketch();
+        Rect tile = GridMove.obstacles(k.grid, k.before, k.movedX, k.movedY).get(0);
         int x = (int) tile.x() + 1;
         int y = (int) tile.bottom();  // its bottom edge: the top may be under the player's red landed line
         assertTrue(SketchPixels.count(on.lastFrame(), x, y - 1, x + 10, y + 1, Overlay.GUIDE) > 0, "a checked tile is outlined");
@@ -168,10 +170,10 @@ class S09b_HybridGridTest {
             assertFalse(s.hitboxDecides);
             Grid g = s.grid;
             Rect p = s.player;
-            assertFalse(g.rectOverlapsSolid(p.x(), p.y(), p.w(), p.h()), "frame " + s.frameCount + ": inside a tile at " + p);
+            assertFalse(g.overlapsSolid(new Rect(p.x(), p.y(), p.w(), p.h())), "frame " + s.frameCount + ": inside a tile at " + p);
             assertEquals(s.cellsMove(s.before, s.movedX, s.movedY), s.last, "frame " + s.frameCount + ": the cells' move");
             if (s.onGround) {
-                assertEquals(p.bottom(), g.cellY(g.rowAt(p.bottom())), "frame " + s.frameCount + ": snapped onto a row line");
+                assertEquals(p.bottom(), g.cellRect(0, g.rowAt(p.bottom())).y(), "frame " + s.frameCount + ": snapped onto a row line");
                 rowsStoodOn.add(g.rowAt(p.bottom()));
             }
             walls[0] += (s.last.hit(Side.LEFT) || s.last.hit(Side.RIGHT)) ? 1 : 0;

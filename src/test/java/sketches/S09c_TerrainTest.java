@@ -42,7 +42,16 @@ class S09c_TerrainTest {
         assertEquals(0, s.GRASS);
         assertEquals(Grid.SOLID, s.WATER, "water is the grid's solid terrain");
         assertEquals(2, s.FOREST);
-        assertFalse(g.isSolidTerrain(s.FOREST), "forest can be walked through");
+        int forest = 0;
+        for (int row = 0; row < g.rows(); row++) {
+            for (int col = 0; col < g.cols(); col++) {
+                if (g.get(col, row) == s.FOREST) {
+                    assertFalse(g.isSolid(col, row), "forest can be walked through");
+                    forest++;
+                }
+            }
+        }
+        assertTrue(forest > 0, "the map has forest");
         PImage frame = r.lastFrame();
         assertEquals(s.WATER, g.get(5, 11));
         assertEquals(s.waterColour, frame.get((int) g.cellCenterX(5), (int) g.cellCenterY(11)));
@@ -92,7 +101,7 @@ class S09c_TerrainTest {
         int[] besideWater = new int[1];
         SketchRun.of(new S09c_Terrain()).script(script).everyFrame(s -> {
             Rect p = s.player;
-            assertFalse(s.grid.rectOverlapsSolid(p.x(), p.y(), p.w(), p.h()), "in the water or off the map at " + p);
+            assertFalse(s.grid.overlapsSolid(new Rect(p.x(), p.y(), p.w(), p.h())), "in the water or off the map at " + p);
             Rect around = new Rect(p.x() - 1, p.y() - 1, p.w() + 2, p.h() + 2);
             besideWater[0] += s.grid.overlapsSolid(around) ? 1 : 0;
         }).run();
@@ -140,7 +149,7 @@ class S09c_TerrainTest {
         assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame()) > 1000, "the overlay changes what is drawn");
         Grid g = on.sketch().grid;
         // The digit in a water cell far from the routes and labels: cell (12, 17).
-        int x = (int) g.cellX(12), y = (int) g.cellY(17);
+        int x = (int) g.cellRect(12, 0).x(), y = (int) g.cellRect(0, 17).y();
         assertTrue(SketchPixels.differing(off.lastFrame(), on.lastFrame(), x, y, x + 20, y + 20) > 5, "the cell's number is written");
     }
 

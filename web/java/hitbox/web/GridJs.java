@@ -1,5 +1,6 @@
 package hitbox.web;
 
+import hitbox.Circle;
 import hitbox.Grid;
 import hitbox.Rect;
 import hitbox.Sweep;
@@ -124,22 +125,24 @@ public final class GridJs {
      * @param y the rectangle's top
      * @param w its width
      * @param h its height
-     * @return whether it overlaps a solid cell
+     * @return whether it overlaps a solid cell ({@code Grid.overlapsSolid} of the rectangle)
+     * @throws IllegalArgumentException if a value is NaN or infinite, or a size negative
      */
     @JSExport
     public boolean rectOverlapsSolid(float x, float y, float w, float h) {
-        return grid.rectOverlapsSolid(x, y, w, h);
+        return grid.overlapsSolid(new Rect(x, y, w, h));
     }
 
     /**
      * @param cx the circle's centre x
      * @param cy its centre y
      * @param r  its radius
-     * @return whether it overlaps a solid cell
+     * @return whether it overlaps a solid cell ({@code Grid.overlapsSolid} of the circle)
+     * @throws IllegalArgumentException if a value is NaN or infinite, or the radius negative
      */
     @JSExport
     public boolean circleOverlapsSolid(float cx, float cy, float r) {
-        return grid.circleOverlapsSolid(cx, cy, r);
+        return grid.overlapsSolid(new Circle(cx, cy, r));
     }
 
     /**

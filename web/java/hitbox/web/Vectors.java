@@ -467,16 +467,31 @@ public final class Vectors {
     private void grid() {
         int cols = 2 + below(10), rows = 2 + below(10);
         float cell = size();
-        Grid g = new Grid(cols, rows, cell).fillRandom(unit(), next());
+        Grid g = new Grid(cols, rows, cell).fillRandom(unit(), next(), 0, 0);
         float x = coord() + 8, y = coord() + 8, w = size(), h = size(), vx = coord(), vy = coord();
         if (describing != null) {
             describing.append(g.toMap().replace('\n', '/')).append(" cell ").append(cell).append(" rect ")
                     .append(x).append(' ').append(y).append(' ').append(w).append(' ').append(h)
                     .append(" velocity ").append(vx).append(' ').append(vy);
         }
-        put(g.countSolid());
-        put(g.rectOverlapsSolid(x, y, w, h));
-        put(g.circleOverlapsSolid(x, y, w));
+        int solid = 0;
+        for (int row = 0; row < rows; row++) {
+            for (int col = 0; col < cols; col++) {
+                solid += g.isSolid(col, row) ? 1 : 0;
+            }
+        }
+        put(solid);
+        // a NaN or negative size is refused by the shape: marked, and the case goes on
+        try {
+            put(g.overlapsSolid(new Rect(x, y, w, h)));
+        } catch (RuntimeException e) {
+            thrown(e);
+        }
+        try {
+            put(g.overlapsSolid(new Circle(x, y, w)));
+        } catch (RuntimeException e) {
+            thrown(e);
+        }
         put(g.lineOfSight(x, y, vx + 8, vy + 8));
         Sweep.Move m = g.move(new Rect(x, y, w, h), vx, vy);
         put(m.x());

@@ -45,7 +45,7 @@ public class GridBenchmark {
     @Setup
     public void setup() {
         Random random = new Random(11);
-        sight = new Grid(2000, 2000, 8).fillRandom(0.0001f, 3);
+        sight = new Grid(2000, 2000, 8).fillRandom(0.0001f, 3, 0, 0);
         for (int i = 0; i < lines.length; i++) {
             lines[i] = random.nextFloat() * sight.width();
         }

@@ -40,7 +40,6 @@ public abstract class AbstractBroadPhase implements BroadPhase {
     private final IdSlots slotOf = new IdSlots();
     private int reading;
     private RayCast idleRay;
-    private ShapeQuery idleShapeQuery;
 
     // ---------------------------------------------------------------- hooks for the structures
 
@@ -201,22 +200,21 @@ public abstract class AbstractBroadPhase implements BroadPhase {
         return slotOf.get(checkId(id)) >= 0;
     }
 
-    @Override
     public final float x(int id) {
         return (float) box[4 * slotOf(id)];
     }
 
-    @Override
+    /** @return the top edge of the box stored under the id */
     public final float y(int id) {
         return (float) box[4 * slotOf(id) + 2];
     }
 
-    @Override
+    /** @return the width of the box stored under the id */
     public final float w(int id) {
         return ws[slotOf(id)];
     }
 
-    @Override
+    /** @return the height of the box stored under the id */
     public final float h(int id) {
         return hs[slotOf(id)];
     }
@@ -229,7 +227,7 @@ public abstract class AbstractBroadPhase implements BroadPhase {
         return slot;
     }
 
-    @Override
+    /** Visits every stored id once, in no particular order (for {@link BroadPhaseHits}). */
     public final void forEach(IntConsumer out) {
         Check.notNull("out", out);
         reading++;
@@ -280,21 +278,6 @@ public abstract class AbstractBroadPhase implements BroadPhase {
             findBoxes(x, y, (double) x + w, (double) y + h, out);
         } finally {
             end(start);
-        }
-    }
-
-    @Override
-    public final void query(Shape shape, IntConsumer out) {
-        Check.notNull("shape", shape);
-        Check.notNull("out", out);
-        ShapeQuery q = idleShapeQuery != null ? idleShapeQuery : new ShapeQuery();
-        idleShapeQuery = null;  // a query from inside the callback gets its own
-        long start = begin();
-        try {
-            q.run(shape, out);
-        } finally {
-            end(start);
-            idleShapeQuery = q;
         }
     }
 
@@ -353,51 +336,8 @@ public abstract class AbstractBroadPhase implements BroadPhase {
 
     private void checkNotReading() {
         if (reading > 0) {
-            throw new IllegalStateException("a broad phase cannot change while pairs, query, raycast or forEach"
+            throw new IllegalStateException("a broad phase cannot change while pairs, query, raycast or forEachBox"
                     + " is running: collect the ids in the callback, then put or remove them afterwards");
         }
-    }
-
-    // ---------------------------------------------------------------- shapes
-
-    /**
-     * A shape query: the structure's box query over the shape's bounds (a hair larger, so
-     * rounding in the bounds loses nothing), then the exact shape test on each box found
-     * ({@link #overlapsBox}, which makes a small Rect for each).
-     */
-    private final class ShapeQuery implements IntConsumer {
-        private Shape shape;
-        private IntConsumer out;
-
-        public void run(Shape s, IntConsumer o) {
-            shape = s;
-            out = o;
-            try {
-                Rect b = s.bounds();
-                double right = (double) b.x() + b.w(), bottom = (double) b.y() + b.h();
-                double padX = Tolerance.pad(b.x(), right);
-                double padY = Tolerance.pad(b.y(), bottom);
-                findBoxes(b.x() - padX, b.y() - padY, right + padX, bottom + padY, this);
-            } finally {
-                shape = null;
-                out = null;
-            }
-        }
-
-        @Override
-        public void accept(int id) {
-            int slot = slotOf.get(id);
-            if (overlapsBox(shape, (float) box[4 * slot], (float) box[4 * slot + 2], ws[slot], hs[slot])) {
-                out.accept(id);
-            }
-        }
-    }
-
-    /**
-     * Does the shape overlap the box? {@link Overlaps}, the one table behind
-     * {@link Shape#overlaps}, so every kind of shape, now and later, is answered as there.
-     */
-    public static boolean overlapsBox(Shape shape, float x, float y, float w, float h) {
-        return Overlaps.test(shape, new Rect(x, y, w, h));
     }
 }

@@ -33,6 +33,14 @@ public record Affine(double m00, double m01, double m02, double m10, double m11,
         return m00 == 1 && m01 == 0 && m10 == 0 && m11 == 1;
     }
 
+    /**
+     * Is the linear part exactly a similarity (a turn, a mirror, a uniform scale): columns at
+     * right angles and equally long, in double? A circle stays a circle under it.
+     */
+    public boolean isSimilarity() {
+        return m00 * m01 + m10 * m11 == 0 && m00 * m00 + m10 * m10 == m01 * m01 + m11 * m11;
+    }
+
     /** Does the linear part keep the axes: diagonal, or a quarter turn's anti-diagonal? */
     public boolean keepsAxes() {
         return (m01 == 0 && m10 == 0) || (m00 == 0 && m11 == 0);

@@ -77,12 +77,13 @@ public final class GridImages {
             throw new IllegalArgumentException("pixel (" + x + ", " + y + ") is not opaque (alpha " + alpha
                     + " of 255): paint every pixel of the map in one of the key's colours, fully opaque");
         }
-        if (!colors.has(argb)) {
+        try {
+            return colors.terrainOf(argb);
+        } catch (IllegalArgumentException notInTheKey) {
             throw new IllegalArgumentException("pixel (" + x + ", " + y + ") is " + hex(argb)
                     + ", a colour the key does not have (" + colors + "); paint programs blur edges with"
-                    + " in-between colours: turn off anti-aliasing, or add the colour to the key");
+                    + " in-between colours: turn off anti-aliasing, or add the colour to the key", notInTheKey);
         }
-        return colors.terrainOf(argb);
     }
 
     /** A colour as {@code #RRGGBB}, the way paint programs and Processing write it. */

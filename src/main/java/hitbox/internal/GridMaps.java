@@ -6,7 +6,7 @@ import java.util.Arrays;
 import java.util.Random;
 
 /**
- * A {@link Grid}'s maps: reading one from text ({@link Grid#parse(String, float, float)}),
+ * A {@link Grid}'s maps: reading one from text ({@link Grid#parse(String, float)}),
  * writing one as text ({@link Grid#toMap()}) and filling one at random
  * ({@link Grid#fillRandom(float, long, int, int)}). Grid keeps the public methods; the work
  * is here, apart from the cells and the pixel tests.
@@ -15,7 +15,7 @@ public final class GridMaps {
     private GridMaps() {
     }
 
-    /** Reads a map; see {@link Grid#parse(String, float, float)} for the format and the messages. */
+    /** Reads a map; see {@link Grid#parse(String, float)} for the format and the messages. */
     public static Grid parse(String map, float cellWidth, float cellHeight) {
         Check.notNull("map", map);
         String[] lines = map.split("\r\n|\r|\n", -1);
@@ -80,8 +80,8 @@ public final class GridMaps {
     }
 
     /**
-     * Fills the cells at random, keeping cell {@code free} (an index, or -1) empty. Partial
-     * Fisher-Yates shuffle: the first {@code solid} indices of a shuffle are solid.
+     * Fills the cells at random, keeping cell {@code free} (an index) empty. Partial
+     * Fisher-Yates shuffle of the other cells: the first {@code solid} indices are solid.
      */
     public static void fillRandom(int[] cells, float fraction, long seed, int free) {
         if (!(fraction >= 0 && fraction <= 1)) {
@@ -93,13 +93,10 @@ public final class GridMaps {
         for (int i = 0; i < n; i++) {
             order[i] = i;
         }
-        int candidates = n;
-        if (free >= 0) {
-            // Move the free cell to the end and shuffle only the others.
-            order[free] = n - 1;
-            order[n - 1] = free;
-            candidates = n - 1;
-        }
+        // Move the free cell to the end and shuffle only the others.
+        order[free] = n - 1;
+        order[n - 1] = free;
+        int candidates = n - 1;
         int solid = (int) Math.min(Math.round((double) fraction * n), candidates);
         Random random = new Random(seed);
         Arrays.fill(cells, Grid.EMPTY);

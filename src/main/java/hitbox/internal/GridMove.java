@@ -31,7 +31,11 @@ public final class GridMove {
         return MoveAndSlide.move(mover, vx, vy, obstacles(grid, mover, vx, vy));
     }
 
-    /** See {@link Grid#moveObstacles}. */
+    /**
+     * The solid cells {@link Grid#move} looks at for this move, as rectangles, row by row: the
+     * solid cells (in the grid or beyond its edges) under the box spanned by where the mover
+     * starts and where the whole motion would take it.
+     */
     public static List<Rect> obstacles(Grid grid, Rect mover, float vx, float vy) {
         Check.notNull("mover", mover);
         Check.finite("vx", vx);

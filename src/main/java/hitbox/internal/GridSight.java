@@ -59,8 +59,8 @@ public final class GridSight {
         int lowLeft = grid.rowAt(Math.nextDown(h));
         int highLeft = grid.rowAt(Math.nextUp(h));
         for (int col = colLo; col <= colHi; col++) {
-            float left = grid.cellX(col);
-            float right = grid.cellX(col + 1);
+            float left = GridLines.edge(col, grid.cellWidth());
+            float right = GridLines.edge(col + 1, grid.cellWidth());
             int r0 = rowLo;
             int r1 = rowHi;
             if (dx > 0) {
@@ -75,8 +75,8 @@ public final class GridSight {
             float w = right - left;
             for (int row = r0; row <= r1; row++) {
                 if (grid.isSolid(col, row)) {
-                    float top = grid.cellY(row);
-                    if (RawTests.lineRect(x0, y0, x1, y1, left, top, w, grid.cellY(row + 1) - top)) {
+                    float top = GridLines.edge(row, grid.cellHeight());
+                    if (RawTests.lineRect(x0, y0, x1, y1, left, top, w, GridLines.edge(row + 1, grid.cellHeight()) - top)) {
                         return false;
                     }
                 }
@@ -104,8 +104,8 @@ public final class GridSight {
      * either? Such a segment reaches into no cell's inside.
      */
     private static boolean onGridLine(Grid grid, float x0, float y0, float x1, float y1) {
-        boolean onRowLine = y0 == y1 && grid.cellY(grid.rowAt(y0)) == y0;
-        boolean onColLine = x0 == x1 && grid.cellX(grid.colAt(x0)) == x0;
+        boolean onRowLine = y0 == y1 && GridLines.edge(grid.rowAt(y0), grid.cellHeight()) == y0;
+        boolean onColLine = x0 == x1 && GridLines.edge(grid.colAt(x0), grid.cellWidth()) == x0;
         return onRowLine || onColLine;
     }
 

@@ -123,12 +123,6 @@ public final class Transforms {
         return new double[] {s1, s2, phi};
     }
 
-    /** Is the linear part exactly a similarity: columns at right angles and equally long? */
-    private static boolean similarity(Affine a) {
-        return a.m00() * a.m01() + a.m10() * a.m11() == 0
-                && a.m00() * a.m00() + a.m10() * a.m10() == a.m01() * a.m01() + a.m11() * a.m11();
-    }
-
     // ---- the kinds --------------------------------------------------------------------
 
     /**
@@ -140,7 +134,7 @@ public final class Transforms {
         float x = coordinate("the centre's x", a.x(c.x(), c.y()));
         float y = coordinate("the centre's y", a.y(c.x(), c.y()));
         double r = c.r();
-        if (similarity(a)) {
+        if (a.isSimilarity()) {
             return new Circle(x, y, size("the radius", r * Math.hypot(a.m00(), a.m10())));
         }
         if (a.m01() == 0 && a.m10() == 0) {
@@ -242,7 +236,7 @@ public final class Transforms {
             // x goes to y and y to x: the horizontal radius comes from ry
             return new Ellipse(x, y, size("the radius rx", ry * Math.abs(a.m01())), size("the radius ry", rx * Math.abs(a.m10())), 0);
         }
-        if (similarity(a)) {
+        if (a.isSimilarity()) {
             double k = Math.hypot(a.m00(), a.m10());
             double turn = Math.atan2(a.m10(), a.m00());
             double angle = a.det() >= 0 ? e.angle() + turn : turn - e.angle();
@@ -267,7 +261,7 @@ public final class Transforms {
         float radius;
         if (r == 0) {
             radius = 0;
-        } else if (similarity(a)) {
+        } else if (a.isSimilarity()) {
             radius = size("the radius", r * Math.hypot(a.m00(), a.m10()));
         } else {
             double[] svd = unitCircleImage(a.m00(), a.m01(), a.m10(), a.m11());

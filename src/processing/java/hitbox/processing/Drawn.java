@@ -67,7 +67,8 @@ public final class Drawn {
         }
         if (g instanceof PGraphicsJava2D && g.pixelDensity != 1) {
             // JAVA2D's matrix starts as scale(pixelDensity): from sketch units to the pixels it stores
-            t = t.then(Transform.scaling(1f / g.pixelDensity));
+            float toSketch = 1f / g.pixelDensity;
+            t = t.then(Transform.scaling(toSketch, toSketch));
         }
         return t;
     }

@@ -144,7 +144,7 @@ class WorldDrawTest {
 
     @Test
     void cells_outlineTheBroadPhasesCells_andNothingForAStructureWithout() {
-        World world = new World(BroadPhase.grid(40));
+        World world = new World(BroadPhase.grid());
         world.add(new Rect(50, 50, 20, 20));
         world.add(new Rect(130, 90, 30, 30));
         List<float[]> cells = new ArrayList<>();
