@@ -42,55 +42,6 @@ public record Capsule(float x1, float y1, float x2, float y2, float r) implement
 
     /** {@inheritDoc} */
     @Override
-    public boolean overlaps(Shape other) {
-        // this kind's own small part of the table, which a caller's loop can inline (see Overlaps)
-        return Overlaps.capsuleWith(this, Check.notNull("other", other));
-    }
-
-    /** {@inheritDoc} Same as {@link Collide#capsulePoint}. */
-    @Override
-    public boolean contains(float px, float py) {
-        return Collide.capsulePoint(x1, y1, x2, y2, r, px, py);
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean contains(Shape other) {
-        return Containment.capsuleContains(this, Check.notNull("other", other));
-    }
-
-    /** {@inheritDoc} Rounded outwards, so the box holds the round ends even when x1 - r is not a float. */
-    @Override
-    public Rect bounds() {
-        return Bounds.enclosing(minX(), minY(), maxX(), maxY());
-    }
-
-    /** The shape's smallest x, exactly (the extent {@link #bounds()} rounds outwards). */
-    @Override
-    public double minX() {
-        return Math.min(x1, x2) - (double) r;
-    }
-
-    /** The shape's smallest y, exactly. */
-    @Override
-    public double minY() {
-        return Math.min(y1, y2) - (double) r;
-    }
-
-    /** The shape's largest x, exactly. */
-    @Override
-    public double maxX() {
-        return Math.max(x1, x2) + (double) r;
-    }
-
-    /** The shape's largest y, exactly. */
-    @Override
-    public double maxY() {
-        return Math.max(y1, y2) + (double) r;
-    }
-
-    /** {@inheritDoc} */
-    @Override
     public Capsule translated(float dx, float dy) {
         Check.finite("dx", dx);
         Check.finite("dy", dy);

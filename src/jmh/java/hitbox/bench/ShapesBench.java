@@ -49,7 +49,7 @@ public class ShapesBench {
     Convex[] dynBoxes = new Convex[N + 1];
     final Gjk gjk = new Gjk();
     final ConservativeAdvancement ca = new ConservativeAdvancement();
-    Polygon blade = Polygon.rotatedRect(200, 200, 160, 4, 0);
+    Polygon blade = Polygon.of(Rect.centered(200, 200, 160, 4)).rotated(0, 200, 200);
     Rect post = new Rect(241, 241, 2, 2);
     Convex dynBlade = new Rectangle(160, 4), dynPost = new Rectangle(2, 2);
     Transform bladeT = new Transform(), postT = new Transform();
