@@ -139,4 +139,40 @@ public final class Extents {
             }
         };
     }
+
+    /**
+     * How far the shape reaches from the origin along either axis: the largest of its four
+     * extents by size, {@code max(|minX|, |maxX|, |minY|, |maxY|)}, the scale of a kernel's
+     * rounding. One switch, not four: the kernels ask it in loops the JIT inlines whole.
+     *
+     * @param s the shape, not null
+     * @return the largest size of an extent, 0 or more
+     */
+    public static double reach(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case ELLIPSE -> {
+                Ellipse e = (Ellipse) s;
+                yield Math.max(Math.abs((double) e.x()) + TurnedEllipses.halfWidth(e), Math.abs((double) e.y()) + TurnedEllipses.halfHeight(e));
+            }
+            case CAPSULE -> {
+                Capsule k = (Capsule) s;
+                yield Math.max(Math.max(Math.abs(k.x1()), Math.abs(k.x2())), Math.max(Math.abs(k.y1()), Math.abs(k.y2()))) + (double) k.r();
+            }
+            case CIRCLE -> {
+                Circle c = (Circle) s;
+                yield Math.max(Math.abs(c.x()), Math.abs(c.y())) + (double) c.r();
+            }
+            case RECT -> box((Rect) s);
+            case SEGMENT -> {
+                Segment g = (Segment) s;
+                yield Math.max(Math.max(Math.abs(g.x1()), Math.abs(g.x2())), Math.max(Math.abs(g.y1()), Math.abs(g.y2())));
+            }
+            case POLYGON -> box(HiddenParts.bounds((Polygon) s));
+        };
+    }
+
+    /** A box's reach: its four edges by size, the far ones added in double. */
+    private static double box(Rect r) {
+        return Math.max(Math.max(Math.abs(r.x()), Math.abs((double) r.x() + r.w())), Math.max(Math.abs(r.y()), Math.abs((double) r.y() + r.h())));
+    }
 }

@@ -395,8 +395,9 @@ public final class Manifolds {
 
     /** The larger of s and the shape's largest coordinate or extent. */
     private static double scale(double s, Shape t) {
-        s = Math.max(s, Math.max(Math.max(Math.abs(Extents.minX(t)), Math.abs(Extents.maxX(t))), Math.max(Math.abs(Extents.minY(t)), Math.abs(Extents.maxY(t)))));
-        return Math.max(s, Math.max(Extents.maxX(t) - Extents.minX(t), Extents.maxY(t) - Extents.minY(t)));
+        double minX = Extents.minX(t), minY = Extents.minY(t), maxX = Extents.maxX(t), maxY = Extents.maxY(t);
+        s = Math.max(s, Math.max(Math.max(Math.abs(minX), Math.abs(maxX)), Math.max(Math.abs(minY), Math.abs(maxY))));
+        return Math.max(s, Math.max(maxX - minX, maxY - minY));
     }
 
     // ---------------------------------------------------------------- clipping

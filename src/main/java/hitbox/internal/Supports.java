@@ -260,8 +260,7 @@ public final class Supports {
         double most = 1;
         for (int k = 0; k < 2; k++) {
             Shape s = k == 0 ? a : b;
-            most = Math.max(most, Math.max(Math.max(Math.abs(Extents.minX(s)), Math.abs(Extents.maxX(s))),
-                    Math.max(Math.abs(Extents.minY(s)), Math.abs(Extents.maxY(s)))));
+            most = Math.max(most, Extents.reach(s));
         }
         return most;
     }
