@@ -66,7 +66,7 @@ void draw() {
   overBlade = -1;
   for (int i = 0; i < 4; i++) {
     rotate(HALF_PI);
-    blades[i] = Drawn.shape(g, Polygon.triangle(12, -8, 90, -22, 90, 8));
+    blades[i] = Drawn.shape(g, Polygon.of(12, -8, 90, -22, 90, 8));
     if (blades[i].contains(mouseX, mouseY)) {
       overBlade = i;
     }

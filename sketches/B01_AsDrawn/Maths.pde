@@ -15,7 +15,7 @@ void drawMaths() {
   noStroke();
   Overlay.label(g, 20, 20, "Drawn.shape(g, new Rect(-80, -30, 160, 60))\n  -> " + describe(paddle), overPaddle ? Overlay.HIT : Overlay.TEXT);
   Overlay.label(g, 330, 20, "Drawn.shape(g, new Circle(0, 0, 40))\n  -> " + describe(ball), overBall ? Overlay.HIT : Overlay.TEXT);
-  Overlay.label(g, 20, 330, "each blade: Drawn.shape(g, Polygon.triangle(...))\n  -> " + describe(blades[0]), overBlade >= 0 ? Overlay.HIT : Overlay.TEXT);
+  Overlay.label(g, 20, 330, "each blade: Drawn.shape(g, Polygon.of(...))\n  -> " + describe(blades[0]), overBlade >= 0 ? Overlay.HIT : Overlay.TEXT);
   fill(Overlay.HIT);
   circle(mouseX, mouseY, 6);
 }

@@ -16,7 +16,7 @@ void findCrossings() {
   touched.clear();
   onOutline = false;
   Ray ray = new Ray(px, py, 1, 0);
-  for (int i = 0; i < crown.edgeCount(); i++) {
+  for (int i = 0; i < crown.size(); i++) {
     Segment e = crown.edge(i);
     RayHit hit = ray.cast(e);
     if (hit == null) {
@@ -85,7 +85,7 @@ void drawCrossings() {
 
 /** Each edge's number, the counted ones highlighted, and the rule at the corners the ray meets. */
 void drawMaths() {
-  for (int i = 0; i < crown.edgeCount(); i++) {
+  for (int i = 0; i < crown.size(); i++) {
     Segment e = crown.edge(i);
     boolean counts = countedEdges.contains(i);
     if (counts) {

@@ -62,7 +62,7 @@ void draw() {
 
   // Count the edges a ray from the point to the right crosses: odd means inside.
   crossings = 0;
-  for (int i = 0; i < crown.edgeCount(); i++) {
+  for (int i = 0; i < crown.size(); i++) {
     Segment e = crown.edge(i);
     if (crosses(e.x1(), e.y1(), e.x2(), e.y2())) {   // Collide.rayCrossesEdge(..., px, py)
       crossings++;
@@ -74,7 +74,7 @@ void draw() {
 
   // The ball: an edge cutting into it, or its centre inside.
   ballHits = false;
-  for (int i = 0; i < crown.edgeCount(); i++) {
+  for (int i = 0; i < crown.size(); i++) {
     Segment e = crown.edge(i);
     if (Collide.lineCircle(e.x1(), e.y1(), e.x2(), e.y2(), px, py, ballRadius)) {
       ballHits = true;

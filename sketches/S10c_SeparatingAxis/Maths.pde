@@ -15,7 +15,7 @@ int leastOverlap() {
 
 /** Which edge an axis belongs to: the rectangle's edges come first, then the triangle's. */
 String owner(int i) {
-  return i < box.edgeCount() ? "rect edge " + i : shapeName() + " edge " + (i - box.edgeCount());
+  return i < box.size() ? "rect edge " + i : shapeName() + " edge " + (i - box.size());
 }
 
 String shapeName() {

@@ -12,9 +12,9 @@
  * (shadow() below). The axes are written out too (addAxes below): one per edge, along its
  * normal, the edge's (dx, dy) turned a quarter to (dy, -dx) and divided by its length. The
  * loop looks for the gap, and its answer colours the rectangle; the panel on the right lists
- * and draws the axes. The rectangle turns (Polygon.rotatedRect); the triangle follows the
- * mouse. The axis drawn beside the shapes is the one with the widest gap, or, while they
- * overlap, the one with the least overlap: the shortest way out.
+ * and draws the axes. The rectangle turns (a polygon, rotated about its centre); the
+ * triangle follows the mouse. The axis drawn beside the shapes is the one with the widest
+ * gap, or, while they overlap, the one with the least overlap: the shortest way out.
  *
  * Where Hitbox differs: neither source writes the test out; this code is ours. Hitbox's
  * box.overlaps(mover) runs beside it (l lets it decide): for two convex polygons it asks the
@@ -57,7 +57,7 @@ void draw() {
   if (turning) {
     angle += 0.006;
   }
-  box = Polygon.rotatedRect(cx, cy, 170, 90, angle);
+  box = Polygon.of(Rect.centered(cx, cy, 170, 90)).rotated(angle, cx, cy);
   mover = Polygon.regular(mouseX, mouseY, 52, sides, -HALF_PI);
 
   // The theorem as a loop: on each axis, the two shadows [minA, maxA] and [minB, maxB];

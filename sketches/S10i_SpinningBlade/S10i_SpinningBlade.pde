@@ -41,7 +41,7 @@ void setup() {
 
 void draw() {
   background(Palette.BACKGROUND);
-  Polygon blade = Polygon.rotatedRect(hubX, hubY, bladeLength, bladeWidth, angle);
+  Polygon blade = bladeAt(angle);
   lastTurn = spin;
   lastHit = null;
   int hitPost = -1;
@@ -66,7 +66,7 @@ void draw() {
     // The end-of-frame test: did a post lie in the swept fan without being touched at the end?
     for (int i = 0; i < posts.length; i++) {
       Hit h = Sweep.turningTimeOfImpact(blade, hubX, hubY, 0, 0, angle - before, posts[i]);
-      if (h != null && !h.alreadyOverlapping() && !Polygon.rotatedRect(hubX, hubY, bladeLength, bladeWidth, angle).overlaps(posts[i])) {
+      if (h != null && !h.alreadyOverlapping() && !bladeAt(angle).overlaps(posts[i])) {
         passedThrough++;
         flash[i] = 3;
       }
@@ -83,7 +83,7 @@ void draw() {
   }
   noStroke();
   fill(turningSweep ? Palette.PLAYER : Palette.ACCENT);
-  Draw.shape(g, Polygon.rotatedRect(hubX, hubY, bladeLength, bladeWidth, angle));
+  Draw.shape(g, bladeAt(angle));
   fill(Palette.NEUTRAL);
   circle(hubX, hubY, 14);
 
@@ -92,6 +92,11 @@ void draw() {
   }
   Overlay.hint(g, (turningSweep ? "turning sweep: " + hits + " hits" : "end-of-frame test: " + passedThrough + " posts passed through")
       + "     t: switch     d: show the maths");
+}
+
+// The blade at an angle: a long thin rectangle centred on the hub, as a polygon, turned about the hub.
+Polygon bladeAt(float angle) {
+  return Polygon.of(Rect.centered(hubX, hubY, bladeLength, bladeWidth)).rotated(angle, hubX, hubY);
 }
 
 void keyPressed() {

@@ -12,9 +12,9 @@
  *
  * Where Hitbox differs: it has no call for this, because there is no shape to test: the
  * colours are the sketch's own drawing, so the test is get() and ==. The library only places
- * the wheels (Polygon.rotatedRect, the car's corners). The track is drawn without smoothing,
- * so every pixel is exactly one of its colours; a smoothed edge would be a blend that
- * matches none.
+ * the wheels (the car's corners: its rectangle as a polygon, turned). The track is drawn
+ * without smoothing, so every pixel is exactly one of its colours; a smoothed edge would be
+ * a blend that matches none.
  *
  * Try this: draw a puddle in another colour that makes the car skid; read the colour after
  * drawing the car and see the test find the car itself.
@@ -59,8 +59,8 @@ void draw() {
 
   // Look before you move: where would the car be, and what colour is under its wheels there?
   float nextAngle = angle + turn;
-  wheels = Polygon.rotatedRect(x + cos(nextAngle) * speed, y + sin(nextAngle) * speed,
-      carLength, carWidth, nextAngle);
+  float nextX = x + cos(nextAngle) * speed, nextY = y + sin(nextAngle) * speed;
+  wheels = Polygon.of(Rect.centered(nextX, nextY, carLength, carWidth)).rotated(nextAngle, nextX, nextY);
   wheelsOnGrass = 0;
   hitWall = false;
   for (int i = 0; i < 4; i++) {

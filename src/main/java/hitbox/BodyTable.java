@@ -106,8 +106,8 @@ final class BodyTable {
         double ntx = m.tx + (Poses.refX(end) - Poses.refX(start)), nty = m.ty + (Poses.refY(end) - Poses.refY(start));
         float[] box = box(m.homePivotX + ntx, m.homePivotY + nty, m.extents, "dx and dy");
         // The shape's own extents too (no Rect made for them: a move's only new object is its shape).
-        float x0 = Math.min(box[0], Math.nextDown((float) end.minX())), y0 = Math.min(box[1], Math.nextDown((float) end.minY()));
-        float x1 = Math.max(box[0] + box[2], Math.nextUp((float) end.maxX())), y1 = Math.max(box[1] + box[3], Math.nextUp((float) end.maxY()));
+        float x0 = Math.min(box[0], Math.nextDown((float) Extents.minX(end))), y0 = Math.min(box[1], Math.nextDown((float) Extents.minY(end)));
+        float x1 = Math.max(box[0] + box[2], Math.nextUp((float) Extents.maxX(end))), y1 = Math.max(box[1] + box[3], Math.nextUp((float) Extents.maxY(end)));
         m.placed(ntx, nty, end);
         setBox(m, x0, y0, Math.nextUp(x1 - x0), Math.nextUp(y1 - y0));
     }

@@ -11,8 +11,7 @@ import hitbox.internal.*;
  * and behaves as its segment does against shapes with area (it collides by reaching into
  * their inside), but, like a circle of radius 0, never collides with a segment, a point or
  * another shape without area. Every pair is "is the distance less than the sum of the
- * radii?", compared squared as exact signs of double products, so touching between whole
- * numbers of modest size (up to about 2^20) is exact; against an ellipse, see {@link Ellipse}.
+ * radii?", compared exactly for whole numbers of modest size (see {@link Collide#capsuleCircle}).
  *
  * @param x1 the segment's first end x
  * @param y1 the segment's first end y
@@ -39,55 +38,6 @@ public record Capsule(float x1, float y1, float x2, float y2, float r) implement
         Check.finite("x2", x2);
         Check.finite("y2", y2);
         Check.size("radius r", r);
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean overlaps(Shape other) {
-        // this kind's own small part of the table, which a caller's loop can inline (see Overlaps)
-        return Overlaps.capsuleWith(this, Check.notNull("other", other));
-    }
-
-    /** {@inheritDoc} The point closer than {@code r} to the segment, compared exactly as the pairs are. */
-    @Override
-    public boolean contains(float px, float py) {
-        return RawTests.capsulePoint(x1, y1, x2, y2, r, px, py);
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean contains(Shape other) {
-        return Containment.capsuleContains(this, Check.notNull("other", other));
-    }
-
-    /** {@inheritDoc} Rounded outwards, so the box holds the round ends even when x1 - r is not a float. */
-    @Override
-    public Rect bounds() {
-        return Bounds.enclosing(minX(), minY(), maxX(), maxY());
-    }
-
-    /** The shape's smallest x, exactly (the extent {@link #bounds()} rounds outwards). */
-    @Override
-    public double minX() {
-        return Math.min(x1, x2) - (double) r;
-    }
-
-    /** The shape's smallest y, exactly. */
-    @Override
-    public double minY() {
-        return Math.min(y1, y2) - (double) r;
-    }
-
-    /** The shape's largest x, exactly. */
-    @Override
-    public double maxX() {
-        return Math.max(x1, x2) + (double) r;
-    }
-
-    /** The shape's largest y, exactly. */
-    @Override
-    public double maxY() {
-        return Math.max(y1, y2) + (double) r;
     }
 
     /** {@inheritDoc} */

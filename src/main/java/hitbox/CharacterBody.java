@@ -181,7 +181,7 @@ public final class CharacterBody {
         if (Math.abs(left) <= skin || Math.signum(left) != Math.signum(want)) {
             return cur;
         }
-        double height = (cur.maxX() - cur.minX()) * Math.abs(upX) + (cur.maxY() - cur.minY()) * Math.abs(upY);
+        double height = (Extents.maxX(cur) - Extents.minX(cur)) * Math.abs(upX) + (Extents.maxY(cur) - Extents.minY(cur)) * Math.abs(upY);
         double slopeRise = Math.min(height, Math.abs(left) * Math.tan(Math.toRadians(maxSlope)) + 2 * skin);
         double lift = Math.max(stepHeight, slopeRise);
         float ux = (float) (upX * lift), uy = (float) (upY * lift);

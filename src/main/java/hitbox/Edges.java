@@ -36,8 +36,8 @@ public final class Edges {
     }
 
     /**
-     * Which edges of the window has the shape crossed? Its exact extents ({@link Shape#minX()}
-     * and the others) against the window: {@link Side#LEFT} if it reaches left of
+     * Which edges of the window has the shape crossed? Its exact extents (its
+     * {@link Shape#bounds()} before rounding to floats) against the window: {@link Side#LEFT} if it reaches left of
      * {@code x = 0}, {@link Side#RIGHT} right of {@code x = width}, {@link Side#TOP} above
      * {@code y = 0}, {@link Side#BOTTOM} below {@code y = height}. A point is a circle of
      * radius 0.
@@ -53,7 +53,7 @@ public final class Edges {
      */
     public static Set<Side> crossed(Shape shape, float width, float height) {
         Check.notNull("shape", shape);
-        return SideSets.of(crossed(shape.minX(), shape.maxX(), shape.minY(), shape.maxY(), width, height));
+        return SideSets.of(crossed(Extents.minX(shape), Extents.maxX(shape), Extents.minY(shape), Extents.maxY(shape), width, height));
     }
 
     /**

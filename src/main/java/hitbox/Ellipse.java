@@ -12,18 +12,12 @@ import hitbox.internal.*;
  * <p>Open, like every shape with area: a point on the outline is not in it. An ellipse with
  * a radius of 0 is flat and has no inside: it behaves as its box, a rectangle of width or
  * height 0 (a segment without its ends, or a point). With equal radii it is a circle, and
- * answers as {@link Circle} does. How exactly each pair is decided, for an axis-aligned
- * ellipse: a point and a rectangle (its point nearest the centre, by the point's equation)
- * exactly for every float; a segment in double, scaled into a circle, exact for whole numbers
- * up to about 4,000; a circle, another ellipse, a polygon or a capsule by the distance to the
- * outline (D. Eberly's robust bisection), unless the discs inside and around the ellipse or a
- * few rounds of closest points settle it first by a margin of 1e-10 of the sizes: touching on
- * the ellipse's axes is exact, and elsewhere the answer can be wrong only when the gap or
- * overlap is below about 1e-12 of the sizes involved (1e-9 against a capsule).
+ * answers as {@link Circle} does. How exactly each pair is decided is stated on the
+ * {@code Collide.ellipse...} methods ({@link Collide#ellipseCircle}, say).
  *
  * <p><b>Turned.</b> An ellipse may be turned about its centre by {@code angle} radians,
  * clockwise on screen for a positive angle, as Processing's {@code rotate()} turns what is
- * drawn after it (and as {@link Polygon#rotatedRect} takes its angle): draw it with
+ * drawn after it (and as {@link Shape#rotated} takes its angle): draw it with
  * {@code pushMatrix(); translate(x, y); rotate(angle); ellipse(0, 0, 2 * rx, 2 * ry); popMatrix();}.
  * Then {@code rx} is the radius along the turned x axis. An angle of 0 (the default) is the
  * axis-aligned ellipse above, decided exactly; a turned ellipse is decided in double in its
@@ -75,66 +69,6 @@ public record Ellipse(float x, float y, float rx, float ry, float angle) impleme
      */
     public Ellipse(float x, float y, float rx, float ry) {
         this(x, y, rx, ry, 0);
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean overlaps(Shape other) {
-        // this kind's own small part of the table, which a caller's loop can inline (see Overlaps)
-        return Overlaps.ellipseWith(this, Check.notNull("other", other));
-    }
-
-    /**
-     * {@inheritDoc} For an axis-aligned ellipse the equation
-     * {@code (dx / rx)^2 + (dy / ry)^2 < 1} multiplied out so nothing is divided, decided exactly
-     * for every float; a turned one takes the point into its own frame first.
-     */
-    @Override
-    public boolean contains(float px, float py) {
-        return TurnedEllipses.aligned(this) ? RawTests.ellipsePoint(x, y, rx, ry, px, py) : TurnedEllipses.turnedPoint(this, px, py);
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean contains(Shape other) {
-        return Containment.ellipseContains(this, Check.notNull("other", other));
-    }
-
-    /**
-     * {@inheritDoc} Rounded outwards, so the box holds the ellipse even when x - rx is not a
-     * float; a turned ellipse's box is its exact extent, {@code hypot(rx cos, ry sin)} either
-     * side of the centre, widened by a few double roundings before it is rounded outwards.
-     */
-    @Override
-    public Rect bounds() {
-        return Bounds.enclosing(minX(), minY(), maxX(), maxY());
-    }
-
-    /**
-     * The shape's smallest x (the extent {@link #bounds()} rounds outwards): exact when aligned,
-     * a turned ellipse's a hair beyond, widened past the rounding of its cos and sin.
-     */
-    @Override
-    public double minX() {
-        return (double) x - TurnedEllipses.halfWidth(this);
-    }
-
-    /** The shape's smallest y, as {@link #minX()}. */
-    @Override
-    public double minY() {
-        return (double) y - TurnedEllipses.halfHeight(this);
-    }
-
-    /** The shape's largest x, as {@link #minX()}. */
-    @Override
-    public double maxX() {
-        return (double) x + TurnedEllipses.halfWidth(this);
-    }
-
-    /** The shape's largest y, as {@link #minX()}. */
-    @Override
-    public double maxY() {
-        return (double) y + TurnedEllipses.halfHeight(this);
     }
 
     /** {@inheritDoc} The angle is kept. */

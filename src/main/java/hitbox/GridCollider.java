@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 /**
  * A grid's body in a {@link World}: what a point, a shape and a ray meet among its solid cells
  * (cells inside the grid only; beyond its edges is open). {@link World}'s queries and contacts
@@ -43,9 +45,9 @@ final class GridCollider {
 
     /** The first solid cell (row by row) of a grid that a shape overlaps, or -1. */
     int firstCell(Grid grid, Shape s) {
-        double pad = World.pad(s.minX(), s.minY(), s.maxX(), s.maxY());
-        int c0 = Math.max(0, grid.colAt((float) (s.minX() - pad))), c1 = Math.min(grid.cols() - 1, grid.colAt((float) (s.maxX() + pad)));
-        int r0 = Math.max(0, grid.rowAt((float) (s.minY() - pad))), r1 = Math.min(grid.rows() - 1, grid.rowAt((float) (s.maxY() + pad)));
+        double pad = World.pad(Extents.minX(s), Extents.minY(s), Extents.maxX(s), Extents.maxY(s));
+        int c0 = Math.max(0, grid.colAt((float) (Extents.minX(s) - pad))), c1 = Math.min(grid.cols() - 1, grid.colAt((float) (Extents.maxX(s) + pad)));
+        int r0 = Math.max(0, grid.rowAt((float) (Extents.minY(s) - pad))), r1 = Math.min(grid.rows() - 1, grid.rowAt((float) (Extents.maxY(s) + pad)));
         for (int row = r0; row <= r1; row++) {
             for (int col = c0; col <= c1; col++) {
                 visited++;

@@ -102,8 +102,8 @@ public final class Hybrid {
         Check.notNull("b", b);
         // Each shape's bounding box in double, the same extents Shape.bounds() rounds
         // outwards, read without making a Rect.
-        return stages(a.minX(), a.minY(), a.maxX(), a.maxY(),
-                b.minX(), b.minY(), b.maxX(), b.maxY(), a, b);
+        return stages(Extents.minX(a), Extents.minY(a), Extents.maxX(a), Extents.maxY(a),
+                Extents.minX(b), Extents.minY(b), Extents.maxX(b), Extents.maxY(b), a, b);
     }
 
     private static Result stages(double al, double at, double ar, double ab,

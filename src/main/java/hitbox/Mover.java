@@ -106,7 +106,7 @@ final class Mover {
      * of the shape's largest coordinate where that is more.
      */
     static double skin(Shape s) {
-        double m = Math.max(Math.max(Math.abs(s.minX()), Math.abs(s.maxX())), Math.max(Math.abs(s.minY()), Math.abs(s.maxY())));
+        double m = Math.max(Math.max(Math.abs(Extents.minX(s)), Math.abs(Extents.maxX(s))), Math.max(Math.abs(Extents.minY(s)), Math.abs(Extents.maxY(s))));
         return Math.max(SKIN, 4 * Math.ulp((float) Math.min(m, Float.MAX_VALUE / 8)));
     }
 
@@ -521,8 +521,8 @@ final class Mover {
      * not crossed already. Bodies the mover overlaps at the start are reported once.
      */
     private void obstacles(Body m, Shape cur, float fvx, float fvy, CollisionFilter filter, Shape start, int st) {
-        double left = Math.min(cur.minX(), cur.minX() + fvx), right = Math.max(cur.maxX(), cur.maxX() + fvx);
-        double top = Math.min(cur.minY(), cur.minY() + fvy), bottom = Math.max(cur.maxY(), cur.maxY() + fvy);
+        double left = Math.min(Extents.minX(cur), Extents.minX(cur) + fvx), right = Math.max(Extents.maxX(cur), Extents.maxX(cur) + fvx);
+        double top = Math.min(Extents.minY(cur), Extents.minY(cur) + fvy), bottom = Math.max(Extents.maxY(cur), Extents.maxY(cur) + fvy);
         // A skin around the swept box: a stop may step back from a slanted surface by that much.
         double k = skin(cur);
         left -= k;
@@ -635,7 +635,7 @@ final class Mover {
      * reuses each answer and the filter is asked once.
      */
     boolean blockedAtStart(Body m, Shape start, CollisionFilter filter, int st) {
-        world.gather(start.minX(), start.minY(), start.maxX(), start.maxY());
+        world.gather(Extents.minX(start), Extents.minY(start), Extents.maxX(start), Extents.maxY(start));
         for (int i = 0, n = world.candidateCount(); i < n; i++) {
             Body o = world.candidate(i);
             if (o == m) {
@@ -654,7 +654,7 @@ final class Mover {
 
     private boolean gridOverlaps(Body o, Shape s) {
         obCount = 0;
-        cells(o, s.minX(), s.minY(), s.maxX(), s.maxY(), null);
+        cells(o, Extents.minX(s), Extents.minY(s), Extents.maxX(s), Extents.maxY(s), null);
         for (int c = 0; c < obCount; c++) {
             if (s.overlaps(obShape[c])) {
                 return true;
@@ -678,7 +678,7 @@ final class Mover {
         Shape cur = start;
         for (int round = 0; round < 4; round++) {
             boolean first = round == 0;
-            world.gather(cur.minX(), cur.minY(), cur.maxX(), cur.maxY());
+            world.gather(Extents.minX(cur), Extents.minY(cur), Extents.maxX(cur), Extents.maxY(cur));
             Contact deepest = null;
             for (int i = 0, n = world.candidateCount(); i < n; i++) {
                 Body o = world.candidate(i);
@@ -697,7 +697,7 @@ final class Mover {
                 }
                 if (o.grid != null) {
                     obCount = 0;
-                    cells(o, cur.minX(), cur.minY(), cur.maxX(), cur.maxY(), null);
+                    cells(o, Extents.minX(cur), Extents.minY(cur), Extents.maxX(cur), Extents.maxY(cur), null);
                     for (int c = 0; c < obCount; c++) {
                         deepest = deeper(deepest, cur, obShape[c]);
                     }
@@ -726,8 +726,8 @@ final class Mover {
      * when some body met is not a rectangle that slides (then the general walk runs).
      */
     private Rect rectWalk(Body m, Rect r, float dx, float dy, CollisionFilter filter, int st) {
-        double left = Math.min(r.minX(), r.minX() + dx), right = Math.max(r.maxX(), r.maxX() + dx);
-        double top = Math.min(r.minY(), r.minY() + dy), bottom = Math.max(r.maxY(), r.maxY() + dy);
+        double left = Math.min(Extents.minX(r), Extents.minX(r) + dx), right = Math.max(Extents.maxX(r), Extents.maxX(r) + dx);
+        double top = Math.min(Extents.minY(r), Extents.minY(r) + dy), bottom = Math.max(Extents.maxY(r), Extents.maxY(r) + dy);
         world.gather(left, top, right, bottom);
         int n = world.candidateCount();
         for (int i = 0; i < n; i++) {

@@ -19,8 +19,13 @@ import java.util.function.Supplier;
  * vertex 0, so do not repeat the first vertex at the end. Immutable: moving a polygon makes
  * a new one ({@link #translated}).
  *
- * <p>The class is longer than most: its factories ({@link #of}, {@link #regular},
- * {@link #rotatedRect}) check every outline a user can hand in, and it grants the kernels in
+ * <p>A rectangle turned about its centre, as Processing draws
+ * {@code translate(cx, cy); rotate(angle); rect(-w/2, -h/2, w, h);}, is
+ * {@code Polygon.of(Rect.centered(cx, cy, w, h)).rotated(angle, cx, cy)}; a triangle is
+ * {@code Polygon.of(x1, y1, x2, y2, x3, y3)}.
+ *
+ * <p>The class is longer than most: its factories ({@link #of}, {@link #regular}) check
+ * every outline a user can hand in, and it grants the kernels in
  * {@code hitbox.internal} read access to the parts it keeps (see {@code HiddenParts}).
  */
 public final class Polygon implements Shape {
@@ -45,6 +50,11 @@ public final class Polygon implements Shape {
             @Override
             public int concaveVertex(Polygon p) {
                 return p.concaveVertex;
+            }
+
+            @Override
+            public Rect bounds(Polygon p) {
+                return p.bounds;
             }
 
             @Override
@@ -143,84 +153,10 @@ public final class Polygon implements Shape {
     }
 
     /**
-     * A triangle from its three corners, in either order.
-     *
-     * @param x1 the first corner's x
-     * @param y1 the first corner's y
-     * @param x2 the second corner's x
-     * @param y2 the second corner's y
-     * @param x3 the third corner's x
-     * @param y3 the third corner's y
-     * @return the triangle, never null
-     * @throws IllegalArgumentException if a value is NaN or infinite, or the corners lie on
-     *                                  one line
-     */
-    public static Polygon triangle(float x1, float y1, float x2, float y2, float x3, float y3) {
-        Check.finite("x1", x1);
-        Check.finite("y1", y1);
-        Check.finite("x2", x2);
-        Check.finite("y2", y2);
-        Check.finite("x3", x3);
-        Check.finite("y3", y3);
-        return of(x1, y1, x2, y2, x3, y3);
-    }
-
-    /**
-     * A rectangle turned about its centre, as Processing draws
-     * {@code translate(cx, cy); rotate(angle); rect(-w/2, -h/2, w, h);}.
-     *
-     * <p>The angle is in radians, like Processing's {@code rotate}: with y growing down, a
-     * positive angle turns clockwise on screen. The vertices are the corners that start at
-     * top-left, top-right, bottom-right and bottom-left, in that order.
-     *
-     * @param cx    the centre's x
-     * @param cy    the centre's y
-     * @param w     the width, above 0
-     * @param h     the height, above 0
-     * @param angle the turn, in radians
-     * @return the turned rectangle, never null
-     * @throws IllegalArgumentException if a value is NaN or infinite, or a size is 0 or less
-     */
-    public static Polygon rotatedRect(float cx, float cy, float w, float h, float angle) {
-        Check.finite("cx", cx);
-        Check.finite("cy", cy);
-        Check.positive("width w", w);
-        Check.positive("height h", h);
-        Check.finite("angle", angle);
-        double cos = StrictMath.cos(angle);
-        double sin = StrictMath.sin(angle);
-        double hx = w / 2.0;
-        double hy = h / 2.0;
-        double[] corners = {-hx, -hy, hx, -hy, hx, hy, -hx, hy};
-        float[] xy = new float[8];
-        for (int i = 0; i < 8; i += 2) {
-            xy[i] = (float) (cx + corners[i] * cos - corners[i + 1] * sin);
-            xy[i + 1] = (float) (cy + corners[i] * sin + corners[i + 1] * cos);
-        }
-        return rounded(xy, "cx = " + cx + ", cy = " + cy + ", w = " + w + ", h = " + h + ", angle = " + angle);
-    }
-
-    /**
-     * A regular polygon (equal sides, equal angles) with its corners on a circle, the first
-     * one straight to the right of the centre, like Processing's "Regular Polygon" example.
-     *
-     * @param cx     the centre's x
-     * @param cy     the centre's y
-     * @param radius the distance from the centre to each corner, above 0
-     * @param sides  how many sides, 3 or more
-     * @return the regular polygon, never null
-     * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
-     *                                  there are fewer than 3 or more than {@link #MAX_SIDES}
-     *                                  sides, or rounding to float makes the corners meet
-     *                                  (a radius too small for its centre)
-     */
-    public static Polygon regular(float cx, float cy, float radius, int sides) {
-        return regular(cx, cy, radius, sides, 0);
-    }
-
-    /**
-     * A regular polygon turned by {@code angle}: its first corner is at that angle from the
-     * centre (radians, clockwise on screen as with Processing's {@code rotate}).
+     * A regular polygon (equal sides, equal angles) with its corners on a circle, like
+     * Processing's "Regular Polygon" example, its first corner at {@code angle} from the
+     * centre: radians, clockwise on screen as with Processing's {@code rotate} (0 puts it
+     * straight to the right of the centre, {@code -HALF_PI} straight above it).
      *
      * @param cx     the centre's x
      * @param cy     the centre's y
@@ -231,6 +167,7 @@ public final class Polygon implements Shape {
      * @throws IllegalArgumentException if a value is NaN or infinite, the radius is 0 or less,
      *                                  there are fewer than 3 or more than {@link #MAX_SIDES}
      *                                  sides, or rounding to float makes the corners meet
+     *                                  (a radius too small for its centre)
      */
     public static Polygon regular(float cx, float cy, float radius, int sides, float angle) {
         Check.finite("cx", cx);
@@ -267,11 +204,6 @@ public final class Polygon implements Shape {
         return xy.length / 2;
     }
 
-    /** @return how many edges the polygon has: as many as vertices, since it is closed */
-    public int edgeCount() {
-        return xy.length / 2;
-    }
-
     /**
      * @param i the vertex index, from 0 to {@code size() - 1}
      * @return vertex i's x
@@ -293,37 +225,14 @@ public final class Polygon implements Shape {
     /**
      * Edge i, from vertex i to vertex i + 1 (the last edge goes back to vertex 0).
      *
-     * @param i the edge index, from 0 to {@code edgeCount() - 1}
+     * @param i the edge index, from 0 to {@code size() - 1} (a closed outline has as many
+     *          edges as vertices)
      * @return the edge as a segment, never null
      * @throws IllegalArgumentException if {@code i} is out of range
      */
     public Segment edge(int i) {
         int k = (index("edge index i", i) + 1) % size();
         return new Segment(xy[2 * i], xy[2 * i + 1], xy[2 * k], xy[2 * k + 1]);
-    }
-
-    /** {@inheritDoc} The edge of the polygon's {@link #bounds()} box, which holds the outline. */
-    @Override
-    public double minX() {
-        return bounds.x();
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public double minY() {
-        return bounds.y();
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public double maxX() {
-        return (double) bounds.x() + bounds.w();
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public double maxY() {
-        return (double) bounds.y() + bounds.h();
     }
 
     /** @return a copy of the coordinates, {@code x0, y0, x1, y1, ...}, never null */
@@ -415,41 +324,6 @@ public final class Polygon implements Shape {
     /** The vertices in double, without a copy, for the library's own loops; never handed out. */
     double[] corners() {
         return corners;
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean overlaps(Shape other) {
-        // this kind's own small part of the table, which a caller's loop can inline (see Overlaps)
-        return Overlaps.polygonWith(this, Check.notNull("other", other));
-    }
-
-    /**
-     * {@inheritDoc} Same as {@link Collide#polygonPoint}; a triangle is answered by
-     * {@link Collide#trianglePoint}, which gives the same answer.
-     */
-    @Override
-    public boolean contains(float px, float py) {
-        float[] v = xy;
-        if (v.length == 6) {
-            // Three orientation signs, not the crossing count's walk (1.9x slower). Both decide
-            // the open inside exactly, and a triangle has area (Polygon.of refuses a flat one);
-            // a NaN or infinite point is outside for both (TrianglePointTest).
-            return Collide.trianglePoint(v[0], v[1], v[2], v[3], v[4], v[5], px, py);
-        }
-        return Collide.polygonPoint(v, px, py);
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean contains(Shape other) {
-        return Containment.polygonContains(this, Check.notNull("other", other));
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public Rect bounds() {
-        return bounds;
     }
 
     /**

@@ -7,7 +7,17 @@ import hitbox.internal.*;
  * mode ({@code rect(x, y, w, h)}).
  *
  * <p>Open: a point on an edge is not in it, and rectangles side by side do not overlap. A
- * rectangle of width or height 0 behaves as a segment (or a point).
+ * rectangle of width or height 0 behaves as a segment (or a point). A rectangle is its own
+ * {@link #bounds()}.
+ *
+ * <p><b>Transformed</b> ({@link #transformed}, {@link #rotated}): a rect stays a rect when the
+ * transform keeps the axes ({@link Transform#keepsAxes}: a move, a scale or mirror along the
+ * axes, a whole number of quarter turns), each edge the transformed edge rounded to float; a
+ * scale by 0 gives a rect of width or height 0. Otherwise it becomes the {@link Polygon} of
+ * its four corners, transformed, in the order top-left, top-right, bottom-right, bottom-left
+ * of the rect. Refused when a corner goes beyond the float range, when the transform turns
+ * or shears a rect of width or height 0 (a segment without its ends, which no kind is), or
+ * when it is singular and does not keep the axes (no area for a polygon).
  *
  * @param x the left edge
  * @param y the top edge
@@ -73,25 +83,6 @@ public record Rect(float x, float y, float w, float h) implements Shape {
         return y + h / 2;
     }
 
-    /** {@inheritDoc} */
-    @Override
-    public boolean overlaps(Shape other) {
-        // this kind's own small part of the table, which a caller's loop can inline (see Overlaps)
-        return Overlaps.rectWith(this, Check.notNull("other", other));
-    }
-
-    /** {@inheritDoc} Same as {@link Collide#rectPoint}. */
-    @Override
-    public boolean contains(float px, float py) {
-        return Collide.rectPoint(x, y, w, h, px, py);
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean contains(Shape other) {
-        return Containment.rectContains(this, Check.notNull("other", other));
-    }
-
     /**
      * The region inside both rectangles: what a platformer draws as "the overlap", and the
      * sizes {@link Snap#pushOut} compares.
@@ -111,63 +102,12 @@ public record Rect(float x, float y, float w, float h) implements Shape {
         return new Rect(left, top, Math.min(right(), other.right()) - left, Math.min(bottom(), other.bottom()) - top);
     }
 
-    /** {@inheritDoc} A rectangle is its own bounds. */
-    @Override
-    public Rect bounds() {
-        return this;
-    }
-
-    /** The left edge, as {@link Shape}'s extents are read (see {@link Bounds}). */
-    @Override
-    public double minX() {
-        return x;
-    }
-
-    /** The top edge. */
-    @Override
-    public double minY() {
-        return y;
-    }
-
-    /** The right edge, exactly: {@code x + w} in double. */
-    @Override
-    public double maxX() {
-        return (double) x + w;
-    }
-
-    /** The bottom edge, exactly: {@code y + h} in double. */
-    @Override
-    public double maxY() {
-        return (double) y + h;
-    }
-
     /** {@inheritDoc} */
     @Override
     public Rect translated(float dx, float dy) {
         Check.finite("dx", dx);
         Check.finite("dy", dy);
         return new Rect(Check.finite("x + dx", x + dx), Check.finite("y + dy", y + dy), w, h);
-    }
-
-    /**
-     * {@inheritDoc}
-     *
-     * <p>A rect stays a rect when the transform keeps the axes (exactly {@code m01 = m10 = 0}
-     * or {@code m00 = m11 = 0}: a move, a scale or mirror along the axes, a whole number of
-     * quarter turns), each edge
-     * the transformed edge rounded to float; a scale by 0 gives a rect of width or height 0.
-     * Otherwise it becomes the {@link Polygon} of its four corners, transformed, in the order
-     * top-left, top-right, bottom-right, bottom-left of the rect.
-     *
-     * @throws IllegalArgumentException if {@code t} is null, a corner goes beyond the float
-     *                                  range, the transform turns or shears a rect of width
-     *                                  or height 0 (a segment without its ends, which no kind
-     *                                  is), or it is singular and does not keep the axes (no
-     *                                  area for a polygon)
-     */
-    @Override
-    public Shape transformed(Transform t) {
-        return Transforms.rect(this, Check.notNull("t", t).affine());
     }
 
     /**

@@ -10,7 +10,8 @@ import hitbox.internal.*;
  * it collides with a circle, rectangle or polygon only by reaching into that shape's inside
  * ({@link Collide#lineCircle}, {@link Collide#lineRect}, {@link Collide#polygonLine}), so
  * running along an edge does not count, and it never collides with a circle of radius 0 or a
- * rectangle of width or height 0. A segment of length 0 is a point.
+ * rectangle of width or height 0. A segment of length 0 is a point. A point is in it
+ * ({@link #contains(float, float)}) when it lies on it, end points included.
  *
  * @param x1 the first end's x
  * @param y1 the first end's y
@@ -34,55 +35,6 @@ public record Segment(float x1, float y1, float x2, float y2) implements Shape {
         Check.finite("y1", y1);
         Check.finite("x2", x2);
         Check.finite("y2", y2);
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean overlaps(Shape other) {
-        // this kind's own small part of the table, which a caller's loop can inline (see Overlaps)
-        return Overlaps.segmentWith(this, Check.notNull("other", other));
-    }
-
-    /** {@inheritDoc} A point counts when it lies on the segment, end points included. */
-    @Override
-    public boolean contains(float px, float py) {
-        return Lines.segmentPoint(x1, y1, x2, y2, px, py);
-    }
-
-    /** {@inheritDoc} */
-    @Override
-    public boolean contains(Shape other) {
-        return Containment.segmentContains(this, Check.notNull("other", other));
-    }
-
-    /** {@inheritDoc} Rounded outwards, so the box holds both ends even when their distance is not a float. */
-    @Override
-    public Rect bounds() {
-        return Bounds.enclosing(minX(), minY(), maxX(), maxY());
-    }
-
-    /** The shape's smallest x, exactly (the extent {@link #bounds()} rounds outwards). */
-    @Override
-    public double minX() {
-        return Math.min(x1, x2);
-    }
-
-    /** The shape's smallest y, exactly. */
-    @Override
-    public double minY() {
-        return Math.min(y1, y2);
-    }
-
-    /** The shape's largest x, exactly. */
-    @Override
-    public double maxX() {
-        return Math.max(x1, x2);
-    }
-
-    /** The shape's largest y, exactly. */
-    @Override
-    public double maxY() {
-        return Math.max(y1, y2);
     }
 
     /** {@inheritDoc} */

@@ -9,6 +9,12 @@ import hitbox.internal.*;
  * rectangles, segments, polygons, ellipses and capsules. Each pair is decided by the same code as the matching
  * {@link Collide} method, and by the same <a href="package-summary.html#touching">touching
  * rule</a>, in either order: {@code a.overlaps(b) == b.overlaps(a)}.
+ *
+ * <p>Every question a shape answers is asked here, once for all six kinds; what is special
+ * to a kind (what is open or closed, how a zero size behaves, what a transform makes of it)
+ * is on that kind's class. A kind overrides {@link #translated}, and {@link #rotated} and
+ * {@link #transformed} where it keeps its kind, only to answer with its own type:
+ * {@code Circle c = circle.translated(5, 0)}.
  */
 public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, Capsule {
 
@@ -20,7 +26,11 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * @return true if the two shapes collide
      * @throws IllegalArgumentException if {@code other} is null
      */
-    boolean overlaps(Shape other);
+    default boolean overlaps(Shape other) {
+        // One switch on this shape's kind to its small part of the table (Overlaps.circleWith,
+        // say, with its fast path): for a receiver of one kind the JIT keeps only that case.
+        return Overlaps.test(this, Check.notNull("other", other));
+    }
 
     /**
      * How this shape and {@code other} overlap: the unit normal from this shape to the other
@@ -52,7 +62,13 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
 
     /**
      * Is the point in this shape? For shapes with area the outline does not count; for a
-     * segment, a point on it counts.
+     * segment, a point on it counts, end points included.
+     *
+     * <p>Each kind answers as its {@link Collide} point test: {@link Collide#circlePoint},
+     * {@link Collide#rectPoint}, {@link Collide#capsulePoint}, {@link Collide#polygonPoint}
+     * (a triangle by {@link Collide#trianglePoint}, which gives the same answer) and
+     * {@link Collide#ellipsePoint} for an axis-aligned ellipse (a turned one takes the point
+     * into its own frame first).
      *
      * <p>A NaN in any argument answers false
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).
@@ -61,7 +77,9 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * @param y the point's y
      * @return true if the point is in the shape
      */
-    boolean contains(float x, float y);
+    default boolean contains(float x, float y) {
+        return Containment.point(this, x, y);
+    }
 
     /**
      * Does this shape hold {@code other}: is no point of the other shape outside this one?
@@ -93,7 +111,9 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * @return true if every point of {@code other} is in this shape or on its outline
      * @throws IllegalArgumentException if {@code other} is null
      */
-    boolean contains(Shape other);
+    default boolean contains(Shape other) {
+        return Containment.test(this, Check.notNull("other", other));
+    }
 
     /**
      * The smallest axis-aligned float rectangle that holds this shape: its hit box for a
@@ -102,9 +122,18 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * the exact size is not a float. (Only a shape reaching past the float range, a circle
      * of radius near {@code Float.MAX_VALUE}, say, gets a box held back at the float range.)
      *
+     * <p>A rectangle is its own bounds, and a polygon's box is made once, with the polygon. A
+     * circle's, a capsule's, a segment's and an aligned ellipse's box is its exact extent
+     * rounded outwards (so it holds the shape even when {@code x - r} is not a float); a
+     * turned ellipse's is {@code hypot(rx cos, ry sin)} either side of the centre, widened
+     * by a few double roundings before it is rounded outwards. So the box is exact, its edges
+     * the shape's, whenever those edges are floats.
+     *
      * @return the bounding rectangle, never null
      */
-    Rect bounds();
+    default Rect bounds() {
+        return Bounds.of(this);
+    }
 
     /**
      * This shape moved by (dx, dy).
@@ -119,7 +148,7 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
     /**
      * This shape under the affine transform {@code t}: turned, scaled, mirrored, sheared and
      * moved as {@code t} moves each of its points (see {@link Transform}). What each kind
-     * becomes, documented on each kind's method:
+     * becomes (in detail on its class, or on its own {@code transformed}):
      * <ul>
      *   <li>{@link Circle}: a circle under a similarity (a turn, a mirror, a scale the same
      *       both ways, a move); under a scale that differs by direction, or a shear, a turned
@@ -147,7 +176,9 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      *                                  the float range, or the kind has no exact result (see
      *                                  each kind)
      */
-    Shape transformed(Transform t);
+    default Shape transformed(Transform t) {
+        return Transforms.apply(this, Transforms.affine(t));
+    }
 
     /**
      * This shape turned by {@code angle} about the point (pivotX, pivotY): radians, clockwise
@@ -166,35 +197,4 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
     default Shape rotated(float angle, float pivotX, float pivotY) {
         return Transform.turn(this, angle, pivotX, pivotY);
     }
-
-    /**
-     * The shape's smallest x, in double: exact for circles, rectangles, segments and capsules
-     * (a sum of two floats is exact in double), a hair outside for a turned ellipse (widened
-     * past its rounding) and a polygon (its {@link #bounds()} box's edge). {@link #bounds()}
-     * is these four extents rounded outwards to floats.
-     *
-     * @return the smallest x, at or below every point of the shape
-     */
-    double minX();
-
-    /**
-     * The shape's smallest y, as {@link #minX()}.
-     *
-     * @return the smallest y, at or below every point of the shape
-     */
-    double minY();
-
-    /**
-     * The shape's largest x, as {@link #minX()}.
-     *
-     * @return the largest x, at or above every point of the shape
-     */
-    double maxX();
-
-    /**
-     * The shape's largest y, as {@link #minX()}.
-     *
-     * @return the largest y, at or above every point of the shape
-     */
-    double maxY();
 }

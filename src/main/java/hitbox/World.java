@@ -135,7 +135,7 @@ public final class World {
     public Body add(Shape shape) {
         Check.notNull("shape", shape);
         checkNotInCallback("add");
-        double px = (shape.minX() + shape.maxX()) / 2, py = (shape.minY() + shape.maxY()) / 2;
+        double px = (Extents.minX(shape) + Extents.maxX(shape)) / 2, py = (Extents.minY(shape) + Extents.maxY(shape)) / 2;
         return added(shape, px, py, 0, 0, 0, null);
     }
 

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 import java.util.Comparator;
 import java.util.List;
 import java.util.function.Predicate;
@@ -39,7 +41,7 @@ final class WorldQueries {
 
     /** The bodies the filter keeps (not {@code except}) whose shape overlaps a shape, added to out in the order added. */
     void shape(Shape shape, Body except, Predicate<Body> filter, List<Body> out) {
-        world.gather(shape.minX(), shape.minY(), shape.maxX(), shape.maxY());
+        world.gather(Extents.minX(shape), Extents.minY(shape), Extents.maxX(shape), Extents.maxY(shape));
         for (int i = 0, n = world.candidateCount(); i < n; i++) {
             Body b = world.candidate(i);
             if (b == except) {

@@ -457,8 +457,8 @@ final class ContactFixtures {
     // ------------------------------------------------------------------------ shapes
 
     /**
-     * Rotated rectangles from the library's {@link Polygon#rotatedRect}: whole-number centre
-     * and size, angle in tenths of a degree.
+     * Rotated rectangles, as the library turns them ({@code Polygon.of(rect).rotated} about
+     * the centre): whole-number centre and size, angle in tenths of a degree.
      */
     static Arbitrary<Polygon> rotatedRects() {
         return Combinators.combine(
@@ -467,7 +467,7 @@ final class ContactFixtures {
                 Arbitraries.integers().between(1, 40),
                 Arbitraries.integers().between(1, 40),
                 Arbitraries.integers().between(0, 3599))
-            .as((cx, cy, w, h, tenths) -> Polygon.rotatedRect(cx, cy, w, h, (float) Math.toRadians(tenths / 10.0)));
+            .as((cx, cy, w, h, tenths) -> Polygon.of(Rect.centered(cx, cy, w, h)).rotated((float) Math.toRadians(tenths / 10.0), cx, cy));
     }
 
     /** Concave shapes with whole-number corners, each drawn in a 0..6 box. */

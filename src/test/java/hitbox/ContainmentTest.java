@@ -332,7 +332,7 @@ class ContainmentTest {
             out.add(new Segment(v[2 * i], v[2 * i + 1], v[2 * j], v[2 * j + 1]));
             out.add(new Circle(v[2 * i], v[2 * i + 1], 0));
             try {
-                out.add(Polygon.triangle(v[2 * i], v[2 * i + 1], v[2 * j], v[2 * j + 1], v[2 * m], v[2 * m + 1]));
+                out.add(Polygon.of(v[2 * i], v[2 * i + 1], v[2 * j], v[2 * j + 1], v[2 * m], v[2 * m + 1]));
             } catch (IllegalArgumentException e) {
                 // three corners on a line
             }

@@ -147,7 +147,7 @@ class ContractTest {
         assertTrue(moved.translated(0.125f, 0).overlaps(thin), "no further than touching: " + moved);
         // And the same for a circle pushed out of a slanted thin polygon.
         Circle ball = new Circle(1_000_000, 1_000_000, 5);
-        Polygon slab = Polygon.rotatedRect(1_000_004, 1_000_000, 1, 40, 0.001f);
+        Polygon slab = Polygon.of(Rect.centered(1_000_004, 1_000_000, 1, 40)).rotated(0.001f, 1_000_004, 1_000_000);
         Circle out = Response.separate(ball, slab);
         assertFalse(out.overlaps(slab));
         Contact c = Contact.between(ball, slab);

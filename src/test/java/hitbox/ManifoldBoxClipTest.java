@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -134,7 +136,8 @@ class ManifoldBoxClipTest {
         int kind = r.nextInt(4);
         float angle = kind == 0 ? 0 : kind == 1 ? (float) (r.nextInt(4) * Math.PI / 2 + (r.nextDouble() - 0.5) * 0.007)
                 : (float) (r.nextDouble() * Math.PI);
-        return Polygon.rotatedRect(20 + r.nextInt(120) / 2f, 20 + r.nextInt(120) / 2f, 10 + r.nextInt(61), 10 + r.nextInt(61), angle);
+        float cx = 20 + r.nextInt(120) / 2f, cy = 20 + r.nextInt(120) / 2f;
+        return Polygon.of(Rect.centered(cx, cy, 10 + r.nextInt(61), 10 + r.nextInt(61))).rotated(angle, cx, cy);
     }
 
     /**
@@ -270,8 +273,8 @@ class ManifoldBoxClipTest {
     private static double scale(Shape a, Shape b) {
         double s = 1;
         for (Shape t : new Shape[] {a, b}) {
-            s = Math.max(s, Math.max(Math.max(Math.abs(t.minX()), Math.abs(t.maxX())), Math.max(Math.abs(t.minY()), Math.abs(t.maxY()))));
-            s = Math.max(s, Math.max(t.maxX() - t.minX(), t.maxY() - t.minY()));
+            s = Math.max(s, Math.max(Math.max(Math.abs(Extents.minX(t)), Math.abs(Extents.maxX(t))), Math.max(Math.abs(Extents.minY(t)), Math.abs(Extents.maxY(t)))));
+            s = Math.max(s, Math.max(Extents.maxX(t) - Extents.minX(t), Extents.maxY(t) - Extents.minY(t)));
         }
         return s;
     }

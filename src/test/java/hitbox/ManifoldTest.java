@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -58,7 +60,7 @@ class ManifoldTest {
     @Test
     void rotatedBoxOnItsCorner_onePointAtTheCorner() {
         float h = 5 * (float) Math.sqrt(2);
-        Polygon diamond = Polygon.rotatedRect(10, 1 - h, 10, 10, (float) Math.PI / 4);
+        Polygon diamond = Polygon.of(Rect.centered(10, 1 - h, 10, 10)).rotated((float) Math.PI / 4, 10, 1 - h);
         Rect floor = new Rect(0, 0, 20, 10);
         // The corner is the vertex with the largest y.
         int low = 0;
@@ -277,7 +279,7 @@ class ManifoldTest {
     private static double scale(Shape a, Shape b) {
         double s = 1;
         for (Shape t : new Shape[] {a, b}) {
-            s = Math.max(s, Math.max(Math.max(Math.abs(t.minX()), Math.abs(t.maxX())), Math.max(Math.abs(t.minY()), Math.abs(t.maxY()))));
+            s = Math.max(s, Math.max(Math.max(Math.abs(Extents.minX(t)), Math.abs(Extents.maxX(t))), Math.max(Math.abs(Extents.minY(t)), Math.abs(Extents.maxY(t)))));
         }
         return s;
     }
@@ -342,7 +344,7 @@ class ManifoldTest {
             case 0 -> new Circle(x, y, s / 2);
             case 1, 2 -> new Rect(x, y, s, whole ? 2 + rnd.nextInt(12) : 2 + 12 * rnd.nextFloat());
             case 3 -> Polygon.regular(x, y, s / 2, 3 + rnd.nextInt(6), angle);
-            case 4 -> Polygon.rotatedRect(x, y, s, 1 + rnd.nextInt(10), angle);
+            case 4 -> Polygon.of(Rect.centered(x, y, s, 1 + rnd.nextInt(10))).rotated(angle, x, y);
             case 5 -> new Ellipse(x, y, s / 2, 1 + 5 * rnd.nextFloat(), rnd.nextBoolean() ? 0 : angle);
             case 6 -> {
                 float len = rnd.nextFloat() * s;

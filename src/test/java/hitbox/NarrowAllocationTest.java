@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.lang.management.ManagementFactory;
@@ -102,7 +104,7 @@ class NarrowAllocationTest {
     /** Each kind about 20 px across, centred on (cx, cy), turned at random. */
     private static final Maker[] KINDS = {
         (rnd, cx, cy) -> Polygon.regular(cx, cy, 10, 8, rnd.nextFloat() * 6.28f),
-        (rnd, cx, cy) -> Polygon.rotatedRect(cx, cy, 20, 12, rnd.nextFloat() * 6.28f),
+        (rnd, cx, cy) -> Polygon.of(Rect.centered(cx, cy, 20, 12)).rotated(rnd.nextFloat() * 6.28f, cx, cy),
         (rnd, cx, cy) -> new Circle(cx, cy, 8 + rnd.nextInt(4)),
         (rnd, cx, cy) -> {
             float a = rnd.nextFloat() * 6.28f, c = (float) Math.cos(a) * 6, s = (float) Math.sin(a) * 6;
@@ -248,11 +250,11 @@ class NarrowAllocationTest {
     }
 
     private static float cx(Shape s) {
-        return (float) ((s.minX() + s.maxX()) / 2);
+        return (float) ((Extents.minX(s) + Extents.maxX(s)) / 2);
     }
 
     private static float cy(Shape s) {
-        return (float) ((s.minY() + s.maxY()) / 2);
+        return (float) ((Extents.minY(s) + Extents.maxY(s)) / 2);
     }
 
     private static Hit turning(Shape[][] s, float[][] v, int i) {

@@ -162,20 +162,23 @@ class PolygonTest {
     }
 
     @Test
-    void triangle_isOfWithThreeCorners() {
-        assertEquals(Polygon.of(0, 0, 10, 0, 0, 10), Polygon.triangle(0, 0, 10, 0, 0, 10));
-        assertThrows(IllegalArgumentException.class, () -> Polygon.triangle(0, 0, 5, 5, 10, 10));
+    void of_threeCorners_isATriangle() {
+        Polygon t = Polygon.of(0, 0, 10, 0, 0, 10);
+        assertEquals(3, t.size());
+        assertEquals(50, t.area());
+        assertArrayEquals(new float[] {0, 0, 10, 0, 0, 10}, t.coordinates());
+        assertThrows(IllegalArgumentException.class, () -> Polygon.of(0, 0, 5, 5, 10, 10));
     }
 
     @Test
-    void rotatedRect_atAngleZeroIsTheCentredRect() {
-        assertArrayEquals(new float[] {0, 3, 10, 3, 10, 7, 0, 7}, Polygon.rotatedRect(5, 5, 10, 4, 0).coordinates());
+    void turnedRect_atAngleZeroIsTheCentredRect() {
+        assertArrayEquals(new float[] {0, 3, 10, 3, 10, 7, 0, 7}, Polygon.of(Rect.centered(5, 5, 10, 4)).rotated(0, 5, 5).coordinates());
     }
 
     @Test
-    void rotatedRect_turnsClockwiseOnScreenLikeProcessing() {
+    void turnedRect_turnsClockwiseOnScreenLikeProcessing() {
         // a quarter turn takes the top-left corner (-5, -2) from the centre to (2, -5)
-        Polygon p = Polygon.rotatedRect(0, 0, 10, 4, (float) (Math.PI / 2));
+        Polygon p = Polygon.of(Rect.centered(0, 0, 10, 4)).rotated((float) (Math.PI / 2), 0, 0);
         assertEquals(2, p.x(0), 1e-5);
         assertEquals(-5, p.y(0), 1e-5);
         assertEquals(40, p.area(), 1e-3);
@@ -184,18 +187,18 @@ class PolygonTest {
     }
 
     @Test
-    void rotatedRect_refusesBadSizes() {
-        assertEquals("width w must be > 0, was 0.0",
-                assertThrows(IllegalArgumentException.class, () -> Polygon.rotatedRect(0, 0, 0, 4, 1)).getMessage());
-        assertEquals("height h must be > 0, was -1.0",
-                assertThrows(IllegalArgumentException.class, () -> Polygon.rotatedRect(0, 0, 4, -1, 1)).getMessage());
+    void turnedRect_refusesBadSizes() {
+        assertEquals("a polygon needs area, but the rectangle's width and height are 0.0 and 4.0 (both must be > 0)",
+                assertThrows(IllegalArgumentException.class, () -> Polygon.of(Rect.centered(0, 0, 0, 4)).rotated(1, 0, 0)).getMessage());
+        assertEquals("height h must be >= 0, was -1.0",
+                assertThrows(IllegalArgumentException.class, () -> Polygon.of(Rect.centered(0, 0, 4, -1)).rotated(1, 0, 0)).getMessage());
         assertEquals("angle must be a finite number, was NaN",
-                assertThrows(IllegalArgumentException.class, () -> Polygon.rotatedRect(0, 0, 4, 4, Float.NaN)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> Polygon.of(Rect.centered(0, 0, 4, 4)).rotated(Float.NaN, 0, 0)).getMessage());
     }
 
     @Test
     void regular_putsTheFirstCornerToTheRight() {
-        Polygon square = Polygon.regular(0, 0, 10, 4);
+        Polygon square = Polygon.regular(0, 0, 10, 4, 0);
         assertEquals(4, square.size());
         assertEquals(10, square.x(0), 1e-5);
         assertEquals(0, square.y(0), 1e-5);
@@ -206,17 +209,17 @@ class PolygonTest {
         Polygon turned = Polygon.regular(0, 0, 10, 4, (float) (Math.PI / 4));
         assertEquals(10 * Math.cos(Math.PI / 4), turned.x(0), 1e-5);
         assertEquals(10 * Math.sin(Math.PI / 4), turned.y(0), 1e-5);
-        assertEquals(64, Polygon.regular(100, 100, 50, 64).size());
+        assertEquals(64, Polygon.regular(100, 100, 50, 64, 0).size());
     }
 
     @Test
     void regular_refusesBadArguments() {
         assertEquals("sides must be from 3 to 4096, was 2",
-                assertThrows(IllegalArgumentException.class, () -> Polygon.regular(0, 0, 10, 2)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> Polygon.regular(0, 0, 10, 2, 0)).getMessage());
         assertEquals("radius must be > 0, was 0.0",
-                assertThrows(IllegalArgumentException.class, () -> Polygon.regular(0, 0, 0, 5)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> Polygon.regular(0, 0, 0, 5, 0)).getMessage());
         assertEquals("cx must be a finite number, was NaN",
-                assertThrows(IllegalArgumentException.class, () -> Polygon.regular(Float.NaN, 0, 10, 5)).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> Polygon.regular(Float.NaN, 0, 10, 5, 0)).getMessage());
     }
 
     // ---- queries ----
@@ -251,7 +254,7 @@ class PolygonTest {
     @Test
     void edgesAndVertices() {
         Polygon p = Polygon.of(TestShapes.SQUARE);
-        assertEquals(4, p.edgeCount());
+        assertEquals(4, p.size());
         assertEquals(new Segment(0, 0, 10, 0), p.edge(0));
         assertEquals(new Segment(0, 10, 0, 0), p.edge(3));
         assertEquals(10, p.x(2));

@@ -23,7 +23,7 @@ class ResponseSeparateTest {
         Arbitrary<Float> angle = Arbitraries.floats().between(0, 6.3f);
         Arbitrary<Shape> circles = Combinators.combine(c, c, size).as(Circle::new);
         Arbitrary<Shape> rects = Combinators.combine(c, c, size, size).as(Rect::new);
-        Arbitrary<Shape> turned = Combinators.combine(c, c, size, size, angle).as(Polygon::rotatedRect);
+        Arbitrary<Shape> turned = Combinators.combine(c, c, size, size, angle).as((x, y, w, h, a) -> Polygon.of(Rect.centered(x, y, w, h)).rotated(a, x, y));
         return Arbitraries.oneOf(circles, rects, turned);
     }
 

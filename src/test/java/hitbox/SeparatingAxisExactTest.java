@@ -169,8 +169,8 @@ class SeparatingAxisExactTest {
         for (int k = 0; k < 400; k++) {
             float c = 50 + k % 7, d = 50 + k / 7 % 5;
             Shape a = k % 2 == 0 ? Polygon.regular(c, d, 10 + k % 3, 4, (float) (Math.PI / 4))
-                    : Polygon.regular(c, d, 10 + k % 3, 8);
-            Shape b = k % 3 == 0 ? new Rect(48, 48, 8 + k % 4, 8) : Polygon.regular(50, 50, 12, k % 2 == 0 ? 8 : 4);
+                    : Polygon.regular(c, d, 10 + k % 3, 8, 0);
+            Shape b = k % 3 == 0 ? new Rect(48, 48, 8 + k % 4, 8) : Polygon.regular(50, 50, 12, k % 2 == 0 ? 8 : 4, 0);
             check(a, b, false, true, "case " + k + ": " + a + " and " + b);
         }
     }

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -106,7 +108,7 @@ class SeparationOracleTest {
     static double scale(Shape a, Shape b) {
         double m = 1;
         for (Shape s : new Shape[] {a, b}) {
-            m = Math.max(m, Math.max(Math.max(Math.abs(s.minX()), Math.abs(s.maxX())), Math.max(Math.abs(s.minY()), Math.abs(s.maxY()))));
+            m = Math.max(m, Math.max(Math.max(Math.abs(Extents.minX(s)), Math.abs(Extents.maxX(s))), Math.max(Math.abs(Extents.minY(s)), Math.abs(Extents.maxY(s)))));
         }
         return m;
     }

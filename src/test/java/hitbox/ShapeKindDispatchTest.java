@@ -102,8 +102,8 @@ class ShapeKindDispatchTest {
             tests.add(each(name, "bounds and Bounds' extents", s -> {
                 Rect b = s.bounds();
                 assertTrue(b.x() <= -2 && b.y() <= -2 && b.right() >= 2 && b.bottom() >= 2 || !ShapeKind.of(s).hasArea(), b.toString());
-                assertTrue(b.x() <= s.minX() && s.minX() <= s.maxX() && s.maxX() <= (double) b.x() + b.w());
-                assertTrue(b.y() <= s.minY() && s.minY() <= s.maxY() && s.maxY() <= (double) b.y() + b.h());
+                assertTrue(b.x() <= Extents.minX(s) && Extents.minX(s) <= Extents.maxX(s) && Extents.maxX(s) <= (double) b.x() + b.w());
+                assertTrue(b.y() <= Extents.minY(s) && Extents.minY(s) <= Extents.maxY(s) && Extents.maxY(s) <= (double) b.y() + b.h());
             }));
             tests.add(each(name, "translated", s -> {
                 Shape moved = s.translated(100, -50);
@@ -138,8 +138,8 @@ class ShapeKindDispatchTest {
             }));
             tests.add(each(name, "Supports.support", s -> {
                 Rect b = s.bounds();
-                assertEquals(s.maxX(), Supports.support(s, 1, 0), 1e-3 * Math.max(1, b.w()));
-                assertEquals(-s.minY(), Supports.support(s, 0, -1), 1e-3 * Math.max(1, b.h()));
+                assertEquals(Extents.maxX(s), Supports.support(s, 1, 0), 1e-3 * Math.max(1, b.w()));
+                assertEquals(-Extents.minY(s), Supports.support(s, 0, -1), 1e-3 * Math.max(1, b.h()));
             }));
             tests.add(each(name, "ConvexSweep.pieces", s -> assertTrue(!ConvexSweep.pieces(s).isEmpty())));
             tests.add(each(name, "Edges.crossed", s -> {
@@ -239,7 +239,7 @@ class ShapeKindDispatchTest {
                     Separation s = a.separation(far), back = far.separation(a);
                     assertNotNull(s, "far apart");
                     assertNotNull(back, "far apart, the other way round");
-                    double gap = far.minX() - a.maxX();
+                    double gap = Extents.minX(far) - Extents.maxX(a);
                     assertTrue(s.distance() >= gap - 1e-3 && s.distance() < 500, "distance " + s.distance() + ", boxes " + gap + " apart");
                     assertEquals(s.distance(), back.distance(), 1e-4 * s.distance());
                     assertEquals(s.distance(), Math.hypot(s.bx() - s.ax(), s.by() - s.ay()), 1e-3);

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -62,7 +64,7 @@ class SweepCurvedTest {
         if (t == 0) {
             // Touching at the start and moving in (Hit's promise: t = 0): the mover overlaps
             // once it has moved by a float step of its largest coordinate.
-            float m = (float) Math.max(Math.max(Math.abs(mover.minX()), Math.abs(mover.maxX())), Math.max(Math.abs(mover.minY()), Math.abs(mover.maxY())));
+            float m = (float) Math.max(Math.max(Math.abs(Extents.minX(mover)), Math.abs(Extents.maxX(mover))), Math.max(Math.abs(Extents.minY(mover)), Math.abs(Extents.maxY(mover))));
             float step = 2 * Math.ulp(m) / Math.max(Math.abs(vx), Math.abs(vy));
             assertTrue(moved(mover, step, vx, vy).overlaps(obstacle), "t = 0, but not touching and moving in, " + where);
         } else {

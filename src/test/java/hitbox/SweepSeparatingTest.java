@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -190,8 +192,8 @@ class SweepSeparatingTest {
      */
     private static boolean overlapsAfterAStep(Pair p, float vx, float vy) {
         Shape m0 = p.mover;
-        float big = (float) Math.max(Math.max(Math.abs(m0.minX()), Math.abs(m0.maxX())),
-                Math.max(Math.abs(m0.minY()), Math.abs(m0.maxY())));
+        float big = (float) Math.max(Math.max(Math.abs(Extents.minX(m0)), Math.abs(Extents.maxX(m0))),
+                Math.max(Math.abs(Extents.minY(m0)), Math.abs(Extents.maxY(m0))));
         float t = Math.nextDown(Math.ulp(big) / Math.max(Math.abs(vx), Math.abs(vy)));
         Shape m = m0.translated(t * vx, t * vy);
         double wx = (double) t * vx, wy = (double) t * vy;  // exact products
@@ -355,7 +357,7 @@ class SweepSeparatingTest {
         if (approximate(mover) || approximate(obstacle)) {
             // A turned ellipse, in double: a margin well above its rounding (and its own
             // overlap test's, about 1e-12 of its size).
-            double size = 1 + Math.abs(mover.minX()) + Math.abs(mover.minY()) + Math.abs(obstacle.minX()) + Math.abs(obstacle.minY());
+            double size = 1 + Math.abs(Extents.minX(mover)) + Math.abs(Extents.minY(mover)) + Math.abs(Extents.minX(obstacle)) + Math.abs(Extents.minY(obstacle));
             return gap.doubleValue() > 1e-10 * size * Math.hypot(dx, dy);
         }
         return gap.compareTo(TIE.negate()) > 0;

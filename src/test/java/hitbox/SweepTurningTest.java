@@ -19,7 +19,7 @@ class SweepTurningTest {
 
     @Test
     void spinningBlade_hitsWhatItsTipSweeps_whereTheStraightSweepMisses() {
-        Polygon blade = Polygon.rotatedRect(200, 200, 160, 4, 0);
+        Polygon blade = Polygon.of(Rect.centered(200, 200, 160, 4)).rotated(0, 200, 200);
         Rect post = new Rect(241, 241, 2, 2); // at 45 degrees, 58 px from the hub
         float turn = (float) (Math.PI / 2);
         assertFalse(blade.overlaps(post), "clear at the start");
@@ -36,7 +36,7 @@ class SweepTurningTest {
 
     @Test
     void thinWall_atTheTip_againstEveryShapeKind() {
-        Polygon blade = Polygon.rotatedRect(100, 100, 120, 2, 0);
+        Polygon blade = Polygon.of(Rect.centered(100, 100, 120, 2)).rotated(0, 100, 100);
         float turn = (float) Math.PI;
         Shape[] walls = {new Segment(100, 150, 100, 170), new Rect(99.5f, 150, 1, 20), new Circle(100, 155, 0.5f),
                 new Ellipse(100, 155, 0.5f, 3), new Capsule(100, 150, 100, 158, 0.5f), Polygon.of(99.5f, 150, 100.5f, 150, 100, 170)};
@@ -50,7 +50,7 @@ class SweepTurningTest {
 
     @Test
     void touchingAndTurningAway_isNoHit_turningBackIsOne() {
-        Polygon blade = Polygon.rotatedRect(200, 200, 160, 4, 0);
+        Polygon blade = Polygon.of(Rect.centered(200, 200, 160, 4)).rotated(0, 200, 200);
         Rect post = new Rect(241, 241, 2, 2);
         float turn = (float) (Math.PI / 2);
         Hit hit = Sweep.turningTimeOfImpact(blade, 200, 200, 0, 0, turn, post);
@@ -63,7 +63,7 @@ class SweepTurningTest {
 
     @Test
     void startsOverlapping_andBadArguments() {
-        Polygon blade = Polygon.rotatedRect(100, 100, 120, 2, 0);
+        Polygon blade = Polygon.of(Rect.centered(100, 100, 120, 2)).rotated(0, 100, 100);
         assertTrue(Sweep.turningTimeOfImpact(blade, 100, 100, 0, 0, 1, new Circle(100, 100, 3)).alreadyOverlapping());
         assertThrows(IllegalArgumentException.class, () -> Sweep.turningTimeOfImpact(blade, 100, 100, 0, 0, Float.NaN, new Circle(0, 0, 1)));
         assertThrows(IllegalArgumentException.class, () -> Sweep.turningTimeOfImpact(
@@ -79,7 +79,7 @@ class SweepTurningTest {
         for (int i = 0; i < 300; i++) {
             float cx = Sampled.coord(rnd), cy = Sampled.coord(rnd);
             Polygon mover = rnd.nextBoolean()
-                    ? Polygon.rotatedRect(cx, cy, 10 + rnd.nextInt(60), 1 + rnd.nextInt(4), rnd.nextFloat() * 3)
+                    ? Polygon.of(Rect.centered(cx, cy, 10 + rnd.nextInt(60), 1 + rnd.nextInt(4))).rotated(rnd.nextFloat() * 3, cx, cy)
                     : Polygon.of(cx, cy, cx + 20 + rnd.nextInt(20), cy + rnd.nextInt(8), cx + rnd.nextInt(8), cy + 15 + rnd.nextInt(20));
             Vec c = mover.centroid();
             float vx = rnd.nextInt(120) - 60, vy = rnd.nextInt(120) - 60, turn = (rnd.nextFloat() - 0.5f) * 12;

@@ -1,5 +1,6 @@
 package hitbox;
 
+import hitbox.internal.Extents;
 import hitbox.internal.Transforms;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -71,10 +72,10 @@ class TransformTest {
     static Tally oracle(Shape s, Transform t, Shape image, int steps) {
         Transform back = t.inverse();
         Rect box = image.bounds();
-        double size = Math.max(s.maxX() - s.minX(), s.maxY() - s.minY());
-        double big = Math.max(Math.max(Math.abs(image.minX()), Math.abs(image.maxX())),
-                Math.max(Math.abs(image.minY()), Math.abs(image.maxY())));
-        double bigS = Math.max(Math.max(Math.abs(s.minX()), Math.abs(s.maxX())), Math.max(Math.abs(s.minY()), Math.abs(s.maxY())));
+        double size = Math.max(Extents.maxX(s) - Extents.minX(s), Extents.maxY(s) - Extents.minY(s));
+        double big = Math.max(Math.max(Math.abs(Extents.minX(image)), Math.abs(Extents.maxX(image))),
+                Math.max(Math.abs(Extents.minY(image)), Math.abs(Extents.maxY(image))));
+        double bigS = Math.max(Math.max(Math.abs(Extents.minX(s)), Math.abs(Extents.maxX(s))), Math.max(Math.abs(Extents.minY(s)), Math.abs(Extents.maxY(s))));
         double stretch = Math.max(Math.hypot(back.m00(), back.m10()), Math.hypot(back.m01(), back.m11()));
         // the margin in the shape's frame: a thousandth of its size, and the rounding of the
         // image's floats and of the way back, with room to spare

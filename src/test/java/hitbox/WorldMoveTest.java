@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -277,7 +279,7 @@ class WorldMoveTest {
             for (int f = 0; f < 80; f++) {
                 w.move(b, -5, 2);
             }
-            assertEquals(16, b.shape().minX(), 1e-3, "stopped at the wall");
+            assertEquals(16, Extents.minX(b.shape()), 1e-3, "stopped at the wall");
             for (int f = 0; f < 30; f++) {
                 float before = b.pivotY();
                 w.move(b, -2, -3.1f);  // up along the wall, pressing left
@@ -336,11 +338,11 @@ class WorldMoveTest {
         b.turnTo((float) (Math.PI / 2));
         Shape s = b.shape();
         assertTrue(s instanceof Polygon);
-        assertEquals(90, s.minX(), 1e-3);
-        assertEquals(110, s.maxX(), 1e-3);
-        assertEquals(30, s.minY(), 1e-3);
-        assertEquals(70, s.maxY(), 1e-3);
-        assertTrue(b.bounds().x() <= s.minX() && b.bounds().x() + b.bounds().w() >= s.maxX());
+        assertEquals(90, Extents.minX(s), 1e-3);
+        assertEquals(110, Extents.maxX(s), 1e-3);
+        assertEquals(30, Extents.minY(s), 1e-3);
+        assertEquals(70, Extents.maxY(s), 1e-3);
+        assertTrue(b.bounds().x() <= Extents.minX(s) && b.bounds().x() + b.bounds().w() >= Extents.maxX(s));
         // Clockwise on screen: the local point (20, 0) goes to (100, 70) after a quarter turn.
         assertTrue(s.contains(100, 68));
         assertFalse(s.contains(119, 50));

@@ -1,5 +1,7 @@
 package hitbox;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -71,8 +73,8 @@ class WorldPropertiesTest {
                 }
             }
             Rect box = m.bounds();
-            assertTrue(box.x() <= end.minX() && box.y() <= end.minY() && box.x() + (double) box.w() >= end.maxX()
-                    && box.y() + (double) box.h() >= end.maxY(), what + ": box " + box);
+            assertTrue(box.x() <= Extents.minX(end) && box.y() <= Extents.minY(end) && box.x() + (double) box.w() >= Extents.maxX(end)
+                    && box.y() + (double) box.h() >= Extents.maxY(end), what + ": box " + box);
         }
     }
 
@@ -96,8 +98,8 @@ class WorldPropertiesTest {
                 b.turnTo((float) (rnd.nextDouble() * 20 - 10));
                 Shape s = b.shape();
                 Rect box = b.bounds();
-                assertTrue(box.x() <= s.minX() && box.y() <= s.minY() && box.x() + (double) box.w() >= s.maxX()
-                        && box.y() + (double) box.h() >= s.maxY(), "box " + box + " of " + s);
+                assertTrue(box.x() <= Extents.minX(s) && box.y() <= Extents.minY(s) && box.x() + (double) box.w() >= Extents.maxX(s)
+                        && box.y() + (double) box.h() >= Extents.maxY(s), "box " + box + " of " + s);
             }
         }
     }
@@ -113,8 +115,8 @@ class WorldPropertiesTest {
             b.turnTo((float) (rnd.nextDouble() * 20 - 10));
             Shape turned = b.shape();
             Rect box = b.bounds();
-            assertTrue(box.x() <= turned.minX() && box.y() <= turned.minY() && box.x() + (double) box.w() >= turned.maxX()
-                    && box.y() + (double) box.h() >= turned.maxY(), "box " + box + " of " + turned);
+            assertTrue(box.x() <= Extents.minX(turned) && box.y() <= Extents.minY(turned) && box.x() + (double) box.w() >= Extents.maxX(turned)
+                    && box.y() + (double) box.h() >= Extents.maxY(turned), "box " + box + " of " + turned);
             b.moveTo(x, y).turnTo(a);
             assertEquals(before, b.shape());
         }

@@ -10,6 +10,7 @@ import org.junit.jupiter.api.Test;
 
 import hitbox.Ellipse;
 import hitbox.Polygon;
+import hitbox.Rect;
 import hitbox.processing.Palette;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
@@ -34,11 +35,11 @@ class B01_AsDrawnTest {
     void thePaddle_isTestedWhereItIsTurned() {
         // Past the unturned rect's bottom edge (y 170..230), on the turned paddle's far end.
         B01_AsDrawn on = mouseAt(224, 237).sketch();
-        assertTrue(Polygon.rotatedRect(170, 200, 160, 60, on.angle).contains(224, 237), "the test's own point");
+        assertTrue(Polygon.of(Rect.centered(170, 200, 160, 60)).rotated(on.angle, 170, 200).contains(224, 237), "the test's own point");
         assertTrue(on.overPaddle);
         // Inside the unturned rect, but off the turned paddle.
         B01_AsDrawn off = mouseAt(240, 175).sketch();
-        assertFalse(Polygon.rotatedRect(170, 200, 160, 60, off.angle).contains(240, 175));
+        assertFalse(Polygon.of(Rect.centered(170, 200, 160, 60)).rotated(off.angle, 170, 200).contains(240, 175));
         assertFalse(off.overPaddle);
     }
 

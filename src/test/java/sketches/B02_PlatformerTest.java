@@ -1,5 +1,7 @@
 package sketches;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -96,7 +98,7 @@ class B02_PlatformerTest {
                 through[0] = s.frameCount;
                 assertTrue(s.vy < 0, "it is inside the platform on the way up");
             }
-            if (through[0] > 0 && stood[0] < 0 && s.player.onGround() && s.player.body().shape().maxY() == low.shape().minY()) {
+            if (through[0] > 0 && stood[0] < 0 && s.player.onGround() && Extents.maxY(s.player.body().shape()) == Extents.minY(low.shape())) {
                 stood[0] = s.frameCount;
             }
         }).run();
@@ -109,8 +111,8 @@ class B02_PlatformerTest {
         int[] carried = {0};
         float[] last = new float[3];   // player x, lift x, stood on it
         SketchRun.of(new B02_Platformer()).frames(400).everyFrame(s -> {
-            boolean onLift = s.player.onGround() && s.player.body().shape().maxY() == s.lift.shape().minY()
-                    && s.player.body().shape().maxX() > s.lift.shape().minX() && s.player.body().shape().minX() < s.lift.shape().maxX();
+            boolean onLift = s.player.onGround() && Extents.maxY(s.player.body().shape()) == Extents.minY(s.lift.shape())
+                    && Extents.maxX(s.player.body().shape()) > Extents.minX(s.lift.shape()) && Extents.minX(s.player.body().shape()) < Extents.maxX(s.lift.shape());
             if (onLift && last[2] == 1 && !s.left && !s.right) {
                 assertEquals(s.lift.pivotX() - last[1], s.player.body().pivotX() - last[0], 1e-3f,
                         "frame " + s.frameCount + ": standing still on it, the player moves as the platform does");
@@ -138,12 +140,12 @@ class B02_PlatformerTest {
             }
             assertFalse(s.demo, "an arrow key ends the demo");
             Shape p = s.player.body().shape();
-            boolean grounded = s.player.onGround() && p.maxX() < 598;
+            boolean grounded = s.player.onGround() && Extents.maxX(p) < 598;
             if (grounded && !Float.isNaN(last[0])) {
-                assertEquals(3, s.player.body().pivotX() - last[0], 1e-3f, "frame " + s.frameCount + " at x " + p.minX()
+                assertEquals(3, s.player.body().pivotX() - last[0], 1e-3f, "frame " + s.frameCount + " at x " + Extents.minX(p)
                         + ": three pixels every frame, no stop at a seam, a slope or a step");
                 steps[0]++;
-                onFloor[0] += p.maxY() == 360 ? 1 : 0;
+                onFloor[0] += Extents.maxY(p) == 360 ? 1 : 0;
             }
             last[0] = grounded ? s.player.body().pivotX() : Float.NaN;
         }).run();
@@ -167,7 +169,7 @@ class B02_PlatformerTest {
             if (s.player.onGround()) {
                 assertEquals(s.slope, s.player.ground(), "frame " + s.frameCount + ": it stands on the slope");
                 // Its lower left corner rests on the slope's line, within a skin.
-                assertEquals(slopeY(p.minX()), p.maxY(), 0.1, "frame " + s.frameCount + ": the corner on the slope");
+                assertEquals(slopeY(Extents.minX(p)), Extents.maxY(p), 0.1, "frame " + s.frameCount + ": the corner on the slope");
                 if (!Float.isNaN(last[0])) {
                     assertEquals(last[0], s.player.body().pivotX(), "frame " + s.frameCount + ": no drift sideways");
                     assertEquals(last[1], s.player.body().pivotY(), "frame " + s.frameCount + ": nor down the slope");
@@ -180,10 +182,10 @@ class B02_PlatformerTest {
         assertTrue(still[0] > 90, "frames standing still on the slope: " + still[0]);
         // And what is drawn: the player in the same pixels at frame 40 and at the end, over the slope.
         Shape p = r.sketch().player.body().shape();
-        assertEquals(0, SketchPixels.differing(r.frame(40), r.lastFrame(), (int) p.minX() - 2, (int) p.minY() - 2,
-                (int) p.maxX() + 2, (int) p.maxY() + 2), "the player drawn in the same place");
-        SketchPixels.assertColour(r.lastFrame(), (int) p.minX() + 9, (int) p.minY() + 13, Palette.PLAYER, "the player");
-        SketchPixels.assertColour(r.lastFrame(), (int) p.minX() + 2, (int) p.maxY() + 3, Palette.OBSTACLE, "the slope under it");
+        assertEquals(0, SketchPixels.differing(r.frame(40), r.lastFrame(), (int) Extents.minX(p) - 2, (int) Extents.minY(p) - 2,
+                (int) Extents.maxX(p) + 2, (int) Extents.maxY(p) + 2), "the player drawn in the same place");
+        SketchPixels.assertColour(r.lastFrame(), (int) Extents.minX(p) + 9, (int) Extents.minY(p) + 13, Palette.PLAYER, "the player");
+        SketchPixels.assertColour(r.lastFrame(), (int) Extents.minX(p) + 2, (int) Extents.maxY(p) + 3, Palette.OBSTACLE, "the slope under it");
     }
 
     @Test
@@ -195,13 +197,13 @@ class B02_PlatformerTest {
         int[] up = {0};
         SketchRun.Result<B02_Platformer> r = SketchRun.of(new B02_Platformer()).script(script).everyFrame(s -> {
             Shape p = s.player.body().shape();
-            boolean onSlope = s.player.onGround() && s.player.ground() == s.slope && p.minX() > 1;
+            boolean onSlope = s.player.onGround() && s.player.ground() == s.slope && Extents.minX(p) > 1;
             if (onSlope && !Float.isNaN(last[0]) && last[2] != 0) {
                 float dx = s.player.body().pivotX() - last[0];
                 float dy = s.player.body().pivotY() - last[1];
                 assertEquals(3 * last[2], dx, 1e-3f, "frame " + s.frameCount + ": three pixels sideways");
                 assertEquals(dx * 50 / 130, dy, 0.05f, "frame " + s.frameCount + ": along the slope");
-                assertEquals(slopeY(p.minX()), p.maxY(), 0.1, "frame " + s.frameCount + ": the corner on the slope");
+                assertEquals(slopeY(Extents.minX(p)), Extents.maxY(p), 0.1, "frame " + s.frameCount + ": the corner on the slope");
                 down[0] += last[2] > 0 ? 1 : 0;
                 up[0] += last[2] < 0 ? 1 : 0;
             }
@@ -212,9 +214,9 @@ class B02_PlatformerTest {
         assertTrue(down[0] > 20 && up[0] > 25, "frames walking down the slope: " + down[0] + ", up it: " + up[0]);
         B02_Platformer s = r.sketch();
         Shape p = s.player.body().shape();
-        assertTrue(p.maxY() < 330, "up the slope, well above the floor: " + p.maxY());
-        SketchPixels.assertColour(r.lastFrame(), (int) p.minX() + 9, (int) p.minY() + 13, Palette.PLAYER, "the player");
-        SketchPixels.assertColour(r.lastFrame(), (int) p.minX() + 2, (int) p.maxY() + 3, Palette.OBSTACLE, "the slope under it");
+        assertTrue(Extents.maxY(p) < 330, "up the slope, well above the floor: " + Extents.maxY(p));
+        SketchPixels.assertColour(r.lastFrame(), (int) Extents.minX(p) + 9, (int) Extents.minY(p) + 13, Palette.PLAYER, "the player");
+        SketchPixels.assertColour(r.lastFrame(), (int) Extents.minX(p) + 2, (int) Extents.maxY(p) + 3, Palette.OBSTACLE, "the slope under it");
     }
 
     @Test
@@ -230,15 +232,15 @@ class B02_PlatformerTest {
             }
             int step = s.tiles.indexOf(s.player.ground()) - s.tiles.indexOf(s.slope);
             if (step >= 1) {
-                assertEquals(360 - 10 * step, s.player.body().shape().maxY(), 1e-3f, "frame " + s.frameCount + ": on step " + step);
-                heights.add((double) Math.round(s.player.body().shape().maxY()));
+                assertEquals(360 - 10 * step, Extents.maxY(s.player.body().shape()), 1e-3f, "frame " + s.frameCount + ": on step " + step);
+                heights.add((double) Math.round(Extents.maxY(s.player.body().shape())));
             }
         }).run();
         assertEquals(Set.of(350.0, 340.0, 330.0, 320.0), heights, "it stood on every step");
         Shape p = r.sketch().player.body().shape();
-        assertEquals(320, p.maxY(), 1e-3f, "on the top step");
-        SketchPixels.assertColour(r.lastFrame(), (int) p.minX() + 9, (int) p.minY() + 13, Palette.PLAYER, "the player");
-        SketchPixels.assertColour(r.lastFrame(), (int) p.minX() + 9, (int) p.maxY() + 3, Palette.OBSTACLE, "the top step under it");
+        assertEquals(320, Extents.maxY(p), 1e-3f, "on the top step");
+        SketchPixels.assertColour(r.lastFrame(), (int) Extents.minX(p) + 9, (int) Extents.minY(p) + 13, Palette.PLAYER, "the player");
+        SketchPixels.assertColour(r.lastFrame(), (int) Extents.minX(p) + 9, (int) Extents.maxY(p) + 3, Palette.OBSTACLE, "the top step under it");
     }
 
     @Test

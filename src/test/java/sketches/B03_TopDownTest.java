@@ -1,5 +1,7 @@
 package sketches;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -75,8 +77,8 @@ class B03_TopDownTest {
             // The ship is red for a few frames after a contact, blue otherwise.
             List<Integer> colours = b == s.ship.body() ? List.of(Palette.PLAYER, Palette.HIT)
                     : s.walls.contains(b) ? List.of(Palette.NEUTRAL) : List.of(Palette.OBSTACLE);
-            for (int y = (int) shape.minY() - 3; y <= shape.maxY() + 3; y += 2) {
-                for (int x = (int) shape.minX() - 3; x <= shape.maxX() + 3; x += 2) {
+            for (int y = (int) Extents.minY(shape) - 3; y <= Extents.maxY(shape) + 3; y += 2) {
+                for (int x = (int) Extents.minX(shape) - 3; x <= Extents.maxX(shape) + 3; x += 2) {
                     float px = x + 0.5f, py = y + 0.5f;
                     boolean underText = y >= s.height - 20 || y < 50 && x < 330;   // the hint bar, the label
                     if (x < 0 || y < 0 || x >= s.width || underText || !clearOfOutline(shape, px, py, 2)
@@ -209,10 +211,10 @@ class B03_TopDownTest {
             for (Collision c : s.met) {
                 if (c.other() == rock && met[0] < 0) {
                     met[0] = s.frameCount;
-                    assertTrue(ship.shape().minY() > rock.pivotY(), "it meets the rock's lower half");
+                    assertTrue(Extents.minY(ship.shape()) > rock.pivotY(), "it meets the rock's lower half");
                 }
             }
-            if (met[0] > 0 && past[0] < 0 && ship.shape().maxY() < rock.shape().minY()) {
+            if (met[0] > 0 && past[0] < 0 && Extents.maxY(ship.shape()) < Extents.minY(rock.shape())) {
                 past[0] = s.frameCount;
             }
             if (met[0] > 0 && met[0] < s.frameCount && past[0] < 0) {

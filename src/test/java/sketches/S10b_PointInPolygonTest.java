@@ -111,7 +111,7 @@ class S10b_PointInPolygonTest {
             for (int x = 0; x <= 600; x += 5) {
                 s.px = x;
                 s.py = y;
-                for (int i = 0; i < s.crown.edgeCount(); i++) {
+                for (int i = 0; i < s.crown.size(); i++) {
                     hitbox.Segment e = s.crown.edge(i);
                     boolean expected = Collide.rayCrossesEdge(e.x1(), e.y1(), e.x2(), e.y2(), x, y);
                     assertEquals(expected, s.crosses(e.x1(), e.y1(), e.x2(), e.y2()), "edge " + i + " from (" + x + ", " + y + ")");

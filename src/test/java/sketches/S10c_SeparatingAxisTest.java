@@ -63,7 +63,7 @@ class S10c_SeparatingAxisTest {
         SketchRun.of(new S10c_SeparatingAxis()).script(script).everyFrame(s -> {
             boolean library = Collide.polygonPolygon(s.box.coordinates(), s.mover.coordinates());
             assertEquals(library, s.overlapping, "SAT agrees with the general polygon test");
-            assertEquals(s.box.edgeCount() + s.mover.edgeCount(), s.axes.size(), "one axis per edge");
+            assertEquals(s.box.size() + s.mover.size(), s.axes.size(), "one axis per edge");
             boolean anySeparates = s.axes.stream().anyMatch(SeparatingAxis.Axis::separates);
             assertEquals(!s.overlapping, anySeparates, "some axis separates exactly when apart");
             assertEquals(!s.overlapping, s.separating >= 0, "the highlighted axis");

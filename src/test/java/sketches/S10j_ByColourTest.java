@@ -10,6 +10,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
 import hitbox.Polygon;
+import hitbox.Rect;
 import hitbox.sketchkit.Script;
 import hitbox.sketchkit.SketchRun;
 import processing.core.PImage;
@@ -41,7 +42,7 @@ class S10j_ByColourTest {
             assertEquals(Integer.toHexString(track.get(px, py)), Integer.toHexString(s.under[i]),
                     at + ": wheel " + i + " read the track at (" + px + ", " + py + ")");
         }
-        Polygon car = Polygon.rotatedRect(s.x, s.y, s.carLength, s.carWidth, s.angle);
+        Polygon car = Polygon.of(Rect.centered(s.x, s.y, s.carLength, s.carWidth)).rotated(s.angle, s.x, s.y);
         for (int i = 0; i < 4; i++) {
             int colour = track.get(round(car.x(i)), round(car.y(i)));
             assertTrue(colour != s.WALL, at + ": wheel " + i + " is on the wall");

@@ -18,6 +18,7 @@ import hitbox.Separation;
 import hitbox.Shape;
 import hitbox.Sweep;
 import hitbox.World;
+import hitbox.internal.Extents;
 import hitbox.internal.RawTests;
 import java.util.List;
 
@@ -217,11 +218,11 @@ public final class Vectors {
     private Polygon polygon(float x, float y) {
         switch (below(4)) {
             case 0:
-                return Polygon.triangle(x, y, coord(), coord(), coord(), coord());
+                return Polygon.of(x, y, coord(), coord(), coord(), coord());
             case 1:
                 return Polygon.regular(x, y, size(), 3 + below(6), unit() * 6);
             case 2:
-                return Polygon.rotatedRect(x, y, size(), size(), unit() * 6);
+                return Polygon.of(Rect.centered(x, y, size(), size())).rotated(unit() * 6, x, y);
             default:
                 int n = 3 + below(5);
                 float[] xy = new float[2 * n];
@@ -397,10 +398,10 @@ public final class Vectors {
                     break;
                 default: {
                     Shape a = shape(ka);
-                    put(a.minX());
-                    put(a.minY());
-                    put(a.maxX());
-                    put(a.maxY());
+                    put(Extents.minX(a));
+                    put(Extents.minY(a));
+                    put(Extents.maxX(a));
+                    put(Extents.maxY(a));
                     Rect r = a.bounds();
                     put(r.x());
                     put(r.y());

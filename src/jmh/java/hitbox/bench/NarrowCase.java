@@ -597,8 +597,11 @@ final class NarrowCase {
      * centre, square to the axes in 1 case of 4, else turned by a random angle (so some
      * boxes lie face to face, two contact points, and some corner first).
      */
-    static final Gen BOX = r -> Polygon.rotatedRect(half(r, 200), half(r, 200), 10 + r.nextInt(61), 10 + r.nextInt(61),
-            r.nextInt(4) == 0 ? 0 : (float) (r.nextDouble() * Math.PI));
+    static final Gen BOX = r -> {
+        float cx = half(r, 200), cy = half(r, 200);
+        Rect box = Rect.centered(cx, cy, 10 + r.nextInt(61), 10 + r.nextInt(61));
+        return Polygon.of(box).rotated(r.nextInt(4) == 0 ? 0 : (float) (r.nextDouble() * Math.PI), cx, cy);
+    };
 
     /**
      * The broad phase's test, closed as most broad phases are, so that touching pairs (and a

@@ -45,7 +45,7 @@ public class PolygonMoveBench {
 
     @Setup
     public void setup() {
-        polygon = kind.equals("convex") ? Polygon.regular(300, 200, 150, vertices) : comb((vertices - 2) / 4);
+        polygon = kind.equals("convex") ? Polygon.regular(300, 200, 150, vertices, 0) : comb((vertices - 2) / 4);
         polygon.translated(0.1f, 0.1f); // the concave margin, found once (as a game's first frame does)
     }
 

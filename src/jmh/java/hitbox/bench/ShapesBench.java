@@ -49,11 +49,12 @@ public class ShapesBench {
     Convex[] dynBoxes = new Convex[N + 1];
     final Gjk gjk = new Gjk();
     final ConservativeAdvancement ca = new ConservativeAdvancement();
-    Polygon blade = Polygon.rotatedRect(200, 200, 160, 4, 0);
+    Polygon blade = Polygon.of(Rect.centered(200, 200, 160, 4)).rotated(0, 200, 200);
     Rect post = new Rect(241, 241, 2, 2);
     Convex dynBlade = new Rectangle(160, 4), dynPost = new Rectangle(2, 2);
     Transform bladeT = new Transform(), postT = new Transform();
     Polygon[] octagons = new Polygon[N + 1];
+    hitbox.Shape[] mixed = new hitbox.Shape[N + 1];
     float[] vx = new float[N + 1], vy = new float[N + 1];
 
     @Setup
@@ -95,6 +96,11 @@ public class ShapesBench {
                 xy[2 * k + 1] = y[i] + (float) (b[i] * Math.sin(Math.PI * k / 4));
             }
             octagons[i] = Polygon.of(xy);
+        }
+        for (int i = 0; i <= N; i++) {
+            // every kind in turn: the shape calls' dispatch when a loop sees them all
+            hitbox.Shape[] kinds = {circles[i], boxes[i], octagons[i], capsules[i], ellipses[i], turned[i]};
+            mixed[i] = kinds[i % kinds.length];
         }
         for (int i = 0; i < N; i++) {
             // Towards the next octagon, past its centre: most of them hit.
@@ -233,6 +239,53 @@ public class ShapesBench {
             if (gjk.detect(dynCapsules[i], cT[i], dynCapsules[i + 1], cT[i + 1], p)) {
                 s += p.getDepth();
             }
+        }
+        return s;
+    }
+
+    /** Circle i against circle i + 1 asked of the shapes: {@code Circle.overlaps(Circle)}'s dispatch and fast path. */
+    @Benchmark
+    public int circleCircle_shape() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (circles[i].overlaps(circles[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    /** Box i against box i + 1 asked of the shapes: {@code Rect.overlaps(Rect)}'s dispatch. */
+    @Benchmark
+    public int rectRect_shape() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (boxes[i].overlaps(boxes[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    /** Every kind against the next kind, asked of the shapes: the dispatch when the receiver's kind varies. */
+    @Benchmark
+    public int mixed_shape() {
+        int n = 0;
+        for (int i = 0; i < N; i++) {
+            if (mixed[i].overlaps(mixed[i + 1])) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    /** Every kind's point test and bounding box, asked of the shapes. */
+    @Benchmark
+    public float mixedContainsBounds_shape() {
+        float s = 0;
+        for (int i = 0; i < N; i++) {
+            s += mixed[i].contains(x[i + 1], y[i + 1]) ? 1 : 0;
+            s += mixed[i].bounds().w();
         }
         return s;
     }

@@ -5,6 +5,7 @@ import java.util.Random;
 import hitbox.Circle;
 import hitbox.Ellipse;
 import hitbox.Polygon;
+import hitbox.Rect;
 import hitbox.Segment;
 import hitbox.Shape;
 
@@ -197,7 +198,7 @@ final class WorldScene {
             case ELLIPSE:
                 return new Ellipse(cx, cy, p[i], q[i], a);
             case BOX:
-                return Polygon.rotatedRect(cx, cy, p[i], q[i], a);
+                return Polygon.of(Rect.centered(cx, cy, p[i], q[i])).rotated(a, cx, cy);
             case LINE: {
                 double cos = Math.cos(a), sin = Math.sin(a);
                 double ex = p[i] * cos - q[i] * sin, ey = p[i] * sin + q[i] * cos;

@@ -167,7 +167,7 @@ final class WorldSceneContenders {
 
     /**
      * Hitbox as a box of parts, the way a sketch without a world has to do it: a new shape for
-     * every body every frame (turned rects and polygons through {@code Polygon.rotatedRect} and
+     * every body every frame (turned rects and polygons through {@code Polygon.of(rect).rotated} and
      * {@code Polygon.of}), put into a {@code BroadPhase.grid()}, each pair it reports decided by
      * {@code Shape.overlaps}.
      */

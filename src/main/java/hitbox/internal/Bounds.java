@@ -4,12 +4,28 @@ import hitbox.*;
 
 /**
  * Bounding boxes: the float {@link Rect} that holds a shape's extent in {@code double}
- * ({@link Shape#minX()} and its three companions, which each kind answers itself), rounded
- * outwards. {@link Shape#bounds()} and {@link Hybrid} both read those extents, so the two
- * never disagree.
+ * ({@link Extents}), rounded outwards. {@link Shape#bounds()} and {@link Hybrid} both read
+ * those extents, so the two never disagree.
  */
 public final class Bounds {
     private Bounds() {
+    }
+
+    /**
+     * The box behind {@link Shape#bounds()}, by the shape's kind: a rectangle is its own box,
+     * a polygon keeps its box (made once, with the polygon), every other kind has its four
+     * {@link Extents} rounded outwards.
+     *
+     * @param s the shape, not null
+     * @return its bounding box, never null
+     */
+    public static Rect of(Shape s) {
+        return switch (ShapeKind.of(s)) {
+            case RECT -> (Rect) s;
+            case POLYGON -> HiddenParts.bounds((Polygon) s);
+            case ELLIPSE, CAPSULE, CIRCLE, SEGMENT ->
+                    enclosing(Extents.minX(s), Extents.minY(s), Extents.maxX(s), Extents.maxY(s));
+        };
     }
 
     /**

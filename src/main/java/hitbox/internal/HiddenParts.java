@@ -2,14 +2,15 @@ package hitbox.internal;
 
 import hitbox.Grid;
 import hitbox.Polygon;
+import hitbox.Rect;
 import hitbox.Transform;
 import java.util.function.Supplier;
 
 /**
  * What the kernels read of a {@link Polygon} and a {@link Grid} that the API does not hand
- * out: a polygon's coordinates and corners without a copy, its convex winding and first
- * concave vertex, and a grid's cells. The API classes grant the access once, from their
- * static initialisers (the JDK's {@code SharedSecrets} pattern), so the kernels can live
+ * out: a polygon's coordinates and corners without a copy, its convex winding, first
+ * concave vertex and kept bounding box, and a grid's cells. The API classes grant the
+ * access once, from their static initialisers (the JDK's {@code SharedSecrets} pattern), so the kernels can live
  * apart from the API without those members becoming public.
  *
  * <p>The granted access is read through a static final field, which the JIT treats as a
@@ -44,6 +45,12 @@ public final class HiddenParts {
          * @return its first vertex where the outline bends inwards, or -1 if convex
          */
         int concaveVertex(Polygon p);
+
+        /**
+         * @param p the polygon
+         * @return its bounding box, made once with the polygon
+         */
+        Rect bounds(Polygon p);
 
         /**
          * @param p        the polygon
@@ -152,6 +159,11 @@ public final class HiddenParts {
     /** @param p the polygon @return its first concave vertex, or -1 */
     public static int concaveVertex(Polygon p) {
         return Granted.POLYGONS.concaveVertex(p);
+    }
+
+    /** @param p the polygon @return its bounding box, kept */
+    public static Rect bounds(Polygon p) {
+        return Granted.POLYGONS.bounds(p);
     }
 
     /**

@@ -77,17 +77,17 @@ public final class Manifolds {
         if (ka != kb) {
             return ka > kb;
         }
-        if (a.minX() != b.minX()) {
-            return a.minX() > b.minX();
+        if (Extents.minX(a) != Extents.minX(b)) {
+            return Extents.minX(a) > Extents.minX(b);
         }
-        if (a.minY() != b.minY()) {
-            return a.minY() > b.minY();
+        if (Extents.minY(a) != Extents.minY(b)) {
+            return Extents.minY(a) > Extents.minY(b);
         }
-        if (a.maxX() != b.maxX()) {
-            return a.maxX() > b.maxX();
+        if (Extents.maxX(a) != Extents.maxX(b)) {
+            return Extents.maxX(a) > Extents.maxX(b);
         }
-        if (a.maxY() != b.maxY()) {
-            return a.maxY() > b.maxY();
+        if (Extents.maxY(a) != Extents.maxY(b)) {
+            return Extents.maxY(a) > Extents.maxY(b);
         }
         // Equal shapes come in either order alike (their texts compare equal); only others
         // with the same box are told apart by their texts.
@@ -395,8 +395,9 @@ public final class Manifolds {
 
     /** The larger of s and the shape's largest coordinate or extent. */
     private static double scale(double s, Shape t) {
-        s = Math.max(s, Math.max(Math.max(Math.abs(t.minX()), Math.abs(t.maxX())), Math.max(Math.abs(t.minY()), Math.abs(t.maxY()))));
-        return Math.max(s, Math.max(t.maxX() - t.minX(), t.maxY() - t.minY()));
+        double minX = Extents.minX(t), minY = Extents.minY(t), maxX = Extents.maxX(t), maxY = Extents.maxY(t);
+        s = Math.max(s, Math.max(Math.max(Math.abs(minX), Math.abs(maxX)), Math.max(Math.abs(minY), Math.abs(maxY))));
+        return Math.max(s, Math.max(maxX - minX, maxY - minY));
     }
 
     // ---------------------------------------------------------------- clipping

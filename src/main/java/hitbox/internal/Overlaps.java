@@ -12,9 +12,10 @@ import hitbox.*;
  * other way round, so each unordered pair has exactly one line of code and
  * {@code a.overlaps(b) == b.overlaps(a)} holds by construction.
  *
- * <p>Each kind has its own small method ({@link #circleWith}, say), which its class's
- * {@code overlaps} calls directly: it answers the pairs whose earlier kind it is, and hands
- * the pair swapped straight to an earlier kind's method. Small is the point: one big dispatch
+ * <p>Each kind has its own small method ({@link #circleWith}, say), which
+ * {@link Shape#overlaps} reaches through {@link #test}'s one switch on the receiver's kind
+ * (for a receiver of one kind the JIT keeps only that case): it answers the pairs whose
+ * earlier kind it is, and hands the pair swapped straight to an earlier kind's method. Small is the point: one big dispatch
  * on both shapes was too large for the JIT to inline into a caller's loop (once compiled on
  * its own it is "already compiled into a big method"), which cost a call on every test even
  * where the raw {@code Collide} call inlines whole, up to 1.6x its time; a per-kind method of

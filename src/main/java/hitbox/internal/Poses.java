@@ -32,10 +32,10 @@ public final class Poses {
      */
     public static void extents(Shape home, double px, double py, double cos, double sin, double[] out) {
         if (sin == 0 && cos == 1) {
-            out[0] = home.minX() - px;
-            out[1] = home.minY() - py;
-            out[2] = home.maxX() - px;
-            out[3] = home.maxY() - py;
+            out[0] = Extents.minX(home) - px;
+            out[1] = Extents.minY(home) - py;
+            out[2] = Extents.maxX(home) - px;
+            out[3] = Extents.maxY(home) - py;
             return;
         }
         double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY;

@@ -12,11 +12,12 @@ import hitbox.*;
  * support functions and convex pieces, drawing) switches on the kind with a switch
  * <em>expression</em> that names every constant and has no {@code default}: javac refuses a
  * switch expression that misses a constant, so a new kind of shape does not compile until
- * every operation has a case for it. Operations a shape answers itself ({@code contains} of a
- * point, {@code bounds}, {@code translated}) stay in the shape's own class and need no switch;
- * {@code transformed} and {@code rotated} call their kind's case of {@link Transforms}
- * directly, and {@link Transforms#apply(Shape, Affine)} switches here for a caller that
- * holds a {@link Shape}.
+ * every operation has a case for it. {@link Shape}'s own questions ({@code overlaps},
+ * {@code contains}, {@code bounds}, {@code transformed}) are its {@code default} methods,
+ * each one switch here to its kind's case in a kernel ({@link Overlaps}, {@link Containment},
+ * {@link Bounds}, {@link Transforms}); only {@code translated}, and {@code transformed} and
+ * {@code rotated} where a kind keeps its kind, stay in the shape's own class, to answer with
+ * its own type.
  *
  * <p>The constants' order is the order in which the pair operations are written: a pair is
  * answered by the code of its earlier kind (the later one handed over, swapped if it came

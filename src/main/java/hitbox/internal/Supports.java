@@ -260,8 +260,7 @@ public final class Supports {
         double most = 1;
         for (int k = 0; k < 2; k++) {
             Shape s = k == 0 ? a : b;
-            most = Math.max(most, Math.max(Math.max(Math.abs(s.minX()), Math.abs(s.maxX())),
-                    Math.max(Math.abs(s.minY()), Math.abs(s.maxY()))));
+            most = Math.max(most, Extents.reach(s));
         }
         return most;
     }

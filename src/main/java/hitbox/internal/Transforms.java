@@ -162,7 +162,7 @@ public final class Transforms {
      * when that has no area (a singular transform, or a rectangle of width or height 0).
      */
     public static Shape rect(Rect r, Affine a) {
-        double x0 = r.x(), y0 = r.y(), x1 = r.maxX(), y1 = r.maxY();
+        double x0 = r.x(), y0 = r.y(), x1 = (double) r.x() + r.w(), y1 = (double) r.y() + r.h();
         if (a.keepsAxes()) {
             double ax = a.x(x0, y0), bx = a.x(x1, y1), ay = a.y(x0, y0), by = a.y(x1, y1);
             float left = coordinate("the left edge", Math.min(ax, bx));

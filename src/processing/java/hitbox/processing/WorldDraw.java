@@ -10,6 +10,7 @@ import hitbox.Rect;
 import hitbox.Shape;
 import hitbox.World;
 import hitbox.internal.Supports;
+import hitbox.internal.Extents;
 import processing.core.PConstants;
 import processing.core.PGraphics;
 
@@ -191,7 +192,7 @@ public final class WorldDraw {
             }
             // The foot: on the line along the normal through the middle of the mover's box, as
             // far as the mover reaches that way (the middle of a side for a box met squarely).
-            double cx = (where.minX() + where.maxX()) / 2, cy = (where.minY() + where.maxY()) / 2;
+            double cx = (Extents.minX(where) + Extents.maxX(where)) / 2, cy = (Extents.minY(where) + Extents.maxY(where)) / 2;
             double reach = Supports.support(where, nx, ny) - (cx * nx + cy * ny);
             float fx = (float) (cx + nx * reach), fy = (float) (cy + ny * reach);
             g.strokeWeight(2);

@@ -1,5 +1,7 @@
 package hitbox.sketchkit;
 
+import hitbox.internal.Extents;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -124,26 +126,26 @@ class ReadmeSketchTest {
         SketchRun.of(newPlatformer()).script(script).everyFrame(s -> {
             try {
                 Body p = player(s);
-                double bottom = p.shape().maxY();
+                double bottom = Extents.maxY(p.shape());
                 if (s.frameCount == 79) {
                     landed[0] = bottom;
-                    startX[0] = p.shape().minX();
+                    startX[0] = Extents.minX(p.shape());
                 }
                 if (s.frameCount == 125) {
                     assertEquals(landed[0], bottom, 1e-3, "runs along the floor, at the same height");
-                    assertTrue(p.shape().minX() > startX[0] + 40, "ran right: from " + startX[0] + " to " + p.shape().minX());
+                    assertTrue(Extents.minX(p.shape()) > startX[0] + 40, "ran right: from " + startX[0] + " to " + Extents.minX(p.shape()));
                 }
                 if (s.frameCount > 150 && s.frameCount < 200) {
                     top[0] = Math.min(top[0], bottom);
                 }
                 // Up the slope: on the ground every frame, three pixels sideways, rising.
-                if (s.frameCount > 202 && p.shape().maxX() > 430) {
+                if (s.frameCount > 202 && Extents.maxX(p.shape()) > 430) {
                     assertTrue(character(s).onGround(), "frame " + s.frameCount + ": on the ground up the slope");
-                    assertEquals(3, p.shape().minX() - last[0], 1e-3, "frame " + s.frameCount + ": three pixels sideways");
+                    assertEquals(3, Extents.minX(p.shape()) - last[0], 1e-3, "frame " + s.frameCount + ": three pixels sideways");
                     assertTrue(bottom < last[1], "frame " + s.frameCount + ": and up: " + last[1] + " to " + bottom);
                     upTheSlope[0]++;
                 }
-                last[0] = p.shape().minX();
+                last[0] = Extents.minX(p.shape());
                 last[1] = bottom;
                 if (s.frameCount == 310) {
                     assertTrue(bottom < landed[0] - 25, "walked up the slope: from " + landed[0] + " to " + bottom);
