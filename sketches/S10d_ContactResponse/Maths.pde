@@ -143,8 +143,9 @@ void drawContact() {
   } else {
     // The velocity's part along the normal, and along the surface, before and after.
     Vec surface = new Vec(sx, sy);
-    float inB = new Vec(shownBx, shownBy).dot(c.normal());
-    float inA = new Vec(shownAx, shownAy).dot(c.normal());
+    Vec normal = new Vec(c.nx(), c.ny());
+    float inB = new Vec(shownBx, shownBy).dot(normal);
+    float inA = new Vec(shownAx, shownAy).dot(normal);
     float alongB = new Vec(shownBx, shownBy).dot(surface);
     float alongA = new Vec(shownAx, shownAy).dot(surface);
     text += "\nvelocity before: " + Overlay.number(inB) + " along the normal, " + Overlay.number(alongB) + " along the surface"

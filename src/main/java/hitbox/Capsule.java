@@ -11,7 +11,8 @@ import hitbox.internal.*;
  * and behaves as its segment does against shapes with area (it collides by reaching into
  * their inside), but, like a circle of radius 0, never collides with a segment, a point or
  * another shape without area. Every pair is "is the distance less than the sum of the
- * radii?", compared exactly for whole numbers of modest size (see {@link Collide#capsuleCircle}).
+ * radii?", compared squared as exact signs of double products, so touching between whole
+ * numbers of modest size (up to about 2^20) is exact; against an ellipse, see {@link Ellipse}.
  *
  * @param x1 the segment's first end x
  * @param y1 the segment's first end y

@@ -143,15 +143,6 @@ public record Contact(float nx, float ny, float depth) {
     }
 
     /**
-     * The normal as a vector.
-     *
-     * @return (nx, ny), the unit normal from a to b, never null
-     */
-    public Vec normal() {
-        return new Vec(nx, ny);
-    }
-
-    /**
      * Which side of b the contact is on, for platformers: a normal pointing down (ny &gt; 0)
      * means b is below a, so a is on b's {@link Side#TOP} (it has landed); pointing up, b's
      * {@link Side#BOTTOM}; pointing right, a is at b's {@link Side#LEFT}; pointing left, at

@@ -147,7 +147,7 @@ public record Manifold(Contact contact, int pointCount, float x1, float y1, floa
      * other shape.
      *
      * @param i the point, 0 or 1 (0 only, for one point)
-     * @return its depth, greater than 0 and at most {@link #depth()}
+     * @return its depth, greater than 0 and at most the contact's {@link Contact#depth() depth}
      * @throws IndexOutOfBoundsException if i is not below {@link #pointCount()}
      */
     public float depth(int i) {
@@ -160,33 +160,6 @@ public record Manifold(Contact contact, int pointCount, float x1, float y1, floa
                     + " for a manifold of " + pointCount + (pointCount == 1 ? " point" : " points") + ", was " + i);
         }
         return i;
-    }
-
-    /**
-     * The contact's normal x, from a to b.
-     *
-     * @return {@code contact().nx()}
-     */
-    public float nx() {
-        return contact.nx();
-    }
-
-    /**
-     * The contact's normal y, from a to b.
-     *
-     * @return {@code contact().ny()}
-     */
-    public float ny() {
-        return contact.ny();
-    }
-
-    /**
-     * The contact's depth: how far apart to move the shapes along the normal.
-     *
-     * @return {@code contact().depth()}, greater than 0
-     */
-    public float depth() {
-        return contact.depth();
     }
 
     /**

@@ -11,7 +11,7 @@ import hitbox.internal.*;
  * {@link #bounds()}.
  *
  * <p><b>Transformed</b> ({@link #transformed}, {@link #rotated}): a rect stays a rect when the
- * transform keeps the axes ({@link Transform#keepsAxes}: a move, a scale or mirror along the
+ * transform keeps the axes (exactly {@code m01 = m10 = 0} or {@code m00 = m11 = 0}: a move, a scale or mirror along the
  * axes, a whole number of quarter turns), each edge the transformed edge rounded to float; a
  * scale by 0 gives a rect of width or height 0. Otherwise it becomes the {@link Polygon} of
  * its four corners, transformed, in the order top-left, top-right, bottom-right, bottom-left

@@ -47,28 +47,15 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
     }
 
     /**
-     * How far this shape is from {@code other}, and the closest point on each, or null when
-     * they overlap (then use {@link #contact}). Same as
-     * {@link Separation#between Separation.between(this, other)}: every pair of shapes,
-     * segments too; touching shapes give distance 0.
-     *
-     * @param other the other shape, not null
-     * @return the separation (this shape's point first), or null when the shapes overlap
-     * @throws IllegalArgumentException if {@code other} is null
-     */
-    default Separation separation(Shape other) {
-        return Separation.between(this, Check.notNull("other", other));
-    }
-
-    /**
      * Is the point in this shape? For shapes with area the outline does not count; for a
      * segment, a point on it counts, end points included.
      *
-     * <p>Each kind answers as its {@link Collide} point test: {@link Collide#circlePoint},
-     * {@link Collide#rectPoint}, {@link Collide#capsulePoint}, {@link Collide#polygonPoint}
-     * (a triangle by {@link Collide#trianglePoint}, which gives the same answer) and
-     * {@link Collide#ellipsePoint} for an axis-aligned ellipse (a turned one takes the point
-     * into its own frame first).
+     * <p>Each kind answers as its point test: {@link Collide#circlePoint},
+     * {@link Collide#rectPoint}, {@link Collide#polygonPoint} (a triangle by
+     * {@link Collide#trianglePoint}, which gives the same answer); a capsule by "closer than
+     * {@code r} to its segment", compared exactly as its pairs are; an axis-aligned ellipse by
+     * {@code (dx / rx)^2 + (dy / ry)^2 < 1} multiplied out so nothing is divided, decided
+     * exactly for every float (a turned one takes the point into its own frame first).
      *
      * <p>A NaN in any argument answers false
      * (the <a href="package-summary.html#bad-input">NaN rule</a>).

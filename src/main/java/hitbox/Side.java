@@ -37,21 +37,6 @@ public enum Side {
     RIGHT;
 
     /**
-     * The side across from this one: TOP and BOTTOM, LEFT and RIGHT; NONE stays NONE.
-     *
-     * @return the opposite side, never null
-     */
-    public Side opposite() {
-        return switch (this) {
-            case TOP -> BOTTOM;
-            case BOTTOM -> TOP;
-            case LEFT -> RIGHT;
-            case RIGHT -> LEFT;
-            case NONE -> NONE;
-        };
-    }
-
-    /**
      * The side of an obstacle that a normal points into. The normal is Hitbox's one
      * convention, <em>from the mover into what it hit</em> (see the package documentation):
      * pointing down ({@code ny > 0}) it goes into the obstacle's {@link #TOP}, up into its

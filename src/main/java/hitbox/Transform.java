@@ -264,26 +264,6 @@ public final class Transform {
         return (float) (m10 * x + m11 * y + m12);
     }
 
-    /**
-     * Where the point goes, as a vector.
-     *
-     * @param x the point's x
-     * @param y the point's y
-     * @return the transformed point, never null
-     * @throws IllegalArgumentException if a value is NaN or infinite, or the point goes
-     *                                  beyond the float range
-     */
-    public Vec apply(float x, float y) {
-        Check.finite("x", x);
-        Check.finite("y", y);
-        float px = applyX(x, y), py = applyY(x, y);
-        if (!Float.isFinite(px) || !Float.isFinite(py)) {
-            throw new IllegalArgumentException("transforming the point x = " + x + ", y = " + y + " gives (" + px + ", "
-                    + py + "), beyond the float range");
-        }
-        return new Vec(px, py);
-    }
-
     /** @return the entry m00 (how much x' takes from x), rounded to float */
     public float m00() {
         return (float) m00;

@@ -19,37 +19,6 @@ public record Vec(float x, float y) {
     public static final Vec ZERO = new Vec(0, 0);
 
     /**
-     * @param other the vector to add
-     * @throws IllegalArgumentException if {@code other} is null
-     * @return this + other, never null
-     */
-    public Vec plus(Vec other) {
-        Check.notNull("other", other);
-        return new Vec(x + other.x, y + other.y);
-    }
-
-    /**
-     * @param other the vector to subtract
-     * @throws IllegalArgumentException if {@code other} is null
-     * @return this - other, never null
-     */
-    public Vec minus(Vec other) {
-        Check.notNull("other", other);
-        return new Vec(x - other.x, y - other.y);
-    }
-
-    /**
-     *
-     * <p>A NaN {@code k} gives NaN parts: a vector is a plain value and takes any float.
-     *
-     * @param k the factor
-     * @return this vector scaled by k, never null
-     */
-    public Vec times(float k) {
-        return new Vec(x * k, y * k);
-    }
-
-    /**
      * @param other the other vector
      * @throws IllegalArgumentException if {@code other} is null
      * @return the dot product

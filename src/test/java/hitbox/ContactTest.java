@@ -77,10 +77,6 @@ class ContactTest {
         assertEquals(new Contact(0.6f, 0.8f, 3), new Contact(0.6f, 0.8f, 3).flipped().flipped());
     }
 
-    @Test
-    void normal_isTheVec() {
-        assertEquals(new Vec(0.6f, -0.8f), new Contact(0.6f, -0.8f, 1).normal());
-    }
 
     @Test
     void between_nullShapes_throwNamingThem() {

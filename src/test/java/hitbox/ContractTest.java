@@ -69,13 +69,6 @@ class ContractTest {
     // ------------------------------------------------------------------ one Side, one set of sides
 
     @Test
-    void sides_areOneType() {
-        for (Side s : Side.values()) {
-            assertEquals(s, s.opposite().opposite());
-        }
-    }
-
-    @Test
     void severalSides_sameAnswerFromEdgesMotionAndSweep() {
         // A box crossing the window's left edge, blocked by a wall on its left, sliding into it.
         Set<Side> crossed = Edges.crossed(new Rect(-1, 10, 5, 5), 100, 100);

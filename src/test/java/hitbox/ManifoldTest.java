@@ -73,8 +73,8 @@ class ManifoldTest {
         assertEquals(1, m.pointCount());
         assertEquals(cx, m.x(0));
         assertEquals(cy, m.y(0));
-        assertEquals(m.depth(), m.depth(0));
-        assertEquals(cy, m.depth(), 1e-6);
+        assertEquals(m.contact().depth(), m.depth(0));
+        assertEquals(cy, m.contact().depth(), 1e-6);
         assertEquals(m.flipped(), Contact.manifold(floor, diamond));
     }
 
@@ -223,7 +223,7 @@ class ManifoldTest {
     @Property
     void symmetricAboutAVerticalLine_symmetricPoints(@ForAll("mirrored") Shape a, @ForAll("mirrored") Shape b) {
         Manifold m = Contact.manifold(a, b);
-        if (m == null || m.nx() != 0 || m.depth() < 1e-5 * scale(a, b)) {
+        if (m == null || m.contact().nx() != 0 || m.contact().depth() < 1e-5 * scale(a, b)) {
             // A tie between two mirrored normals picks one: nothing to mirror. And a hair's
             // overlap is decided by the rounding of a regular polygon's float corners, which
             // are symmetric only to rounding: one corner touches, its mirror image does not.
@@ -269,7 +269,7 @@ class ManifoldTest {
         boolean curved = a instanceof Ellipse || b instanceof Ellipse;
         double tol = (curved ? Manifold.CURVED_TOLERANCE : Manifold.TOLERANCE) * scale(a, b);
         for (int i = 0; i < m.pointCount(); i++) {
-            assertTrue(m.depth(i) > 0 && m.depth(i) <= m.depth(), "depth " + m.depth(i) + " in " + m);
+            assertTrue(m.depth(i) > 0 && m.depth(i) <= m.contact().depth(), "depth " + m.depth(i) + " in " + m);
             double offA = outside(a, m.x(i), m.y(i)), offB = outside(b, m.x(i), m.y(i));
             assertTrue(offA <= tol && offB <= tol, "point (" + m.x(i) + ", " + m.y(i) + ") is " + offA + " outside " + a + " and "
                     + offB + " outside " + b + ": " + m);

@@ -233,10 +233,10 @@ class ShapeKindDispatchTest {
                     assertNull(a.contact(b.translated(500, 0)), "far apart");
                 }));
                 tests.add(pair(first, second, name, "separation", (a, b) -> {
-                    assertNull(a.separation(b), "overlapping shapes have no separation");
+                    assertNull(Separation.between(a, b), "overlapping shapes have no separation");
                     assertNull(Separation.between(b, a));
                     Shape far = b.translated(500, 0);
-                    Separation s = a.separation(far), back = far.separation(a);
+                    Separation s = Separation.between(a, far), back = Separation.between(far, a);
                     assertNotNull(s, "far apart");
                     assertNotNull(back, "far apart, the other way round");
                     double gap = Extents.minX(far) - Extents.maxX(a);
@@ -259,7 +259,7 @@ class ShapeKindDispatchTest {
                     for (int i = 0; i < m.pointCount(); i++) {
                         // Every sample covers [-2, 2] x [-2, 2] and lies in [-13, 13] x [-11, 11].
                         assertTrue(Math.abs(m.x(i)) <= 13 && Math.abs(m.y(i)) <= 11, m.toString());
-                        assertTrue(m.depth(i) > 0 && m.depth(i) <= m.depth(), m.toString());
+                        assertTrue(m.depth(i) > 0 && m.depth(i) <= m.contact().depth(), m.toString());
                     }
                     Manifold back = Contact.manifold(b, a);
                     assertNotNull(back);

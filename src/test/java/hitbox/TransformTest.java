@@ -203,7 +203,6 @@ class TransformTest {
         Transform t = Transform.of(2, 3, 5, 7, 11, 13);
         assertEquals(2 * 1 + 3 * 2 + 5, t.applyX(1, 2));
         assertEquals(7 * 1 + 11 * 2 + 13, t.applyY(1, 2));
-        assertEquals(new Vec(13, 42), t.apply(1, 2));
         assertEquals(2f, t.m00());
         assertEquals(13f, t.m12());
         assertEquals(2 * 11 - 3 * 7, Transforms.affine(t).det(), "the kernels' determinant");

@@ -103,7 +103,7 @@ class S10d_ContactResponseTest {
             assertEquals(s.BOUNCE, s.mode);
             for (S10d_ContactResponse.Answer a : s.answers) {
                 Contact c = a.contact;
-                Vec n = c.normal();
+                Vec n = new Vec(c.nx(), c.ny());
                 Vec t = new Vec(-n.y(), n.x());
                 Vec v0 = a.before;
                 Vec v1 = a.after;
@@ -139,7 +139,7 @@ class S10d_ContactResponseTest {
             }
             assertEquals(s.SLIDE, s.mode);
             for (S10d_ContactResponse.Answer a : s.answers) {
-                Vec n = a.contact.normal();
+                Vec n = new Vec(a.contact.nx(), a.contact.ny());
                 Vec t = new Vec(-n.y(), n.x());
                 Vec v0 = a.before;
                 Vec v1 = a.after;
@@ -164,7 +164,7 @@ class S10d_ContactResponseTest {
         S10d_ContactResponse s = r.sketch();
         assertEquals(1, s.answers.size());
         assertEquals(1, s.answers.get(0).shape, "the rect");
-        assertEquals(new Vec(0, -1), s.answers.get(0).contact.normal(), "the ball is below the rect's middle: normal up, into it");
+        assertEquals(new Vec(0, -1), new Vec(s.answers.get(0).contact.nx(), s.answers.get(0).contact.ny()), "the ball is below the rect's middle: normal up, into it");
         assertEquals(158, s.y, 1e-3f, "pushed down out of the rect's bottom (y 140) to touch it");
         PImage frame = r.lastFrame();
         SketchPixels.assertColour(frame, 470, 90, Palette.HIT, "the rect");

@@ -1,6 +1,7 @@
 package hitbox.web;
 
 import hitbox.Ray;
+import hitbox.Separation;
 import hitbox.Shape;
 import hitbox.Sweep;
 import org.teavm.jso.JSClass;
@@ -51,7 +52,7 @@ public final class ShapeJs {
      */
     @JSExport
     public JSObject separation(ShapeJs other) {
-        return Js.of(shape.separation(other.shape));
+        return Js.of(Separation.between(shape, other.shape));
     }
 
     /**

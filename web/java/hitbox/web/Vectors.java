@@ -333,7 +333,7 @@ public final class Vectors {
                 }
                 case 2: {
                     Shape a = shape(ka), b = shape(kb);
-                    Separation s = a.separation(b);
+                    Separation s = Separation.between(a, b);
                     put(s.distance());
                     put(s.ax());
                     put(s.ay());

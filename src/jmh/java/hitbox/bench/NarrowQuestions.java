@@ -832,9 +832,9 @@ final class NarrowQuestions {
             return (i, out) -> {
                 Manifold m = Contact.manifold(a[i], b[i]);
                 if (m == null) return false;
-                out[0] = m.depth();
-                out[1] = m.nx();
-                out[2] = m.ny();
+                out[0] = m.contact().depth();
+                out[1] = m.contact().nx();
+                out[2] = m.contact().ny();
                 out[3] = m.pointCount();
                 out[4] = m.x1();
                 out[5] = m.y1();

@@ -13,6 +13,7 @@ import hitbox.Hit;
 import hitbox.Ray;
 import hitbox.RayHit;
 import hitbox.Rect;
+import hitbox.Separation;
 import hitbox.Sweep;
 import hitbox.World;
 import java.nio.charset.StandardCharsets;
@@ -37,7 +38,7 @@ class BrowserModuleTest {
         assertTrue(json.contains("\"contact\":" + bits(c.nx(), c.ny(), c.depth())), json);
         assertTrue(json.contains("\"kind\":\"Circle\""), json);
         assertTrue(json.contains("\"overlaps\":true"), json);
-        assertTrue(json.contains("\"separation\":" + Float.floatToIntBits(new Circle(0, 0, 1).separation(new Circle(10, 0, 2)).distance())), json);
+        assertTrue(json.contains("\"separation\":" + Float.floatToIntBits(Separation.between(new Circle(0, 0, 1), new Circle(10, 0, 2)).distance())), json);
         Hit h = Sweep.timeOfImpact(new Rect(0, 0, 10, 10), 100, 0, new Rect(50, 0, 10, 10));
         assertTrue(json.contains("\"sweep\":[" + Float.floatToIntBits(h.t()) + "," + Float.floatToIntBits(h.nx()) + ",\"" + h.side() + "\"]"), json);
         RayHit r = new Ray(0, 0, 1, 0).cast(new Ellipse(50, 0, 10, 5, 0.5f));
