@@ -119,7 +119,6 @@ class BadInputCatalogTest {
             Map.entry("Motion.bounce", "any"),
             Map.entry("Response.bounce", "velocity"), Map.entry("Response.slide", "velocity"),
             Map.entry("Side.ofNormal", "NONE"),
-            Map.entry("Vec.plus", "any"), Map.entry("Vec.minus", "any"), Map.entry("Vec.times", "any"),
             Map.entry("Vec.dot", "any"),
             Map.entry("Hybrid.Counter.add", "any"),
             Map.entry("Segment.side", "0"),
