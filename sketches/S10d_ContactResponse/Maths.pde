@@ -121,7 +121,7 @@ void drawContact() {
   float across = sx > 0 || (sx == 0 && sy > 0) ? 1 : -1;   // the label to the right of it
   Overlay.labelBeside(g, touch.x(0) + across * sx * 10, touch.y(0) + across * sy * 10, across * sx, across * sy,
       "manifold point", Overlay.TEXT);
-  String text = "Contact.between(ball, " + name + "): normal (" + Overlay.number(nx) + ", "
+  String text = "ball.contact(" + name + "): normal (" + Overlay.number(nx) + ", "
       + Overlay.number(ny) + "), depth " + Overlay.number(c.depth());
   text += "\nContact.manifold: " + touch.pointCount() + " point, (" + Overlay.number(touch.x(0)) + ", "
       + Overlay.number(touch.y(0)) + "), the ball's deepest point in the " + name;

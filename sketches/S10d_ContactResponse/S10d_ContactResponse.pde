@@ -4,7 +4,7 @@
  *
  * Knowing that two shapes overlap is not enough to make them behave: you need to know which
  * way, and how far, to move them apart. Section 7 snaps a rectangle out along one axis; a
- * ball against a circle or a slanted edge needs a direction too. Contact.between(ball, shape)
+ * ball against a circle or a slanted edge needs a direction too. ball.contact(shape)
  * gives it: a unit normal pointing from the ball into the shape, and the depth of the
  * overlap. Then Response does the rest: separate moves the ball back by the depth so the two
  * just touch; bounce reverses the part of the velocity along the normal (a ball off a wall);
@@ -86,7 +86,7 @@ void move() {
     for (int i = 0; i < shapes.length + walls.length; i++) {
       Shape s = i < shapes.length ? shapes[i] : walls[i - shapes.length];
       Circle ball = new Circle(x, y, r);
-      Contact c = Contact.between(ball, s);   // null when apart
+      Contact c = ball.contact(s);   // null when apart
       if (c == null) {
         continue;
       }

@@ -12,7 +12,7 @@ import hitbox.internal.*;
  * direction separates them.
  *
  * <h2>When there is a contact</h2>
- * {@link #between(Shape, Shape)} returns null exactly when the shapes do not overlap by the
+ * {@link Shape#contact a.contact(b)} returns null exactly when the shapes do not overlap by the
  * <a href="package-summary.html#touching">touching rule</a>, which is exactly when the depth
  * would be 0 or less: shapes that touch have depth 0 and give null, so a returned contact
  * always has {@code depth > 0}. (A hair's-width overlap that rounds to a depth of 0 gives
@@ -102,30 +102,16 @@ public record Contact(float nx, float ny, float depth) {
     }
 
     /**
-     * The contact between two shapes, or null when they do not overlap (touching is not
-     * overlapping). Same as {@code a.contact(b)}.
-     *
-     * @param a the first shape, not null
-     * @param b the second shape, not null
-     * @return the contact, with its normal pointing from a to b, or null when apart
-     * @throws IllegalArgumentException if a shape is null or is a {@link Segment}, which has
-     *                                  no area to push out of
-     */
-    public static Contact between(Shape a, Shape b) {
-        return Contacts.between(Check.notNull("a", a), Check.notNull("b", b));
-    }
-
-    /**
      * The contact between two shapes with its one or two contact points, or null when they do
      * not overlap (touching is not overlapping): see {@link Manifold} for where the points
-     * are. Its contact is exactly {@link #between between(a, b)}, and swapping the shapes
+     * are. Its contact is exactly {@link Shape#contact a.contact(b)}, and swapping the shapes
      * gives the same points with that contact flipped.
      *
      * @param a the first shape, not null
      * @param b the second shape, not null
      * @return the manifold, its normal pointing from a to b, or null when apart
      * @throws IllegalArgumentException if a shape is null or is a {@link Segment}, which has
-     *                                  no area to push out of (as {@link #between})
+     *                                  no area to push out of (as {@link Shape#contact})
      */
     public static Manifold manifold(Shape a, Shape b) {
         return Manifolds.between(Check.notNull("a", a), Check.notNull("b", b));

@@ -43,7 +43,7 @@ import hitbox.internal.*;
  * regular polygon's corners, say) count as equal, so that a pair placed symmetrically about
  * a line gets symmetric points.
  * Swapping the shapes gives the same points, in the same order (by x, then y), and the
- * contact {@link Contact#flipped() flipped}, wherever {@link Contact#between} gives the
+ * contact {@link Contact#flipped() flipped}, wherever {@link Shape#contact} gives the
  * flipped contact.
  *
  * <h2>The depths</h2>
@@ -53,7 +53,7 @@ import hitbox.internal.*;
  * separation from the reference face. It is greater than 0 and at most the contact's depth
  * (held there where rounding would pass it); the corner of a shape standing on it has the
  * contact's depth, and so does the one point of a round pair. The contact's normal and
- * depth are exactly {@link Contact#between}'s.
+ * depth are exactly {@link Shape#contact}'s.
  *
  * @param contact    the contact: normal from a to b, and depth
  * @param pointCount how many contact points, 1 or 2

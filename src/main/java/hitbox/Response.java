@@ -9,7 +9,7 @@ import hitbox.internal.*;
  * moves one shape clear of another, {@link #bounce} and {@link #slide} give a new velocity. Velocities belong to the sketch's own objects, so the
  * velocity methods take plain floats and a normal and hand back the new value as a
  * {@link Vec}; nothing is changed in place. The contact's normal points from a to b, so "a"
- * and "b" below are the first and second shape given to {@link Contact#between}.
+ * and "b" below are the first and second shape given to {@link Shape#contact a.contact(b)}.
  *
  * <p>One normal convention, the package's: a {@link Contact}'s normal points from a to b, a
  * {@link Hit}'s and a {@link RayHit}'s from the mover into what it hit, and the velocity
@@ -40,7 +40,7 @@ public final class Response {
     /**
      * A shape pushed out of the other by its share of the contact's depth: moved against the
      * contact's normal by {@code share * depth}. The contact is the one between this shape and
-     * the other ({@code Contact.between(shape, other)}); for the other shape, pass
+     * the other ({@code shape.contact(other)}); for the other shape, pass
      * {@code contact.flipped()}. Shares that add up to 1 leave the two just touching:
      * {@code pushOut(a, c, 1)} moves a alone; {@code pushOut(a, c, 0.5f)} and
      * {@code pushOut(b, c.flipped(), 0.5f)} move each half way; a light object can take more
@@ -138,11 +138,11 @@ public final class Response {
      * @param b   the shape it must leave, with area, not null
      * @return a, moved out of b (or a itself if they do not overlap), never null
      * @throws IllegalArgumentException if a shape is null or a segment (see
-     *                                  {@link Contact#between})
+     *                                  {@link Shape#contact})
      */
     @SuppressWarnings("unchecked")
     public static <S extends Shape> S separate(S a, Shape b) {
-        Contact contact = Contact.between(a, b);
+        Contact contact = Check.notNull("a", a).contact(Check.notNull("b", b));
         if (contact == null) {
             return a;
         }

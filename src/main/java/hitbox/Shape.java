@@ -35,7 +35,7 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
     /**
      * How this shape and {@code other} overlap: the unit normal from this shape to the other
      * and the depth that separates them, or null when they do not overlap (touching is not
-     * overlapping). Same as {@link Contact#between Contact.between(this, other)}.
+     * overlapping).
      *
      * @param other the other shape, not null
      * @return the contact, or null when the shapes are apart or touching
@@ -43,7 +43,7 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      *                                  {@link Segment} (a segment has no area to push out of)
      */
     default Contact contact(Shape other) {
-        return Contact.between(this, Check.notNull("other", other));
+        return Contacts.between(this, Check.notNull("other", other));
     }
 
     /**

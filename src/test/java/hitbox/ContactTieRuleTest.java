@@ -48,7 +48,7 @@ class ContactTieRuleTest {
         // Before: (0.866, -0.5) one way and (0.866, 0.5) mirrored; the |ny| differed by an ulp.
         float c30 = (float) Math.cos(Math.PI / 6);
         for (boolean mirror : new boolean[] {false, true}) {
-            Contact c = Contact.between(regular(5, 1, -1, 0, mirror), regular(6, 0.5, 0, 0, mirror));
+            Contact c = (regular(5, 1, -1, 0, mirror)).contact(regular(6, 0.5, 0, 0, mirror));
             assertNormal(c30, 0.5f, c, "mirrored " + mirror);
         }
     }
@@ -56,8 +56,8 @@ class ContactTieRuleTest {
     @Test
     void circleAndEllipse_concentric_upAndDownTie_theRuleSaysUp() {
         // Before: (1.6e-8, -1), the search's stopping place deciding.
-        assertEquals(new Contact(0, 1, 1.5f), Contact.between(new Circle(0, 0, 1), new Ellipse(0, 0, 1, 0.5f)));
-        assertEquals(new Contact(0, 1, 1.5f), Contact.between(new Ellipse(0, 0, 1, 0.5f), new Circle(0, 0, 1)));
+        assertEquals(new Contact(0, 1, 1.5f), new Circle(0, 0, 1).contact(new Ellipse(0, 0, 1, 0.5f)));
+        assertEquals(new Contact(0, 1, 1.5f), new Ellipse(0, 0, 1, 0.5f).contact(new Circle(0, 0, 1)));
         assertEquals(new Contact(0, 1, 1.5f), Raw.contactEllipseCircle(0, 0, 1, 0.5f, 0, 0, 1));
     }
 
@@ -66,20 +66,20 @@ class ContactTieRuleTest {
         // Up and down: 0.5 + 0.25 + 0.25 = 1; sideways 1 + 0.25.
         Ellipse e = new Ellipse(0, 0, 1, 0.5f);
         Capsule k = new Capsule(0, -0.25f, 0, 0.25f, 0.25f);
-        assertEquals(new Contact(0, 1, 1), Contact.between(e, k));
-        assertEquals(new Contact(0, 1, 1), Contact.between(k, e));
+        assertEquals(new Contact(0, 1, 1), e.contact(k));
+        assertEquals(new Contact(0, 1, 1), k.contact(e));
         // A taller capsule: the vertical ones are the longer way, left and right tie.
         Capsule tall = new Capsule(0, -1, 0, 1, 0.5f);
-        assertEquals(new Contact(1, 0, 1.5f), Contact.between(e, tall));
-        assertEquals(new Contact(1, 0, 1.5f), Contact.between(tall, e));
+        assertEquals(new Contact(1, 0, 1.5f), e.contact(tall));
+        assertEquals(new Contact(1, 0, 1.5f), tall.contact(e));
     }
 
     @Test
     void twoDiagonalPushes_equallyShort_goToPositiveNxTimesNy() {
         // Edges (3, 3) and (-2, 2) long: the two unit normals' |ny| differ by an ulp; before,
         // (-0.707, 0.707) won.
-        assertNormal(S, S, Contact.between(Polygon.of(0, 0, 3, 3, 1, 5, -2, 2), Polygon.of(1, 4, 2, 5, -3, 10, -4, 9)), "small");
-        assertNormal(S, S, Contact.between(Polygon.of(0, 0, 3, 3, -2, 8, -5, 5), Polygon.of(-2, 4, 3, 9, -2, 14, -7, 9)), "large");
+        assertNormal(S, S, (Polygon.of(0, 0, 3, 3, 1, 5, -2, 2)).contact(Polygon.of(1, 4, 2, 5, -3, 10, -4, 9)), "small");
+        assertNormal(S, S, (Polygon.of(0, 0, 3, 3, -2, 8, -5, 5)).contact(Polygon.of(-2, 4, 3, 9, -2, 14, -7, 9)), "large");
     }
 
     @Test
@@ -102,10 +102,10 @@ class ContactTieRuleTest {
         }
         // And no push is shorter: 3.999 along any of 3600 directions still overlaps.
         assertEveryPushOverlaps(e, p, 3.999);
-        assertEquals(new Contact(0, -1, 4), Contact.between(p, e));
-        assertEquals(new Contact(0, 1, 4), Contact.between(e, p));
-        assertEquals(new Contact(0, -1, 4), Contact.between(pm, em));
-        assertEquals(new Contact(0, 1, 4), Contact.between(em, pm));
+        assertEquals(new Contact(0, -1, 4), p.contact(e));
+        assertEquals(new Contact(0, 1, 4), e.contact(p));
+        assertEquals(new Contact(0, -1, 4), pm.contact(em));
+        assertEquals(new Contact(0, 1, 4), em.contact(pm));
     }
 
     @Test
@@ -125,10 +125,10 @@ class ContactTieRuleTest {
             Polygon q = mirror ? (Polygon) mirrored(p, false) : p;
             Capsule m = mirror ? (Capsule) mirrored(k, false) : k;
             float sy = mirror ? -1 : 1;
-            Contact c = Contact.between(q, m);
+            Contact c = q.contact(m);
             assertNormal(ex, sy * ey, c, "mirrored " + mirror);
             assertEquals(2.5f, c.depth(), 1e-6f);
-            assertNormal(-ex, -sy * ey, Contact.between(m, q), "swapped, mirrored " + mirror);
+            assertNormal(-ex, -sy * ey, m.contact(q), "swapped, mirrored " + mirror);
             // The push clears, and the cone's end is sharp: 1e-3 radians past it does not.
             assertFalse(m.translated(c.nx() * 2.5f, c.ny() * 2.5f).overlaps(q));
             double past = t + 1e-3;
@@ -149,8 +149,8 @@ class ContactTieRuleTest {
         assertFalse(e.translated(1, 0).overlaps(p));
         for (boolean mirror : new boolean[] {false, true}) {
             Shape q = mirror ? mirrored(p, false) : p, m = mirror ? mirrored(e, false) : e;
-            assertEquals(new Contact(1, 0, 1), Contact.between(q, m), "mirrored " + mirror);
-            assertEquals(new Contact(-1, 0, 1), Contact.between(m, q), "swapped, mirrored " + mirror);
+            assertEquals(new Contact(1, 0, 1), q.contact(m), "mirrored " + mirror);
+            assertEquals(new Contact(-1, 0, 1), m.contact(q), "swapped, mirrored " + mirror);
         }
     }
 
@@ -170,8 +170,8 @@ class ContactTieRuleTest {
             Shape me = mirror == 0 ? e : mirrored(e, mirror == 1), mk = mirror == 0 ? k : mirrored(k, mirror == 1);
             float sx = mirror == 1 ? -1 : 1;
             String what = "mirrored " + (mirror == 0 ? "not" : mirror == 1 ? "in x" : "in y");
-            assertEquals(new Contact(-sx, 0, 3), Contact.between(me, mk), what);
-            assertEquals(new Contact(sx, 0, 3), Contact.between(mk, me), "swapped, " + what);
+            assertEquals(new Contact(-sx, 0, 3), me.contact(mk), what);
+            assertEquals(new Contact(sx, 0, 3), mk.contact(me), "swapped, " + what);
         }
     }
 
@@ -192,11 +192,11 @@ class ContactTieRuleTest {
             Shape mh = mirror == 0 ? h : mirrored(h, mirror == 1), mk = mirror == 0 ? k : mirrored(k, mirror == 1);
             float sx = mirror == 1 ? -1 : 1, sy = mirror == 2 ? -1 : 1;
             String what = "mirrored " + (mirror == 0 ? "not" : mirror == 1 ? "in x" : "in y");
-            Contact c = Contact.between(mh, mk);
+            Contact c = mh.contact(mk);
             assertNormal(sx * ex, sy * ey, c, what);
             assertEquals(depth, c.depth(), 1e-6, what);
             assertFalse(mk.translated(c.nx() * (c.depth() + 1e-4f), c.ny() * (c.depth() + 1e-4f)).overlaps(mh), what);
-            Contact s = Contact.between(mk, mh);
+            Contact s = mk.contact(mh);
             assertNormal(-sx * ex, -sy * ey, s, "swapped, " + what);
             assertEquals(depth, s.depth(), 1e-6, "swapped, " + what);
         }
@@ -218,7 +218,7 @@ class ContactTieRuleTest {
         // larger |ny|; moving along it never cleared, and separate doubled its way to 6.33.
         Polygon a = Polygon.of(0, 5, 0, -1, -6, 0, -2, -2, 1, -8, 6, -8, 3, -3);
         Polygon b = Polygon.of(-1, 7, 2, 12, -10, 8, 1, -1, -1, 2, 1, 1);
-        Contact c = Contact.between(a, b);
+        Contact c = a.contact(b);
         assertEquals(new Contact(-1, 0, 1), c);
         Polygon moved = Response.separate(a, b);
         assertEquals(a.translated(1, 0), moved);
@@ -302,9 +302,9 @@ class ContactTieRuleTest {
     @Property(tries = 1500)
     void mirroredPair_mirroredNormal_followingTheRule(@ForAll("smallShapes") Shape a, @ForAll("smallShapes") Shape b,
                                                       @ForAll boolean inX) {
-        Contact c = Contact.between(a, b);
+        Contact c = a.contact(b);
         Shape ma = mirrored(a, inX), mb = mirrored(b, inX);
-        Contact m = Contact.between(ma, mb);
+        Contact m = ma.contact(mb);
         String what = a + " " + b + " mirrored in " + (inX ? "x" : "y") + ": " + c + " then " + m;
         if (c == null) {
             assertNull(m, what);

@@ -85,14 +85,14 @@ class ContractTest {
     void contact_tieRuleHoldsWhenTheCircleIsSecond() {
         Rect square = new Rect(0, 0, 10, 10);
         Circle middle = new Circle(5, 5, 2);
-        Contact circleFirst = Contact.between(middle, square);
-        Contact rectFirst = Contact.between(square, middle);
+        Contact circleFirst = middle.contact(square);
+        Contact rectFirst = square.contact(middle);
         assertEquals(new Contact(0, 1, 7), circleFirst);
         assertEquals(circleFirst, rectFirst, "a symmetric placement gives the same normal in both orders");
         assertEquals(rectFirst, Raw.contactRectCircle(0, 0, 10, 10, 5, 5, 2));
         // The same for a polygon with the circle second.
         Polygon box = Polygon.of(square);
-        assertEquals(new Contact(0, 1, 7), Contact.between(box, middle));
+        assertEquals(new Contact(0, 1, 7), box.contact(middle));
     }
 
     @Test
@@ -102,9 +102,9 @@ class ContractTest {
         // differently. The tie rule, not the rounding, must pick: the most vertical normal.
         float d = 2_730_000;
         Polygon p = Polygon.of(-d, -d, d, -d, d, d / 2, d / 7, 8 * d / 7, -d, 2 * d / 3);
-        Contact c = Contact.between(new Circle(0, 0, 1), p);
+        Contact c = new Circle(0, 0, 1).contact(p);
         assertEquals(new Contact(0, 1, d + 1), c);
-        Contact back = Contact.between(p, new Circle(0, 0, 1));
+        Contact back = p.contact(new Circle(0, 0, 1));
         assertEquals(new Contact(0, -1, d + 1), back, "the circle second: the same push, seen from the polygon");
     }
 
@@ -120,11 +120,11 @@ class ContractTest {
                 ? Polygon.of(0, 10, 5, 0, 10, 10, 10, 20, 7, 15, 3, 15, 0, 20)
                 : Polygon.of(0, 10, 5, 0, 10, 10);
         assertEquals(concave, !p.isConvex());
-        Contact c = Contact.between(new Circle(5, 0, 1), p);
+        Contact c = new Circle(5, 0, 1).contact(p);
         assertEquals(0, c.nx(), 1e-6);
         assertEquals(1, c.ny(), 1e-6);
         assertEquals(1, c.depth(), 1e-6);
-        Contact back = Contact.between(p, new Circle(5, 0, 1));
+        Contact back = p.contact(new Circle(5, 0, 1));
         assertEquals(0, back.nx(), 1e-6);
         assertEquals(-1, back.ny(), 1e-6);
     }
@@ -143,7 +143,7 @@ class ContractTest {
         Polygon slab = Polygon.of(Rect.centered(1_000_004, 1_000_000, 1, 40)).rotated(0.001f, 1_000_004, 1_000_000);
         Circle out = Response.separate(ball, slab);
         assertFalse(out.overlaps(slab));
-        Contact c = Contact.between(ball, slab);
+        Contact c = ball.contact(slab);
         assertTrue(out.translated(c.nx() * 0.25f, c.ny() * 0.25f).overlaps(slab), "touching: " + out);
         assertTrue(out.x() < ball.x(), "pushed back out, not through to the far side: " + out);
     }
@@ -195,7 +195,7 @@ class ContractTest {
         Polygon notch = Polygon.of(-1e16f, 0, 1e16f, 0, 1e16f, 4, 1, 2, -1e16f, 4);
         assertFalse(notch.isConvex());
         assertTrue(notch.area() > 0 && Float.isFinite(notch.centroid().x()));
-        assertNotNull(Contact.between(notch, new Circle(0, 1, 0.5f)));
+        assertNotNull(notch.contact(new Circle(0, 1, 0.5f)));
     }
 
     @Test

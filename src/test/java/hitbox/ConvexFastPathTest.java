@@ -88,7 +88,7 @@ class ConvexFastPathTest {
         Polygon p = Polygon.of(a), q = Polygon.of(moved);
         assertEquals(expected, p.overlaps(q));
         assertEquals(expected, q.overlaps(p));
-        assertEquals(expected, Contact.between(p, q) != null);
+        assertEquals(expected, p.contact(q) != null);
     }
 
     @Test
@@ -192,9 +192,9 @@ class ConvexFastPathTest {
         assertTrue(bytesPerCall(() -> flag = Collide.lineLine(0, 0, 10, 10, 5, 5, 20, 20)) < 1, "lineLine, collinear");
         assertTrue(bytesPerCall(() -> number = Ray.distanceToCircle(0, 0, 1, 1, 500, 50, 50, 10)) < 1, "distanceToCircle");
         assertTrue(bytesPerCall(() -> flag = Collide.rectRect(0, 0, 10, 10, 10, 0, 10, 10)) < 1, "rectRect, touching");
-        assertTrue(bytesPerCall(() -> sink = Contact.between(p, r)) < 1, "Contact.between, apart");
+        assertTrue(bytesPerCall(() -> sink = p.contact(r)) < 1, "Contact.between, apart");
         // One Contact (a header and three floats) per call, nothing else.
-        double contact = bytesPerCall(() -> sink = Contact.between(p, q));
+        double contact = bytesPerCall(() -> sink = p.contact(q));
         assertTrue(contact <= 32, "Contact.between allocates " + contact + " bytes per call");
         assertEquals(Arrays.toString(a), Arrays.toString(p.coordinates()));
     }
@@ -204,13 +204,13 @@ class ConvexFastPathTest {
         Polygon p = Polygon.regular(100, 100, 40, 8, 0.1f);
         Rect box = new Rect(120, 90, 50, 30);
         Rect far = new Rect(300, 90, 50, 30);
-        Contact expected = Contact.between(Polygon.of(box), p);
-        assertEquals(expected, Contact.between(box, p));
-        assertEquals(Contact.between(p, Polygon.of(box)), Contact.between(p, box));
-        double there = bytesPerCall(() -> sink = Contact.between(box, p));
-        assertTrue(there <= 32, "Contact.between(rect, polygon) allocates " + there + " bytes per call");
-        double back = bytesPerCall(() -> sink = Contact.between(p, box));
-        assertTrue(back <= 32, "Contact.between(polygon, rect) allocates " + back + " bytes per call");
-        assertTrue(bytesPerCall(() -> sink = Contact.between(far, p)) < 1, "Contact.between(rect, polygon), apart");
+        Contact expected = Polygon.of(box).contact(p);
+        assertEquals(expected, box.contact(p));
+        assertEquals(p.contact(Polygon.of(box)), p.contact(box));
+        double there = bytesPerCall(() -> sink = box.contact(p));
+        assertTrue(there <= 32, "rect.contact(polygon) allocates " + there + " bytes per call");
+        double back = bytesPerCall(() -> sink = p.contact(box));
+        assertTrue(back <= 32, "polygon.contact(rect) allocates " + back + " bytes per call");
+        assertTrue(bytesPerCall(() -> sink = far.contact(p)) < 1, "rect.contact(polygon), apart");
     }
 }

@@ -27,26 +27,26 @@ class EllipseAndCapsuleContactTest {
     @Test
     void exactCases_bothOrders() {
         Ellipse e = new Ellipse(0, 0, 4, 2);
-        assertContact(1, 0, 1, Contact.between(e, new Circle(5, 0, 2)));
-        assertContact(-1, 0, 1, Contact.between(new Circle(5, 0, 2), e));
-        assertContact(0, 1, 0.5f, Contact.between(e, new Rect(-1, 1.5f, 2, 2)));
-        assertContact(0, -1, 0.5f, Contact.between(new Rect(-1, 1.5f, 2, 2), e));
-        assertContact(1, 0, 1, Contact.between(e, new Ellipse(7, 0, 4, 2)));
+        assertContact(1, 0, 1, e.contact(new Circle(5, 0, 2)));
+        assertContact(-1, 0, 1, new Circle(5, 0, 2).contact(e));
+        assertContact(0, 1, 0.5f, e.contact(new Rect(-1, 1.5f, 2, 2)));
+        assertContact(0, -1, 0.5f, new Rect(-1, 1.5f, 2, 2).contact(e));
+        assertContact(1, 0, 1, e.contact(new Ellipse(7, 0, 4, 2)));
         Capsule k = new Capsule(0, 0, 10, 0, 2);
-        assertContact(0, 1, 1, Contact.between(k, new Circle(5, 3, 2)));
-        assertContact(0, -1, 1, Contact.between(new Circle(5, 3, 2), k));
-        assertContact(1, 0, 1, Contact.between(k, new Circle(14, 0, 3)));
-        assertContact(0, 1, 0.5f, Contact.between(k, new Capsule(0, 3.5f, 10, 3.5f, 2)));
-        assertContact(0, -1, 1, Contact.between(k, new Rect(0, -10, 10, 9)));
-        assertNull(Contact.between(e, new Circle(6, 0, 2)), "touching");
-        assertNull(Contact.between(k, new Circle(5, 4, 2)), "touching");
+        assertContact(0, 1, 1, k.contact(new Circle(5, 3, 2)));
+        assertContact(0, -1, 1, new Circle(5, 3, 2).contact(k));
+        assertContact(1, 0, 1, k.contact(new Circle(14, 0, 3)));
+        assertContact(0, 1, 0.5f, k.contact(new Capsule(0, 3.5f, 10, 3.5f, 2)));
+        assertContact(0, -1, 1, k.contact(new Rect(0, -10, 10, 9)));
+        assertNull(e.contact(new Circle(6, 0, 2)), "touching");
+        assertNull(k.contact(new Circle(5, 4, 2)), "touching");
         // A concave polygon (a notch in its right side) no longer throws: the ellipse on its
         // corner is pushed out of the whole polygon (CurvedConcaveContactTest checks more).
         Polygon notched = Polygon.of(0, 0, 10, 0, 5, 2, 10, 10, 0, 10);
-        Contact c = Contact.between(e, notched);
+        Contact c = e.contact(notched);
         assertNotNull(c);
         assertFalse(notched.overlaps(e.translated(-c.nx() * (c.depth() + 1e-3f), -c.ny() * (c.depth() + 1e-3f))));
-        assertThrows(IllegalArgumentException.class, () -> Contact.between(new Segment(0, 0, 1, 1), k));
+        assertThrows(IllegalArgumentException.class, () -> new Segment(0, 0, 1, 1).contact(k));
     }
 
     @Test
@@ -61,7 +61,7 @@ class EllipseAndCapsuleContactTest {
                 a = b;
                 b = t;
             }
-            Contact c = Contact.between(a, b);
+            Contact c = a.contact(b);
             if (c == null) {
                 continue;
             }

@@ -120,7 +120,7 @@ class ManifoldTest {
         // A plus sign: no edge of either bar lies inside the other.
         Manifold m = Contact.manifold(new Rect(-10, -1, 20, 2), new Rect(-1, -10, 2, 20));
         assertNotNull(m);
-        assertEquals(Contact.between(new Rect(-10, -1, 20, 2), new Rect(-1, -10, 2, 20)), m.contact());
+        assertEquals(new Rect(-10, -1, 20, 2).contact(new Rect(-1, -10, 2, 20)), m.contact());
         assertEquals(2, m.pointCount());
         for (int i = 0; i < 2; i++) {
             assertEquals(1, Math.abs(m.x(i)), 0);
@@ -134,7 +134,7 @@ class ManifoldTest {
         Rect lid = new Rect(-2, -3, 14, 4);   // across both prongs' tops, 1 deep
         Manifold m = Contact.manifold(lid, cup);
         assertNotNull(m);
-        assertEquals(Contact.between(lid, cup), m.contact());
+        assertEquals(lid.contact(cup), m.contact());
         assertEquals(2, m.pointCount());
         assertValid(lid, cup, m);
         // The two prongs' outer corners, the farthest apart along the surface.
@@ -242,7 +242,7 @@ class ManifoldTest {
 
     /** Checks one pair both ways; true if they overlap. Counts two-point answers and flipping swaps. */
     private static boolean checkPair(Shape a, Shape b, int[] counts) {
-        Contact c = Contact.between(a, b);
+        Contact c = a.contact(b);
         Manifold m = Contact.manifold(a, b);
         if (c == null) {
             assertNull(m, a + " and " + b + " do not overlap");
@@ -255,7 +255,7 @@ class ManifoldTest {
         Manifold back = Contact.manifold(b, a);
         assertNotNull(back);
         assertValid(b, a, back);
-        if (Contact.between(b, a).equals(c.flipped())) {
+        if (b.contact(a).equals(c.flipped())) {
             assertEquals(m.flipped(), back, "swapped: the same points, the normal flipped, for " + a + " and " + b);
             counts[2]++;
         }

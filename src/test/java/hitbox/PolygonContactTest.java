@@ -262,7 +262,7 @@ class PolygonContactTest {
             assertTrue(e.getMessage().startsWith("contact needs two shapes with area, but a is a Segment"), e.getMessage());
             assertTrue(e.getMessage().contains("overlaps(...)"), e.getMessage());
             assertTrue(e.getMessage().contains("sweep or ray cast"), e.getMessage());
-            IllegalArgumentException r = assertThrows(IllegalArgumentException.class, () -> Contact.between(other, seg));
+            IllegalArgumentException r = assertThrows(IllegalArgumentException.class, () -> other.contact(seg));
             assertTrue(r.getMessage().contains((other instanceof Segment ? "a" : "b") + " is a Segment"), r.getMessage());
         }
     }

@@ -45,10 +45,10 @@ class PolygonOfFuzzTest {
             assertTrue(b.y() <= p.y(i) && (double) b.y() + b.h() >= p.y(i), "bounds " + b + " miss y" + i);
         }
         assertTrue(p.overlaps(p), () -> "a polygon overlaps itself: " + p);
-        Contact self = Contact.between(p, p);
+        Contact self = p.contact(p);
         assertTrue(self != null && self.depth() > 0, () -> "contact with itself: " + p);
         Circle probe = new Circle(p.x(0), p.y(0), Math.max(1, b.w() / 4));
-        assertEquals(p.overlaps(probe), Contact.between(p, probe) != null, () -> "contact exactly when overlapping: " + p + ", " + probe);
+        assertEquals(p.overlaps(probe), p.contact(probe) != null, () -> "contact exactly when overlapping: " + p + ", " + probe);
         assertEquals(probe.overlaps(p), p.overlaps(probe), () -> "symmetric: " + p + ", " + probe);
         Edges.crossed(p, b.w(), b.h());
         Hybrid.check(p, probe);

@@ -48,47 +48,47 @@ final class Raw {
     // ---------------------------------------------------------------- Contact
 
     static Contact contactCircleCircle(float x1, float y1, float r1, float x2, float y2, float r2) {
-        return Contact.between(new Circle(x1, y1, r1), new Circle(x2, y2, r2));
+        return new Circle(x1, y1, r1).contact(new Circle(x2, y2, r2));
     }
 
     static Contact contactCircleRect(float cx, float cy, float r, float rectX, float rectY, float rectW, float rectH) {
-        return Contact.between(new Circle(cx, cy, r), new Rect(rectX, rectY, rectW, rectH));
+        return new Circle(cx, cy, r).contact(new Rect(rectX, rectY, rectW, rectH));
     }
 
     static Contact contactRectCircle(float rectX, float rectY, float rectW, float rectH, float cx, float cy, float r) {
-        return Contact.between(new Rect(rectX, rectY, rectW, rectH), new Circle(cx, cy, r));
+        return new Rect(rectX, rectY, rectW, rectH).contact(new Circle(cx, cy, r));
     }
 
     static Contact contactRectRect(float x1, float y1, float w1, float h1, float x2, float y2, float w2, float h2) {
-        return Contact.between(new Rect(x1, y1, w1, h1), new Rect(x2, y2, w2, h2));
+        return new Rect(x1, y1, w1, h1).contact(new Rect(x2, y2, w2, h2));
     }
 
     static Contact contactEllipseCircle(float x, float y, float radiusX, float radiusY, float cx, float cy, float r) {
-        return Contact.between(new Ellipse(x, y, radiusX, radiusY), new Circle(cx, cy, r));
+        return new Ellipse(x, y, radiusX, radiusY).contact(new Circle(cx, cy, r));
     }
 
     static Contact contactEllipseRect(float x, float y, float radiusX, float radiusY, float rectX, float rectY, float rectW, float rectH) {
-        return Contact.between(new Ellipse(x, y, radiusX, radiusY), new Rect(rectX, rectY, rectW, rectH));
+        return new Ellipse(x, y, radiusX, radiusY).contact(new Rect(rectX, rectY, rectW, rectH));
     }
 
     static Contact contactEllipseEllipse(float x1, float y1, float radiusX1, float radiusY1, float x2, float y2, float radiusX2, float radiusY2) {
-        return Contact.between(new Ellipse(x1, y1, radiusX1, radiusY1), new Ellipse(x2, y2, radiusX2, radiusY2));
+        return new Ellipse(x1, y1, radiusX1, radiusY1).contact(new Ellipse(x2, y2, radiusX2, radiusY2));
     }
 
     static Contact contactCapsuleCircle(float x1, float y1, float x2, float y2, float r, float cx, float cy, float cr) {
-        return Contact.between(new Capsule(x1, y1, x2, y2, r), new Circle(cx, cy, cr));
+        return new Capsule(x1, y1, x2, y2, r).contact(new Circle(cx, cy, cr));
     }
 
     static Contact contactCapsuleRect(float x1, float y1, float x2, float y2, float r, float rectX, float rectY, float rectW, float rectH) {
-        return Contact.between(new Capsule(x1, y1, x2, y2, r), new Rect(rectX, rectY, rectW, rectH));
+        return new Capsule(x1, y1, x2, y2, r).contact(new Rect(rectX, rectY, rectW, rectH));
     }
 
     static Contact contactCapsuleCapsule(float ax1, float ay1, float ax2, float ay2, float r1, float bx1, float by1, float bx2, float by2, float r2) {
-        return Contact.between(new Capsule(ax1, ay1, ax2, ay2, r1), new Capsule(bx1, by1, bx2, by2, r2));
+        return new Capsule(ax1, ay1, ax2, ay2, r1).contact(new Capsule(bx1, by1, bx2, by2, r2));
     }
 
     static Contact contactEllipseCapsule(float x, float y, float radiusX, float radiusY, float x1, float y1, float x2, float y2, float r) {
-        return Contact.between(new Ellipse(x, y, radiusX, radiusY), new Capsule(x1, y1, x2, y2, r));
+        return new Ellipse(x, y, radiusX, radiusY).contact(new Capsule(x1, y1, x2, y2, r));
     }
 
     // ---------------------------------------------------------------- Separation (0 when they overlap)

@@ -31,7 +31,7 @@ class ResponseSeparateTest {
     void separate_leavesThemApart_andJustTouching(@ForAll("shapes") Shape a, @ForAll("shapes") Shape b) {
         Shape moved = Response.separate(a, b);
         assertFalse(moved.overlaps(b), () -> a + " moved to " + moved + " still overlaps " + b);
-        Contact contact = Contact.between(a, b);
+        Contact contact = a.contact(b);
         if (contact != null) {
             // Touching: a thousandth of a pixel back towards b overlaps again.
             float back = 1e-3f;

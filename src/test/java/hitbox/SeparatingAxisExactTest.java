@@ -114,7 +114,7 @@ class SeparatingAxisExactTest {
     }
 
     private static void check(Shape a, Shape b, boolean half, boolean jts, String what) {
-        Contact got = Contact.between(a, b);
+        Contact got = a.contact(b);
         double[] want = expected(a, b);
         what += ": " + got + ", exactly " + (want == null ? null : want[0] + ", " + want[1] + ", " + want[2]);
         if (want == null) {
@@ -148,7 +148,7 @@ class SeparatingAxisExactTest {
                 b = t;
             }
             check(a, b, half, i % 10 == 0, "case " + i + ": " + a + " and " + b);
-            hits += Contact.between(a, b) != null ? 1 : 0;
+            hits += a.contact(b) != null ? 1 : 0;
         }
         assertTrue(hits > cases / 5, "hits " + hits);
     }

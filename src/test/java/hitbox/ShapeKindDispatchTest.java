@@ -254,7 +254,7 @@ class ShapeKindDispatchTest {
                     }
                     Manifold m = Contact.manifold(a, b);
                     assertNotNull(m, "overlapping shapes have a manifold");
-                    assertEquals(Contact.between(a, b), m.contact(), "the contact of Contact.between");
+                    assertEquals(a.contact(b), m.contact(), "the contact of Contact.between");
                     assertTrue(m.pointCount() == 1 || m.pointCount() == 2, m.toString());
                     for (int i = 0; i < m.pointCount(); i++) {
                         // Every sample covers [-2, 2] x [-2, 2] and lies in [-13, 13] x [-11, 11].

@@ -48,7 +48,7 @@ class S10d_ContactResponseTest {
         Circle ball = new Circle(s.x, s.y, s.r);
         for (Shape[] list : new Shape[][] {s.shapes, s.walls}) {
             for (Shape shape : list) {
-                Contact c = Contact.between(ball, shape);
+                Contact c = ball.contact(shape);
                 assertTrue(c == null || c.depth() < TOUCHING,
                         "the ball at (" + s.x + ", " + s.y + ") is " + (c == null ? 0 : c.depth()) + " inside " + shape);
             }

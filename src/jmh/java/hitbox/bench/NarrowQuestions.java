@@ -291,7 +291,7 @@ final class NarrowQuestions {
         });
 
         question("poly8Contact", "convex 8-gon vs 8-gon, normal + depth", () -> NarrowCase.pairs(NarrowCase.Kind.CONTACT, 2, OCTAGON, OCTAGON));
-        depth("between", HITBOX, "Contact.between", q -> contactOf(q.a, q.b));
+        depth("between", HITBOX, "a.contact(b)", q -> contactOf(q.a, q.b));
         dyn4jContact("dyn4jGjk", "dyn4j Gjk.detect (GJK + EPA)", new Gjk());
         dyn4jContact("dyn4jSat", "dyn4j Sat.detect", new Sat());
         depth("gdx", PEER, "libGDX overlapConvexPolygons(.., mtv)", q -> {
@@ -536,7 +536,7 @@ final class NarrowQuestions {
         dyn4jContact("dyn4jSat", "dyn4j Sat.detect", new Sat());
 
         question("polygonCircleContact", "convex 8-gon vs circle, normal + depth", () -> NarrowCase.pairs(NarrowCase.Kind.CONTACT, 43, OCTAGON, CIRCLE));
-        depth("between", HITBOX, "Contact.between", q -> contactOf(q.a, q.b));
+        depth("between", HITBOX, "a.contact(b)", q -> contactOf(q.a, q.b));
         dyn4jContact("dyn4jSat", "dyn4j Sat.detect", new Sat());
         dyn4jContact("dyn4jGjk", "dyn4j Gjk.detect (GJK + EPA)", new Gjk());
 
@@ -658,7 +658,7 @@ final class NarrowQuestions {
         dyn4jContains();
         jtsCovers();
 
-        // Contact points: the count, the depth and normal (which must agree as Contact.between's do),
+        // Contact points: the count, the depth and normal (which must agree as a.contact(b)'s do),
         // and the points, each an end of the incident edge clipped, to 0.05 px.
         question("manifoldPoly8", "manifold, convex 8-gon vs 8-gon", () -> NarrowCase.pairs(NarrowCase.Kind.CONTACT, 96, OCTAGON, OCTAGON));
         manifolds();
@@ -913,7 +913,7 @@ final class NarrowQuestions {
     // ---------------------------------------------------------------- shared contenders
 
     private static NarrowContender.ContactFn contactOf(Shape[] a, Shape[] b) {
-        return (i, out) -> put(Contact.between(a[i], b[i]), out);
+        return (i, out) -> put(a[i].contact(b[i]), out);
     }
 
     private static boolean put(Contact c, float[] out) {

@@ -203,7 +203,7 @@ public class ShapesBench {
     public double ellipseContact_hitbox() {
         double s = 0;
         for (int i = 0; i < N; i++) {
-            Contact c = Contact.between(ellipses[i], ellipses[i + 1]);
+            Contact c = ellipses[i].contact(ellipses[i + 1]);
             s += c == null ? 0 : c.depth();
         }
         return s;
@@ -225,7 +225,7 @@ public class ShapesBench {
     public double capsuleContact_hitbox() {
         double s = 0;
         for (int i = 0; i < N; i++) {
-            Contact c = Contact.between(capsules[i], capsules[i + 1]);
+            Contact c = capsules[i].contact(capsules[i + 1]);
             s += c == null ? 0 : c.depth();
         }
         return s;

@@ -189,7 +189,7 @@ public class TuneBench {
     public double polygonContact_hitbox() {
         double d = 0;
         for (int i = 0; i < N; i++) {
-            Contact c = Contact.between(pa[i], pb[i]);
+            Contact c = pa[i].contact(pb[i]);
             d += c == null ? 0 : c.depth();
         }
         return d;
@@ -508,7 +508,7 @@ public class TuneBench {
         double d = 0;
         for (int i = 0; i < N; i++) {
             float[] b = rb[i];
-            Contact c = Contact.between(new Rect(b[0] - 20, b[1] - 20, 40, 40), pa[i]);
+            Contact c = new Rect(b[0] - 20, b[1] - 20, 40, 40).contact(pa[i]);
             d += c == null ? 0 : c.depth();
         }
         return d;

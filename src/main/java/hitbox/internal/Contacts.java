@@ -3,7 +3,7 @@ package hitbox.internal;
 import hitbox.*;
 
 /**
- * The table behind {@link Contact#between}: every pair of shape kinds routed to the code for
+ * The table behind {@link Shape#contact}: every pair of shape kinds routed to the code for
  * that pair, plus the one tie rule every contact uses.
  *
  * <p>This class is longer than most (about 480 lines) because the table is one place for all

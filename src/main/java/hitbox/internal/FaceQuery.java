@@ -5,7 +5,7 @@ import hitbox.*;
 /**
  * The contact of two convex polygons by the face query of their Minkowski difference: the
  * separating axis test that also finds the shortest push, on the polygons' corners in
- * double. Behind the convex polygon pairs of {@link Contact#between} (and so of
+ * double. Behind the convex polygon pairs of {@link Shape#contact} (and so of
  * {@code a.contact(b)}).
  */
 public final class FaceQuery {
