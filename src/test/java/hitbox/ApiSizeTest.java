@@ -35,11 +35,11 @@ import org.junit.jupiter.api.Test;
 class ApiSizeTest {
 
     /**
-     * The count after issue 30's second trim (300, the issue's limit; 424 after the first, 433
+     * The count after issue 30's second trim (299, under the issue's 300; 424 after the first, 433
      * with issue 29's nine world calls); lower it when the API shrinks, never raise it without
      * a reason in the docs.
      */
-    static final int LIMIT = 300;
+    static final int LIMIT = 299;
 
     @Test
     void publicMethods_countedByReflection_stayWithinTheLimit() throws IOException, URISyntaxException, ClassNotFoundException {
