@@ -230,13 +230,19 @@ public final class Supports {
             least = Math.min(least, found[3 * i + 2]);
         }
         double slack = Tolerance.SUPPORT_TIE * size;
-        Contacts.Shortest best = new Contacts.Shortest(slack);
+        // The rule of Contacts.Shortest on locals: a Shortest made here was not always
+        // scalar-replaced once the shapes' calls became one switch each (issue 30), and a
+        // manifold with a capsule then made 40 bytes a call (NarrowAllocationTest).
+        double bx = 0, by = 0, best = Double.POSITIVE_INFINITY;
         for (int i = 0; i < n; i++) {
-            if (found[3 * i + 2] <= least + slack) {
-                best.offer(found[3 * i], found[3 * i + 1], found[3 * i + 2]);
+            double nx = found[3 * i], ny = found[3 * i + 1], depth = found[3 * i + 2];
+            if (depth <= least + slack && Contacts.Shortest.beats(nx, ny, depth, bx, by, best, slack, false)) {
+                bx = nx;
+                by = ny;
+                best = depth;
             }
         }
-        return best.contact();
+        return best != Double.POSITIVE_INFINITY ? Contacts.of(bx, by, best) : null;
     }
 
     /** Stores direction u and its push as candidate i of found (grown if full); returns found. */
