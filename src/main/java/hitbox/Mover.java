@@ -106,7 +106,7 @@ final class Mover {
      * of the shape's largest coordinate where that is more.
      */
     static double skin(Shape s) {
-        double m = Math.max(Math.max(Math.abs(Extents.minX(s)), Math.abs(Extents.maxX(s))), Math.max(Math.abs(Extents.minY(s)), Math.abs(Extents.maxY(s))));
+        double m = Extents.reach(s);
         return Math.max(SKIN, 4 * Math.ulp((float) Math.min(m, Float.MAX_VALUE / 8)));
     }
 

@@ -174,7 +174,7 @@ public final class ConvexSweep {
 
     /** The shape's largest coordinate (by size) plus the motion's: the scale of its reaches' rounding. */
     private static double size(Shape s, float vx, float vy) {
-        return Math.max(Math.max(Math.abs(Extents.minX(s)), Math.abs(Extents.maxX(s))), Math.max(Math.abs(Extents.minY(s)), Math.abs(Extents.maxY(s))))
+        return Extents.reach(s)
                 + Math.abs(vx) + Math.abs(vy);
     }
 
@@ -228,7 +228,7 @@ public final class ConvexSweep {
 
     /** Is a move by (dx, dy) no longer than a float step of the shape's largest coordinate? */
     private static boolean withinRounding(Shape s, float dx, float dy) {
-        float m = (float) Math.max(Math.max(Math.abs(Extents.minX(s)), Math.abs(Extents.maxX(s))), Math.max(Math.abs(Extents.minY(s)), Math.abs(Extents.maxY(s))));
+        float m = (float) Extents.reach(s);
         return Math.max(Math.abs(dx), Math.abs(dy)) <= Math.ulp(m);
     }
 
