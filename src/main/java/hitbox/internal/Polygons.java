@@ -49,7 +49,11 @@ public final class Polygons {
             throw new IllegalArgumentException("a polygon needs at least 3 vertices, got " + n);
         }
         for (int i = 0; i < xy.length; i++) {
-            Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2), xy[i]);
+            // The name is built only for a refusal: a polygon made every frame (a turned body's
+            // shape) would otherwise spend most of its checking on strings no one reads.
+            if (!Float.isFinite(xy[i])) {
+                Check.finite((i % 2 == 0 ? "x" : "y") + (i / 2), xy[i]);
+            }
         }
         for (int i = 0; i < n; i++) {
             int k = (i + 1) % n;
