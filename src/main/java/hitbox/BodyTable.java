@@ -37,6 +37,15 @@ final class BodyTable {
 
     private final double[] scratch = new double[4];
 
+    /**
+     * Each id's tight box (x, y, w, h) and layers (category, mask), copies of the body's own,
+     * side by side in memory: the pair scans reject most of the broad phase's pairs (five in
+     * six in a crowd: it holds fat boxes) on these, without reading the two bodies from
+     * wherever they lie in memory.
+     */
+    private float[] boxes = new float[64];
+    private int[] layers = new int[32];
+
     BodyTable(World world, BroadPhase broad, ContactTracker tracker) {
         this.world = world;
         this.broad = broad;
@@ -55,6 +64,11 @@ final class BodyTable {
             byId = java.util.Arrays.copyOf(byId, Math.max(2 * byId.length, id + 1));
         }
         byId[id] = b;
+        if (4 * id + 4 > boxes.length) {
+            boxes = java.util.Arrays.copyOf(boxes, Math.max(2 * boxes.length, 4 * id + 4));
+            layers = java.util.Arrays.copyOf(layers, boxes.length / 2);
+        }
+        layers(b);
         size++;
         setBox(b, box[0], box[1], box[2], box[3]);
         if (grid != null) {
@@ -156,30 +170,36 @@ final class BodyTable {
     /**
      * Sets a body's tight box. The broad phase holds a fat box: when the tight box leaves it,
      * a new fat box (grown by an eighth of the body's size and a pixel, and four times the
-     * last move ahead) waits in the dirty list, which queries scan, until enough wait to put
+     * last move ahead, both kept in proportion for bodies of a pixel or two) waits in the dirty list, which queries scan, until enough wait to put
      * them all at once (or the next {@link World#step()}): the grid rebuilds after each change, so
      * putting one box per move would rebuild it once per move.
      */
     void setBox(Body b, float x, float y, float w, float h) {
         tracker.changed(b);
         if (b.grid != null) {
-            b.box(0, 0, b.grid.width(), b.grid.height());
+            box(b, 0, 0, b.grid.width(), b.grid.height());
             b.fat(0, 0, b.grid.width(), b.grid.height());
             broad.put(b.id, 0, 0, b.boxW, b.boxH);
             return;
         }
         boolean fresh = !b.boxed;
         double ddx = fresh ? 0 : (double) x - b.boxX, ddy = fresh ? 0 : (double) y - b.boxY;
-        b.box(x, y, w, h);
+        box(b, x, y, w, h);
         if (!fresh && x >= b.fatX && y >= b.fatY && (double) x + w <= (double) b.fatX + b.fatW
                 && (double) y + h <= (double) b.fatY + b.fatH) {
             return;
         }
-        double m = 1 + Math.max(w, h) / 8.0;
-        double x0 = Math.max(-Float.MAX_VALUE, x - m + Math.min(0, 4 * ddx));
-        double y0 = Math.max(-Float.MAX_VALUE, y - m + Math.min(0, 4 * ddy));
-        double x1 = Math.min(Float.MAX_VALUE, (double) x + w + m + Math.max(0, 4 * ddx));
-        double y1 = Math.min(Float.MAX_VALUE, (double) y + h + m + Math.max(0, 4 * ddy));
+        // Grown by an eighth of its size and a pixel (half its size, if under two pixels), and
+        // ahead by four times its last move, up to its size: a fixed pixel, or a move far
+        // ahead, would make a crowd of tiny bodies' fat boxes many times their size, and the
+        // broad phase's pairs (its fat boxes meeting) many times the contacts.
+        double size = Math.max(w, h);
+        double m = Math.min(1, size / 2) + size / 8;
+        double aheadX = Math.max(-size, Math.min(size, 4 * ddx)), aheadY = Math.max(-size, Math.min(size, 4 * ddy));
+        double x0 = Math.max(-Float.MAX_VALUE, x - m + Math.min(0, aheadX));
+        double y0 = Math.max(-Float.MAX_VALUE, y - m + Math.min(0, aheadY));
+        double x1 = Math.min(Float.MAX_VALUE, (double) x + w + m + Math.max(0, aheadX));
+        double y1 = Math.min(Float.MAX_VALUE, (double) y + h + m + Math.max(0, aheadY));
         // Never past the float range: a body near its edge gets a fat box that ends there.
         float fx = Math.min(x, Math.max(-Float.MAX_VALUE, Math.nextDown((float) x0)));
         float fy = Math.min(y, Math.max(-Float.MAX_VALUE, Math.nextDown((float) y0)));
@@ -192,6 +212,37 @@ final class BodyTable {
             dirty[dirtyCount++] = b;
         }
         flushIfMany();
+    }
+
+    /** Sets a body's tight box, and its copy here. */
+    void box(Body b, float x, float y, float w, float h) {
+        b.box(x, y, w, h);
+        int k = 4 * b.id;
+        boxes[k] = x;
+        boxes[k + 1] = y;
+        boxes[k + 2] = w;
+        boxes[k + 3] = h;
+    }
+
+    /** Copies a body's layers here (when added, and when they change). */
+    void layers(Body b) {
+        layers[2 * b.id] = b.category;
+        layers[2 * b.id + 1] = b.mask;
+    }
+
+    /**
+     * May the bodies of two ids meet: do their layers accept each other and their tight boxes
+     * overlap (touching counts)? Read from the copies here, not from the bodies.
+     */
+    boolean mayMeet(int i, int j) {
+        int li = 2 * i, lj = 2 * j;
+        if ((layers[li] & layers[lj + 1]) == 0 || (layers[lj] & layers[li + 1]) == 0) {
+            return false;
+        }
+        int p = 4 * i, q = 4 * j;
+        float ax = boxes[p], ay = boxes[p + 1], bx = boxes[q], by = boxes[q + 1];
+        return !(ax > (double) bx + boxes[q + 2] || bx > (double) ax + boxes[p + 2]
+                || ay > (double) by + boxes[q + 3] || by > (double) ay + boxes[p + 3]);
     }
 
     private Body[] dirty = new Body[16];

@@ -251,6 +251,9 @@ final class ContactTracker {
         float w = (float) Math.min(Float.MAX_VALUE, b.boxW + 2 * pad), h = (float) Math.min(Float.MAX_VALUE, b.boxH + 2 * pad);
         broad.query(x0, y0, w, h, collect);
         for (int i = 0; i < nearCount; i++) {
+            if (near[i] != b.id && !world.mayMeet(b.id, near[i])) {
+                continue;  // layers or tight boxes apart: no new contact, and the other body is not read
+            }
             Body o = world.body(near[i]);
             if (o == b || o == null || doneAt[o.id] == step) {
                 continue;  // a body looked at already this step tested its pair with b itself

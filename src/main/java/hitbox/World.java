@@ -415,7 +415,7 @@ public final class World {
     private void restore(Body b, Saved saved) {
         b.placed(saved.tx(), saved.ty(), saved.shape());
         float[] k = saved.box();
-        b.box(k[0], k[1], k[2], k[3]);
+        table.box(b, k[0], k[1], k[2], k[3]);
         b.fat(k[4], k[5], k[6], k[7]);
         if (!saved.dirty() && b.dirtyIndex >= 0) {
             table.undirty(b);
@@ -586,7 +586,13 @@ public final class World {
 
     /** A body's layers changed: its contacts need a look at the next step. */
     void layersChanged(Body b) {
+        table.layers(b);
         tracker.changed(b);
+    }
+
+    /** {@link BodyTable#mayMeet}: layers accepting and tight boxes overlapping, read without the bodies. */
+    boolean mayMeet(int i, int j) {
+        return table.mayMeet(i, j);
     }
 
     /** The body of an id, or null. */
@@ -611,8 +617,11 @@ public final class World {
         checkNotInCallback("pairs");
         table.flush();
         broad.pairs((i, j) -> {
+            if (!table.mayMeet(i, j)) {
+                return;  // most of the broad phase's pairs, rejected without reading the bodies
+            }
             Body a = table.body(i), b = table.body(j);
-            if (a.accepts(b) && tracker.overlap(a, b)) {
+            if (tracker.overlap(a, b)) {
                 if (a.serial > b.serial) {
                     Body t = a;
                     a = b;
