@@ -41,6 +41,13 @@ final class ContactTracker {
     private int[] metAt = new int[64];
     private int[] enteredAt = new int[64];
     private int[] lingerAt = new int[64];
+    /**
+     * The slot's STAY event, made the first time {@link World#step()} reports the contact as
+     * going on and handed again every step after, until the contact ends: an event is a value
+     * (its kind and its two bodies), so the same one serves, and a frame of resting contacts
+     * makes no new object per contact.
+     */
+    private BodyEvent[] stay = new BodyEvent[64];
     /** The slot's two edges, 2c (in a's list) and 2c + 1 (in b's): the next and previous edge of the same body's list. */
     private int[] next = new int[128];
     private int[] prev = new int[128];
@@ -211,7 +218,10 @@ final class ContactTracker {
         if (stays) {
             for (int c = 0; c < slots; c++) {
                 if (ca[c] != null && enteredAt[c] != step) {
-                    out.add(new BodyEvent(BodyEvent.Kind.STAY, ca[c], cb[c]));
+                    if (stay[c] == null) {
+                        stay[c] = new BodyEvent(BodyEvent.Kind.STAY, ca[c], cb[c]);
+                    }
+                    out.add(stay[c]);
                 }
             }
         }
@@ -305,6 +315,7 @@ final class ContactTracker {
                 metAt = java.util.Arrays.copyOf(metAt, n);
                 enteredAt = java.util.Arrays.copyOf(enteredAt, n);
                 lingerAt = java.util.Arrays.copyOf(lingerAt, n);
+                stay = java.util.Arrays.copyOf(stay, n);
                 next = java.util.Arrays.copyOf(next, 2 * n);
                 prev = java.util.Arrays.copyOf(prev, 2 * n);
             }
@@ -332,6 +343,7 @@ final class ContactTracker {
         bySerials.remove(PairSlots.key(a.serial, b.serial));
         ca[c] = null;
         cb[c] = null;
+        stay[c] = null;
         lingerAt[c] = 0;
         next[2 * c] = freeSlot;
         freeSlot = c;

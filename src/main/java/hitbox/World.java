@@ -461,8 +461,10 @@ public final class World {
      * with those of the last step. Call once a frame, after the moves. Matter.js's
      * {@code collisionStart}, {@code collisionActive} and {@code collisionEnd} in one list.
      *
-     * <p>This is the simple form, for a sketch with a few contacts: it makes a STAY event for
-     * every contact that goes on, every frame. A world with many bodies at rest calls
+     * <p>This is the simple form, for a sketch with a few contacts: it lists a STAY event for
+     * every contact that goes on, every frame (the same event object each frame while the
+     * contact lasts, so a contact costs a list entry, not a new event; the list is new each
+     * step). A world with many bodies at rest calls
      * {@link #step(List)} instead, which hands only the changes, and reads the contacts that
      * go on when it needs them ({@link #contacts(BiConsumer)}, {@link #contacts(Body, List)},
      * {@link #inContact}), as Box2D v3's begin and end events and contact data.
@@ -474,7 +476,8 @@ public final class World {
      */
     public List<BodyEvent> step() {
         checkNotInCallback("step");
-        List<BodyEvent> events = new ArrayList<>();
+        // Room for every contact now and a few changes: no copying as the STAYs go in.
+        List<BodyEvent> events = new ArrayList<>(tracker.count() + 16);
         endFrame(events, true);
         return Collections.unmodifiableList(events);
     }
