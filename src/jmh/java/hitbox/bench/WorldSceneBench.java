@@ -57,7 +57,14 @@ public class WorldSceneBench {
      * contender, the depth for one found only by Hitbox). Throws otherwise; prints the tally.
      */
     static void check(WorldScene scene, WorldSceneContenders.Contender it, String name) {
-        long[] got = it.framePairs();
+        compare(scene, it.framePairs(), name);
+    }
+
+    /**
+     * {@link #check} for pairs found elsewhere (detect-collisions in Node, {@link WorldSceneNode}):
+     * {@code got}, sorted keys {@code min << 32 | max}, against Hitbox's on the scene's poses now.
+     */
+    static void compare(WorldScene scene, long[] got, String name) {
         WorldSceneContenders.HitboxParts reference = new WorldSceneContenders.HitboxParts();
         reference.load(scene);
         long[] want = reference.framePairs();
@@ -100,7 +107,9 @@ public class WorldSceneBench {
      * Hitbox and dyn4j a millionth of the size unit (rounding); for JBox2D its skin of
      * 2 x 0.01 m (the size unit being a metre), plus the octagon around an ellipse, up to
      * 8.3% of its larger radius beyond it, plus half of a line's thickness there (0.001 m),
-     * plus rounding in float.
+     * plus rounding in float; for detect-collisions, whose ellipse is a polygon of N points on it
+     * ({@link WorldSceneNode#ellipseCorners}), up to {@code 1 - cos(pi / N)} of the larger radius
+     * inside it.
      */
     static double tolerance(WorldScene s, String name, int a, int b) {
         double t = 1e-6 * s.size;
@@ -110,6 +119,13 @@ public class WorldSceneBench {
             for (int i : new int[] {a, b}) {
                 if (s.kind[i] == WorldScene.ELLIPSE) {
                     t += (1 / Math.cos(Math.PI / 8) - 1) * s.reach[i];
+                }
+            }
+        }
+        if (name.startsWith("detectCollisions")) {
+            for (int i : new int[] {a, b}) {
+                if (s.kind[i] == WorldScene.ELLIPSE) {
+                    t += (1 - Math.cos(Math.PI / WorldSceneNode.ellipseCorners(s.p[i], s.q[i]))) * s.reach[i];
                 }
             }
         }
