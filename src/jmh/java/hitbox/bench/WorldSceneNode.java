@@ -62,11 +62,11 @@ final class WorldSceneNode {
             write(scene, sceneFile);
             Process node;
             try {
-                node = new ProcessBuilder("node", script.toString(), sceneFile.toString(), answerFile.toString(),
+                node = new ProcessBuilder(System.getProperty("node", "node"), script.toString(), sceneFile.toString(), answerFile.toString(),
                         Integer.toString(checkFrames), Integer.toString(rounds), Long.toString(budgetMs))
                         .redirectOutput(ProcessBuilder.Redirect.INHERIT).redirectError(errFile.toFile()).start();
             } catch (IOException e) {
-                result.failure = "not run: no `node` (" + e.getMessage() + ")";
+                result.failure = "not run: no Node (" + e.getMessage() + ")";
                 return result;
             }
             if (!node.waitFor(2, TimeUnit.HOURS)) {

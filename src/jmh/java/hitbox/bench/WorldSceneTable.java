@@ -22,7 +22,8 @@ import java.util.Locale;
  *
  * <p>Arguments: the sizes (default 1000 10000 100000). System properties: {@code rounds}
  * (default 7), {@code budgetMs} (CPU time per contender per round, default 300 ms),
- * {@code nodeScript} (default {@code src/jmh/node/world-scene.mjs}).
+ * {@code nodeScript} (default {@code src/jmh/node/world-scene.mjs}), {@code node} (the Node
+ * executable, default {@code node} on the PATH).
  */
 public final class WorldSceneTable {
     private static final String[] CONTENDERS = {"hitboxWorld", "hitboxParts", "dyn4jWorld", "jbox2dWorld"};
