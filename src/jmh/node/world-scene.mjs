@@ -19,7 +19,7 @@
 // then, and the timing: <rounds> rounds (after two to warm up) of frames until <budget ms> of
 // CPU time, the CPU time a frame of the main thread (/proc/thread-self/schedstat, as Java's
 // thread CPU time) and of the whole process (process.cpuUsage(), V8's garbage collector and
-// compiler threads included), and the bytes allocated a frame (below).
+// compiler threads included), and the bytes allocated a frame (below; -1 where Node cannot tell).
 import { readFileSync, writeFileSync } from 'node:fs';
 import v8 from 'node:v8';
 import { System } from 'detect-collisions';
@@ -186,8 +186,8 @@ function allocatedSince(start, end, statistics) {
 const threadMs = [], processMs = [], bytes = [];
 const budgetMicros = budgetMs * 1000;
 for (let r = -2; r < rounds; r++) {   // two rounds of warming up
-  const profiler = new v8.GCProfiler();
-  profiler.start();
+  const profiler = v8.GCProfiler ? new v8.GCProfiler() : null;   // Node 18.15 and later
+  profiler?.start();
   const heap0 = usedHeap(), t0 = threadNanos(), c0 = processMicros();
   let frames = 0, c;
   do {
@@ -197,11 +197,11 @@ for (let r = -2; r < rounds; r++) {   // two rounds of warming up
     c = processMicros() - c0;
   } while (c < budgetMicros);
   const t = threadNanos() - t0, heap1 = usedHeap();
-  const gc = profiler.stop();
+  const gc = profiler?.stop();
   if (r >= 0) {
     threadMs.push(t0 < 0 ? -1 : t / 1e6 / frames);
     processMs.push(c / 1e3 / frames);
-    bytes.push(allocatedSince(heap0, heap1, gc.statistics) / frames);
+    bytes.push(gc ? allocatedSince(heap0, heap1, gc.statistics) / frames : -1);
   }
 }
 lines.push(`threadMs ${threadMs.join(' ')}`);

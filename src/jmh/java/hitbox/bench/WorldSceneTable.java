@@ -81,10 +81,14 @@ public final class WorldSceneTable {
             if (node.failure != null) {
                 row.append(" ").append(node.failure).append(" | |");
             } else {
-                row.append(String.format(Locale.ROOT, " %s (%s) | %.1fx |", millis(node.threadMs), kilobytes(node.bytes), node.threadMs / median(ms[0])));
+                // Without Linux's per-thread clock, the whole process's CPU time, and the note says so.
+                double nodeMs = node.threadMs >= 0 ? node.threadMs : node.processMs;
+                row.append(String.format(Locale.ROOT, " %s (%s) | %.1fx |", millis(nodeMs),
+                        node.bytes < 0 ? "bytes not measured" : kilobytes(node.bytes), nodeMs / median(ms[0])));
                 notes.add(String.format(Locale.ROOT, "%,d bodies: detect-collisions %s (check2d %s), %s ms of the process's CPU a frame"
                         + " (V8's collector and compiler threads too) beside %s of its main thread", n,
-                        node.versions.split(" ")[0], node.versions.split(" ")[1], millis(node.processMs), millis(node.threadMs)));
+                        node.versions.split(" ")[0], node.versions.split(" ")[1], millis(node.processMs),
+                        node.threadMs >= 0 ? millis(node.threadMs) : "(not measured here: the row is the process's)"));
             }
             rows.add(row.toString());
             System.out.println(row);
