@@ -120,6 +120,7 @@ public final class WorldSceneTable {
 
     private static String kilobytes(double b) {
         return b < 1024 ? String.format(Locale.ROOT, "%.0f B", b) : b < 1024 * 1024
-                ? String.format(Locale.ROOT, "%.0f KB", b / 1024) : String.format(Locale.ROOT, "%.1f MB", b / 1024 / 1024);
+                ? String.format(Locale.ROOT, "%.0f KB", b / 1024) : b < 1024 * 1024 * 1024
+                ? String.format(Locale.ROOT, "%.1f MB", b / 1024 / 1024) : String.format(Locale.ROOT, "%.2f GB", b / 1024 / 1024 / 1024);
     }
 }
