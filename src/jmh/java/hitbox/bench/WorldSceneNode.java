@@ -24,10 +24,15 @@ import java.util.concurrent.TimeUnit;
 final class WorldSceneNode {
     /** What the script measured and found, or why it could not run ({@link #failure} non-null). */
     static final class Result {
+        /** Why there is no row ("not run: ..." or "failed: ..."), or null. */
         String failure;
+        /** detect-collisions' version and check2d's, space-separated. */
         String versions;
+        /** Median ms of the main thread's CPU a frame, or -1 without a per-thread clock. */
         double threadMs;
+        /** Median ms of the whole process's CPU a frame. */
         double processMs;
+        /** Median bytes of JavaScript heap allocated a frame, or -1 where Node cannot tell. */
         double bytes;
     }
 
