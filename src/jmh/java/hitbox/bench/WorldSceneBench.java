@@ -57,7 +57,14 @@ public class WorldSceneBench {
      * contender, the depth for one found only by Hitbox). Throws otherwise; prints the tally.
      */
     static void check(WorldScene scene, WorldSceneContenders.Contender it, String name) {
-        long[] got = it.framePairs();
+        compare(scene, it.framePairs(), name);
+    }
+
+    /**
+     * {@link #check} for pairs found elsewhere (detect-collisions in Node, {@link WorldSceneNode}):
+     * {@code got}, sorted keys {@code min << 32 | max}, against Hitbox's on the scene's poses now.
+     */
+    static void compare(WorldScene scene, long[] got, String name) {
         WorldSceneContenders.HitboxParts reference = new WorldSceneContenders.HitboxParts();
         reference.load(scene);
         long[] want = reference.framePairs();
@@ -100,7 +107,10 @@ public class WorldSceneBench {
      * Hitbox and dyn4j a millionth of the size unit (rounding); for JBox2D its skin of
      * 2 x 0.01 m (the size unit being a metre), plus the octagon around an ellipse, up to
      * 8.3% of its larger radius beyond it, plus half of a line's thickness there (0.001 m),
-     * plus rounding in float.
+     * plus rounding in float; for detect-collisions, which computes in double where Hitbox's
+     * shapes are float, a float step at 1,024 px for each shape, and for each ellipse, a polygon of
+     * N points on it ({@link WorldSceneNode#ellipseCorners}), up to {@code 1 - cos(pi / N)} of its
+     * larger radius inside it.
      */
     static double tolerance(WorldScene s, String name, int a, int b) {
         double t = 1e-6 * s.size;
@@ -110,6 +120,16 @@ public class WorldSceneBench {
             for (int i : new int[] {a, b}) {
                 if (s.kind[i] == WorldScene.ELLIPSE) {
                     t += (1 / Math.cos(Math.PI / 8) - 1) * s.reach[i];
+                }
+            }
+        }
+        if (name.startsWith("detectCollisions")) {
+            // It computes in double, the reference (Hitbox's parts) in float: each of the reference's
+            // corners within a float step at 1,024 px (1.2e-4 px) of the double one, in each shape.
+            t += 2 * Math.ulp(WorldScene.WIDTH);
+            for (int i : new int[] {a, b}) {
+                if (s.kind[i] == WorldScene.ELLIPSE) {
+                    t += (1 - Math.cos(Math.PI / WorldSceneNode.ellipseCorners(s.p[i], s.q[i]))) * s.reach[i];
                 }
             }
         }
