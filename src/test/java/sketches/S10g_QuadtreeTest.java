@@ -45,8 +45,7 @@ class S10g_QuadtreeTest {
 
     private static S10g_Quadtree checkAgainstAllPairs(Script script, boolean rTree) {
         long[] tests = {0, 0};
-        S10g_Quadtree sketch = new S10g_Quadtree();
-        SketchRun.of(sketch)
+        SketchRun.Result<S10g_Quadtree> r = SketchRun.of(new S10g_Quadtree())
                 .script(script)
                 .everyFrame(s -> {
                     if (s.frameCount == 1 && rTree) {
@@ -77,7 +76,7 @@ class S10g_QuadtreeTest {
                     tests[1] += (long) s.count * (s.count - 1) / 2;
                 }).run();
         assertTrue(tests[0] * 5 < tests[1], "the tree made " + tests[0] + " tests, an all-pairs loop " + tests[1]);
-        return sketch;
+        return r.sketch();  // the instance that ran
     }
 
     @Test

@@ -4,8 +4,14 @@ import java.awt.EventQueue;
 import java.awt.Frame;
 import java.awt.GraphicsEnvironment;
 import java.io.File;
+import java.lang.reflect.Constructor;
+import java.lang.reflect.Field;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Modifier;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -58,6 +64,10 @@ public final class SketchRun<S extends PApplet> {
 
     /**
      * Prepares a run of a sketch instance that has not been started.
+     *
+     * <p>The run may end up with another instance of the same class: see {@link #run()}. A test
+     * that keeps its own reference to the sketch it passed here reads the instance that ran only
+     * through the checks' parameter and {@link Result#sketch()}, never through that reference.
      *
      * @param sketch a new sketch, e.g. {@code new S01_EdgeBounce()}
      * @param <S>    its class
@@ -170,43 +180,193 @@ public final class SketchRun<S extends PApplet> {
     /**
      * Opens the window, runs the frames with the scripted input, closes the window.
      *
+     * <p>One failure is not the sketch's: while the window opens, AWT's repaint on the event
+     * thread can race Processing's first render on the animation thread for the window's buffer,
+     * and the render dies with a {@code NullPointerException} inside
+     * {@code java.awt.Component$FlipBufferStrategy}, the animation thread with it. When exactly
+     * that happens (on this run's animation thread, before the first frame's {@code post}, with
+     * no frame of the sketch's class or of {@code hitbox} on the stack, only AWT and Processing's
+     * surface), the window is closed and the run starts once more, with a new instance made by
+     * the sketch class's public no-arg constructor and the same script, checks, saves and
+     * captures; a line on standard error says so. The second instance is the one the checks are
+     * given and {@link Result#sketch()} returns: a test that kept a reference to the sketch it
+     * passed to {@link #of} must read the run's state through those, not through its reference.
+     * A sketch that was changed before the run (a field that differs from a new instance's) is not
+     * run again, since a new one would not be the same sketch.
+     *
      * @return what the run saw
-     * @throws AssertionError if the sketch threw, a check failed, or the sketch stalled
+     * @throws AssertionError if the sketch threw, a check failed, or the sketch stalled; or if the
+     *         window race struck and the run could not be repeated, or struck again
      * @throws IllegalStateException if there is no display
      */
     public Result<S> run() {
         if (!displayAvailable()) {
             throw new IllegalStateException(NO_DISPLAY);
         }
-        int total = frames > 0 ? frames : script.frames();
-        FrameHooks hooks = new FrameHooks(total);
-        sketch.registerMethod("pre", hooks);
-        sketch.registerMethod("post", hooks);
         String name = sketch.getClass().getSimpleName();
+        // Taken before the sketch runs, to tell later whether a new instance is the same sketch.
+        Map<String, String> asPassed = fields(sketch);
+        FrameHooks first = attempt(sketch);
+        if (first.race == null) {
+            return first.result();
+        }
+        String race = name + " lost the window-buffer race between AWT's repaint and Processing's first render"
+                + " before frame 1 (" + first.race + " in " + first.race.getStackTrace()[0] + ")";
+        S fresh = freshInstance(race, asPassed);
+        System.err.println("SketchRun: " + race + "; ran it again once with a new " + name);
+        FrameHooks second = attempt(fresh);
+        if (second.race != null) {
+            throw new AssertionError(race + ", and the new " + name + " lost it too", second.race);
+        }
+        return second.result();
+    }
+
+    /** One window: runs an instance until its last frame, a failure, a stall or the window race. */
+    private FrameHooks attempt(S instance) {
+        int total = frames > 0 ? frames : script.frames();
+        FrameHooks hooks = new FrameHooks(instance, total);
+        instance.registerMethod("pre", hooks);
+        instance.registerMethod("post", hooks);
+        String name = instance.getClass().getSimpleName();
         PApplet.runSketch(new String[] {PApplet.ARGS_LOCATION + "=40,40",
-                PApplet.ARGS_SKETCH_FOLDER + "=" + (folder != null ? folder : sketchFolder(sketch)).getAbsolutePath(), name}, sketch);
+                PApplet.ARGS_SKETCH_FOLDER + "=" + (folder != null ? folder : sketchFolder(instance)).getAbsolutePath(), name}, instance);
         // runSketch() installs Processing's own handler, which only prints; this one replaces
         // it and also ends the wait. Only this run's animation thread counts: it runs setup(),
         // draw() and the sketch's event methods. Before its first frame it is known by
         // Processing's name for it. The AWT event thread runs no sketch code, only
         // Processing's repaints, which can race the animation thread for the window's buffer
         // while it opens (an NPE in java.awt.Component$FlipBufferStrategy); Processing prints
-        // those and the sketch goes on, so they are printed here too, not failed.
+        // those and the sketch goes on, so they are printed here too, not failed. When the
+        // animation thread is the one that loses that race, it dies: see run().
         Thread.setDefaultUncaughtExceptionHandler((t, e) -> {
             Thread mine = hooks.thread;
             boolean sketchThread = mine != null ? mine == t : ANIMATION_THREAD.equals(t.getName());
-            if (sketchThread) {
-                hooks.fail(e);
-            } else {
+            if (!sketchThread) {
                 e.printStackTrace();
+            } else if (!hooks.posted && isWindowRace(e, instance.getClass())) {
+                hooks.lostRace(t, e);
+            } else {
+                hooks.fail(e);
             }
         });
         try {
             hooks.await(name);
         } finally {
-            close(sketch, hooks.thread);
+            close(instance, hooks.thread);
         }
-        return new Result<>(sketch, hooks.framesDone, hooks.images, hooks.last);
+        return hooks;
+    }
+
+    /**
+     * Whether a throwable is the window-buffer race and nothing else: a NullPointerException
+     * thrown inside one of AWT's buffer strategies, with only the JDK's and Processing's surface
+     * code on the stack. A frame of the sketch's class, of {@code hitbox}, or of Processing
+     * outside its surface (PApplet, where the sketch's own methods run) makes it the sketch's.
+     *
+     * @param e      what the animation thread threw
+     * @param sketch the sketch's class
+     * @return true only for the race
+     */
+    static boolean isWindowRace(Throwable e, Class<?> sketch) {
+        StackTraceElement[] stack = e.getStackTrace();
+        if (!(e instanceof NullPointerException) || e.getCause() != null || stack.length == 0) {
+            return false;
+        }
+        String top = stack[0].getClassName();
+        if (!top.startsWith("java.awt.Component$") || !top.endsWith("BufferStrategy")) {
+            return false;
+        }
+        String own = sketch.getName();
+        for (StackTraceElement frame : stack) {
+            String c = frame.getClassName();
+            if (c.equals(own) || c.startsWith(own + "$") || c.startsWith("hitbox.")) {
+                return false;
+            }
+            boolean jdk = c.startsWith("java.") || c.startsWith("javax.") || c.startsWith("sun.") || c.startsWith("jdk.");
+            boolean surface = c.startsWith("processing.awt.PSurface") || c.startsWith("processing.core.PSurface");
+            if (!jdk && !surface) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** A new instance of the sketch's class for the second window, or why there can be none. */
+    @SuppressWarnings("unchecked")
+    private S freshInstance(String race, Map<String, String> asPassed) {
+        Class<? extends PApplet> type = sketch.getClass();
+        S fresh;
+        try {
+            Constructor<? extends PApplet> constructor = type.getConstructor();
+            fresh = (S) constructor.newInstance();
+        } catch (NoSuchMethodException | IllegalAccessException | InstantiationException e) {
+            throw new AssertionError(race + "; not run again: " + type.getName() + " has no public no-arg constructor", e);
+        } catch (InvocationTargetException e) {
+            throw new AssertionError(race + "; not run again: a new " + type.getSimpleName() + " threw " + e.getCause(), e.getCause());
+        }
+        Map<String, String> plain = fields(fresh);
+        for (Map.Entry<String, String> field : asPassed.entrySet()) {
+            String other = plain.get(field.getKey());
+            if (!field.getValue().equals(other)) {
+                throw new AssertionError(race + "; not run again: the sketch was changed before the run (its "
+                        + field.getKey() + " was " + field.getValue() + ", a new one's is " + other
+                        + "), so a new one would not be the same sketch");
+            }
+        }
+        return fresh;
+    }
+
+    /**
+     * The fields a sketch's own classes declare, each as text that two instances share when
+     * they hold the same values: numbers, text and enums by value, arrays element by element,
+     * other objects by their {@code toString()} when their class writes one, else by class only.
+     * Comparing these tells a sketch as its constructor left it from one a test set up.
+     */
+    private static Map<String, String> fields(PApplet sketch) {
+        Map<String, String> out = new LinkedHashMap<>();
+        for (Class<?> c = sketch.getClass(); c != PApplet.class && c != null; c = c.getSuperclass()) {
+            for (Field f : c.getDeclaredFields()) {
+                if (Modifier.isStatic(f.getModifiers()) || f.isSynthetic()) {
+                    continue;
+                }
+                String value;
+                try {
+                    f.setAccessible(true);
+                    value = describe(f.get(sketch));
+                } catch (RuntimeException | IllegalAccessException e) {
+                    value = "unreadable (" + e + ")";  // never equal to a new one's: no retry
+                }
+                out.put(c.getSimpleName() + "." + f.getName(), value);
+            }
+        }
+        return out;
+    }
+
+    private static String describe(Object value) {
+        if (value == null) {
+            return "null";
+        }
+        Class<?> type = value.getClass();
+        if (type.isArray()) {
+            if (!type.getComponentType().isPrimitive()) {
+                Object[] items = (Object[]) value;
+                StringBuilder b = new StringBuilder("[");
+                for (Object item : items) {
+                    b.append(b.length() > 1 ? ", " : "").append(describe(item));
+                }
+                return b.append(']').toString();
+            }
+            return Arrays.deepToString(new Object[] {value});
+        }
+        if (value instanceof Number || value instanceof CharSequence || value instanceof Character
+                || value instanceof Boolean || value instanceof Enum<?>) {
+            return String.valueOf(value);
+        }
+        try {
+            return type.getMethod("toString").getDeclaringClass() == Object.class ? type.getName() : value.toString();
+        } catch (NoSuchMethodException e) {
+            throw new AssertionError(e);  // every class has toString()
+        }
     }
 
     private static void close(PApplet sketch, Thread animation) {
@@ -233,6 +393,7 @@ public final class SketchRun<S extends PApplet> {
      * Processing finds them by reflection.
      */
     public final class FrameHooks {
+        private final S sketch;
         private final int total;
         private final AtomicReference<Throwable> failure = new AtomicReference<>();
         private final Map<Integer, PImage> images = new HashMap<>();
@@ -240,11 +401,16 @@ public final class SketchRun<S extends PApplet> {
         private volatile boolean finished;
         private volatile int framesDone;
         private volatile Thread thread;
+        /** Set when post() is first called: the first frame has been drawn. */
+        private volatile boolean posted;
+        /** What the animation thread threw when it lost the window race, see run(). */
+        private volatile Throwable race;
         private int mouseX;
         private int mouseY;
         private boolean pressed;
 
-        FrameHooks(int total) {
+        FrameHooks(S sketch, int total) {
+            this.sketch = sketch;
             this.total = total;
         }
 
@@ -298,6 +464,7 @@ public final class SketchRun<S extends PApplet> {
 
         /** Called by Processing after each draw(): checks, saves, and stops after the last frame. */
         public void post() {
+            posted = true;
             if (finished) {
                 return;
             }
@@ -335,6 +502,17 @@ public final class SketchRun<S extends PApplet> {
             finished = true;
         }
 
+        /** The animation thread died of the window race: the wait ends without a failure. */
+        void lostRace(Thread animation, Throwable t) {
+            thread = animation;
+            race = t;
+            finished = true;
+        }
+
+        Result<S> result() {
+            return new Result<>(sketch, framesDone, images, last);
+        }
+
         void await(String name) {
             long lastProgress = System.currentTimeMillis();
             int seen = -1;
@@ -365,7 +543,9 @@ public final class SketchRun<S extends PApplet> {
     /**
      * What a run saw.
      *
-     * @param sketch      the sketch, stopped, with its fields as the last frame left them
+     * @param sketch      the sketch, stopped, with its fields as the last frame left them: the one
+     *                    passed to {@link SketchRun#of}, or the new one if the run was repeated
+     *                    after the window race (see {@link SketchRun#run()})
      * @param framesDrawn how many times draw() ran
      * @param images    the frames kept with {@link #capture(int)}, by frame number
      * @param lastFrame what the last frame drew

@@ -118,7 +118,7 @@ class ProcessingLibraryTest {
             assertTrue(from.endsWith("library/Hitbox.jar"), "hitbox.Collide comes from " + from);
             SketchRun.Result<PApplet> r = SketchRun.of(sketch).folder(example).frames(3).run();
             assertEquals(3, r.framesDrawn());
-            assertEquals(600, sketch.width);
+            assertEquals(600, r.sketch().width);
         }
     }
 

@@ -97,7 +97,7 @@ class SketchBuildTest {
                 .script(new Script().frames(5).mouse(1, 10, 190)).run();
         var field = sketch.getClass().getDeclaredField("words");
         field.setAccessible(true);  // a sketch's fields are package-private, as the IDE writes them
-        String[] words = (String[]) field.get(sketch);
+        String[] words = (String[]) field.get(r.sketch());  // the instance that ran
         assertEquals(List.of("first", "second", "third"), List.of(words), "loadStrings reads data/");
         assertEquals(0xFFFFFF00, r.lastFrame().get(3, 3), "loadImage reads data/");
         assertEquals(0xFF4CC36A, r.lastFrame().get(150, 100), "the ball, #4CC36A while the mouse is outside");
@@ -109,7 +109,7 @@ class SketchBuildTest {
         assumeTrue(SketchRun.displayAvailable(), SketchRun.NO_DISPLAY);
         PApplet sketch = catalog.find("StaticMode").orElseThrow().newInstance();
         SketchRun.Result<PApplet> r = SketchRun.of(sketch).frames(1).run();
-        assertEquals(200, sketch.width);
+        assertEquals(200, r.sketch().width);
         assertEquals(0xFF336699, r.lastFrame().get(50, 50));
         assertEquals(0xFFE8504A, r.lastFrame().get(150, 50));
     }
