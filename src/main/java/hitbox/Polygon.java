@@ -61,6 +61,12 @@ public final class Polygon implements Shape {
             public Polygon image(Polygon p, float[] xy, double scaleMin, double delta, Supplier<String> verb) {
                 return p.image(xy, scaleMin, delta, verb);
             }
+
+            @Override
+            public Polygon taken(float[] xy) {
+                Polygons.validate(xy);
+                return new Polygon(xy, Polygons.concaveVertex(xy));
+            }
         });
     }
 
@@ -122,9 +128,7 @@ public final class Polygon implements Shape {
      */
     public static Polygon of(float... xy) {
         Check.notNull("xy", xy);
-        float[] copy = xy.clone();
-        Polygons.validate(copy);
-        return new Polygon(copy, Polygons.concaveVertex(copy));
+        return HiddenParts.taken(xy.clone());
     }
 
     /**

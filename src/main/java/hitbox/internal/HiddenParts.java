@@ -62,6 +62,14 @@ public final class HiddenParts {
          * @throws IllegalArgumentException if the rounded outline is not a valid polygon
          */
         Polygon image(Polygon p, float[] xy, double scaleMin, double delta, Supplier<String> verb);
+
+        /**
+         * @param xy the vertices {@code x0, y0, x1, y1, ...} (taken, not copied: the caller made
+         *           them and keeps no reference)
+         * @return the polygon, checked in full as {@link Polygon#of(float...)} checks it
+         * @throws IllegalArgumentException as {@link Polygon#of(float...)} does
+         */
+        Polygon taken(float[] xy);
     }
 
     /** A transform's entries in double, granted by {@link Transform}. */
@@ -173,6 +181,11 @@ public final class HiddenParts {
      */
     public static Polygon image(Polygon p, float[] xy, double scaleMin, double delta, Supplier<String> verb) {
         return Granted.POLYGONS.image(p, xy, scaleMin, delta, verb);
+    }
+
+    /** @see PolygonAccess#taken */
+    public static Polygon taken(float[] xy) {
+        return Granted.POLYGONS.taken(xy);
     }
 
     /** @param t the transform @return its entries in double */

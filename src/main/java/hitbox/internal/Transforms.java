@@ -178,8 +178,7 @@ public final class Transforms {
         if (a.det() == 0) {
             throw singular("rectangle", a);
         }
-        double[] corners = {x0, y0, x1, y0, x1, y1, x0, y1};
-        return polygonOf(corners, a, r);
+        return polygonOf(x0, y0, x1, y1, a, r);
     }
 
     /** A segment's image: its two ends transformed. */
@@ -280,14 +279,18 @@ public final class Transforms {
     }
 
     /** The polygon of the given corners (in double) transformed, checked as Polygon.of checks. */
-    private static Polygon polygonOf(double[] corners, Affine a, Rect rect) {
-        float[] xy = new float[corners.length];
-        for (int i = 0; i < xy.length; i += 2) {
-            xy[i] = coordinate("corner ", i / 2, "'s x", a.x(corners[i], corners[i + 1]));
-            xy[i + 1] = coordinate("corner ", i / 2, "'s y", a.y(corners[i], corners[i + 1]));
+    private static Polygon polygonOf(double x0, double y0, double x1, double y1, Affine a, Rect rect) {
+        // The corners top-left, top-right, bottom-right, bottom-left, each transformed in
+        // double and rounded once; the array is the polygon's own (a turned body's rectangle
+        // is made every frame: no corner array and no copy besides).
+        float[] xy = new float[8];
+        for (int i = 0; i < 4; i++) {
+            double x = i == 1 || i == 2 ? x1 : x0, y = i >= 2 ? y1 : y0;
+            xy[2 * i] = coordinate("corner ", i, "'s x", a.x(x, y));
+            xy[2 * i + 1] = coordinate("corner ", i, "'s y", a.y(x, y));
         }
         try {
-            return Polygon.of(xy);
+            return HiddenParts.taken(xy);
         } catch (IllegalArgumentException ex) {
             throw new IllegalArgumentException("the corners of the rectangle " + rect + " transformed round to an outline a"
                     + " polygon cannot have: " + ex.getMessage(), ex);
