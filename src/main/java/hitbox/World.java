@@ -619,29 +619,42 @@ public final class World {
         Check.notNull("out", out);
         checkNotInCallback("pairs");
         table.flush();
-        broad.pairs((i, j) -> {
-            if (!table.mayMeet(i, j)) {
-                return;  // most of the broad phase's pairs, rejected without reading the bodies
-            }
-            Body a = table.body(i), b = table.body(j);
-            if (tracker.overlap(a, b)) {
-                if (a.serial > b.serial) {
-                    Body t = a;
-                    a = b;
-                    b = t;
-                }
-                callbackDepth++;
-                try {
-                    out.accept(a, b);
-                } catch (IllegalStateException e) {
-                    throw e;
-                } catch (RuntimeException e) {
-                    throw new IllegalArgumentException("out threw " + e + " for " + a + " and " + b, e);
-                } finally {
-                    callbackDepth--;
-                }
-            }
-        });
+        pairsOut = out;
+        try {
+            broad.pairs(pairScan);
+        } finally {
+            pairsOut = null;
+        }
+    }
+
+    /** The caller's sink of the {@link #pairs} call under way (never nested: no call from a callback). */
+    private BiConsumer<Body, Body> pairsOut;
+    /** {@link #pairs}' scan of the broad phase's pairs, made once: a lambda capturing the sink would be made every call. */
+    private final PairConsumer pairScan = this::scanPair;
+
+    private void scanPair(int i, int j) {
+        if (!table.mayMeet(i, j)) {
+            return;  // most of the broad phase's pairs, rejected without reading the bodies
+        }
+        Body a = table.body(i), b = table.body(j);
+        if (!tracker.overlap(a, b)) {
+            return;
+        }
+        if (a.serial > b.serial) {
+            Body t = a;
+            a = b;
+            b = t;
+        }
+        callbackDepth++;
+        try {
+            pairsOut.accept(a, b);
+        } catch (IllegalStateException e) {
+            throw e;
+        } catch (RuntimeException e) {
+            throw new IllegalArgumentException("out threw " + e + " for " + a + " and " + b, e);
+        } finally {
+            callbackDepth--;
+        }
     }
 
     /**

@@ -360,4 +360,31 @@ class WorldContactsTest {
         assertEquals(BodyEvent.Kind.STAY, again.kind());
         assertNotSame(old, again, "a contact that ended and began again is reported by a new event");
     }
+    /**
+     * A pair scan ({@code World.pairs}) of bodies that stand makes nothing: no sink captured
+     * anew, no shape made again (a body's shape is kept until it moves). Turned bodies too.
+     */
+    @Test
+    void aPairScanOfStandingBodies_allocatesNothing() {
+        World w = new World();
+        Body[] bodies = lattice(w, 100);
+        for (int i = 0; i < bodies.length; i += 3) {
+            bodies[i].turnTo(0.5f);
+            w.add(Polygon.of(Rect.centered(0, 0, 6, 3)), bodies[i].pivotX(), bodies[i].pivotY(), 0.3f);
+        }
+        int[] count = new int[1];
+        java.util.function.BiConsumer<Body, Body> counter = (a, b) -> count[0]++;
+        w.pairs(counter);
+        int pairs = count[0];
+        assertTrue(pairs > 2 * 100 * 99, "the lattice's contacts and the polygons': " + pairs);
+        long least = Long.MAX_VALUE;
+        for (int round = 0; round < 60; round++) {
+            count[0] = 0;
+            long before = THREADS.getCurrentThreadAllocatedBytes();
+            w.pairs(counter);
+            least = Math.min(least, THREADS.getCurrentThreadAllocatedBytes() - before);
+            assertEquals(pairs, count[0]);
+        }
+        assertEquals(0, least, "bytes a pair scan of standing bodies made");
+    }
 }
