@@ -157,16 +157,31 @@ public final class Overlaps {
         return switch (ShapeKind.of(other)) {
             case ELLIPSE -> ellipseWith((Ellipse) other, r);
             case CAPSULE -> capsuleWith((Capsule) other, r);
-            case CIRCLE -> circleWith((Circle) other, r);
+            case CIRCLE, RECT, SEGMENT, POLYGON -> rectWith(r.x(), r.y(), r.w(), r.h(), other);
+        };
+    }
+
+    /**
+     * {@link #rectWith(Rect, Shape)} for the rectangle of (x, y, w, h), w and h at least 0:
+     * a {@code Rect} is made only for an ellipse or a capsule, which take the pair swapped. A
+     * sweep tests a moved rectangle many times a call, and needs no rectangle made for each.
+     */
+    public static boolean rectWith(float x, float y, float w, float h, Shape other) {
+        return switch (ShapeKind.of(other)) {
+            case ELLIPSE, CAPSULE -> rectWith(new Rect(x, y, w, h), other);
+            case CIRCLE -> {
+                Circle c = (Circle) other;
+                yield RawTests.circleRect(c.x(), c.y(), c.r(), x, y, w, h);
+            }
             case RECT -> {
                 Rect s = (Rect) other;
-                yield RawTests.rectRect(r.x(), r.y(), r.w(), r.h(), s.x(), s.y(), s.w(), s.h());
+                yield RawTests.rectRect(x, y, w, h, s.x(), s.y(), s.w(), s.h());
             }
             case SEGMENT -> {
                 Segment s = (Segment) other;
-                yield RawTests.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), r.x(), r.y(), r.w(), r.h());
+                yield RawTests.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), x, y, w, h);
             }
-            case POLYGON -> RawTests.polygonRect(HiddenParts.raw((Polygon) other), r.x(), r.y(), r.w(), r.h());
+            case POLYGON -> RawTests.polygonRect(HiddenParts.raw((Polygon) other), x, y, w, h);
         };
     }
 
