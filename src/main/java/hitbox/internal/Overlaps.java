@@ -181,7 +181,14 @@ public final class Overlaps {
                 Segment s = (Segment) other;
                 yield RawTests.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), x, y, w, h);
             }
-            case POLYGON -> RawTests.polygonRect(HiddenParts.raw((Polygon) other), x, y, w, h);
+            case POLYGON -> {
+                float[] xy = HiddenParts.raw((Polygon) other);
+                if (w == 0 || h == 0) {
+                    yield RawTests.polygonRect(xy, x, y, w, h);  // a flat rectangle: a segment
+                }
+                int winding = HiddenParts.convexWinding((Polygon) other);  // kept if convex
+                yield RawTests.polygonRectWound(xy, winding != 0 ? winding : Polygons.winding(xy), x, y, w, h);
+            }
         };
     }
 

@@ -208,6 +208,15 @@ public final class RawTests {
         if (w == 0) {
             return false;
         }
+        return polygonRectWound(xy, w, rectX, rectY, rectW, rectH);
+    }
+
+    /**
+     * {@link #polygonRect} for a {@code Polygon}'s outline, whose winding is known (kept with
+     * a convex polygon) and which holds no NaN, and a rectangle with width and height above 0
+     * and no NaN: the checks and the winding the raw form works out on every call, left out.
+     */
+    public static boolean polygonRectWound(float[] xy, int w, float rectX, float rectY, float rectW, float rectH) {
         int n = xy.length / 2;
         for (int i = 0, h = n - 1; i < n; h = i++) {
             if (lineRect(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], rectX, rectY, rectW, rectH)) {
