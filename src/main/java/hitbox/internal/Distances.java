@@ -81,6 +81,11 @@ public final class Distances {
         private Ellipse ellipse;
         /** The radius around the core, 0 or more. */
         private double r;
+        /**
+         * A closed outline's winding (+1 or -1) when it is convex, else 0: a convex outline's
+         * edges that face away from the other shape are skipped ({@link #facing}).
+         */
+        private int winding;
         /** The arrays this core's own vertices are written into: a point's, two ends', four corners. */
         private final double[] point = new double[2], ends = new double[4], corners = new double[8];
 
@@ -101,6 +106,13 @@ public final class Distances {
             this.closed = closed;
             this.ellipse = ellipse;
             this.r = r;
+            this.winding = 0;
+            return this;
+        }
+
+        /** This core, a closed outline, marked convex with the given winding (+1 or -1; 0: not known convex). */
+        private Core convex(int winding) {
+            this.winding = winding;
             return this;
         }
 
@@ -157,6 +169,8 @@ public final class Distances {
         final double[] boxA = new double[4], boxB = new double[4];
         double[] hiA = new double[0], loB = new double[0];
         int[] oa = new int[0], ob = new int[0], merge = new int[0];
+        /** Which edges of a convex outline face the other shape ({@link #facing}), grown to the largest seen. */
+        boolean[] keepA = new boolean[8], keepB = new boolean[8];
     }
 
     private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
@@ -173,12 +187,15 @@ public final class Distances {
                 Circle o = (Circle) s;
                 yield c.point(o.x(), o.y(), o.r());
             }
-            case RECT -> c.set(Polygons.corners((Rect) s, c.corners), true, null, 0);
+            // A rectangle's corners go top-left, top-right, bottom-right, bottom-left: winding +1
+            // (a flat one either way: its two long edges face both ways).
+            case RECT -> c.set(Polygons.corners((Rect) s, c.corners), true, null, 0).convex(1);
             case SEGMENT -> {
                 Segment g = (Segment) s;
                 yield c.ends(g.x1(), g.y1(), g.x2(), g.y2(), 0);
             }
-            case POLYGON -> c.set(HiddenParts.corners((Polygon) s), true, null, 0); // cached, only read
+            case POLYGON -> c.set(HiddenParts.corners((Polygon) s), true, null, 0) // cached, only read
+                    .convex(HiddenParts.convexWinding((Polygon) s));
         };
     }
 
@@ -278,7 +295,9 @@ public final class Distances {
     /** The distance between two cores (without their radii), closest points in q. */
     private static double cores(Core a, Core b, double[] q, Scratch s) {
         if (a.ellipse() == null && b.ellipse() == null) {
-            return chains(a.xy(), a.closed(), b.xy(), b.closed(), q, s);
+            boolean[] keepA = a.winding == 0 ? null : (s.keepA = facing(a.xy(), a.winding, b.xy(), s.keepA));
+            boolean[] keepB = b.winding == 0 ? null : (s.keepB = facing(b.xy(), b.winding, a.xy(), s.keepB));
+            return chains(a.xy(), a.closed(), keepA, b.xy(), b.closed(), keepB, q, s);
         }
         if (a.ellipse() != null && b.ellipse() != null) {
             return ellipses(a.ellipse(), b.ellipse(), q, s);
@@ -312,7 +331,8 @@ public final class Distances {
      * projection) exceeds the best so far, with a slack of {@link #PROJECTION_ROUNDING} of the
      * coordinates over its rounding. The least is the same; only pairs that cannot beat it are skipped.
      */
-    private static double chains(double[] a, boolean closedA, double[] b, boolean closedB, double[] q, Scratch s) {
+    private static double chains(double[] a, boolean closedA, boolean[] keepA, double[] b, boolean closedB, boolean[] keepB,
+                                 double[] q, Scratch s) {
         int na = a.length / 2, nb = b.length / 2;
         int ea = edges(na, closedA), eb = edges(nb, closedB);
         boolean sorted = (long) ea * eb > SORT_ABOVE;
@@ -355,12 +375,18 @@ public final class Distances {
             if (sorted && loB[ob[0]] - hiA[i] > best + slack) {
                 break;
             }
+            if (keepA != null && !keepA[i]) {
+                continue;
+            }
             int i2 = na <= 1 ? i : (i + 1) % na;
             double ax1 = a[2 * i], ay1 = a[2 * i + 1], ax2 = a[2 * i2], ay2 = a[2 * i2 + 1];
             for (int m = 0; m < eb; m++) {
                 int j = sorted ? ob[m] : m;
                 if (sorted && loB[j] - hiA[i] > best + slack) {
                     break;
+                }
+                if (keepB != null && !keepB[j]) {
+                    continue;
                 }
                 int j2 = nb <= 1 ? j : (j + 1) % nb;
                 double bx1 = b[2 * j], by1 = b[2 * j + 1], bx2 = b[2 * j2], by2 = b[2 * j2 + 1];
@@ -380,6 +406,37 @@ public final class Distances {
             }
         }
         return best;
+    }
+
+    /**
+     * Which edges of a closed convex outline {@code xy} (winding w) can hold its closest point
+     * to the other chain, into {@code keep} (grown if short; returned): those with a vertex of
+     * the other in front of the edge's line or on it (to the rounding of the products, kept
+     * when in doubt). The closest point p of the outline, towards the other's q, lies on an
+     * edge whose outward normal has a positive part along q - p (an edge's own, or at a
+     * corner one of the two edges' normals, since their cone holds q - p), so q is in front of
+     * that edge's line; touching, q is p itself, on the edge. (Only this outline need be
+     * convex.) The other chain is straight edges, so its vertices reach as far along a normal
+     * as any of its points.
+     * An edge of length 0 has no normal and is kept.
+     */
+    private static boolean[] facing(double[] xy, int w, double[] other, boolean[] keep) {
+        int n = xy.length / 2;
+        if (keep.length < n) {
+            keep = new boolean[n];
+        }
+        for (int i = 0; i < n; i++) {
+            int j = i + 1 == n ? 0 : i + 1;
+            double ox = xy[2 * i], oy = xy[2 * i + 1];
+            double mx = w * (xy[2 * j + 1] - oy), my = -w * (xy[2 * j] - ox);
+            boolean front = mx == 0 && my == 0;
+            for (int k = 0; k < other.length - 1 && !front; k += 2) {
+                double tx = (other[k] - ox) * mx, ty = (other[k + 1] - oy) * my;
+                front = tx + ty >= -Tolerance.ORIENTATION_ROUNDING * (Math.abs(tx) + Math.abs(ty));
+            }
+            keep[i] = front;
+        }
+        return keep;
     }
 
     /** The chain's box into r: min x, min y, max x, max y. */
