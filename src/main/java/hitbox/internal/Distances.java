@@ -169,8 +169,8 @@ public final class Distances {
         final double[] boxA = new double[4], boxB = new double[4];
         double[] hiA = new double[0], loB = new double[0];
         int[] oa = new int[0], ob = new int[0], merge = new int[0];
-        /** Which edges of a convex outline face the other shape ({@link #facing}), grown to the largest seen. */
-        boolean[] keepA = new boolean[8], keepB = new boolean[8];
+        /** Which vertices of the other shape each edge of a convex outline faces ({@link #facing}), grown to the largest seen. */
+        long[] frontA = new long[8], frontB = new long[8];
     }
 
     private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
@@ -295,9 +295,12 @@ public final class Distances {
     /** The distance between two cores (without their radii), closest points in q. */
     private static double cores(Core a, Core b, double[] q, Scratch s) {
         if (a.ellipse() == null && b.ellipse() == null) {
-            boolean[] keepA = a.winding == 0 ? null : (s.keepA = facing(a.xy(), a.winding, b.xy(), s.keepA));
-            boolean[] keepB = b.winding == 0 ? null : (s.keepB = facing(b.xy(), b.winding, a.xy(), s.keepB));
-            return chains(a.xy(), a.closed(), keepA, b.xy(), b.closed(), keepB, q, s);
+            // Small outlines only: the marks take every edge against every vertex, and a
+            // long's bits (beyond, the sorted loops of chains prune as well).
+            boolean small = a.xy().length <= 2 * FACING_UP_TO && b.xy().length <= 2 * FACING_UP_TO;
+            long[] frontA = a.winding == 0 || !small ? null : (s.frontA = facing(a.xy(), a.winding, b.xy(), s.frontA));
+            long[] frontB = b.winding == 0 || !small ? null : (s.frontB = facing(b.xy(), b.winding, a.xy(), s.frontB));
+            return chains(a.xy(), a.closed(), frontA, b.xy(), b.closed(), frontB, q, s);
         }
         if (a.ellipse() != null && b.ellipse() != null) {
             return ellipses(a.ellipse(), b.ellipse(), q, s);
@@ -331,7 +334,7 @@ public final class Distances {
      * projection) exceeds the best so far, with a slack of {@link #PROJECTION_ROUNDING} of the
      * coordinates over its rounding. The least is the same; only pairs that cannot beat it are skipped.
      */
-    private static double chains(double[] a, boolean closedA, boolean[] keepA, double[] b, boolean closedB, boolean[] keepB,
+    private static double chains(double[] a, boolean closedA, long[] frontA, double[] b, boolean closedB, long[] frontB,
                                  double[] q, Scratch s) {
         int na = a.length / 2, nb = b.length / 2;
         int ea = edges(na, closedA), eb = edges(nb, closedB);
@@ -375,7 +378,7 @@ public final class Distances {
             if (sorted && loB[ob[0]] - hiA[i] > best + slack) {
                 break;
             }
-            if (keepA != null && !keepA[i]) {
+            if (frontA != null && frontA[i] == 0) {
                 continue;
             }
             int i2 = na <= 1 ? i : (i + 1) % na;
@@ -385,10 +388,12 @@ public final class Distances {
                 if (sorted && loB[j] - hiA[i] > best + slack) {
                     break;
                 }
-                if (keepB != null && !keepB[j]) {
+                int j2 = nb <= 1 ? j : (j + 1) % nb;
+                if (frontA != null && (frontA[i] >>> j & 1) == 0 && (frontA[i] >>> j2 & 1) == 0
+                        || frontB != null && (frontB[j] >>> i & 1) == 0 && (frontB[j] >>> i2 & 1) == 0) {
+                    // Neither end of one edge lies in front of the other's line: not the closest pair.
                     continue;
                 }
-                int j2 = nb <= 1 ? j : (j + 1) % nb;
                 double bx1 = b[2 * j], by1 = b[2 * j + 1], bx2 = b[2 * j2], by2 = b[2 * j2 + 1];
                 double gx = Math.max(0, Math.max(Math.min(bx1, bx2) - Math.max(ax1, ax2), Math.min(ax1, ax2) - Math.max(bx1, bx2)));
                 double gy = Math.max(0, Math.max(Math.min(by1, by2) - Math.max(ay1, ay2), Math.min(ay1, ay2) - Math.max(by1, by2)));
@@ -409,35 +414,42 @@ public final class Distances {
     }
 
     /**
-     * Which edges of a closed convex outline {@code xy} (winding w) can hold its closest point
-     * to the other chain, into {@code keep} (grown if short; returned): those with a vertex of
-     * the other in front of the edge's line or on it (to the rounding of the products, kept
-     * when in doubt). The closest point p of the outline, towards the other's q, lies on an
+     * For each edge of a closed convex outline {@code xy} (winding w, at most
+     * {@value #FACING_UP_TO} vertices), which vertices of the other chain (at most as many)
+     * lie in front of the edge's line or on it, as bits, into {@code front} (grown if short;
+     * returned); to the rounding of the products, in front when in doubt. An edge of length 0
+     * has no normal, and every vertex is in front of it. {@link #chains} skips a pair of
+     * edges when neither end of one lies in front of the other's line (an edge with nothing in
+     * front, every pair it is in). The closest point p of the outline, towards the other's q, lies on an
      * edge whose outward normal has a positive part along q - p (an edge's own, or at a
      * corner one of the two edges' normals, since their cone holds q - p), so q is in front of
-     * that edge's line; touching, q is p itself, on the edge. (Only this outline need be
-     * convex.) The other chain is straight edges, so its vertices reach as far along a normal
-     * as any of its points.
-     * An edge of length 0 has no normal and is kept.
+     * that edge's line, and so is an end of q's edge; touching, q is p itself, on both edges.
+     * (Only this outline need be convex.) The same holds from the other side when the other
+     * is a convex outline too, for the same pair of edges.
      */
-    private static boolean[] facing(double[] xy, int w, double[] other, boolean[] keep) {
+    private static long[] facing(double[] xy, int w, double[] other, long[] front) {
         int n = xy.length / 2;
-        if (keep.length < n) {
-            keep = new boolean[n];
+        if (front.length < n) {
+            front = new long[n];
         }
         for (int i = 0; i < n; i++) {
             int j = i + 1 == n ? 0 : i + 1;
             double ox = xy[2 * i], oy = xy[2 * i + 1];
             double mx = w * (xy[2 * j + 1] - oy), my = -w * (xy[2 * j] - ox);
-            boolean front = mx == 0 && my == 0;
-            for (int k = 0; k < other.length - 1 && !front; k += 2) {
+            long bits = 0;
+            for (int k = 0; k < other.length - 1; k += 2) {
                 double tx = (other[k] - ox) * mx, ty = (other[k + 1] - oy) * my;
-                front = tx + ty >= -Tolerance.ORIENTATION_ROUNDING * (Math.abs(tx) + Math.abs(ty));
+                if (tx + ty >= -Tolerance.ORIENTATION_ROUNDING * (Math.abs(tx) + Math.abs(ty))) {
+                    bits |= 1L << (k / 2);
+                }
             }
-            keep[i] = front;
+            front[i] = bits;
         }
-        return keep;
+        return front;
     }
+
+    /** The most vertices of a convex outline, and of the other shape, for which {@link #facing} marks its edges. */
+    private static final int FACING_UP_TO = 64;
 
     /** The chain's box into r: min x, min y, max x, max y. */
     private static double[] box(double[] xy, double[] r) {
