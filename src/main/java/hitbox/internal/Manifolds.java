@@ -286,7 +286,10 @@ public final class Manifolds {
                 double[] pl = planes, fa = faces;
                 for (int i = 0; i < n; i++) {
                     int j = (i + 1) % n;
-                    double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = Math.hypot(ex, ey);
+                    // Not Math.hypot, which costs several times as much: a difference of two of
+                    // a shape's coordinates squares without overflow or underflow at any size a
+                    // float holds, so the plain root is as accurate (within an ulp).
+                    double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = Math.sqrt(ex * ex + ey * ey);
                     if (len == 0) {
                         continue;
                     }
