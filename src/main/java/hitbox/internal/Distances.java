@@ -439,9 +439,10 @@ public final class Distances {
             long bits = 0;
             for (int k = 0; k < other.length - 1; k += 2) {
                 double tx = (other[k] - ox) * mx, ty = (other[k + 1] - oy) * my;
-                if (tx + ty >= -Tolerance.ORIENTATION_ROUNDING * (Math.abs(tx) + Math.abs(ty))) {
-                    bits |= 1L << (k / 2);
-                }
+                // In front (or on the line, to rounding) exactly when this is not negative:
+                // its sign bit, so that the loop has no branch to mispredict.
+                double ahead = tx + ty + Tolerance.ORIENTATION_ROUNDING * (Math.abs(tx) + Math.abs(ty));
+                bits |= (~Double.doubleToRawLongBits(ahead) >>> 63) << (k >> 1);
             }
             front[i] = bits;
         }

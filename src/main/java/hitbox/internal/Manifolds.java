@@ -293,7 +293,7 @@ public final class Manifolds {
                     if (len == 0) {
                         continue;
                     }
-                    double ux = ey / len, uy = -ex / len;
+                    double inverse = 1 / len, ux = ey * inverse, uy = -ex * inverse;
                     pl[3 * m] = ux;
                     pl[3 * m + 1] = uy;
                     pl[3 * m + 2] = ux * xy[2 * i] + uy * xy[2 * i + 1];
@@ -342,7 +342,9 @@ public final class Manifolds {
             case POLYGON -> {
                 Polygon p = (Polygon) s;
                 if (p.isConvex()) {
-                    yield straight(HiddenParts.corners(p), sc, out);
+                    // A polygon's outline is simple, so its corners never repeat.
+                    double[] corners = HiddenParts.corners(p);
+                    yield straight(corners, corners.length, sc, out);
                 }
                 List<double[]> parts = Clearance.Parts.of(p).pieces();
                 for (int i = 0; i < parts.size(); i++) {
@@ -363,7 +365,11 @@ public final class Manifolds {
      */
     private static List<Piece> straight(double[] xy, Scratch sc, List<Piece> out) {
         int len = distinct(xy, xy.length, sc);
-        double[] v = sc.distinct;
+        return straight(sc.distinct, len, sc, out);
+    }
+
+    /** {@link #straight(double[], Scratch, List)} of the first len numbers of v, vertices known not to repeat. */
+    private static List<Piece> straight(double[] v, int len, Scratch sc, List<Piece> out) {
         int n = len / 2;
         if (n == 1) {
             return null;
