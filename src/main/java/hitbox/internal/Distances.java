@@ -24,7 +24,8 @@ import hitbox.*;
  *   <tr><th>an Ellipse</th><td>{@link #ellipseChain}, swapped</td><td>{@link #ellipses}</td></tr>
  * </table>
  *
- * <p><b>Straight cores</b> ({@link #chains}): the least distance over every pair of edges,
+ * <p><b>Straight cores</b> ({@link #chains}): the least distance over every pair of edges
+ * (for a convex outline, only over the pairs that can hold the closest points: {@link #facing}),
  * each pair closest-point by exact orientation signs ({@link Lines#segmentsMeet}: edges that
  * meet are 0 apart), else the least of the four end-to-edge distances, worked in double from
  * differences of the floats. For whole-number coordinates of modest size this is exact
