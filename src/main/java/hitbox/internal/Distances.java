@@ -44,9 +44,9 @@ import hitbox.*;
  * <p>A separation makes nothing but its answer: the cores, the closest points and what the
  * kernels work in are a thread's {@code Scratch}, fetched once per call.
  *
- * <p>This class is longer than most (about 680 lines): the three kernels, the pruning that
- * keeps two polygons of many sides fast, the scratch they work in, and their small helpers,
- * kept in one place.
+ * <p>This class is longer than most (about 770 lines): the three kernels, the pruning that
+ * keeps two polygons fast (the facing marks of convex outlines, the sorted loops of many
+ * sides), the scratch they work in, and their small helpers, kept in one place.
  */
 public final class Distances {
     private Distances() {
