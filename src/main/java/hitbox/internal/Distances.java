@@ -24,7 +24,8 @@ import hitbox.*;
  *   <tr><th>an Ellipse</th><td>{@link #ellipseChain}, swapped</td><td>{@link #ellipses}</td></tr>
  * </table>
  *
- * <p><b>Straight cores</b> ({@link #chains}): the least distance over every pair of edges,
+ * <p><b>Straight cores</b> ({@link #chains}): the least distance over every pair of edges
+ * (for a convex outline, only over the pairs that can hold the closest points: {@link #facing}),
  * each pair closest-point by exact orientation signs ({@link Lines#segmentsMeet}: edges that
  * meet are 0 apart), else the least of the four end-to-edge distances, worked in double from
  * differences of the floats. For whole-number coordinates of modest size this is exact
@@ -43,9 +44,9 @@ import hitbox.*;
  * <p>A separation makes nothing but its answer: the cores, the closest points and what the
  * kernels work in are a thread's {@code Scratch}, fetched once per call.
  *
- * <p>This class is longer than most (about 680 lines): the three kernels, the pruning that
- * keeps two polygons of many sides fast, the scratch they work in, and their small helpers,
- * kept in one place.
+ * <p>This class is longer than most (about 770 lines): the three kernels, the pruning that
+ * keeps two polygons fast (the facing marks of convex outlines, the sorted loops of many
+ * sides), the scratch they work in, and their small helpers, kept in one place.
  */
 public final class Distances {
     private Distances() {
@@ -81,6 +82,11 @@ public final class Distances {
         private Ellipse ellipse;
         /** The radius around the core, 0 or more. */
         private double r;
+        /**
+         * A closed outline's winding (+1 or -1) when it is convex, else 0: a convex outline's
+         * edges that face away from the other shape are skipped ({@link #facing}).
+         */
+        private int winding;
         /** The arrays this core's own vertices are written into: a point's, two ends', four corners. */
         private final double[] point = new double[2], ends = new double[4], corners = new double[8];
 
@@ -101,6 +107,13 @@ public final class Distances {
             this.closed = closed;
             this.ellipse = ellipse;
             this.r = r;
+            this.winding = 0;
+            return this;
+        }
+
+        /** This core, a closed outline, marked convex with the given winding (+1 or -1; 0: not known convex). */
+        private Core convex(int winding) {
+            this.winding = winding;
             return this;
         }
 
@@ -157,6 +170,8 @@ public final class Distances {
         final double[] boxA = new double[4], boxB = new double[4];
         double[] hiA = new double[0], loB = new double[0];
         int[] oa = new int[0], ob = new int[0], merge = new int[0];
+        /** Which vertices of the other shape each edge of a convex outline faces ({@link #facing}), grown to the largest seen. */
+        long[] frontA = new long[8], frontB = new long[8];
     }
 
     private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
@@ -173,12 +188,15 @@ public final class Distances {
                 Circle o = (Circle) s;
                 yield c.point(o.x(), o.y(), o.r());
             }
-            case RECT -> c.set(Polygons.corners((Rect) s, c.corners), true, null, 0);
+            // A rectangle's corners go top-left, top-right, bottom-right, bottom-left: winding +1
+            // (a flat one either way: its two long edges face both ways).
+            case RECT -> c.set(Polygons.corners((Rect) s, c.corners), true, null, 0).convex(1);
             case SEGMENT -> {
                 Segment g = (Segment) s;
                 yield c.ends(g.x1(), g.y1(), g.x2(), g.y2(), 0);
             }
-            case POLYGON -> c.set(HiddenParts.corners((Polygon) s), true, null, 0); // cached, only read
+            case POLYGON -> c.set(HiddenParts.corners((Polygon) s), true, null, 0) // cached, only read
+                    .convex(HiddenParts.convexWinding((Polygon) s));
         };
     }
 
@@ -278,7 +296,12 @@ public final class Distances {
     /** The distance between two cores (without their radii), closest points in q. */
     private static double cores(Core a, Core b, double[] q, Scratch s) {
         if (a.ellipse() == null && b.ellipse() == null) {
-            return chains(a.xy(), a.closed(), b.xy(), b.closed(), q, s);
+            // Small outlines only: the marks take every edge against every vertex, and a
+            // long's bits (beyond, the sorted loops of chains prune as well).
+            boolean small = a.xy().length <= 2 * FACING_UP_TO && b.xy().length <= 2 * FACING_UP_TO;
+            long[] frontA = a.winding == 0 || !small ? null : (s.frontA = facing(a.xy(), a.winding, b.xy(), s.frontA));
+            long[] frontB = b.winding == 0 || !small ? null : (s.frontB = facing(b.xy(), b.winding, a.xy(), s.frontB));
+            return chains(a.xy(), a.closed(), frontA, b.xy(), b.closed(), frontB, q, s);
         }
         if (a.ellipse() != null && b.ellipse() != null) {
             return ellipses(a.ellipse(), b.ellipse(), q, s);
@@ -312,7 +335,8 @@ public final class Distances {
      * projection) exceeds the best so far, with a slack of {@link #PROJECTION_ROUNDING} of the
      * coordinates over its rounding. The least is the same; only pairs that cannot beat it are skipped.
      */
-    private static double chains(double[] a, boolean closedA, double[] b, boolean closedB, double[] q, Scratch s) {
+    private static double chains(double[] a, boolean closedA, long[] frontA, double[] b, boolean closedB, long[] frontB,
+                                 double[] q, Scratch s) {
         int na = a.length / 2, nb = b.length / 2;
         int ea = edges(na, closedA), eb = edges(nb, closedB);
         boolean sorted = (long) ea * eb > SORT_ABOVE;
@@ -355,6 +379,9 @@ public final class Distances {
             if (sorted && loB[ob[0]] - hiA[i] > best + slack) {
                 break;
             }
+            if (frontA != null && frontA[i] == 0) {
+                continue;
+            }
             int i2 = na <= 1 ? i : (i + 1) % na;
             double ax1 = a[2 * i], ay1 = a[2 * i + 1], ax2 = a[2 * i2], ay2 = a[2 * i2 + 1];
             for (int m = 0; m < eb; m++) {
@@ -363,6 +390,11 @@ public final class Distances {
                     break;
                 }
                 int j2 = nb <= 1 ? j : (j + 1) % nb;
+                if (frontA != null && (frontA[i] >>> j & 1) == 0 && (frontA[i] >>> j2 & 1) == 0
+                        || frontB != null && (frontB[j] >>> i & 1) == 0 && (frontB[j] >>> i2 & 1) == 0) {
+                    // Neither end of one edge lies in front of the other's line: not the closest pair.
+                    continue;
+                }
                 double bx1 = b[2 * j], by1 = b[2 * j + 1], bx2 = b[2 * j2], by2 = b[2 * j2 + 1];
                 double gx = Math.max(0, Math.max(Math.min(bx1, bx2) - Math.max(ax1, ax2), Math.min(ax1, ax2) - Math.max(bx1, bx2)));
                 double gy = Math.max(0, Math.max(Math.min(by1, by2) - Math.max(ay1, ay2), Math.min(ay1, ay2) - Math.max(by1, by2)));
@@ -381,6 +413,45 @@ public final class Distances {
         }
         return best;
     }
+
+    /**
+     * For each edge of a closed convex outline {@code xy} (winding w, at most
+     * {@value #FACING_UP_TO} vertices), which vertices of the other chain (at most as many)
+     * lie in front of the edge's line or on it, as bits, into {@code front} (grown if short;
+     * returned); to the rounding of the products, in front when in doubt. An edge of length 0
+     * has no normal, and every vertex is in front of it. {@link #chains} skips a pair of
+     * edges when neither end of one lies in front of the other's line (an edge with nothing in
+     * front, every pair it is in). The closest point p of the outline, towards the other's q, lies on an
+     * edge whose outward normal has a positive part along q - p (an edge's own, or at a
+     * corner one of the two edges' normals, since their cone holds q - p), so q is in front of
+     * that edge's line, and so is an end of q's edge; touching, q is p itself, on both edges.
+     * (Only this outline need be convex.) The same holds from the other side when the other
+     * is a convex outline too, for the same pair of edges.
+     */
+    private static long[] facing(double[] xy, int w, double[] other, long[] front) {
+        int n = xy.length / 2;
+        if (front.length < n) {
+            front = new long[n];
+        }
+        for (int i = 0; i < n; i++) {
+            int j = i + 1 == n ? 0 : i + 1;
+            double ox = xy[2 * i], oy = xy[2 * i + 1];
+            double mx = w * (xy[2 * j + 1] - oy), my = -w * (xy[2 * j] - ox);
+            long bits = 0;
+            for (int k = 0; k < other.length - 1; k += 2) {
+                double tx = (other[k] - ox) * mx, ty = (other[k + 1] - oy) * my;
+                // In front (or on the line, to rounding) exactly when this is not negative:
+                // its sign bit, so that the loop has no branch to mispredict.
+                double ahead = tx + ty + Tolerance.ORIENTATION_ROUNDING * (Math.abs(tx) + Math.abs(ty));
+                bits |= (~Double.doubleToRawLongBits(ahead) >>> 63) << (k >> 1);
+            }
+            front[i] = bits;
+        }
+        return front;
+    }
+
+    /** The most vertices of a convex outline, and of the other shape, for which {@link #facing} marks its edges. */
+    private static final int FACING_UP_TO = 64;
 
     /** The chain's box into r: min x, min y, max x, max y. */
     private static double[] box(double[] xy, double[] r) {

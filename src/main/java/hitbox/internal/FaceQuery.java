@@ -55,16 +55,27 @@ public final class FaceQuery {
                 // The outward normal, un-normalized: (ey, -ex) is on the outside of a
                 // polygon of winding +1.
                 double mx = w * ey, my = -w * ex;
+                // Each term has a relative rounding error of a few units of 2^-53 in its
+                // differences and products; far below this bound.
+                double rounding = Tolerance.ORIENTATION_ROUNDING * (spreadX * Math.abs(mx) + spreadY * Math.abs(my));
+                double len2 = mx * mx + my * my;
+                // A push longer than the best by more than the tie rule's slack cannot win:
+                // asked on squares (the factor 2 covers their rounding many times over), so
+                // that only the few pushes that can win pay for a square root and a division.
+                double reachable = best * (1 + 2 * Contact.TIE), beyond = reachable * reachable * len2;
                 // How far the other polygon reaches in behind the edge's line: the most any
                 // vertex of it lies inside, measured from the edge's own vertex so that large
                 // coordinates do not cancel.
                 double reach = Double.NEGATIVE_INFINITY;
                 for (int k = 0; k < other.length - 1; k += 2) {
                     reach = Math.max(reach, (ox - other[k]) * mx + (oy - other[k + 1]) * my);
+                    if (reach > rounding && reach * reach > beyond) {
+                        // Already too long to win, and clear of the rounding: the rest of
+                        // the vertices can only make it longer.
+                        break;
+                    }
                 }
-                // Each term has a relative rounding error of a few units of 2^-53 in its
-                // differences and products; far below this bound.
-                if (reach <= Tolerance.ORIENTATION_ROUNDING * (spreadX * Math.abs(mx) + spreadY * Math.abs(my))) {
+                if (reach <= rounding) {
                     // Within rounding of touching: decide with exact orientation signs. A
                     // polygon thinner than a double's rounding of its size (found by
                     // fuzzing) would otherwise look flat, and apart from itself.
@@ -73,12 +84,7 @@ public final class FaceQuery {
                         return null;
                     }
                 }
-                double len2 = mx * mx + my * my;
-                // A push longer than the best by more than the tie rule's slack cannot win:
-                // asked on squares (the factor 2 covers their rounding many times over), so
-                // that only the few pushes that can win pay for a square root and a division.
-                double reachable = best * (1 + 2 * Contact.TIE);
-                if (reach * reach > reachable * reachable * len2) {
+                if (reach * reach > beyond) {
                     continue;
                 }
                 double len = Math.sqrt(len2);

@@ -230,6 +230,11 @@ public final class Manifolds {
         /** Faces: outward unit normal and the two ends, six numbers each, {@code nf} numbers. */
         double[] faces = new double[48];
         int nf;
+        /**
+         * Each face's length, by face ({@code lengths[k / 6]} for the face at k), worked out
+         * once here: the rounding slack of {@link #rounding} reads them for every face pair.
+         */
+        double[] lengths = new double[8];
         double minX, minY, maxX, maxY;
 
         /**
@@ -271,18 +276,24 @@ public final class Manifolds {
                 put(faces, 6, -px, -py, xy[2] - r * px);
                 put(faces, 9, xy[3] - r * py, xy[0] - r * px, xy[1] - r * py);
                 nf = 12;
+                lengths[0] = Math.hypot(faces[4] - faces[2], faces[5] - faces[3]);
+                lengths[1] = Math.hypot(faces[10] - faces[8], faces[11] - faces[9]);
             } else {
                 int n = verts, m = 0;
                 planes = atLeast(planes, 3 * n);
                 faces = atLeast(faces, 6 * n);
+                lengths = atLeast(lengths, n);
                 double[] pl = planes, fa = faces;
                 for (int i = 0; i < n; i++) {
                     int j = (i + 1) % n;
-                    double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = Math.hypot(ex, ey);
+                    // Not Math.hypot, which costs several times as much: a difference of two of
+                    // a shape's coordinates squares without overflow or underflow at any size a
+                    // float holds, so the plain root is as accurate (within an ulp).
+                    double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = Math.sqrt(ex * ex + ey * ey);
                     if (len == 0) {
                         continue;
                     }
-                    double ux = ey / len, uy = -ex / len;
+                    double inverse = 1 / len, ux = ey * inverse, uy = -ex * inverse;
                     pl[3 * m] = ux;
                     pl[3 * m + 1] = uy;
                     pl[3 * m + 2] = ux * xy[2 * i] + uy * xy[2 * i + 1];
@@ -292,6 +303,8 @@ public final class Manifolds {
                     fa[6 * m + 3] = xy[2 * i + 1];
                     fa[6 * m + 4] = xy[2 * j];
                     fa[6 * m + 5] = xy[2 * j + 1];
+                    // The same differences of the face's ends as faceLength would take.
+                    lengths[m] = len;
                     m++;
                 }
                 np = 3 * m;
@@ -329,7 +342,9 @@ public final class Manifolds {
             case POLYGON -> {
                 Polygon p = (Polygon) s;
                 if (p.isConvex()) {
-                    yield straight(HiddenParts.corners(p), sc, out);
+                    // A polygon's outline is simple, so its corners never repeat.
+                    double[] corners = HiddenParts.corners(p);
+                    yield straight(corners, corners.length, sc, out);
                 }
                 List<double[]> parts = Clearance.Parts.of(p).pieces();
                 for (int i = 0; i < parts.size(); i++) {
@@ -350,7 +365,11 @@ public final class Manifolds {
      */
     private static List<Piece> straight(double[] xy, Scratch sc, List<Piece> out) {
         int len = distinct(xy, xy.length, sc);
-        double[] v = sc.distinct;
+        return straight(sc.distinct, len, sc, out);
+    }
+
+    /** {@link #straight(double[], Scratch, List)} of the first len numbers of v, vertices known not to repeat. */
+    private static List<Piece> straight(double[] v, int len, Scratch sc, List<Piece> out) {
         int n = len / 2;
         if (n == 1) {
             return null;
@@ -481,8 +500,11 @@ public final class Manifolds {
         int g = bestFace(inc, -ux, -uy);
         double[] f = inc.faces;
         for (int k = 0; k < inc.nf; k += 6) {
+            if (k == g) {
+                continue;
+            }
             double slack = rounding(inc, g, inc, k, scale);
-            if (k == g || offBy(f[k], f[k + 1], f[g], f[g + 1], -ux, -uy) > slack) {
+            if (offBy(f[k], f[k + 1], f[g], f[g + 1], -ux, -uy) > slack) {
                 continue;
             }
             if (f[k] * f[g] + f[k + 1] * f[g + 1] > 0 && Math.abs(f[g] * f[k + 1] - f[g + 1] * f[k]) <= slack) {
@@ -536,8 +558,9 @@ public final class Manifolds {
         return AS_DEEP * scale / Math.min(faceLength(p, f), faceLength(q, g));
     }
 
+    /** The length of the face at f: the distance between its two ends. */
     private static double faceLength(Piece p, int f) {
-        return Math.hypot(p.faces[f + 4] - p.faces[f + 2], p.faces[f + 5] - p.faces[f + 3]);
+        return p.lengths[f / 6];
     }
 
     /** The face of the piece most nearly along (ux, uy), as an index into its faces; -1 if none. */
@@ -668,6 +691,13 @@ public final class Manifolds {
     private static double exit(List<Piece> pieces, double px, double py, double ux, double uy, double scale) {
         double t = 0;
         double tol = SAME * scale;
+        if (pieces.size() == 1 && !pieces.get(0).seg) {
+            // One convex polygon: the loop below would stop after its second round, which
+            // starts where the ray left the piece and finds no farther exit than rounding
+            // (the region's widened sides move with the ray). Its answer, without that round.
+            double e = exit(pieces.get(0), px, py, ux, uy, tol);
+            return e > tol ? e : 0;
+        }
         for (int round = 0; round <= pieces.size(); round++) {
             double far = t;
             for (int i = 0; i < pieces.size(); i++) {
