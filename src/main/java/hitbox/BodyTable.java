@@ -170,9 +170,10 @@ final class BodyTable {
     /**
      * Sets a body's tight box. The broad phase holds a fat box: when the tight box leaves it,
      * a new fat box (grown by an eighth of the body's size and a pixel, and four times the
-     * last move ahead, both kept in proportion for bodies of a pixel or two) waits in the dirty list, which queries scan, until enough wait to put
-     * them all at once (or the next {@link World#step()}): the grid rebuilds after each change, so
-     * putting one box per move would rebuild it once per move.
+     * last move ahead, both kept in proportion for bodies of a pixel or two) waits in the
+     * dirty list, which queries scan, until enough wait to put them all at once (or the next
+     * {@link World#step()}): the grid rebuilds after each change, so putting one box per move
+     * would rebuild it once per move.
      */
     void setBox(Body b, float x, float y, float w, float h) {
         tracker.changed(b);
