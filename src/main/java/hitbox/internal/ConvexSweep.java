@@ -237,9 +237,10 @@ public final class ConvexSweep {
      * obstacle? No, if the move leaves the float range (nothing is there).
      */
     public static boolean movedOverlaps(Shape mover, float dx, float dy, Shape obstacle) {
-        if (mover instanceof Rect r) {
+        if (ShapeKind.of(mover) == ShapeKind.RECT) {
             // Rect.translated's sums and its refusal, without a Rect made for every step of
             // the search (a box sliding along a turned wall asks this dozens of times a move).
+            Rect r = (Rect) mover;
             float x = r.x() + dx, y = r.y() + dy;
             return Float.isFinite(dx) && Float.isFinite(dy) && Float.isFinite(x) && Float.isFinite(y)
                     && Overlaps.rectWith(x, y, r.w(), r.h(), obstacle);
