@@ -240,10 +240,10 @@ public final class ConvexSweep {
         if (ShapeKind.of(mover) == ShapeKind.RECT) {
             // Rect.translated's sums and its refusal, without a Rect made for every step of
             // the search (a box sliding along a turned wall asks this dozens of times a move).
+            // A sum with a finite corner is finite only if the move is, so two checks do.
             Rect r = (Rect) mover;
             float x = r.x() + dx, y = r.y() + dy;
-            return Float.isFinite(dx) && Float.isFinite(dy) && Float.isFinite(x) && Float.isFinite(y)
-                    && Overlaps.rectWith(x, y, r.w(), r.h(), obstacle);
+            return Float.isFinite(x) && Float.isFinite(y) && Overlaps.rectWith(x, y, r.w(), r.h(), obstacle);
         }
         Shape moved;
         try {

@@ -278,7 +278,10 @@ public final class Transforms {
                 coordinate("x2", a.x(c.x2(), c.y2())), coordinate("y2", a.y(c.x2(), c.y2())), radius);
     }
 
-    /** The polygon of the given corners (in double) transformed, checked as Polygon.of checks. */
+    /**
+     * The polygon of the rectangle from (x0, y0) to (x1, y1) (its edges in double)
+     * transformed, checked as Polygon.of checks.
+     */
     private static Polygon polygonOf(double x0, double y0, double x1, double y1, Affine a, Rect rect) {
         // The corners top-left, top-right, bottom-right, bottom-left, each transformed in
         // double and rounded once; the array is the polygon's own (a turned body's rectangle
