@@ -495,8 +495,20 @@ final class ExactReference {
      * neighbouring line crossings). Inside a cell nothing changes, so the search is complete.
      */
     static boolean polygonsMeet(float[] a, float[] b) {
-        Q[] p = toQ(a);
-        Q[] q = toQ(b);
+        return polygonsMeet(toQ(a), toQ(b));
+    }
+
+    /**
+     * The rectangle (x, y, w, h) as a polygon with its corners summed exactly ({@code x + w}
+     * as a real number, not rounded to float as {@link #rectPolygon} rounds it).
+     */
+    static Q[] rectQ(float x, float y, float w, float h) {
+        Q l = Q.of(x), t = Q.of(y), r = l.plus(Q.of(w)), b = t.plus(Q.of(h));
+        return new Q[] {l, t, r, t, r, b, l, b};
+    }
+
+    /** {@link #polygonsMeet(float[], float[])} for exact corners. */
+    static boolean polygonsMeet(Q[] p, Q[] q) {
         List<Q[]> lines = new ArrayList<>(); // {A, B, C}: A x + B y = C
         for (Q[] poly : List.of(p, q)) {
             int n = poly.length / 2;

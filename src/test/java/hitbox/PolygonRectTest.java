@@ -130,4 +130,28 @@ class PolygonRectTest {
         assertEquals(here, Collide.polygonRect(ExactReference.rotated(xy, start % (xy.length / 2)), rx, ry, rw, rh), "other start");
         assertEquals(here, Collide.polygonRect(ExactReference.translated(xy, dx, dy), rx + dx, ry + dy, rw, rh), "moved");
     }
+
+    /**
+     * A convex polygon goes the separating-edge way ({@code Polygons.convexRectOverlap}), in
+     * the raw call and in {@code Polygon.overlaps}; the exact reference knows nothing of it.
+     * Moved by fractions and far out, where every corner is still a float (the reference
+     * takes the rectangle as a polygon of float corners).
+     */
+    @Property(tries = 2000)
+    void convexPolygonRect_agreesWithExactReference(@ForAll("polygons") float[] xy,
+                                                    @ForAll @IntRange(min = -1, max = 6) int rx, @ForAll @IntRange(min = -1, max = 6) int ry,
+                                                    @ForAll @IntRange(min = 1, max = 4) int rw, @ForAll @IntRange(min = 1, max = 4) int rh,
+                                                    @ForAll @IntRange(min = 0, max = 3) int place) {
+        net.jqwik.api.Assume.that(Polygon.of(xy).isConvex());
+        float shift = new float[] {0, 0.25f, -1000.75f, 1_000_000}[place];
+        float[] moved = new float[xy.length];
+        for (int i = 0; i < xy.length; i++) {
+            moved[i] = xy[i] + shift;
+        }
+        float x = rx + shift, y = ry + shift;
+        boolean expected = ExactReference.polygonsMeet(moved, ExactReference.rectPolygon(x, y, rw, rh));
+        assertEquals(expected, Collide.polygonRect(moved, x, y, rw, rh), "raw");
+        assertEquals(expected, Polygon.of(moved).overlaps(new Rect(x, y, rw, rh)), "polygon first");
+        assertEquals(expected, new Rect(x, y, rw, rh).overlaps(Polygon.of(moved)), "rect first");
+    }
 }

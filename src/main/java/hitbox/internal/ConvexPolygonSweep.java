@@ -65,6 +65,77 @@ public final class ConvexPolygonSweep {
     }
 
     /**
+     * The hit of a rectangle with area moving by (vx, vy) into a convex polygon, the two apart
+     * at the start; or null. The same Minkowski difference as {@link #timeOfImpact}, whose
+     * faces are here the rectangle's (two slabs, across and down) and the polygon's edges, the
+     * rectangle's reach along each read from its corners with no array made; then the promised
+     * float t as {@link Sweep} finds it for a rectangle and a segment ({@link SweptPairs#answer}):
+     * the float positions {@code x + t * vx}, {@code y + t * vy} visited from the entry of the
+     * faces pushed out by the rounding slack of those two coordinates, each tested with
+     * {@link Polygons#convexRectOverlap}, no rectangle made. A character's box on a slope or
+     * against a turned box asks this at every step, where conservative advancement took a
+     * search of directions and of float positions. Where rounding in double puts the start
+     * inside (the shapes touch), the general way ({@link ConvexSweep#byPieces}) answers.
+     */
+    public static Hit rectTimeOfImpact(Rect mover, float vx, float vy, Polygon obstacle) {
+        float x = mover.x(), y = mover.y(), w = mover.w(), h = mover.h();
+        double[] q = HiddenParts.corners(obstacle);
+        int winding = HiddenParts.convexWinding(obstacle);
+        Earliest e = rectEntry(SweptPairs.exactEntry(), x, y, w, h, vx, vy, q, winding, 0, 0);
+        if (e.inside) {
+            return ConvexSweep.byPieces(mover, vx, vy, obstacle);  // touching, and rounding put the start inside
+        }
+        Earliest grown = SweptPairs.decided(e) ? e
+                : rectEntry(SweptPairs.grownEntry(), x, y, w, h, vx, vy, q, winding,
+                SweptPairs.slack(x, vx) + ConvexSweep.TOUCH, SweptPairs.slack(y, vy) + ConvexSweep.TOUCH);
+        float t = SweptPairs.answer(e, grown,
+                SweptPairs.rectConvexAt(x, y, w, h, vx, vy, HiddenParts.raw(obstacle), winding), x, vx, y, vy);
+        return SweptPairs.hit(t, e, grown, false);
+    }
+
+    /**
+     * Can {@link #rectTimeOfImpact} answer this pair: a rectangle with area against a convex
+     * polygon, moving?
+     */
+    public static boolean rectAgainstConvex(Shape mover, float vx, float vy, Shape obstacle) {
+        return ShapeKind.of(mover) == ShapeKind.RECT && ((Rect) mover).w() > 0 && ((Rect) mover).h() > 0
+                && ShapeKind.of(obstacle) == ShapeKind.POLYGON && HiddenParts.convexWinding((Polygon) obstacle) != 0
+                && (vx != 0 || vy != 0);
+    }
+
+    /**
+     * The entry of box (x, y, w, h), moving by (vx, vy), into convex q (corners in pairs,
+     * winding w), with the box displaced by up to gx across and gy down (0, 0: the exact
+     * entry), into e: the box's two slabs against q's extent, then for each edge of q the
+     * slab {@code least + t v.n < edge}, least being the box's nearest corner along the
+     * edge's outward normal n.
+     */
+    private static Earliest rectEntry(Earliest e, float x, float y, float w, float h, float vx, float vy,
+                                      double[] q, int winding, double gx, double gy) {
+        double left = x, right = (double) x + w, top = y, bottom = (double) y + h;
+        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < q.length; i += 2) {
+            minX = Math.min(minX, q[i]);
+            maxX = Math.max(maxX, q[i]);
+            minY = Math.min(minY, q[i + 1]);
+            maxY = Math.max(maxY, q[i + 1]);
+        }
+        Slabs.Clip clip = SCRATCH.get().clip.reset()
+                .slab(minY - bottom - gy, maxY - top + gy, vy, 0, 1)
+                .slab(minX - right - gx, maxX - left + gx, vx, 1, 0);
+        for (int i = 0, j = q.length - 2; i < q.length && clip.firstTime(1) != Slabs.INF; j = i, i += 2) {
+            double nx = winding * (q[i + 1] - q[j + 1]), ny = winding * (q[j] - q[i]);
+            double edge = q[i] * nx + q[i + 1] * ny;
+            double least = nx * left + ny * top + Math.min(0, nx * w) + Math.min(0, ny * h);
+            double push = gx * Math.abs(nx) + gy * Math.abs(ny);
+            clip.slab(Double.NEGATIVE_INFINITY, edge - least + push, vx * nx + vy * ny, nx, ny);
+        }
+        e.clip(clip, 1);
+        return e;
+    }
+
+    /**
      * A time before which no copy of the mover with each vertex moved by up to {@code sx}
      * across and {@code sy} down (the rounding of its float positions) can overlap the
      * obstacle, the mover moving by (vx, vy): the entry with every face pushed out by the

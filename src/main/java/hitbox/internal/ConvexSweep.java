@@ -75,6 +75,9 @@ public final class ConvexSweep {
         if (vx == 0 && vy == 0) {
             return null;
         }
+        if (ConvexPolygonSweep.rectAgainstConvex(mover, vx, vy, obstacle)) {
+            return ConvexPolygonSweep.rectTimeOfImpact((Rect) mover, vx, vy, (Polygon) obstacle);
+        }
         if (convexPolygon(mover) && convexPolygon(obstacle)) {
             Hit h = ConvexPolygonSweep.timeOfImpact((Polygon) mover, vx, vy, (Polygon) obstacle);
             if (h == null || !(h.t() > 0) || h.alreadyOverlapping()) {

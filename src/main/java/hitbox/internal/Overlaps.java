@@ -187,7 +187,8 @@ public final class Overlaps {
                     yield RawTests.polygonRect(xy, x, y, w, h);  // a flat rectangle: a segment
                 }
                 int winding = HiddenParts.convexWinding((Polygon) other);  // kept if convex
-                yield RawTests.polygonRectWound(xy, winding != 0 ? winding : Polygons.winding(xy), x, y, w, h);
+                yield winding != 0 ? Polygons.convexRectOverlap(xy, winding, x, y, w, h)
+                        : RawTests.polygonRectWound(xy, Polygons.winding(xy), x, y, w, h);
             }
         };
     }

@@ -327,6 +327,44 @@ public final class Polygons {
         return !edgeSeparates(a, wa, b) && !edgeSeparates(b, wb, a);
     }
 
+    /**
+     * Do convex polygon p (winding w, no NaN) and the open rectangle (x, y, w, h), w and h
+     * above 0, overlap? {@link #convexOverlap} with the rectangle as the other polygon, its
+     * corners summed in double (as {@link RawTests#rectRect} sums them), so no array is made:
+     * the rectangle's own edges separate when p's box is on or past one of them, and an edge of
+     * p separates when every corner of the rectangle is on or outside its line (exact
+     * orientations). A sweep asks this at every float position it looks at.
+     */
+    public static boolean convexRectOverlap(float[] p, int w, float x, float y, float width, float height) {
+        double right = (double) x + width, bottom = (double) y + height;
+        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY;
+        int n = p.length / 2;  // a raw array may have a lone coordinate at its end: not a vertex
+        for (int i = 0; i < 2 * n; i += 2) {
+            minX = Math.min(minX, p[i]);
+            maxX = Math.max(maxX, p[i]);
+            minY = Math.min(minY, p[i + 1]);
+            maxY = Math.max(maxY, p[i + 1]);
+        }
+        if (maxX <= x || minX >= right || maxY <= y || minY >= bottom) {
+            return false;
+        }
+        double ax = p[2 * n - 2], ay = p[2 * n - 1];
+        for (int i = 0; i < n; i++) {
+            double bx = p[2 * i], by = p[2 * i + 1];
+            if ((ax != bx || ay != by)
+                    && !(w * Lines.orient(ax, ay, bx, by, x, y) > 0)
+                    && !(w * Lines.orient(ax, ay, bx, by, right, y) > 0)
+                    && !(w * Lines.orient(ax, ay, bx, by, right, bottom) > 0)
+                    && !(w * Lines.orient(ax, ay, bx, by, x, bottom) > 0)) {
+                return false;
+            }
+            ax = bx;
+            ay = by;
+        }
+        return true;
+    }
+
     /** Does the line of some edge of convex p (winding w) have every vertex of q on or outside it? */
     public static boolean edgeSeparates(float[] p, int w, float[] q) {
         int n = p.length / 2, m = q.length / 2;

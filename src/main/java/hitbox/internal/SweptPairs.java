@@ -38,8 +38,8 @@ public final class SweptPairs {
 
     private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
 
-    /** The thread's exact entry, reset: found nothing yet. */
-    private static Earliest exactEntry() {
+    /** The thread's exact entry, reset: found nothing yet (for an entry worked out elsewhere, as {@link #grownEntry}). */
+    public static Earliest exactEntry() {
         return SCRATCH.get().exact.reset();
     }
 
@@ -294,8 +294,11 @@ public final class SweptPairs {
      */
     private static final class Moved implements OverlapAt {
         static final int CIRCLE_CIRCLE = 0, CIRCLE_RECT = 1, RECT_CIRCLE = 2, RECT_SEGMENT = 3,
-                CIRCLE_SEGMENT = 4, SEGMENT_RECT = 5, SEGMENT_CIRCLE = 6;
+                CIRCLE_SEGMENT = 4, SEGMENT_RECT = 5, SEGMENT_CIRCLE = 6, RECT_CONVEX = 7;
         private int pair;
+        /** A standing convex polygon's outline and winding, for RECT_CONVEX; else null and 0. */
+        private float[] outline;
+        private int winding;
         /** The mover's moving coordinates (a segment's two ends) and its motion. */
         private float x, y, x2, y2, vx, vy;
         /** The standing arguments, in the order the test takes them. */
@@ -316,6 +319,8 @@ public final class SweptPairs {
             this.f3 = f3;
             this.f4 = f4;
             this.f5 = f5;
+            this.outline = null;
+            this.winding = 0;
             return this;
         }
 
@@ -328,6 +333,7 @@ public final class SweptPairs {
                 case RECT_SEGMENT -> RawTests.lineRect(f0, f1, f2, f3, x + u * vx, y + u * vy, f4, f5);
                 case CIRCLE_SEGMENT -> RawTests.lineCircle(f0, f1, f2, f3, x + u * vx, y + u * vy, f4);
                 case SEGMENT_RECT -> RawTests.lineRect(x + u * vx, y + u * vy, x2 + u * vx, y2 + u * vy, f0, f1, f2, f3);
+                case RECT_CONVEX -> Polygons.convexRectOverlap(outline, winding, x + u * vx, y + u * vy, f0, f1);
                 default -> RawTests.lineCircle(x + u * vx, y + u * vy, x2 + u * vx, y2 + u * vy, f0, f1, f2);
             };
         }
@@ -369,6 +375,18 @@ public final class SweptPairs {
     public static OverlapAt segmentRectAt(float x1, float y1, float x2, float y2, float vx, float vy,
                                           float rectX, float rectY, float rectW, float rectH) {
         return moved().set(Moved.SEGMENT_RECT, x1, y1, x2, y2, vx, vy, rectX, rectY, rectW, rectH, 0, 0);
+    }
+
+    /**
+     * A rectangle with area at (x, y) moved by u (vx, vy) against a standing convex polygon
+     * (its outline and its winding, not 0), tested with no rectangle made.
+     */
+    public static OverlapAt rectConvexAt(float x, float y, float w, float h, float vx, float vy,
+                                         float[] outline, int winding) {
+        Moved m = moved().set(Moved.RECT_CONVEX, x, y, 0, 0, vx, vy, w, h, 0, 0, 0, 0);
+        m.outline = outline;
+        m.winding = winding;
+        return m;
     }
 
     /** A segment moved by u (vx, vy) against a standing circle. */
