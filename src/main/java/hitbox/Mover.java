@@ -74,6 +74,8 @@ final class Mover {
     private final float[] stopX = new float[Sweep.MAX_SLIDES];
     private final float[] stopY = new float[Sweep.MAX_SLIDES];
     private int stopCount;
+    /** Where the rectangles' walk left the box, and the velocity it kept (x, y, vx, vy). */
+    private final float[] walked = new float[4];
     private final MoveAndSlide.Stops stops = (index, t, side, x, y) -> {
         stopIndex[stopCount] = index;
         stopT[stopCount] = t;
@@ -758,7 +760,7 @@ final class Mover {
             rects.add((Rect) obShape[i]);
         }
         stopCount = 0;
-        Sweep.Move end = MoveAndSlide.move(r, dx, dy, rects, stops);
+        MoveAndSlide.walk(r, dx, dy, rects, stops, walked);
         double time = 0;
         for (int k = 0; k < stopCount; k++) {
             double frame = time + stopT[k] * (1 - time);
@@ -771,6 +773,6 @@ final class Mover {
                     (float) (m.homePivotY + m.ty + ((double) stopY[k] - r.y())), obCell[i]));
             time = frame;
         }
-        return new Rect(end.x(), end.y(), r.w(), r.h());
+        return new Rect(walked[0], walked[1], r.w(), r.h());
     }
 }

@@ -445,8 +445,8 @@ public final class World {
             stepCollisions.clear();
             stepped = false;
         }
-        if (!out.isEmpty()) {
-            stepCollisions.addAll(out);  // addAll copies even an empty list
+        for (int i = 0, n = out.size(); i < n; i++) {
+            stepCollisions.add(out.get(i));  // not addAll, which copies the list into a new array
         }
         Collisions result = Collisions.of(out, finished);
         out.clear();

@@ -33,7 +33,8 @@ import java.util.List;
  * touching is meeting, between two shapes without area or for one without area against the
  * pieces of a concave polygon, the line must leave a gap of that size instead.)
  *
- * <p>Two convex polygons go the exact way instead, {@link ConvexPolygonSweep}.
+ * <p>Two convex polygons, and a rectangle moving into a convex polygon, go the exact way
+ * instead, {@link ConvexPolygonSweep}.
  *
  * <p>This class is longer than most (about 480 lines) because the advancement, the line that
  * decides whether a pair meets at all and the look-back over the float positions all read

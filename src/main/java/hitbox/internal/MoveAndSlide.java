@@ -26,6 +26,18 @@ public final class MoveAndSlide {
 
     /** {@link #move(Rect, float, float, Iterable)}, telling {@code stops} (if not null) of each stop. */
     public static Sweep.Move move(Rect mover, float vx, float vy, Iterable<Rect> obstacles, Stops stops) {
+        float[] end = new float[4];
+        int sides = walk(mover, vx, vy, obstacles, stops, end);
+        return new Sweep.Move(end[0], end[1], end[2], end[3], SideSets.of(sides));
+    }
+
+    /**
+     * The walk of {@link #move(Rect, float, float, Iterable, Stops)} with no result made, for
+     * the world's moves, which make their own: where the box ends and the velocity to keep
+     * are written into {@code end} (x, y, vx, vy), and the sides hit returned as
+     * {@link SideSets} bits.
+     */
+    public static int walk(Rect mover, float vx, float vy, Iterable<Rect> obstacles, Stops stops, float[] end) {
         final float x0 = mover.x(), y0 = mover.y(), w = mover.w(), h = mover.h();
         float x = x0, y = y0;
         double mx = vx, my = vy;  // the motion still to do this frame
@@ -47,7 +59,7 @@ public final class MoveAndSlide {
                 index++;
             }
             if (hitRect == null) {
-                float[] end = safeAlong(x, y, w, h, mx, my, 1, (float) (x + mx), (float) (y + my), x0, y0, obstacles);
+                safeAlong(x, y, w, h, mx, my, 1, (float) (x + mx), (float) (y + my), x0, y0, obstacles, end);
                 x = end[0];
                 y = end[1];
                 break;
@@ -63,9 +75,9 @@ public final class MoveAndSlide {
             float tx = (float) (x + first * mx), ty = (float) (y + first * my);
             tx = RectPush.placedX(side, tx, w, hitRect.x(), hitRect.w());
             ty = RectPush.placedY(side, ty, h, hitRect.y(), hitRect.h());
-            float[] at = safeAlong(x, y, w, h, mx, my, first, tx, ty, x0, y0, obstacles);
-            x = at[0];
-            y = at[1];
+            safeAlong(x, y, w, h, mx, my, first, tx, ty, x0, y0, obstacles, end);
+            x = end[0];
+            y = end[1];
             if (stops != null) {
                 stops.stop(hitIndex, first, side, x, y);
             }
@@ -80,18 +92,25 @@ public final class MoveAndSlide {
             }
             sides |= SideSets.bit(side);
         }
-        return new Sweep.Move(x, y, keepVx, keepVy, SideSets.of(sides));
+        end[0] = x;
+        end[1] = y;
+        end[2] = keepVx;
+        end[3] = keepVy;
+        return sides;
     }
 
     /**
      * The wanted stop (tx, ty) if it overlaps no obstacle (except those the box started in);
      * otherwise, which only rounding can cause, the farthest point along the motion before
-     * {@code t} that is clear, found by halving. The start (x, y) is always clear.
+     * {@code t} that is clear, found by halving. The start (x, y) is always clear. Written
+     * into {@code at}[0] and [1].
      */
-    private static float[] safeAlong(float x, float y, float w, float h, double mx, double my, double t,
-                                     float tx, float ty, float x0, float y0, Iterable<Rect> obstacles) {
+    private static void safeAlong(float x, float y, float w, float h, double mx, double my, double t,
+                                  float tx, float ty, float x0, float y0, Iterable<Rect> obstacles, float[] at) {
         if (clear(tx, ty, w, h, x0, y0, obstacles)) {
-            return new float[] {tx, ty};
+            at[0] = tx;
+            at[1] = ty;
+            return;
         }
         float bestX = x, bestY = y;
         double lo = 0, hi = t;
@@ -106,7 +125,8 @@ public final class MoveAndSlide {
                 hi = mid;
             }
         }
-        return new float[] {bestX, bestY};
+        at[0] = bestX;
+        at[1] = bestY;
     }
 
     private static boolean clear(float x, float y, float w, float h, float x0, float y0, Iterable<Rect> obstacles) {
