@@ -254,6 +254,33 @@ public final class Body {
     }
 
     /**
+     * Teleports the body to a pose: its pivot to (x, y) and its angle to {@code angle}, where
+     * {@link World#add(Shape, float, float, float)} would place it, so that a body drawn with
+     * {@code translate(x, y); rotate(angle);} follows its drawing with one call a frame. The
+     * same pose as {@code moveTo(x, y)} then {@code turnTo(angle)}, for the cost of one
+     * teleport (Box2D's {@code b2Body_SetTransform}). Nothing in the way is looked at.
+     *
+     * <p>A NaN or infinite number throws, naming it, and the body stays where it was.
+     *
+     * @param x     where the pivot goes, x
+     * @param y     where the pivot goes, y
+     * @param angle the angle it turns to, radians, clockwise on screen
+     * @return this body, for chaining, never null
+     * @throws IllegalArgumentException if a number is NaN or infinite, or the shape would
+     *                                  leave the float range
+     * @throws IllegalStateException    if the body was removed, is a grid's, or this is called
+     *                                  from inside a callback of its world
+     */
+    public Body moveTo(float x, float y, float angle) {
+        Check.finite("x", x);
+        Check.finite("y", y);
+        Check.finite("angle", angle);
+        World w = live("moveTo");
+        w.teleport(this, (double) x - homePivotX, (double) y - homePivotY, angle, "x, y and angle");
+        return this;
+    }
+
+    /**
      * Teleports the body by (dx, dy), its angle kept.
      *
      * <p>A NaN or infinite amount throws, naming it, and the body stays where it was.

@@ -71,6 +71,9 @@ class WorldRefusedCallTest {
         refused(IllegalArgumentException.class, "float range", () -> player.moveBy(Float.MAX_VALUE, 0));
         refused(IllegalArgumentException.class, "float range", () -> turned.moveTo(-Float.MAX_VALUE, 0));
         refused(IllegalArgumentException.class, "angle", () -> turned.turnTo(Float.NaN));
+        refused(IllegalArgumentException.class, "angle", () -> turned.moveTo(5, 5, Float.NaN));
+        refused(IllegalArgumentException.class, "y", () -> turned.moveTo(5, Float.NaN, 1));
+        refused(IllegalArgumentException.class, "float range", () -> turned.moveTo(Float.MAX_VALUE, 0, 1));
         refused(IllegalArgumentException.class, "da", () -> turned.turnBy(Float.POSITIVE_INFINITY));
         refused(IllegalArgumentException.class, "x", () -> w.add(new Circle(0, 0, 1), Float.NaN, 0, 0));
         refused(IllegalArgumentException.class, "angle", () -> w.add(new Circle(0, 0, 1), 0, 0, Float.NaN));

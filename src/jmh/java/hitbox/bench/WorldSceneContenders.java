@@ -99,7 +99,7 @@ final class WorldSceneContenders {
     /**
      * Hitbox's {@code World}: a body per scene body, its shape given once in its own frame
      * ({@code World.add(shape, x, y, angle)}); each frame every moving body is teleported
-     * ({@code moveTo}, and {@code turnTo} for those that turn), then {@code World.pairs} hands
+     * ({@code moveTo(x, y)}, or {@code moveTo(x, y, angle)} for those that turn), then {@code World.pairs} hands
      * over every overlapping pair; or ({@code hitboxWorldStep}) {@code World.step()} reports the
      * contacts as events, ENTER or STAY for each pair that overlaps now (EXIT for those that no
      * longer do, not counted).
@@ -145,9 +145,10 @@ final class WorldSceneContenders {
             WorldScene s = scene;
             for (int i = 0; i < s.n; i++) {
                 if (s.moves(i)) {
-                    bodies[i].moveTo(s.x[i], s.y[i]);
                     if (s.spin[i] != 0) {
-                        bodies[i].turnTo(s.angle[i]);
+                        bodies[i].moveTo(s.x[i], s.y[i], s.angle[i]);
+                    } else {
+                        bodies[i].moveTo(s.x[i], s.y[i]);
                     }
                 }
             }
