@@ -262,4 +262,67 @@ class ConvexSweepTest {
         assertTrue(!meets(slope.raw(), 10, 6 + t * 8, 10, 10), "clear at t: " + ahead);
         assertTrue(meets(slope.raw(), 10, 6 + Math.nextUp(t) * 8, 10, 10), "overlapping after: " + ahead);
     }
+
+    /**
+     * A circle against a convex polygon goes the exact way too (the capsules round the edges,
+     * {@code ConvexPolygonSweep.circleTimeOfImpact}). Judged by the exact reference: clear at
+     * t, overlapping at the next float up (or, at t = 0, once moved a little); conservative
+     * advancement finds the same hits, never an earlier t, and nearly always the same t.
+     */
+    @Test
+    void circleIntoConvexPolygon_keepsThePromiseAndMostlyMatchesByPieces() {
+        Random rnd = new Random(35);
+        int hits = 0, same = 0, total = 5_000;
+        for (int i = 0; i < total; i++) {
+            Polygon q = convex(rnd);
+            float[] qc = q.raw();
+            float cx = qc[0] + rnd.nextInt(61) - 30 + (rnd.nextBoolean() ? 0 : rnd.nextInt(2) / 2f);
+            float cy = qc[1] + rnd.nextInt(61) - 30 + (rnd.nextBoolean() ? 0 : rnd.nextFloat());
+            float r = rnd.nextInt(4) == 0 ? 1 : 1 + rnd.nextInt(15) + (rnd.nextBoolean() ? 0 : rnd.nextFloat());
+            Circle c = new Circle(cx, cy, r);
+            float vx = rnd.nextInt(81) - 40 + (rnd.nextBoolean() ? rnd.nextFloat() : 0);
+            float vy = rnd.nextInt(81) - 40 + (rnd.nextBoolean() ? rnd.nextFloat() : 0);
+            if (vx == 0 && vy == 0) {
+                continue;
+            }
+            assertTrue(ConvexPolygonSweep.circleAgainstConvex(c, vx, vy, q), "the exact way");
+            Hit hit = Sweep.timeOfImpact(c, vx, vy, q);
+            if (hit != null && hit.alreadyOverlapping()) {
+                continue;
+            }
+            Hit pieces = ConvexSweep.byPieces(c, vx, vy, q);
+            String where = c + " by (" + vx + ", " + vy + ") into " + q + ": " + hit + ", by pieces " + pieces;
+            assertEquals(pieces == null, hit == null, where);
+            if (hit != null) {
+                float t = hit.t();
+                assertTrue(!ExactReference.polygonCircle(qc, cx + t * vx, cy + t * vy, r), "clear at t: " + where);
+                float up = t == 0 ? moved(cx, vx, cy, vy) : Math.nextUp(t);
+                if (t < 1) {
+                    assertTrue(ExactReference.polygonCircle(qc, cx + up * vx, cy + up * vy, r), "overlapping after t: " + where);
+                }
+                assertTrue(t <= pieces.t(), where);
+                assertEquals(1, Math.hypot(hit.nx(), hit.ny()), 1e-6, where);
+                assertTrue(hit.nx() * vx + hit.ny() * vy > 0, "moving into the face it hit: " + where);
+                hits++;
+                same += t == pieces.t() ? 1 : 0;
+            }
+        }
+        assertTrue(hits > total / 10, hits + " hits");
+        assertTrue(same > hits * 99 / 100, same + " of " + hits + " the same as by pieces");
+    }
+
+    /** A ball resting on a slope's face rolls along it (no hit), and pressing into it stops at 0. */
+    @Test
+    void circleOnASlope_slidesAlongAndStopsPressingIn() {
+        // The slope's face from (0, 30) to (40, 0): a 3-4-5 line, so a centre 5 off it is a whole number.
+        Polygon slope = Polygon.of(0, 30, 40, 0, 40, 30);
+        Circle ball = new Circle(17, 11, 5);  // 3*17 + 4*11 = 95 = 120 - 5*5: touching the face
+        assertEquals(null, Sweep.timeOfImpact(ball, 8, -6, slope), "up along the face");
+        assertEquals(null, Sweep.timeOfImpact(ball, -8, 6, slope), "down along the face");
+        assertEquals(null, Sweep.timeOfImpact(ball, -3, -4, slope), "away from it");
+        Hit in = Sweep.timeOfImpact(ball, 3, 4, slope);
+        assertEquals(0, in.t(), "pressing in: " + in);
+        assertEquals(0.6, in.nx(), 1e-6);
+        assertEquals(0.8, in.ny(), 1e-6);
+    }
 }
