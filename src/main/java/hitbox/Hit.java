@@ -26,7 +26,8 @@ import hitbox.internal.*;
  * {@code t = 0} exactly, with a real normal and side (the one exception to the largest float
  * t of {@link Sweep}: there the float position has not moved for a hair above 0, but the
  * exact entry is 0). "Touches" is exact for the pairs {@link Sweep} solves exactly (circles,
- * rectangles, segments, two convex polygons, a rectangle or a circle moving into a convex polygon). Where a curved shape meets anything but a
+ * rectangles, segments, two convex polygons, a rectangle moving into a convex polygon, a
+ * circle moving into any polygon). Where a curved shape meets anything but a
  * circle, a rectangle or a segment of those (an ellipse, a capsule, a polygon against a
  * curved shape), touching at a slanted place cannot be built exactly in floats nor decided
  * exactly, and the search stands in for it: a start within 1e-6 pixels, closing in, whose

@@ -27,14 +27,15 @@ import hitbox.internal.*;
  * float positions one by one from the earliest time rounding could make one overlap, so
  * {@code t} stands before the first piece (up to 4096 positions; past that, a walk from the
  * exact entry decides; two boxes need no visit, their float overlap is one interval; a
- * rectangle or a circle moving into a convex polygon is one of these), and the searched pairs and two
- * convex polygons look back the same way from the walk's answer.
+ * rectangle moving into a convex polygon and a circle moving into any polygon are of these),
+ * and the searched pairs and two convex polygons look back the same way from the walk's
+ * answer.
  * Whether there is a hit at all is the exact path's decision: a path
  * that misses exactly is no hit, even where rounding puts a float position a hair inside,
  * so a mover that touches the obstacle (or is a hair from it) and moves away, against the
  * contact normal or along the face, is never stopped. For the pairs found by conservative
- * advancement (ellipses, capsules, a polygon with anything but a convex polygon or a
- * rectangle or circle moving into it) the exact
+ * advancement (ellipses, capsules, and a polygon with anything but a convex polygon, a
+ * rectangle moving into a convex one or a circle moving into it) the exact
  * path is decided by a separating line: one that keeps the obstacle on one side and every
  * position of the mover along the motion on the other rules the hit out, a path entering
  * less than 2^-40 of the shapes' size deep counting as clear (the rounding of that search in
@@ -44,7 +45,8 @@ import hitbox.internal.*;
  * The one exception: a mover that touches the obstacle at the start and moves
  * into it gets {@code t = 0} exactly, as {@link Hit} promises, not the hair above 0 at which
  * its float position has not yet moved: for the exact pairs (circles, rectangles, segments,
- * two convex polygons, a rectangle or a circle moving into a convex polygon) its exact entry is 0, which decides before any float is tried; for
+ * two convex polygons, a rectangle moving into a convex polygon, a circle moving into any
+ * polygon) its exact entry is 0, which decides before any float is tried; for
  * the pairs found by conservative advancement, a start within 1e-6 pixels whose path goes
  * on into the obstacle, and whose last clear float has moved the mover by no more than a
  * float step of its largest coordinate. If the float positions never overlap
@@ -496,8 +498,9 @@ public final class Sweep {
      * Circles, rectangles and segments (but two segments) have exact swept tests, the methods
      * above, and so do two convex polygons, a rectangle moving into a convex polygon (the
      * motion as a ray against their Minkowski difference, whose faces are the two shapes'
-     * edges; the normal is the face entered), and a circle moving into a convex polygon (the
-     * circle against each edge, as against a segment). Every other pair (a concave polygon, ellipses
+     * edges; the normal is the face entered), and a circle moving into any polygon (the
+     * circle against each edge, as against a segment). Every other pair (a concave polygon with
+     * anything but a moving circle, ellipses
      * aligned or turned, capsules, two segments, a polygon moving into a rectangle) is found
      * by conservative advancement along
      * separating directions over the shapes' convex pieces (never later than the real

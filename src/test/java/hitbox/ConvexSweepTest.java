@@ -285,7 +285,7 @@ class ConvexSweepTest {
             if (vx == 0 && vy == 0) {
                 continue;
             }
-            assertTrue(ConvexPolygonSweep.circleAgainstConvex(c, vx, vy, q), "the exact way");
+            assertTrue(ConvexPolygonSweep.circleAgainstPolygon(c, vx, vy, q), "the exact way");
             Hit hit = Sweep.timeOfImpact(c, vx, vy, q);
             if (hit != null && hit.alreadyOverlapping()) {
                 continue;
@@ -324,5 +324,53 @@ class ConvexSweepTest {
         assertEquals(0, in.t(), "pressing in: " + in);
         assertEquals(0.6, in.nx(), 1e-6);
         assertEquals(0.8, in.ny(), 1e-6);
+    }
+
+    /**
+     * The circle's exact way takes a concave polygon too (the capsules round its edges): the
+     * same promise, judged by the exact reference, and the same hits as conservative
+     * advancement over the polygon's triangles, never later.
+     */
+    @Test
+    void circleIntoConcavePolygon_keepsThePromiseAndMostlyMatchesByPieces() {
+        java.util.SplittableRandom rnd = new java.util.SplittableRandom(36);
+        int hits = 0, same = 0, concave = 0, total = 3_000;
+        for (int i = 0; i < total; i++) {
+            Polygon q = TestShapes.starRing(rnd, 5 + rnd.nextInt(6), 60, 60, rnd.nextBoolean());
+            concave += q.isConvex() ? 0 : 1;
+            float[] qc = q.raw();
+            float cx = 60 + rnd.nextInt(121) - 60 + (rnd.nextBoolean() ? 0 : (float) rnd.nextDouble());
+            float cy = 60 + rnd.nextInt(121) - 60 + (rnd.nextBoolean() ? 0 : rnd.nextInt(2) / 2f);
+            float r = 1 + rnd.nextInt(10) + (rnd.nextBoolean() ? 0 : (float) rnd.nextDouble());
+            Circle c = new Circle(cx, cy, r);
+            float vx = rnd.nextInt(121) - 60 + (rnd.nextBoolean() ? (float) rnd.nextDouble() : 0);
+            float vy = rnd.nextInt(121) - 60;
+            if (vx == 0 && vy == 0) {
+                continue;
+            }
+            assertTrue(ConvexPolygonSweep.circleAgainstPolygon(c, vx, vy, q), "the exact way");
+            Hit hit = Sweep.timeOfImpact(c, vx, vy, q);
+            if (hit != null && hit.alreadyOverlapping()) {
+                continue;
+            }
+            Hit pieces = ConvexSweep.byPieces(c, vx, vy, q);
+            String where = c + " by (" + vx + ", " + vy + ") into " + q + ": " + hit + ", by pieces " + pieces;
+            assertEquals(pieces == null, hit == null, where);
+            if (hit != null) {
+                float t = hit.t();
+                assertTrue(!ExactReference.polygonCircle(qc, cx + t * vx, cy + t * vy, r), "clear at t: " + where);
+                float up = t == 0 ? moved(cx, vx, cy, vy) : Math.nextUp(t);
+                if (t < 1) {
+                    assertTrue(ExactReference.polygonCircle(qc, cx + up * vx, cy + up * vy, r), "overlapping after t: " + where);
+                }
+                assertTrue(t <= pieces.t(), where);
+                assertTrue(hit.nx() * vx + hit.ny() * vy > 0, "moving into the face it hit: " + where);
+                hits++;
+                same += t == pieces.t() ? 1 : 0;
+            }
+        }
+        assertTrue(concave > total / 2, concave + " concave");
+        assertTrue(hits > total / 10, hits + " hits");
+        assertTrue(same > hits * 99 / 100, same + " of " + hits + " the same as by pieces");
     }
 }

@@ -104,10 +104,10 @@ public final class ConvexPolygonSweep {
     }
 
     /**
-     * The hit of a circle with area moving by (vx, vy) into a convex polygon, the two apart at
-     * the start; or null: the circle against each edge as {@link Sweep} sweeps a circle
+     * The hit of a circle with area moving by (vx, vy) into a polygon (convex or not), the two
+     * apart at the start; or null: the circle against each edge as {@link Sweep} sweeps a circle
      * against a segment, the earliest of those entries
-     * ({@link SweptPairs#circleConvexEntry}), then the promised float t by visiting the float
+     * ({@link SweptPairs#circlePolygonEntry}), then the promised float t by visiting the float
      * positions of the centre from the entry grown by their rounding slack
      * ({@link SweptPairs#answer}), each tested by {@link RawTests#polygonCircle}. Where
      * rounding in double puts the start inside (the shapes touch), the general way
@@ -116,25 +116,25 @@ public final class ConvexPolygonSweep {
     public static Hit circleTimeOfImpact(Circle mover, float vx, float vy, Polygon obstacle) {
         float cx = mover.x(), cy = mover.y(), r = mover.r();
         float[] xy = HiddenParts.raw(obstacle);
-        Earliest e = SweptPairs.circleConvexEntry(SweptPairs.exactEntry(), cx, cy, r, vx, vy, xy, 0, 0);
+        Earliest e = SweptPairs.circlePolygonEntry(SweptPairs.exactEntry(), cx, cy, r, vx, vy, xy, 0, 0);
         if (e.inside) {
             return ConvexSweep.byPieces(mover, vx, vy, obstacle);  // touching, and rounding put the start inside
         }
         Earliest grown = SweptPairs.decided(e) ? e
-                : SweptPairs.circleConvexEntry(SweptPairs.grownEntry(), cx, cy, r, vx, vy, xy,
+                : SweptPairs.circlePolygonEntry(SweptPairs.grownEntry(), cx, cy, r, vx, vy, xy,
                 SweptPairs.slack(cx, vx), SweptPairs.slack(cy, vy));
-        float t = SweptPairs.answer(e, grown, SweptPairs.circleConvexAt(cx, cy, r, vx, vy, xy), cx, vx, cy, vy);
+        float t = SweptPairs.answer(e, grown, SweptPairs.circlePolygonAt(cx, cy, r, vx, vy, xy), cx, vx, cy, vy);
         return SweptPairs.hit(t, e, grown, false);
     }
 
     /**
-     * Can {@link #circleTimeOfImpact} answer this pair: a circle with area against a convex
-     * polygon, moving?
+     * Can {@link #circleTimeOfImpact} answer this pair: a circle with area against a polygon,
+     * moving? Convex or not: a centre that starts outside the polygon, at least the radius from
+     * its outline, can overlap it only by first coming within the radius of its outline.
      */
-    public static boolean circleAgainstConvex(Shape mover, float vx, float vy, Shape obstacle) {
+    public static boolean circleAgainstPolygon(Shape mover, float vx, float vy, Shape obstacle) {
         return ShapeKind.of(mover) == ShapeKind.CIRCLE && ((Circle) mover).r() > 0
-                && ShapeKind.of(obstacle) == ShapeKind.POLYGON && HiddenParts.convexWinding((Polygon) obstacle) != 0
-                && (vx != 0 || vy != 0);
+                && ShapeKind.of(obstacle) == ShapeKind.POLYGON && (vx != 0 || vy != 0);
     }
 
     /**

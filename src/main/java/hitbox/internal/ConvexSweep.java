@@ -33,8 +33,8 @@ import java.util.List;
  * touching is meeting, between two shapes without area or for one without area against the
  * pieces of a concave polygon, the line must leave a gap of that size instead.)
  *
- * <p>Two convex polygons, and a rectangle or a circle moving into a convex polygon, go the
- * exact way instead, {@link ConvexPolygonSweep}.
+ * <p>Two convex polygons, a rectangle moving into a convex polygon and a circle moving into
+ * any polygon go the exact way instead, {@link ConvexPolygonSweep}.
  *
  * <p>This class is longer than most (about 480 lines) because the advancement, the line that
  * decides whether a pair meets at all and the look-back over the float positions all read
@@ -79,7 +79,7 @@ public final class ConvexSweep {
         if (ConvexPolygonSweep.rectAgainstConvex(mover, vx, vy, obstacle)) {
             return ConvexPolygonSweep.rectTimeOfImpact((Rect) mover, vx, vy, (Polygon) obstacle);
         }
-        if (ConvexPolygonSweep.circleAgainstConvex(mover, vx, vy, obstacle)) {
+        if (ConvexPolygonSweep.circleAgainstPolygon(mover, vx, vy, obstacle)) {
             return ConvexPolygonSweep.circleTimeOfImpact((Circle) mover, vx, vy, (Polygon) obstacle);
         }
         if (convexPolygon(mover) && convexPolygon(obstacle)) {

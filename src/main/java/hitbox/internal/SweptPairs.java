@@ -257,15 +257,16 @@ public final class SweptPairs {
     }
 
     /**
-     * Circle (radius above 0) against a convex polygon's outline (no NaN), into e: the earliest
+     * Circle (radius above 0) against a polygon's outline (no NaN, convex or not), into e: the earliest
      * of its entries into the capsules round the polygon's edges, each as
      * {@link #circleSegmentEntry(float, float, float, float, float, float, float, float, float, double, double)}
      * (with gx and gy the centre's displacement, 0 for the exact entry). A centre that starts
      * outside cannot come within the circle's radius of the polygon's inside without first
-     * coming that close to its outline, and the capsules' latest exit is at or after the
-     * rounded polygon's, so the earliest entry and that exit are the pair's.
+     * coming that close to its outline, so the earliest entry is the pair's; and a path
+     * that reaches the polygon's inside crosses its outline inside some capsule, so the float
+     * positions that overlap first come before the capsules' latest exit.
      */
-    public static Earliest circleConvexEntry(Earliest e, float cx, float cy, float r, float vx, float vy, float[] xy,
+    public static Earliest circlePolygonEntry(Earliest e, float cx, float cy, float r, float vx, float vy, float[] xy,
                                              double gx, double gy) {
         int n = xy.length / 2;
         for (int i = 0, h = n - 1; i < n; h = i++) {
@@ -312,9 +313,9 @@ public final class SweptPairs {
      */
     private static final class Moved implements OverlapAt {
         static final int CIRCLE_CIRCLE = 0, CIRCLE_RECT = 1, RECT_CIRCLE = 2, RECT_SEGMENT = 3,
-                CIRCLE_SEGMENT = 4, SEGMENT_RECT = 5, SEGMENT_CIRCLE = 6, RECT_CONVEX = 7, CIRCLE_CONVEX = 8;
+                CIRCLE_SEGMENT = 4, SEGMENT_RECT = 5, SEGMENT_CIRCLE = 6, RECT_CONVEX = 7, CIRCLE_POLYGON = 8;
         private int pair;
-        /** A standing convex polygon's outline and winding, for RECT_CONVEX and CIRCLE_CONVEX; else null and 0. */
+        /** A standing polygon's outline (convex, with its winding, for RECT_CONVEX; any for CIRCLE_POLYGON); else null and 0. */
         private float[] outline;
         private int winding;
         /** The mover's moving coordinates (a segment's two ends) and its motion. */
@@ -352,7 +353,7 @@ public final class SweptPairs {
                 case CIRCLE_SEGMENT -> RawTests.lineCircle(f0, f1, f2, f3, x + u * vx, y + u * vy, f4);
                 case SEGMENT_RECT -> RawTests.lineRect(x + u * vx, y + u * vy, x2 + u * vx, y2 + u * vy, f0, f1, f2, f3);
                 case RECT_CONVEX -> Polygons.convexRectOverlap(outline, winding, x + u * vx, y + u * vy, f0, f1);
-                case CIRCLE_CONVEX -> RawTests.polygonCircle(outline, x + u * vx, y + u * vy, f0);
+                case CIRCLE_POLYGON -> RawTests.polygonCircle(outline, x + u * vx, y + u * vy, f0);
                 default -> RawTests.lineCircle(x + u * vx, y + u * vy, x2 + u * vx, y2 + u * vy, f0, f1, f2);
             };
         }
@@ -408,9 +409,9 @@ public final class SweptPairs {
         return m;
     }
 
-    /** A circle at (cx, cy) moved by u (vx, vy) against a standing convex polygon (its outline). */
-    public static OverlapAt circleConvexAt(float cx, float cy, float r, float vx, float vy, float[] outline) {
-        Moved m = moved().set(Moved.CIRCLE_CONVEX, cx, cy, 0, 0, vx, vy, r, 0, 0, 0, 0, 0);
+    /** A circle at (cx, cy) moved by u (vx, vy) against a standing polygon (its outline). */
+    public static OverlapAt circlePolygonAt(float cx, float cy, float r, float vx, float vy, float[] outline) {
+        Moved m = moved().set(Moved.CIRCLE_POLYGON, cx, cy, 0, 0, vx, vy, r, 0, 0, 0, 0, 0);
         m.outline = outline;
         return m;
     }
