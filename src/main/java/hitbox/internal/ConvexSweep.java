@@ -67,7 +67,7 @@ public final class ConvexSweep {
 
     /** The hit of a mover moving by (vx, vy) into the obstacle (both valid), or null. */
     public static Hit timeOfImpact(Shape mover, float vx, float vy, Shape obstacle) {
-        if (apart(mover.bounds(), vx, vy, obstacle.bounds())) {
+        if (apart(mover, vx, vy, obstacle)) {
             return null;
         }
         if (Overlaps.test(mover, obstacle)) {
@@ -268,14 +268,16 @@ public final class ConvexSweep {
      * obstacle's box by more than the rounding of the float positions (a moved coordinate
      * {@code x + t * vx} in float lies between x and the float nearest {@code x + vx})?
      */
-    public static boolean apart(Rect m, float vx, float vy, Rect o) {
-        double mr = (double) m.x() + m.w(), mb = (double) m.y() + m.h();
-        double or = (double) o.x() + o.w(), ob = (double) o.y() + o.h();
-        double left = Math.min(m.x(), m.x() + (double) vx), top = Math.min(m.y(), m.y() + (double) vy);
+    public static boolean apart(Shape m, float vx, float vy, Shape o) {
+        // The shapes' extents in double (Extents), not their bounds: a circle's bounds would be
+        // a new Rect on every sweep.
+        double mx = Extents.minX(m), my = Extents.minY(m), mr = Extents.maxX(m), mb = Extents.maxY(m);
+        double ox = Extents.minX(o), oy = Extents.minY(o), or = Extents.maxX(o), ob = Extents.maxY(o);
+        double left = Math.min(mx, mx + vx), top = Math.min(my, my + vy);
         double right = Math.max(mr, mr + vx), bottom = Math.max(mb, mb + vy);
         double slack = Tolerance.SWEEP_BOX_SLACK * (Math.abs(left) + Math.abs(right) + Math.abs(top) + Math.abs(bottom)
-                + Math.abs(o.x()) + Math.abs(o.y()) + Math.abs(or) + Math.abs(ob)) + Float.MIN_NORMAL;
-        return left > or + slack || right < o.x() - slack || top > ob + slack || bottom < o.y() - slack;
+                + Math.abs(ox) + Math.abs(oy) + Math.abs(or) + Math.abs(ob)) + Float.MIN_NORMAL;
+        return left > or + slack || right < ox - slack || top > ob + slack || bottom < oy - slack;
     }
 
     /** Is the shape a convex polygon? */
