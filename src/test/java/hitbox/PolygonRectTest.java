@@ -132,8 +132,8 @@ class PolygonRectTest {
     }
 
     /**
-     * A convex polygon goes the separating-edge way ({@code Polygons.convexRectOverlap}), in
-     * the raw call and in {@code Polygon.overlaps}; the exact reference knows nothing of it.
+     * A convex {@code Polygon} goes the separating-edge way ({@code Polygons.convexRectOverlap}),
+     * the raw call the general way; the exact reference knows nothing of either.
      * Moved by fractions and far out, where every corner is still a float (the reference
      * takes the rectangle as a polygon of float corners).
      */

@@ -204,10 +204,6 @@ public final class RawTests {
         if (rectW == 0 || rectH == 0) {
             return polygonLine(xy, rectX, rectY, rectX + rectW, rectY + rectH);
         }
-        int convex = Polygons.convexWinding(xy);
-        if (convex != 0) {
-            return Polygons.convexRectOverlap(xy, convex, rectX, rectY, rectW, rectH);
-        }
         int w = Polygons.winding(xy);
         if (w == 0) {
             return false;
