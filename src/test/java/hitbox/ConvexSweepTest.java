@@ -109,18 +109,13 @@ class ConvexSweepTest {
 
     /**
      * A box against a convex polygon goes the exact way (the faces of their Minkowski
-     * difference, {@code ConvexPolygonSweep.rectTimeOfImpact}). Judged by the exact reference:
-     * the box moved to t does not overlap, moved to the next float up it does; conservative
-     * advancement over the pieces, which knows nothing of faces, finds the same hits, never an
-     * earlier t, and the same t nearly always (it may walk past float positions that rounding
-     * put inside far from the origin, see the next test). The hit's normal points from the box
-     * into the polygon, against which the box moves.
+     * difference, {@code ConvexPolygonSweep.rectTimeOfImpact}), judged by {@link #judge}.
      */
     @Test
     void boxIntoConvexPolygon_keepsThePromiseAndMostlyMatchesByPieces() {
         Random rnd = new Random(33);
-        int hits = 0, same = 0, total = 5_000;
-        for (int i = 0; i < total; i++) {
+        int[] tally = new int[3];
+        for (int i = 0; i < 5_000; i++) {
             Polygon q = convex(rnd);
             Rect p = boxNear(rnd, q);
             float vx = rnd.nextInt(81) - 40 + (rnd.nextBoolean() ? rnd.nextFloat() : 0);
@@ -129,31 +124,9 @@ class ConvexSweepTest {
                 continue;
             }
             assertTrue(ConvexPolygonSweep.rectAgainstConvex(p, vx, vy, q), "the exact way");
-            Hit hit = Sweep.timeOfImpact(p, vx, vy, q);
-            if (hit != null && hit.alreadyOverlapping()) {
-                continue;
-            }
-            Hit pieces = ConvexSweep.byPieces(p, vx, vy, q);
-            String where = p + " by (" + vx + ", " + vy + ") into " + q + ": " + hit + ", by pieces " + pieces;
-            assertEquals(pieces == null, hit == null, where);
-            if (hit != null) {
-                float t = hit.t();
-                assertTrue(!meets(q.raw(), p.x() + t * vx, p.y() + t * vy, p.w(), p.h()), "clear at t: " + where);
-                // Touching at the start and moving in is t = 0 (Hit's one exception): then it
-                // overlaps once its float position has moved a little.
-                float up = t == 0 ? moved(p.x(), vx, p.y(), vy) : Math.nextUp(t);
-                if (t < 1) {
-                    assertTrue(meets(q.raw(), p.x() + up * vx, p.y() + up * vy, p.w(), p.h()), "overlapping after t: " + where);
-                }
-                assertTrue(t <= pieces.t(), where);
-                assertEquals(1, Math.hypot(hit.nx(), hit.ny()), 1e-6, where);
-                assertTrue(hit.nx() * vx + hit.ny() * vy > 0, "moving into the face it hit: " + where);
-                hits++;
-                same += t == pieces.t() ? 1 : 0;
-            }
+            tally(tally, judge(p, vx, vy, q, p.x(), p.y(), t -> meets(q.raw(), p.x() + t * vx, p.y() + t * vy, p.w(), p.h())));
         }
-        assertTrue(hits > total / 10, hits + " hits");
-        assertTrue(same > hits * 99 / 100, same + " of " + hits + " the same as by pieces");
+        assertMostlyTheSame(tally, 500);
     }
 
     /**
@@ -265,50 +238,28 @@ class ConvexSweepTest {
 
     /**
      * A circle against a convex polygon goes the exact way too (the capsules round the edges,
-     * {@code ConvexPolygonSweep.circleTimeOfImpact}). Judged by the exact reference: clear at
-     * t, overlapping at the next float up (or, at t = 0, once moved a little); conservative
-     * advancement finds the same hits, never an earlier t, and nearly always the same t.
+     * {@code ConvexPolygonSweep.circleTimeOfImpact}), judged by {@link #judge}.
      */
     @Test
     void circleIntoConvexPolygon_keepsThePromiseAndMostlyMatchesByPieces() {
         Random rnd = new Random(35);
-        int hits = 0, same = 0, total = 5_000;
-        for (int i = 0; i < total; i++) {
+        int[] tally = new int[3];
+        for (int i = 0; i < 5_000; i++) {
             Polygon q = convex(rnd);
             float[] qc = q.raw();
             float cx = qc[0] + rnd.nextInt(61) - 30 + (rnd.nextBoolean() ? 0 : rnd.nextInt(2) / 2f);
             float cy = qc[1] + rnd.nextInt(61) - 30 + (rnd.nextBoolean() ? 0 : rnd.nextFloat());
             float r = rnd.nextInt(4) == 0 ? 1 : 1 + rnd.nextInt(15) + (rnd.nextBoolean() ? 0 : rnd.nextFloat());
-            Circle c = new Circle(cx, cy, r);
             float vx = rnd.nextInt(81) - 40 + (rnd.nextBoolean() ? rnd.nextFloat() : 0);
             float vy = rnd.nextInt(81) - 40 + (rnd.nextBoolean() ? rnd.nextFloat() : 0);
             if (vx == 0 && vy == 0) {
                 continue;
             }
+            Circle c = new Circle(cx, cy, r);
             assertTrue(ConvexPolygonSweep.circleAgainstPolygon(c, vx, vy, q), "the exact way");
-            Hit hit = Sweep.timeOfImpact(c, vx, vy, q);
-            if (hit != null && hit.alreadyOverlapping()) {
-                continue;
-            }
-            Hit pieces = ConvexSweep.byPieces(c, vx, vy, q);
-            String where = c + " by (" + vx + ", " + vy + ") into " + q + ": " + hit + ", by pieces " + pieces;
-            assertEquals(pieces == null, hit == null, where);
-            if (hit != null) {
-                float t = hit.t();
-                assertTrue(!ExactReference.polygonCircle(qc, cx + t * vx, cy + t * vy, r), "clear at t: " + where);
-                float up = t == 0 ? moved(cx, vx, cy, vy) : Math.nextUp(t);
-                if (t < 1) {
-                    assertTrue(ExactReference.polygonCircle(qc, cx + up * vx, cy + up * vy, r), "overlapping after t: " + where);
-                }
-                assertTrue(t <= pieces.t(), where);
-                assertEquals(1, Math.hypot(hit.nx(), hit.ny()), 1e-6, where);
-                assertTrue(hit.nx() * vx + hit.ny() * vy > 0, "moving into the face it hit: " + where);
-                hits++;
-                same += t == pieces.t() ? 1 : 0;
-            }
+            tally(tally, judge(c, vx, vy, q, cx, cy, t -> ExactReference.polygonCircle(qc, cx + t * vx, cy + t * vy, r)));
         }
-        assertTrue(hits > total / 10, hits + " hits");
-        assertTrue(same > hits * 99 / 100, same + " of " + hits + " the same as by pieces");
+        assertMostlyTheSame(tally, 500);
     }
 
     /** A ball resting on a slope's face rolls along it (no hit), and pressing into it stops at 0. */
@@ -327,14 +278,14 @@ class ConvexSweepTest {
     }
 
     /**
-     * The circle's exact way takes a concave polygon too (the capsules round its edges): the
-     * same promise, judged by the exact reference, and the same hits as conservative
-     * advancement over the polygon's triangles, never later.
+     * The circle's exact way takes a concave polygon too (the capsules round its edges),
+     * judged by {@link #judge} against conservative advancement over the polygon's triangles.
      */
     @Test
     void circleIntoConcavePolygon_keepsThePromiseAndMostlyMatchesByPieces() {
         java.util.SplittableRandom rnd = new java.util.SplittableRandom(36);
-        int hits = 0, same = 0, concave = 0, total = 3_000;
+        int[] tally = new int[3];
+        int concave = 0, total = 3_000;
         for (int i = 0; i < total; i++) {
             Polygon q = TestShapes.starRing(rnd, 5 + rnd.nextInt(6), 60, 60, rnd.nextBoolean());
             concave += q.isConvex() ? 0 : 1;
@@ -342,35 +293,68 @@ class ConvexSweepTest {
             float cx = 60 + rnd.nextInt(121) - 60 + (rnd.nextBoolean() ? 0 : (float) rnd.nextDouble());
             float cy = 60 + rnd.nextInt(121) - 60 + (rnd.nextBoolean() ? 0 : rnd.nextInt(2) / 2f);
             float r = 1 + rnd.nextInt(10) + (rnd.nextBoolean() ? 0 : (float) rnd.nextDouble());
-            Circle c = new Circle(cx, cy, r);
             float vx = rnd.nextInt(121) - 60 + (rnd.nextBoolean() ? (float) rnd.nextDouble() : 0);
             float vy = rnd.nextInt(121) - 60;
             if (vx == 0 && vy == 0) {
                 continue;
             }
+            Circle c = new Circle(cx, cy, r);
             assertTrue(ConvexPolygonSweep.circleAgainstPolygon(c, vx, vy, q), "the exact way");
-            Hit hit = Sweep.timeOfImpact(c, vx, vy, q);
-            if (hit != null && hit.alreadyOverlapping()) {
-                continue;
-            }
-            Hit pieces = ConvexSweep.byPieces(c, vx, vy, q);
-            String where = c + " by (" + vx + ", " + vy + ") into " + q + ": " + hit + ", by pieces " + pieces;
-            assertEquals(pieces == null, hit == null, where);
-            if (hit != null) {
-                float t = hit.t();
-                assertTrue(!ExactReference.polygonCircle(qc, cx + t * vx, cy + t * vy, r), "clear at t: " + where);
-                float up = t == 0 ? moved(cx, vx, cy, vy) : Math.nextUp(t);
-                if (t < 1) {
-                    assertTrue(ExactReference.polygonCircle(qc, cx + up * vx, cy + up * vy, r), "overlapping after t: " + where);
-                }
-                assertTrue(t <= pieces.t(), where);
-                assertTrue(hit.nx() * vx + hit.ny() * vy > 0, "moving into the face it hit: " + where);
-                hits++;
-                same += t == pieces.t() ? 1 : 0;
-            }
+            tally(tally, judge(c, vx, vy, q, cx, cy, t -> ExactReference.polygonCircle(qc, cx + t * vx, cy + t * vy, r)));
         }
         assertTrue(concave > total / 2, concave + " concave");
-        assertTrue(hits > total / 10, hits + " hits");
-        assertTrue(same > hits * 99 / 100, same + " of " + hits + " the same as by pieces");
+        assertMostlyTheSame(tally, 300);
+    }
+
+    /** Does the mover, moved by t times its motion in float as a sketch moves it, overlap the obstacle (the exact reference)? */
+    private interface MovedMeets {
+        boolean at(float t);
+    }
+
+    /**
+     * One sweep into a polygon, judged by the exact reference: the mover moved to t does not
+     * overlap, moved to the next float up it does (at t = 0, touching and moving in: once its
+     * float position has moved a little, it does); conservative advancement over the pieces,
+     * which knows nothing of faces or capsules, finds a hit too, never at an earlier t (it may
+     * walk past float positions that rounding put inside far from the origin, see
+     * {@link #boxIntoConvexPolygon_farOut_stopsAtTheFirstOverlappingFloatPosition}); the
+     * normal is unit and points from the mover into the face it moves into. (x, y) is the
+     * mover's first coordinate. Returns -1 if it overlaps at the start, 0 for no hit, 1 for a
+     * hit at by pieces' t, 2 for one before it.
+     */
+    private static int judge(Shape mover, float vx, float vy, Polygon q, float x, float y, MovedMeets meets) {
+        Hit hit = Sweep.timeOfImpact(mover, vx, vy, q);
+        if (hit != null && hit.alreadyOverlapping()) {
+            return -1;
+        }
+        Hit pieces = ConvexSweep.byPieces(mover, vx, vy, q);
+        String where = mover + " by (" + vx + ", " + vy + ") into " + q + ": " + hit + ", by pieces " + pieces;
+        assertEquals(pieces == null, hit == null, where);
+        if (hit == null) {
+            return 0;
+        }
+        float t = hit.t();
+        assertTrue(!meets.at(t), "clear at t: " + where);
+        if (t < 1) {
+            assertTrue(meets.at(t == 0 ? moved(x, vx, y, vy) : Math.nextUp(t)), "overlapping after t: " + where);
+        }
+        assertTrue(t <= pieces.t(), where);
+        assertEquals(1, Math.hypot(hit.nx(), hit.ny()), 1e-6, where);
+        assertTrue(hit.nx() * vx + hit.ny() * vy > 0, "moving into the face it hit: " + where);
+        return t == pieces.t() ? 1 : 2;
+    }
+
+    /** Counts {@link #judge}'s answer: hits at by pieces' t, hits before it, and all hits. */
+    private static void tally(int[] tally, int judged) {
+        if (judged > 0) {
+            tally[judged - 1]++;
+            tally[2]++;
+        }
+    }
+
+    /** Enough hits, and nearly all (99%) at the t conservative advancement gives. */
+    private static void assertMostlyTheSame(int[] tally, int leastHits) {
+        assertTrue(tally[2] > leastHits, tally[2] + " hits");
+        assertTrue(tally[0] > tally[2] * 99 / 100, tally[0] + " of " + tally[2] + " the same as by pieces");
     }
 }
