@@ -133,25 +133,33 @@ class PolygonRectTest {
 
     /**
      * A convex {@code Polygon} goes the separating-edge way ({@code Polygons.convexRectOverlap}),
-     * the raw call the general way; the exact reference knows nothing of either.
-     * Moved by fractions and far out, where every corner is still a float (the reference
-     * takes the rectangle as a polygon of float corners).
+     * the raw call the general way; the exact reference knows nothing of either. Convex rings
+     * on half pixels and rectangles on whole ones (so that they touch), moved by fractions and
+     * far out where every corner is still a float (the reference takes the rectangle as a
+     * polygon of float corners). A seeded loop, not a jqwik property: since 1.10
+     * jqwik's maintainers ask AI coding agents not to use it (its Anti-AI Usage Clause), and
+     * this test was written by one.
      */
-    @Property(tries = 2000)
-    void convexPolygonRect_agreesWithExactReference(@ForAll("polygons") float[] xy,
-                                                    @ForAll @IntRange(min = -1, max = 6) int rx, @ForAll @IntRange(min = -1, max = 6) int ry,
-                                                    @ForAll @IntRange(min = 1, max = 4) int rw, @ForAll @IntRange(min = 1, max = 4) int rh,
-                                                    @ForAll @IntRange(min = 0, max = 3) int place) {
-        net.jqwik.api.Assume.that(Polygon.of(xy).isConvex());
-        float shift = new float[] {0, 0.25f, -1000.75f, 1_000_000}[place];
-        float[] moved = new float[xy.length];
-        for (int i = 0; i < xy.length; i++) {
-            moved[i] = xy[i] + shift;
+    @org.junit.jupiter.api.Test
+    void convexPolygonRect_agreesWithExactReference() {
+        java.util.SplittableRandom rnd = new java.util.SplittableRandom(2911);
+        int meeting = 0, total = 3_000;
+        for (int i = 0; i < total; i++) {
+            float[] xy = TestShapes.convexRing(rnd, 3 + rnd.nextInt(6), 20, 20, true).raw();
+            float shift = new float[] {0, 0.25f, -1000.75f, 1_000_000}[rnd.nextInt(4)];
+            float[] moved = new float[xy.length];
+            for (int k = 0; k < xy.length; k++) {
+                moved[k] = xy[k] + shift;
+            }
+            float x = rnd.nextInt(70) - 25 + shift, y = rnd.nextInt(70) - 25 + shift;
+            float w = 1 + rnd.nextInt(30), h = 1 + rnd.nextInt(30);
+            boolean expected = ExactReference.polygonsMeet(moved, ExactReference.rectPolygon(x, y, w, h));
+            String where = Polygon.of(moved) + " and " + new Rect(x, y, w, h);
+            assertEquals(expected, Collide.polygonRect(moved, x, y, w, h), "raw: " + where);
+            assertEquals(expected, Polygon.of(moved).overlaps(new Rect(x, y, w, h)), "polygon first: " + where);
+            assertEquals(expected, new Rect(x, y, w, h).overlaps(Polygon.of(moved)), "rect first: " + where);
+            meeting += expected ? 1 : 0;
         }
-        float x = rx + shift, y = ry + shift;
-        boolean expected = ExactReference.polygonsMeet(moved, ExactReference.rectPolygon(x, y, rw, rh));
-        assertEquals(expected, Collide.polygonRect(moved, x, y, rw, rh), "raw");
-        assertEquals(expected, Polygon.of(moved).overlaps(new Rect(x, y, rw, rh)), "polygon first");
-        assertEquals(expected, new Rect(x, y, rw, rh).overlaps(Polygon.of(moved)), "rect first");
+        org.junit.jupiter.api.Assertions.assertTrue(meeting > total / 5 && meeting < total * 4 / 5, meeting + " of " + total + " meet");
     }
 }

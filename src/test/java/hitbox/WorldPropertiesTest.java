@@ -126,10 +126,18 @@ class WorldPropertiesTest {
     /**
      * {@code moveTo(x, y, angle)} is one teleport to the pose that {@code moveTo(x, y)} then
      * {@code turnTo(angle)} reach in two: the same pivot, angle, shape and box, and the same
-     * pairs in the world (checked against a twin world moved the two-call way).
+     * pairs in the world (checked against a twin world moved the two-call way). A seeded loop
+     * over 200 worlds, not a jqwik property: since 1.10 jqwik's maintainers ask AI coding
+     * agents not to use it (its Anti-AI Usage Clause), and this test was written by one.
      */
-    @Property(tries = 200)
-    void poseTeleport_sameAsMoveThenTurn(@ForAll long seed) {
+    @org.junit.jupiter.api.Test
+    void poseTeleport_sameAsMoveThenTurn() {
+        for (long seed = 0; seed < 200; seed++) {
+            poseTeleport(seed);
+        }
+    }
+
+    private static void poseTeleport(long seed) {
         World one = WorldBruteForceTest.randomWorld(new SplittableRandom(seed), 3);
         World two = WorldBruteForceTest.randomWorld(new SplittableRandom(seed), 3);
         SplittableRandom rnd = new SplittableRandom(seed + 1);
