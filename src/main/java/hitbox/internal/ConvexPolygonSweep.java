@@ -3,11 +3,13 @@ package hitbox.internal;
 import hitbox.*;
 
 /**
- * The straight time of impact of two convex polygons, for
- * {@link Sweep#timeOfImpact(Shape, float, float, Shape)} (every other pair goes by convex
- * pieces, {@link ConvexSweep}): the entry as a ray cast against their Minkowski
- * difference, exact up to the rounding of double, then the promised float t, each moved
- * position tested with no polygon made (see
+ * The straight time of impact into a polygon where it has a closed form, for
+ * {@link Sweep#timeOfImpact(Shape, float, float, Shape)}: two convex polygons, a rectangle
+ * into a convex polygon ({@link #rectTimeOfImpact}) and a circle into any polygon
+ * ({@link #circleTimeOfImpact}); every other pair with a polygon goes by convex pieces,
+ * {@link ConvexSweep}. For two convex polygons: the entry as a ray cast against their
+ * Minkowski difference, exact up to the rounding of double, then the promised float t, each
+ * moved position tested with no polygon made (see
  * {@link #movedOverlaps(Polygon, float, float, Polygon, float[], boolean, boolean)}). Nothing is allocated but the
  * hit.
  *
