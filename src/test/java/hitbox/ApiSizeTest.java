@@ -36,10 +36,11 @@ class ApiSizeTest {
 
     /**
      * The count after issue 30's second trim (299, under the issue's 300; 424 after the first, 433
-     * with issue 29's nine world calls); lower it when the API shrinks, never raise it without
-     * a reason in the docs.
+     * with issue 29's nine world calls), and issue 29's pose teleport {@code Body.moveTo(x, y,
+     * angle)} (300, the issue's limit; docs/architecture.md gives the reason); lower it when
+     * the API shrinks, never raise it without a reason in the docs.
      */
-    static final int LIMIT = 299;
+    static final int LIMIT = 300;
 
     @Test
     void publicMethods_countedByReflection_stayWithinTheLimit() throws IOException, URISyntaxException, ClassNotFoundException {

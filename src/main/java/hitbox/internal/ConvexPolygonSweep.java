@@ -21,6 +21,11 @@ import hitbox.*;
  * {@code n + m} faces, each placed by one support point of the other polygon: no
  * iteration and no tolerance.
  *
+ * <p>This class is longer than most (about 500 lines): its three sweeps are one idea, a
+ * polygon's faces clipping a ray in the thread's clip and the float positions walked from
+ * the entry, and the two convex polygons' look-back; apart, each would carry a copy of the
+ * clip, the faces' placing and the scratch.
+ *
  * <p>Reference: C. Ericson, <i>Real-Time Collision Detection</i> (2005), 5.5 (moving
  * objects as a ray against their Minkowski sum); M. de Berg et al., <i>Computational
  * Geometry: Algorithms and Applications</i> (3rd ed., 2008), 13.3 (the Minkowski sum of two
