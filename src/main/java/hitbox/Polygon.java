@@ -39,7 +39,7 @@ public final class Polygon implements Shape {
 
             @Override
             public double[] corners(Polygon p) {
-                return p.corners;
+                return p.corners();
             }
 
             @Override
@@ -88,8 +88,12 @@ public final class Polygon implements Shape {
      * fast paths ({@link Polygons#convexOverlap}) need no check per call.
      */
     private final int convexWinding;
-    /** The vertices widened to double (exactly), made once for the contact search. */
-    private final double[] corners;
+    /**
+     * The vertices widened to double (exactly), for the contact search and the sweeps; null
+     * until the first asks ({@link #corners()}): a body's polygon placed every frame for an
+     * overlap test never needs them. Published by the volatile write, the array filled first.
+     */
+    private volatile double[] corners;
     /**
      * A lower bound on the distance from any vertex to any edge that does not end at it
      * ({@link Polygons#margin}), or NaN until a move first needs it: while rounding moves no
@@ -107,7 +111,6 @@ public final class Polygon implements Shape {
         this.bounds = Polygons.bounds(xy);
         this.concaveVertex = concaveVertex;
         this.convexWinding = convexWinding;
-        this.corners = Polygons.toDouble(xy);
         this.margin = margin;
     }
 
@@ -327,7 +330,12 @@ public final class Polygon implements Shape {
 
     /** The vertices in double, without a copy, for the library's own loops; never handed out. */
     double[] corners() {
-        return corners;
+        double[] c = corners;
+        if (c == null) {
+            c = Polygons.toDouble(xy);  // two threads may each make one: equal arrays, either kept
+            corners = c;
+        }
+        return c;
     }
 
     /**
