@@ -228,6 +228,7 @@ public final class SketchRun<S extends PApplet> {
         instance.registerMethod("pre", hooks);
         instance.registerMethod("post", hooks);
         String name = instance.getClass().getSimpleName();
+        processingsUncaught(null);
         PApplet.runSketch(new String[] {PApplet.ARGS_LOCATION + "=40,40",
                 PApplet.ARGS_SKETCH_FOLDER + "=" + (folder != null ? folder : sketchFolder(instance)).getAbsolutePath(), name}, instance);
         // runSketch() installs Processing's own handler, which only prints; this one replaces
@@ -243,18 +244,68 @@ public final class SketchRun<S extends PApplet> {
             boolean sketchThread = mine != null ? mine == t : ANIMATION_THREAD.equals(t.getName());
             if (!sketchThread) {
                 e.printStackTrace();
-            } else if (!hooks.posted && isWindowRace(e, instance.getClass())) {
-                hooks.lostRace(t, e);
             } else {
-                hooks.fail(e);
+                animationThreadDied(hooks, instance, t, e);
             }
         });
+        // runSketch() installs Processing's handler first thing, so what a thread threw before
+        // the line above ran went to Processing's, which prints it and keeps it. If the
+        // animation thread is gone by then, that was its death: a sketch that throws at once in
+        // setup() (the race, or a bug) would otherwise leave the wait to time out as a stall.
+        // (Thrown by another thread, the AWT one repainting, it was printed, as above.)
+        Throwable early = processingsUncaught(null);
+        if (early != null && !animationThreadAlive()) {
+            animationThreadDied(hooks, instance, null, early);
+        }
         try {
             hooks.await(name);
         } finally {
             close(instance, hooks.thread);
         }
         return hooks;
+    }
+
+    /** The animation thread died of e: the window race before frame 1 ends the wait to run again, anything else fails. */
+    private void animationThreadDied(FrameHooks hooks, S instance, Thread t, Throwable e) {
+        if (!hooks.posted && isWindowRace(e, instance.getClass())) {
+            hooks.lostRace(t, e);
+        } else {
+            hooks.fail(e);
+        }
+    }
+
+    /** Is a thread of Processing's animation-thread name still running (given a moment to end)? */
+    private static boolean animationThreadAlive() {
+        for (Thread t : Thread.getAllStackTraces().keySet()) {
+            if (ANIMATION_THREAD.equals(t.getName())) {
+                try {
+                    t.join(200);  // one that has just thrown is on its way out
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                if (t.isAlive()) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
+     * What Processing's own uncaught-exception handler kept ({@code PApplet.uncaughtThrowable},
+     * which it sets besides printing), replaced by {@code value}; null if nothing, or if the
+     * field cannot be read (another Processing).
+     */
+    private static Throwable processingsUncaught(Throwable value) {
+        try {
+            java.lang.reflect.Field f = PApplet.class.getDeclaredField("uncaughtThrowable");
+            f.setAccessible(true);
+            Throwable was = (Throwable) f.get(null);
+            f.set(null, value);
+            return was;
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            return null;
+        }
     }
 
     /**
