@@ -123,7 +123,7 @@ class ConvexSweepTest {
             if (vx == 0 && vy == 0) {
                 continue;
             }
-            assertTrue(ConvexPolygonSweep.rectAgainstConvex(p, vx, vy, q), "the exact way");
+            assertTrue(ConvexPolygonSweep.rectAgainstConvex(p, q), "the exact way");
             tally(tally, judge(p, vx, vy, q, p.x(), p.y(), t -> meets(q.raw(), p.x() + t * vx, p.y() + t * vy, p.w(), p.h())));
         }
         assertMostlyTheSame(tally, 500);
@@ -256,7 +256,7 @@ class ConvexSweepTest {
                 continue;
             }
             Circle c = new Circle(cx, cy, r);
-            assertTrue(ConvexPolygonSweep.circleAgainstPolygon(c, vx, vy, q), "the exact way");
+            assertTrue(ConvexPolygonSweep.circleAgainstPolygon(c, q), "the exact way");
             tally(tally, judge(c, vx, vy, q, cx, cy, t -> ExactReference.polygonCircle(qc, cx + t * vx, cy + t * vy, r)));
         }
         assertMostlyTheSame(tally, 500);
@@ -299,7 +299,7 @@ class ConvexSweepTest {
                 continue;
             }
             Circle c = new Circle(cx, cy, r);
-            assertTrue(ConvexPolygonSweep.circleAgainstPolygon(c, vx, vy, q), "the exact way");
+            assertTrue(ConvexPolygonSweep.circleAgainstPolygon(c, q), "the exact way");
             tally(tally, judge(c, vx, vy, q, cx, cy, t -> ExactReference.polygonCircle(qc, cx + t * vx, cy + t * vy, r)));
         }
         assertTrue(concave > total / 2, concave + " concave");

@@ -102,12 +102,11 @@ public final class ConvexPolygonSweep {
 
     /**
      * Can {@link #rectTimeOfImpact} answer this pair: a rectangle with area against a convex
-     * polygon, moving?
+     * polygon? (The caller has answered a mover that does not move.)
      */
-    public static boolean rectAgainstConvex(Shape mover, float vx, float vy, Shape obstacle) {
+    public static boolean rectAgainstConvex(Shape mover, Shape obstacle) {
         return ShapeKind.of(mover) == ShapeKind.RECT && ((Rect) mover).w() > 0 && ((Rect) mover).h() > 0
-                && ShapeKind.of(obstacle) == ShapeKind.POLYGON && HiddenParts.convexWinding((Polygon) obstacle) != 0
-                && (vx != 0 || vy != 0);
+                && ShapeKind.of(obstacle) == ShapeKind.POLYGON && HiddenParts.convexWinding((Polygon) obstacle) != 0;
     }
 
     /**
@@ -135,13 +134,14 @@ public final class ConvexPolygonSweep {
     }
 
     /**
-     * Can {@link #circleTimeOfImpact} answer this pair: a circle with area against a polygon,
-     * moving? Convex or not: a centre that starts outside the polygon, at least the radius from
-     * its outline, can overlap it only by first coming within the radius of its outline.
+     * Can {@link #circleTimeOfImpact} answer this pair: a circle with area against a polygon?
+     * Convex or not: a centre that starts outside the polygon, at least the radius from its
+     * outline, can overlap it only by first coming within the radius of its outline. (The
+     * caller has answered a mover that does not move.)
      */
-    public static boolean circleAgainstPolygon(Shape mover, float vx, float vy, Shape obstacle) {
+    public static boolean circleAgainstPolygon(Shape mover, Shape obstacle) {
         return ShapeKind.of(mover) == ShapeKind.CIRCLE && ((Circle) mover).r() > 0
-                && ShapeKind.of(obstacle) == ShapeKind.POLYGON && (vx != 0 || vy != 0);
+                && ShapeKind.of(obstacle) == ShapeKind.POLYGON;
     }
 
     /**

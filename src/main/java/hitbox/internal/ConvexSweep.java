@@ -76,10 +76,10 @@ public final class ConvexSweep {
         if (vx == 0 && vy == 0) {
             return null;
         }
-        if (ConvexPolygonSweep.rectAgainstConvex(mover, vx, vy, obstacle)) {
+        if (ConvexPolygonSweep.rectAgainstConvex(mover, obstacle)) {
             return ConvexPolygonSweep.rectTimeOfImpact((Rect) mover, vx, vy, (Polygon) obstacle);
         }
-        if (ConvexPolygonSweep.circleAgainstPolygon(mover, vx, vy, obstacle)) {
+        if (ConvexPolygonSweep.circleAgainstPolygon(mover, obstacle)) {
             return ConvexPolygonSweep.circleTimeOfImpact((Circle) mover, vx, vy, (Polygon) obstacle);
         }
         if (convexPolygon(mover) && convexPolygon(obstacle)) {

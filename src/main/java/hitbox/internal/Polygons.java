@@ -328,7 +328,7 @@ public final class Polygons {
     }
 
     /**
-     * Do convex polygon p (winding w, no NaN) and the open rectangle (x, y, w, h), w and h
+     * Do convex polygon p (a {@code Polygon}'s outline: winding w, no NaN) and the open rectangle (x, y, w, h), w and h
      * above 0, overlap? {@link #convexOverlap} with the rectangle as the other polygon, its
      * corners summed in double (as {@link RawTests#rectRect} sums them), so no array is made:
      * the rectangle's own edges separate when p's box is on or past one of them, and an edge of
@@ -339,8 +339,8 @@ public final class Polygons {
         double right = (double) x + width, bottom = (double) y + height;
         double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY;
         double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY;
-        int n = p.length / 2;  // a raw array may have a lone coordinate at its end: not a vertex
-        for (int i = 0; i < 2 * n; i += 2) {
+        int n = p.length / 2;
+        for (int i = 0; i < p.length; i += 2) {
             minX = Math.min(minX, p[i]);
             maxX = Math.max(maxX, p[i]);
             minY = Math.min(minY, p[i + 1]);

@@ -228,10 +228,10 @@ public final class SketchRun<S extends PApplet> {
         instance.registerMethod("pre", hooks);
         instance.registerMethod("post", hooks);
         String name = instance.getClass().getSimpleName();
-        processingsUncaught(null);
+        takeProcessingsUncaught();  // a run before this one may have left one
         PApplet.runSketch(new String[] {PApplet.ARGS_LOCATION + "=40,40",
                 PApplet.ARGS_SKETCH_FOLDER + "=" + (folder != null ? folder : sketchFolder(instance)).getAbsolutePath(), name}, instance);
-        // runSketch() installs Processing's own handler, which only prints; this one replaces
+        // runSketch() installs Processing's own handler, which prints and keeps; this one replaces
         // it and also ends the wait. Only this run's animation thread counts: it runs setup(),
         // draw() and the sketch's event methods. Before its first frame it is known by
         // Processing's name for it. The AWT event thread runs no sketch code, only
@@ -253,7 +253,7 @@ public final class SketchRun<S extends PApplet> {
         // animation thread is gone by then, that was its death: a sketch that throws at once in
         // setup() (the race, or a bug) would otherwise leave the wait to time out as a stall.
         // (Thrown by another thread, the AWT one repainting, it was printed, as above.)
-        Throwable early = processingsUncaught(null);
+        Throwable early = takeProcessingsUncaught();
         if (early != null && !animationThreadAlive()) {
             animationThreadDied(hooks, instance, null, early);
         }
@@ -293,15 +293,15 @@ public final class SketchRun<S extends PApplet> {
 
     /**
      * What Processing's own uncaught-exception handler kept ({@code PApplet.uncaughtThrowable},
-     * which it sets besides printing), replaced by {@code value}; null if nothing, or if the
-     * field cannot be read (another Processing).
+     * which it sets besides printing), cleared; null if nothing, or if the field cannot be read
+     * (another Processing).
      */
-    private static Throwable processingsUncaught(Throwable value) {
+    private static Throwable takeProcessingsUncaught() {
         try {
             java.lang.reflect.Field f = PApplet.class.getDeclaredField("uncaughtThrowable");
             f.setAccessible(true);
             Throwable was = (Throwable) f.get(null);
-            f.set(null, value);
+            f.set(null, null);
             return was;
         } catch (ReflectiveOperationException | RuntimeException e) {
             return null;
