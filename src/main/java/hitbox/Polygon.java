@@ -54,7 +54,7 @@ public final class Polygon implements Shape {
 
             @Override
             public Rect bounds(Polygon p) {
-                return p.bounds;
+                return p.box();
             }
 
             @Override
@@ -77,7 +77,8 @@ public final class Polygon implements Shape {
     public static final int MAX_SIDES = 4096;
 
     private final float[] xy;
-    private final Rect bounds;
+    /** The box, or null until first asked (see {@link #box()}). */
+    private volatile Rect bounds;
     /**
      * The first vertex where the outline bends inwards, or -1 when convex: kept, since the
      * polygon cannot change and every contact asks.
@@ -108,7 +109,6 @@ public final class Polygon implements Shape {
 
     private Polygon(float[] xy, int concaveVertex, int convexWinding, double margin) {
         this.xy = xy;
-        this.bounds = Polygons.bounds(xy);
         this.concaveVertex = concaveVertex;
         this.convexWinding = convexWinding;
         this.margin = margin;
@@ -326,6 +326,20 @@ public final class Polygon implements Shape {
     /** The winding (+1 or -1) if the polygon is convex, 0 if it is concave. */
     int convexWinding() {
         return convexWinding;
+    }
+
+    /**
+     * The box, made when first asked: a body's polygon placed every frame for a test against
+     * a circle or a segment never needs it (the world has compared the bodies' boxes
+     * already). Two threads may each make one: equal rectangles, either kept.
+     */
+    private Rect box() {
+        Rect b = bounds;
+        if (b == null) {
+            b = Polygons.bounds(xy);
+            bounds = b;
+        }
+        return b;
     }
 
     /** The vertices in double, without a copy, for the library's own loops; never handed out. */

@@ -109,7 +109,7 @@ public sealed interface Shape permits Circle, Rect, Segment, Polygon, Ellipse, C
      * the exact size is not a float. (Only a shape reaching past the float range, a circle
      * of radius near {@code Float.MAX_VALUE}, say, gets a box held back at the float range.)
      *
-     * <p>A rectangle is its own bounds, and a polygon's box is made once, with the polygon. A
+     * <p>A rectangle is its own bounds, and a polygon's box is made once, when first asked. A
      * circle's, a capsule's, a segment's and an aligned ellipse's box is its exact extent
      * rounded outwards (so it holds the shape even when {@code x - r} is not a float); a
      * turned ellipse's is {@code hypot(rx cos, ry sin)} either side of the centre, widened

@@ -27,6 +27,13 @@ public final class Poses {
     private static final double ELLIPSE_BOX_WIDEN = 1e-6;
 
     /**
+     * The thread's matrix for {@link #place}: set for each pose and read only during the call
+     * (Transforms keeps no reference to it), so placing a turned body each frame makes its
+     * shape and no matrix.
+     */
+    private static final ThreadLocal<Affine> MATRIX = ThreadLocal.withInitial(() -> new Affine(1, 0, 0, 0, 1, 0));
+
+    /**
      * The extents of the home shape turned by (cos, sin) about the pivot, relative to the
      * pivot: out[0..3] = min x, min y, max x, max y.
      */
@@ -156,13 +163,13 @@ public final class Poses {
                     }
                     // Transforms checks the moved outline again only where rounding could have
                     // made it touch itself (a move smaller than its clearance never does).
-                    yield Transforms.polygon(p, new Affine(1, 0, tx, 0, 1, ty));
+                    yield Transforms.polygon(p, MATRIX.get().set(1, 0, tx, 0, 1, ty));
                 }
             };
         }
         // Turned: Shape.transformed's own maths (one home for how each kind turns), on the
         // pose's matrix in double: p -> R (p - pivot) + pivot + t.
-        Affine a = new Affine(cos, -sin, px + tx - (cos * px - sin * py),
+        Affine a = MATRIX.get().set(cos, -sin, px + tx - (cos * px - sin * py),
                 sin, cos, py + ty - (sin * px + cos * py));
         try {
             return Transforms.apply(home, a);

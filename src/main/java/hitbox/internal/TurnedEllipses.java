@@ -152,7 +152,7 @@ public final class TurnedEllipses {
             }
             case POLYGON -> {
                 float[] raw = HiddenParts.raw((Polygon) other);
-                yield outlineIn(fr, a, b, HiddenParts.corners((Polygon) other)) || Polygons.contains(raw, e.x(), e.y());
+                yield outlineIn(fr, a, b, raw) || Polygons.contains(raw, e.x(), e.y());
             }
         };
     }
@@ -163,8 +163,12 @@ public final class TurnedEllipses {
         return Capsules.nearOrigin(f.u(x1, y1) * b, f.v(x1, y1) * a, f.u(x2, y2) * b, f.v(x2, y2) * a, a * b, closed);
     }
 
-    /** Does any edge of the closed outline reach into the turned real ellipse? */
-    private static boolean outlineIn(Frame f, double a, double b, double[] xy) {
+    /**
+     * Does any edge of the closed outline reach into the turned real ellipse? The float
+     * vertices widen to double exactly, so no double copy of them is needed (a turned body's
+     * polygon is placed anew each frame, and this test was what asked it for one).
+     */
+    private static boolean outlineIn(Frame f, double a, double b, float[] xy) {
         int n = xy.length / 2;
         for (int i = 0, h = n - 1; i < n; h = i++) {
             if (segmentIn(f, a, b, xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], false)) {
