@@ -81,6 +81,15 @@ public final class World {
     /** How many times one {@link #move} stops at a body and goes on before giving up. */
     public static final int MAX_LEGS = 8;
 
+    /**
+     * How many of the collisions met since the last {@link #step()} a world keeps at least
+     * (eight per body, if that is more), when it is moved and not stepped (bump.lua's way: the
+     * moves' answers used, no events): at twice that many, the older ones are let go down to
+     * that many, so such a world does not fill the memory with a collision a move for as long
+     * as it runs.
+     */
+    public static final int UNSTEPPED_COLLISIONS = 1 << 16;
+
     private final BroadPhase broad;
     private int callbackDepth;
 
@@ -448,6 +457,11 @@ public final class World {
         for (int i = 0, n = out.size(); i < n; i++) {
             stepCollisions.add(out.get(i));  // not addAll, which copies the list into a new array
         }
+        int keep = Math.max(UNSTEPPED_COLLISIONS, 8 * table.size());
+        if (stepCollisions.size() > 2 * keep) {
+            // Half of them go at once, so the shift is paid once per keep collisions.
+            stepCollisions.subList(0, stepCollisions.size() - keep).clear();
+        }
         Collisions result = Collisions.of(out, finished);
         out.clear();
         return result;
@@ -659,7 +673,11 @@ public final class World {
 
     /**
      * The collisions the moves reported since the last {@link #step()}, or, right after a step,
-     * those of the frame it ended (until the next move): for drawing the frame's contacts.
+     * those of the frame it ended (until the next move): for drawing the frame's contacts. A
+     * world that is moved but not stepped keeps the latest of them only, at least
+     * {@link #UNSTEPPED_COLLISIONS} (or eight per body) and at most twice that, and the next
+     * step learns of contacts from those kept: call {@code step()} once a frame to have them
+     * all.
      *
      * @return the collisions in the order met, unmodifiable; empty if none, never null
      */
