@@ -142,7 +142,12 @@ public final class CharacterBody {
         this.filter = filter;
         onGround = below != null;
         ground = standsOn;
-        groundNormal = onGround ? new Vec(-below.nx(), -below.ny()) : null;
+        if (!onGround) {
+            groundNormal = null;
+        } else if (groundNormal == null || Float.compare(groundNormal.x(), -below.nx()) != 0
+                || Float.compare(groundNormal.y(), -below.ny()) != 0) {
+            groundNormal = new Vec(-below.nx(), -below.ny());  // kept while the slope stays the same: a Vec is a value
+        }
         onWall = metWall;
         onCeiling = metCeiling;
         return out;
