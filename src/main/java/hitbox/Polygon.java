@@ -67,6 +67,15 @@ public final class Polygon implements Shape {
                 Polygons.validate(xy);
                 return new Polygon(xy, Polygons.concaveVertex(xy));
             }
+
+            @Override
+            public Polygon convexImage(float[] xy) {
+                int w = Polygons.convexWinding(xy);
+                if (w != 0 && !Polygons.repeatsNeighbour(xy)) {
+                    return new Polygon(xy, -1, w, Double.NaN);  // as image's convex case
+                }
+                return taken(xy);
+            }
         });
     }
 

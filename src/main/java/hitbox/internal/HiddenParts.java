@@ -48,7 +48,7 @@ public final class HiddenParts {
 
         /**
          * @param p the polygon
-         * @return its bounding box, made once with the polygon
+         * @return its bounding box, made when first asked and kept
          */
         Rect bounds(Polygon p);
 
@@ -70,6 +70,16 @@ public final class HiddenParts {
          * @throws IllegalArgumentException as {@link Polygon#of(float...)} does
          */
         Polygon taken(float[] xy);
+
+        /**
+         * @param xy the image of a convex outline (a turned rectangle's corners, say), finite
+         *           and rounded to float (taken, not copied)
+         * @return the polygon: at once if the image is still convex with no repeated vertex
+         *         (then it is simple, as for {@link #image}), else checked in full as
+         *         {@link #taken} checks it
+         * @throws IllegalArgumentException as {@link Polygon#of(float...)} does
+         */
+        Polygon convexImage(float[] xy);
     }
 
     /** A transform's entries in double, granted by {@link Transform}. */
@@ -186,6 +196,11 @@ public final class HiddenParts {
     /** @see PolygonAccess#taken */
     public static Polygon taken(float[] xy) {
         return Granted.POLYGONS.taken(xy);
+    }
+
+    /** @see PolygonAccess#convexImage */
+    public static Polygon convexImage(float[] xy) {
+        return Granted.POLYGONS.convexImage(xy);
     }
 
     /** @param t the transform @return its entries in double */

@@ -123,6 +123,17 @@ public final class Transforms {
         return new double[] {s1, s2, phi};
     }
 
+    /**
+     * The smaller radius of {@link #unitCircleImage}, the same number, without its angle: a
+     * turned body's polygon is placed every frame, and the angle's two arc tangents were a
+     * third of that.
+     */
+    static double leastStretch(double a, double b, double c, double d) {
+        double e = (a + d) / 2, f = (a - d) / 2, g = (c + b) / 2, h = (c - b) / 2;
+        double s1 = Math.hypot(e, h) + Math.hypot(f, g);
+        return s1 == 0 ? 0 : Math.min(s1, Math.abs(a * d - b * c) / s1);
+    }
+
     // ---- the kinds --------------------------------------------------------------------
 
     /**
@@ -210,11 +221,11 @@ public final class Transforms {
                     + Math.abs(a.m10() * xy[i]) + Math.abs(a.m11() * xy[i + 1]) + Math.abs(a.m12()));
             big = Math.max(big, Math.max(Math.abs(out[i]), Math.abs(out[i + 1])));
         }
-        double[] svd = unitCircleImage(a.m00(), a.m01(), a.m10(), a.m11());
         // each vertex moves from its exact image by at most half a float step per coordinate
         // (the rounding to float) plus the double sum's error
         double delta = Math.ulp((float) big) + 4 * Math.ulp(err);
-        return HiddenParts.image(p, out, svd[1] * (1 - STRETCH_ROUNDING), delta, () -> "transforming by " + a);
+        double least = leastStretch(a.m00(), a.m01(), a.m10(), a.m11());
+        return HiddenParts.image(p, out, least * (1 - STRETCH_ROUNDING), delta, () -> "transforming by " + a);
     }
 
     /**
@@ -293,7 +304,8 @@ public final class Transforms {
             xy[2 * i + 1] = coordinate("corner ", i, "'s y", a.y(x, y));
         }
         try {
-            return HiddenParts.taken(xy);
+            // A rectangle is convex: its image is checked in full only if rounding bent it.
+            return HiddenParts.convexImage(xy);
         } catch (IllegalArgumentException ex) {
             throw new IllegalArgumentException("the corners of the rectangle " + rect + " transformed round to an outline a"
                     + " polygon cannot have: " + ex.getMessage(), ex);
