@@ -91,6 +91,7 @@ class WorldPropertiesTest {
         Shape[] homes = {new Capsule(8.1696205f, 845.62244f, 25.357727f, 831.1718f, 4.5f),
             new Capsule(0.3f, 0.7f, 30.1f, -9.9f, 4.5f), new Rect(0.1f, 0.2f, 26.3f, 7.7f),
             Polygon.of(0.1f, 0.3f, 9.7f, 1.1f, 3.3f, 8.9f), new Ellipse(3.3f, 4.4f, 9.1f, 2.3f),
+            new Ellipse(3.3f, 4.4f, 9.1f, 2.3f, 0.7f),
             new Segment(0.7f, 0.1f, 17.3f, 5.9f)};
         for (Shape home : homes) {
             Body b = w.add(home);

@@ -21,8 +21,10 @@ public final class Poses {
 
     /**
      * How much a turned ellipse's box is widened, relative to its larger radius: the box's
-     * half-widths come from a cosine, a sine and a hypot, each off by about 2^-53 of the
-     * radius, so the box is widened far past that and never cuts the ellipse.
+     * half-widths come from a cosine, a sine and a square root, each off by about 2^-53 of
+     * the radius, and the placed ellipse's float angle is off the exact one by half a float
+     * step (about 1.2e-7 radians for an angle near pi), which moves its extent by at most that
+     * times the radius; the box is widened past both and never cuts the ellipse.
      */
     private static final double ELLIPSE_BOX_WIDEN = 1e-6;
 
@@ -88,9 +90,19 @@ public final class Poses {
             case ELLIPSE -> {
                 Ellipse e = (Ellipse) home;
                 double x = turnX(e.x() - px, e.y() - py, cos, sin), y = turnY(e.x() - px, e.y() - py, cos, sin);
-                double a = e.angle() + Math.atan2(sin, cos);
-                double c = StrictMath.cos(a), s = StrictMath.sin(a);
-                double hx = Math.hypot(e.rx() * c, e.ry() * s), hy = Math.hypot(e.rx() * s, e.ry() * c);
+                // The placed ellipse's angle is its own plus the pose's; an ellipse added
+                // unturned (the usual home) has the pose's cosine and sine, no trigonometry
+                // needed. Either way each half-width is off by a few units of 2^-53 of the
+                // radius at most (a float radius squared neither overflows nor underflows in
+                // double), far inside the widening below.
+                double c = cos, s = sin;
+                if (e.angle() != 0) {
+                    double a = e.angle() + Math.atan2(sin, cos);
+                    c = StrictMath.cos(a);
+                    s = StrictMath.sin(a);
+                }
+                double rxc = e.rx() * c, rys = e.ry() * s, rxs = e.rx() * s, ryc = e.ry() * c;
+                double hx = Math.sqrt(rxc * rxc + rys * rys), hy = Math.sqrt(rxs * rxs + ryc * ryc);
                 minX = x - hx;
                 maxX = x + hx;
                 minY = y - hy;
