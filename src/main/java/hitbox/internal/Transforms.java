@@ -113,14 +113,13 @@ public final class Transforms {
      * {@code |det| / s1}, which does not cancel for a thin image.
      */
     static double[] unitCircleImage(double a, double b, double c, double d) {
-        double e = (a + d) / 2, f = (a - d) / 2, g = (c + b) / 2, h = (c - b) / 2;
-        double s1 = Math.hypot(e, h) + Math.hypot(f, g);
+        double s1 = largestStretch(a, b, c, d);
         if (s1 == 0) {
             return new double[] {0, 0, 0};
         }
-        double s2 = Math.min(s1, Math.abs(a * d - b * c) / s1);
+        double e = (a + d) / 2, f = (a - d) / 2, g = (c + b) / 2, h = (c - b) / 2;
         double phi = (Math.atan2(g, f) + Math.atan2(h, e)) / 2;
-        return new double[] {s1, s2, phi};
+        return new double[] {s1, secondStretch(s1, a, b, c, d), phi};
     }
 
     /**
@@ -129,9 +128,19 @@ public final class Transforms {
      * third of that.
      */
     static double leastStretch(double a, double b, double c, double d) {
+        double s1 = largestStretch(a, b, c, d);
+        return s1 == 0 ? 0 : secondStretch(s1, a, b, c, d);
+    }
+
+    /** {@link #unitCircleImage}'s first radius, {@code s1 = hypot(E, H) + hypot(F, G)}. */
+    private static double largestStretch(double a, double b, double c, double d) {
         double e = (a + d) / 2, f = (a - d) / 2, g = (c + b) / 2, h = (c - b) / 2;
-        double s1 = Math.hypot(e, h) + Math.hypot(f, g);
-        return s1 == 0 ? 0 : Math.min(s1, Math.abs(a * d - b * c) / s1);
+        return Math.hypot(e, h) + Math.hypot(f, g);
+    }
+
+    /** {@link #unitCircleImage}'s second radius from its first (not 0): {@code |det| / s1}, at most s1. */
+    private static double secondStretch(double s1, double a, double b, double c, double d) {
+        return Math.min(s1, Math.abs(a * d - b * c) / s1);
     }
 
     // ---- the kinds --------------------------------------------------------------------
