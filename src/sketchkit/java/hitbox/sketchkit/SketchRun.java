@@ -191,8 +191,11 @@ public final class SketchRun<S extends PApplet> {
      * captures; a line on standard error says so. The second instance is the one the checks are
      * given and {@link Result#sketch()} returns: a test that kept a reference to the sketch it
      * passed to {@link #of} must read the run's state through those, not through its reference.
-     * A sketch that was changed before the run (a field that differs from a new instance's) is not
-     * run again, since a new one would not be the same sketch.
+     * A sketch that a test changed before the run (a field that differs from a new instance's)
+     * is run again with the same values set on the new instance, where each is a value two
+     * instances can share (a number, text, an enum, a Hitbox shape, a record of such values); one
+     * changed in a field that holds another object (a list, a grid, an array) is not run again,
+     * since a new one would not be the same sketch.
      *
      * @return what the run saw
      * @throws AssertionError if the sketch threw, a check failed, or the sketch stalled; or if the
@@ -206,13 +209,14 @@ public final class SketchRun<S extends PApplet> {
         String name = sketch.getClass().getSimpleName();
         // Taken before the sketch runs, to tell later whether a new instance is the same sketch.
         Map<String, String> asPassed = fields(sketch);
+        Map<String, Object> valuesAsPassed = values(sketch);
         FrameHooks first = attempt(sketch);
         if (first.race == null) {
             return first.result();
         }
         String race = name + " lost the window-buffer race between AWT's repaint and Processing's first render"
                 + " before frame 1 (" + first.race + " in " + first.race.getStackTrace()[0] + ")";
-        S fresh = freshInstance(race, asPassed);
+        S fresh = freshInstance(race, asPassed, valuesAsPassed);
         System.err.println("SketchRun: " + race + "; ran it again once with a new " + name);
         FrameHooks second = attempt(fresh);
         if (second.race != null) {
@@ -342,9 +346,13 @@ public final class SketchRun<S extends PApplet> {
         return true;
     }
 
-    /** A new instance of the sketch's class for the second window, or why there can be none. */
+    /**
+     * A new instance of the sketch's class for the second window, given the values a test set
+     * on the one it passed (numbers, text, enums, Hitbox shapes and records of such values,
+     * which two instances can share), or why there can be none.
+     */
     @SuppressWarnings("unchecked")
-    private S freshInstance(String race, Map<String, String> asPassed) {
+    private S freshInstance(String race, Map<String, String> asPassed, Map<String, Object> valuesAsPassed) {
         Class<? extends PApplet> type = sketch.getClass();
         S fresh;
         try {
@@ -356,15 +364,93 @@ public final class SketchRun<S extends PApplet> {
             throw new AssertionError(race + "; not run again: a new " + type.getSimpleName() + " threw " + e.getCause(), e.getCause());
         }
         Map<String, String> plain = fields(fresh);
+        Map<String, Field> own = ownFields(type);
         for (Map.Entry<String, String> field : asPassed.entrySet()) {
             String other = plain.get(field.getKey());
-            if (!field.getValue().equals(other)) {
+            if (field.getValue().equals(other)) {
+                continue;
+            }
+            Object value = valuesAsPassed.get(field.getKey());
+            if (!shareable(value) || !given(own.get(field.getKey()), fresh, value)) {
                 throw new AssertionError(race + "; not run again: the sketch was changed before the run (its "
                         + field.getKey() + " was " + field.getValue() + ", a new one's is " + other
-                        + "), so a new one would not be the same sketch");
+                        + ", an object a new one cannot share), so a new one would not be the same sketch");
             }
         }
         return fresh;
+    }
+
+    /** Can two sketches hold this same value, neither changing it: a value, not a thing? */
+    private static boolean shareable(Object value) {
+        if (value == null || value instanceof String || value instanceof Boolean || value instanceof Character
+                || value instanceof Enum<?> || value instanceof hitbox.Shape) {
+            return true;  // a Hitbox shape is immutable, a Polygon too
+        }
+        if (value instanceof Integer || value instanceof Float || value instanceof Double || value instanceof Long
+                || value instanceof Short || value instanceof Byte) {
+            return true;  // boxed primitives only: an AtomicInteger is a Number too, and changes
+        }
+        if (value instanceof Record r) {
+            for (java.lang.reflect.RecordComponent c : r.getClass().getRecordComponents()) {
+                try {
+                    java.lang.reflect.Method read = c.getAccessor();
+                    read.setAccessible(true);
+                    if (!shareable(read.invoke(r))) {
+                        return false;
+                    }
+                } catch (ReflectiveOperationException | RuntimeException e) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        return false;
+    }
+
+    /** Sets a field of the new instance to the passed one's value; false if it cannot be set. */
+    private static boolean given(Field field, PApplet fresh, Object value) {
+        if (field == null || Modifier.isFinal(field.getModifiers())) {
+            return false;
+        }
+        try {
+            field.setAccessible(true);
+            field.set(fresh, value);
+            return true;
+        } catch (IllegalAccessException | RuntimeException e) {
+            return false;
+        }
+    }
+
+    /** The fields a sketch's own classes declare, not static, by {@code Class.name}, in order. */
+    private static Map<String, Field> ownFields(Class<?> type) {
+        Map<String, Field> out = new LinkedHashMap<>();
+        for (Class<?> c = type; c != PApplet.class && c != null; c = c.getSuperclass()) {
+            for (Field f : c.getDeclaredFields()) {
+                if (!Modifier.isStatic(f.getModifiers()) && !f.isSynthetic()) {
+                    out.put(c.getSimpleName() + "." + f.getName(), f);
+                }
+            }
+        }
+        return out;
+    }
+
+    /** Marks a field whose value could not be read: never shared. */
+    private static final Object UNREADABLE = new Object();
+
+    /** The sketch's own fields' values, by {@code Class.name} ({@link #UNREADABLE} where reading failed). */
+    private static Map<String, Object> values(PApplet sketch) {
+        Map<String, Object> out = new LinkedHashMap<>();
+        for (Map.Entry<String, Field> field : ownFields(sketch.getClass()).entrySet()) {
+            Object value;
+            try {
+                field.getValue().setAccessible(true);
+                value = field.getValue().get(sketch);
+            } catch (RuntimeException | IllegalAccessException e) {
+                value = UNREADABLE;
+            }
+            out.put(field.getKey(), value);
+        }
+        return out;
     }
 
     /**
@@ -375,20 +461,15 @@ public final class SketchRun<S extends PApplet> {
      */
     private static Map<String, String> fields(PApplet sketch) {
         Map<String, String> out = new LinkedHashMap<>();
-        for (Class<?> c = sketch.getClass(); c != PApplet.class && c != null; c = c.getSuperclass()) {
-            for (Field f : c.getDeclaredFields()) {
-                if (Modifier.isStatic(f.getModifiers()) || f.isSynthetic()) {
-                    continue;
-                }
-                String value;
-                try {
-                    f.setAccessible(true);
-                    value = describe(f.get(sketch));
-                } catch (RuntimeException | IllegalAccessException e) {
-                    value = "unreadable (" + e + ")";  // never equal to a new one's: no retry
-                }
-                out.put(c.getSimpleName() + "." + f.getName(), value);
+        for (Map.Entry<String, Field> field : ownFields(sketch.getClass()).entrySet()) {
+            String value;
+            try {
+                field.getValue().setAccessible(true);
+                value = describe(field.getValue().get(sketch));
+            } catch (RuntimeException | IllegalAccessException e) {
+                value = "unreadable (" + e + ")";  // never equal to a new one's: no retry
             }
+            out.put(field.getKey(), value);
         }
         return out;
     }

@@ -141,6 +141,10 @@ class SketchRunTest {
         /** Throws at this frame (not before frame 1) a race-like NPE, or a plain one in draw(). */
         int raceAtFrame;
         boolean plainNpeInDraw;
+        /** A value a test may give it, shared by two instances as it is (a Hitbox shape). */
+        hitbox.Rect box;
+        /** A thing a test may change: two instances cannot share it. */
+        final List<String> notes = new ArrayList<>();
 
         public RaceLoser() {
             made.incrementAndGet();
@@ -226,13 +230,28 @@ class SketchRunTest {
     }
 
     @Test
+    void theRace_onASketchGivenValuesBeforeTheRun_runsAgainWithThoseValues() {
+        // The values a test set (a number, a shape) are given to the new instance: the same sketch.
+        RaceLoser.racesLeft.set(1);
+        RaceLoser given = new RaceLoser();
+        given.raceAtFrame = 99;
+        given.box = new hitbox.Rect(1, 2, 3, 4);
+        SketchRun.Result<RaceLoser> r = SketchRun.of(given).frames(5).run();
+        assertEquals(5, r.framesDrawn());
+        assertNotSame(given, r.sketch(), "the new instance ran");
+        assertEquals(99, r.sketch().raceAtFrame);
+        assertEquals(new hitbox.Rect(1, 2, 3, 4), r.sketch().box);
+    }
+
+    @Test
     void theRace_onASketchChangedBeforeTheRun_failsNamingTheRaceAndTheField() {
-        // A new instance would not have raceAtFrame = 99: running it would test another sketch.
+        // A list the test changed cannot be given to a new instance: running it would test
+        // another sketch.
         RaceLoser.racesLeft.set(1);
         RaceLoser changed = new RaceLoser();
-        changed.raceAtFrame = 99;
+        changed.notes.add("set by the test");
         AssertionError e = assertThrows(AssertionError.class, () -> SketchRun.of(changed).frames(5).run());
-        assertTrue(e.getMessage().contains("window-buffer race") && e.getMessage().contains("raceAtFrame was 99"),
+        assertTrue(e.getMessage().contains("window-buffer race") && e.getMessage().contains("notes was [set by the test]"),
                 e.getMessage());
     }
 
