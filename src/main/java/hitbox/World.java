@@ -68,7 +68,7 @@ import java.util.function.Predicate;
  * exactly as it was: every body's pose and shape and the broad phase's boxes. Not
  * thread-safe.
  *
- * <p>This class is the face of the world, longer than most (about 930 lines, most of them
+ * <p>This class is the face of the world, longer than most (about 970 lines, most of them
  * javadoc of the public methods), over parts with one job each: the bodies with their poses
  * and boxes and the broad phase's upkeep ({@code BodyTable}), the contacts kept from step to
  * step ({@code ContactTracker}), a grid's body's cells ({@code GridCollider}), the queries
