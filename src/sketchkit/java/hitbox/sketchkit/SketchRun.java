@@ -208,8 +208,8 @@ public final class SketchRun<S extends PApplet> {
         }
         String name = sketch.getClass().getSimpleName();
         // Taken before the sketch runs, to tell later whether a new instance is the same sketch.
-        Map<String, String> asPassed = fields(sketch);
         Map<String, Object> valuesAsPassed = values(sketch);
+        Map<String, String> asPassed = described(valuesAsPassed);
         FrameHooks first = attempt(sketch);
         if (first.race == null) {
             return first.result();
@@ -390,6 +390,9 @@ public final class SketchRun<S extends PApplet> {
                 || value instanceof Short || value instanceof Byte) {
             return true;  // boxed primitives only: an AtomicInteger is a Number too, and changes
         }
+        if (value instanceof Unreadable) {
+            return false;
+        }
         if (value instanceof Record r) {
             for (java.lang.reflect.RecordComponent c : r.getClass().getRecordComponents()) {
                 try {
@@ -434,10 +437,15 @@ public final class SketchRun<S extends PApplet> {
         return out;
     }
 
-    /** Marks a field whose value could not be read: never shared. */
-    private static final Object UNREADABLE = new Object();
+    /** A field whose value could not be read: never shared, never equal to a new one's (no retry). */
+    private record Unreadable(Exception why) {
+        @Override
+        public String toString() {
+            return "unreadable (" + why + ")";
+        }
+    }
 
-    /** The sketch's own fields' values, by {@code Class.name} ({@link #UNREADABLE} where reading failed). */
+    /** The sketch's own fields' values, by {@code Class.name} (an {@link Unreadable} where reading failed). */
     private static Map<String, Object> values(PApplet sketch) {
         Map<String, Object> out = new LinkedHashMap<>();
         for (Map.Entry<String, Field> field : ownFields(sketch.getClass()).entrySet()) {
@@ -446,7 +454,7 @@ public final class SketchRun<S extends PApplet> {
                 field.getValue().setAccessible(true);
                 value = field.getValue().get(sketch);
             } catch (RuntimeException | IllegalAccessException e) {
-                value = UNREADABLE;
+                value = new Unreadable(e);
             }
             out.put(field.getKey(), value);
         }
@@ -460,16 +468,14 @@ public final class SketchRun<S extends PApplet> {
      * Comparing these tells a sketch as its constructor left it from one a test set up.
      */
     private static Map<String, String> fields(PApplet sketch) {
+        return described(values(sketch));
+    }
+
+    /** {@link #fields}' text of values already read. */
+    private static Map<String, String> described(Map<String, Object> values) {
         Map<String, String> out = new LinkedHashMap<>();
-        for (Map.Entry<String, Field> field : ownFields(sketch.getClass()).entrySet()) {
-            String value;
-            try {
-                field.getValue().setAccessible(true);
-                value = describe(field.getValue().get(sketch));
-            } catch (RuntimeException | IllegalAccessException e) {
-                value = "unreadable (" + e + ")";  // never equal to a new one's: no retry
-            }
-            out.put(field.getKey(), value);
+        for (Map.Entry<String, Object> field : values.entrySet()) {
+            out.put(field.getKey(), describe(field.getValue()));
         }
         return out;
     }
