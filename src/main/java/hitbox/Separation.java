@@ -12,8 +12,10 @@ import hitbox.internal.*;
  * {@link Contact} for how deep), else the distance, 0 when they touch, and the closest points,
  * {@code (ax, ay)} on the first shape's outline and {@code (bx, by)} on the second's (for a
  * segment, on the segment). Swapping the shapes swaps the points, {@link #flipped()}, and keeps
- * the distance. Where several pairs of points are equally close (two parallel edges, say) one
- * of them is given. Touching shapes give one point, the same for both.
+ * the distance. Where several pairs of points are equally close (two parallel edges, say),
+ * the pair given is the one whose midpoint comes first (the least x, then the least y), so
+ * the same pair either way round; for a pair with an ellipse of two different radii (found by
+ * a search), one of them. Touching shapes give one point, the same for both.
  *
  * <p><b>How exact.</b> Worked in double from the floats and rounded once to float. Between
  * shapes with straight edges, circles and capsules, the distance is exact for whole-number

@@ -61,21 +61,22 @@ class SeparationTest {
         }
     }
 
-    // a; b; distance; tolerance (0: exact); closest point on a (x, y) and on b (NaN: not checked)
+    // a; b; distance; tolerance (0: exact); closest point on a (x, y) and on b (NaN: not checked).
+    // Where many pairs are equally close (parallel edges), the one with the least midpoint.
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = ';', textBlock = """
             circles345;              circle 0 0 1;        circle 6 8 2;                  7;   0;     0.6; 0.8; 4.8; 6.4
             circlesAlongX;           circle 0 0 1;        circle 5 0 1;                  3;   0;     1; 0; 4; 0
             rectsCornerToCorner;     rect 0 0 10 10;      rect 13 14 5 5;                5;   0;     10; 10; 13; 14
             rectsSideGap;            rect 0 0 10 10;      rect 12 3 5 2;                 2;   0;     10; 3; 12; 3
-            rectsBelowGap;           rect 0 0 10 10;      rect -20 17 100 2;             7;   0;     NaN; 0; 0; 0
+            rectsBelowGap;           rect 0 0 10 10;      rect -20 17 100 2;             7;   0;     0; 10; 0; 17
             circleRectSide;          circle -5 5 3;       rect 0 0 10 10;                2;   0;     -2; 5; 0; 5
             circleRectCorner;        circle 16 18 5;      rect 0 0 10 10;                5;   0;     13; 14; 10; 10
             circleHypotenuse;        circle 7 7 4;        polygon 0 0 8 0 0 6;           1;   0;     4.6; 3.8; 4; 3
             segmentPoint;            segment 0 0 10 0;    circle 4 -3 0;                 3;   0;     4; 0; 4; -3
-            segmentsParallel;        segment 0 0 10 0;    segment 2 4 6 4;               4;   0;     NaN; 0; 0; 0
+            segmentsParallel;        segment 0 0 10 0;    segment 2 4 6 4;               4;   0;     2; 0; 2; 4
             segmentsSkew;            segment 0 0 10 0;    segment 13 4 20 9;             5;   0;     10; 0; 13; 4
-            capsulesSideBySide;      capsule 0 0 10 0 2;  capsule 0 9 10 9 3;            4;   0;     NaN; 0; 0; 0
+            capsulesSideBySide;      capsule 0 0 10 0 2;  capsule 0 9 10 9 3;            4;   0;     0; 2; 0; 6
             capsuleEndToCircle;      capsule 0 0 10 0 1;  circle 16 8 5;                 4;   0;     10.6; 0.8; 13; 4
             capsuleRect;             capsule 0 0 10 0 2;  rect -5 5 20 5;                3;   0;     NaN; 0; 0; 0
             polygonsEdgeToVertex;    polygon 0 0 10 0 10 10 0 10; polygon 15 5 20 0 20 10; 5; 0;  10; 5; 15; 5

@@ -15,7 +15,8 @@ import hitbox.*;
  * concave alike), a segment itself; only an ellipse with two different radii stays curved.
  * The distance is the cores' distance less the two radii (held at 0), and each closest point
  * is its core's closest point moved by its radius towards the other. So every ordered pair of
- * the six kinds is answered by one of three kernels, each written once:
+ * the six kinds is answered by one of three kernels, each written once (two convex outlines
+ * round an area, by a faster form of the first):
  *
  * <table>
  *   <caption>Which kernel answers each pair</caption>
@@ -31,7 +32,12 @@ import hitbox.*;
  * differences of the floats. For whole-number coordinates of modest size this is exact
  * wherever the distance is a rational number that a float holds: an axis-aligned gap (the
  * cross product over the edge's length, both exact), a corner-to-corner distance that is a
- * whole number (a square root of an exact sum of squares is correctly rounded).
+ * whole number (a square root of an exact sum of squares is correctly rounded). Two convex
+ * outlines round an area (rectangles, convex polygons) go by {@link ConvexOutlines}, which
+ * walks their difference to find the pair of edges that holds the closest points, in time in
+ * proportion to their corners, then measures that pair the same way. Where several pairs of
+ * points are equally close, the one given has the first midpoint ({@code closer}), in every
+ * kernel of straight cores.
  *
  * <p><b>Ellipses</b> ({@link #ellipseChain}, {@link #ellipses}): the distance from a point to
  * the ellipse is Eberly's ({@link Ellipses#distance}, to double precision). Along an edge the
@@ -44,7 +50,7 @@ import hitbox.*;
  * <p>A separation makes nothing but its answer: the cores, the closest points and what the
  * kernels work in are a thread's {@code Scratch}, fetched once per call.
  *
- * <p>This class is longer than most (about 770 lines): the three kernels, the pruning that
+ * <p>This class is longer than most (about 810 lines): the three kernels, the pruning that
  * keeps two polygons fast (the facing marks of convex outlines, the sorted loops of many
  * sides), the scratch they work in, and their small helpers, kept in one place.
  */
@@ -58,7 +64,7 @@ public final class Distances {
      * of 2^-53 of it, with room to spare. {@code chains} stops its sorted loops only when the
      * gap along that direction beats the best distance by more than this.
      */
-    private static final double PROJECTION_ROUNDING = 1e-12;
+    static final double PROJECTION_ROUNDING = 1e-12;
 
     /** How many points of a second ellipse's outline are sampled before refining (see the class doc). */
     static final int ELLIPSE_SAMPLES = 128;
@@ -87,6 +93,12 @@ public final class Distances {
          * edges that face away from the other shape are skipped ({@link #facing}).
          */
         private int winding;
+        /**
+         * Is it a convex outline round an area (not a flat rectangle)? Two such that do not
+         * overlap share no inside point, which {@link ConvexOutlines} takes as given; a flat
+         * one can cross another's outline without overlapping it.
+         */
+        private boolean solid;
         /** The arrays this core's own vertices are written into: a point's, two ends', four corners. */
         private final double[] point = new double[2], ends = new double[4], corners = new double[8];
 
@@ -108,12 +120,17 @@ public final class Distances {
             this.ellipse = ellipse;
             this.r = r;
             this.winding = 0;
+            this.solid = false;
             return this;
         }
 
-        /** This core, a closed outline, marked convex with the given winding (+1 or -1; 0: not known convex). */
-        private Core convex(int winding) {
+        /**
+         * This core, a closed outline, marked convex with the given winding (+1 or -1; 0: not
+         * known convex), and whether it is round an area.
+         */
+        private Core convex(int winding, boolean solid) {
             this.winding = winding;
+            this.solid = solid && winding != 0;
             return this;
         }
 
@@ -172,6 +189,8 @@ public final class Distances {
         int[] oa = new int[0], ob = new int[0], merge = new int[0];
         /** Which vertices of the other shape each edge of a convex outline faces ({@link #facing}), grown to the largest seen. */
         long[] frontA = new long[8], frontB = new long[8];
+        /** What {@link ConvexOutlines} works in. */
+        final ConvexOutlines.Work convex = new ConvexOutlines.Work();
     }
 
     private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
@@ -190,13 +209,16 @@ public final class Distances {
             }
             // A rectangle's corners go top-left, top-right, bottom-right, bottom-left: winding +1
             // (a flat one either way: its two long edges face both ways).
-            case RECT -> c.set(Polygons.corners((Rect) s, c.corners), true, null, 0).convex(1);
+            case RECT -> {
+                Rect r = (Rect) s;
+                yield c.set(Polygons.corners(r, c.corners), true, null, 0).convex(1, r.w() > 0 && r.h() > 0);
+            }
             case SEGMENT -> {
                 Segment g = (Segment) s;
                 yield c.ends(g.x1(), g.y1(), g.x2(), g.y2(), 0);
             }
             case POLYGON -> c.set(HiddenParts.corners((Polygon) s), true, null, 0) // cached, only read
-                    .convex(HiddenParts.convexWinding((Polygon) s));
+                    .convex(HiddenParts.convexWinding((Polygon) s), true);
         };
     }
 
@@ -296,6 +318,9 @@ public final class Distances {
     /** The distance between two cores (without their radii), closest points in q. */
     private static double cores(Core a, Core b, double[] q, Scratch s) {
         if (a.ellipse() == null && b.ellipse() == null) {
+            if (a.solid && b.solid) {
+                return ConvexOutlines.distance(a.xy(), a.winding, b.xy(), b.winding, q, s.t, s.feet, s.convex);
+            }
             // Small outlines only: the marks take every edge against every vertex, and a
             // long's bits (beyond, the sorted loops of chains prune as well).
             boolean small = a.xy().length <= 2 * FACING_UP_TO && b.xy().length <= 2 * FACING_UP_TO;
@@ -402,7 +427,7 @@ public final class Distances {
                     continue;
                 }
                 double d = segments(ax1, ay1, ax2, ay2, bx1, by1, bx2, by2, t, feet);
-                if (d < best) {
+                if (closer(d, best, t[0], t[1], t[2], t[3], q)) {
                     best = d;
                     System.arraycopy(t, 0, q, 0, 4);
                     if (d == 0) {
@@ -413,6 +438,8 @@ public final class Distances {
         }
         return best;
     }
+
+
 
     /**
      * For each edge of a closed convex outline {@code xy} (winding w, at most
@@ -528,7 +555,7 @@ public final class Distances {
     }
 
     /** {@link #segments} with a scratch array of two for the feet, so a loop allocates once. */
-    private static double segments(double ax, double ay, double bx, double by,
+    static double segments(double ax, double ay, double bx, double by,
                                    double cx, double cy, double dx, double dy, double[] q, double[] f) {
         double best = pointSegment(ax, ay, cx, cy, dx, dy, f);
         put(q, ax, ay, f[0], f[1]);
@@ -536,16 +563,16 @@ public final class Distances {
         // is one, its end d is its end c: the skipped distances cannot be smaller.
         if (ax != bx || ay != by) {
             double d = pointSegment(bx, by, cx, cy, dx, dy, f);
-            if (d < best) {
+            if (closer(d, best, bx, by, f[0], f[1], q)) {
                 best = put(q, bx, by, f[0], f[1]) + d;
             }
             d = pointSegment(cx, cy, ax, ay, bx, by, f);
-            if (d < best) {
+            if (closer(d, best, f[0], f[1], cx, cy, q)) {
                 best = put(q, f[0], f[1], cx, cy) + d;
             }
             if (cx != dx || cy != dy) {
                 d = pointSegment(dx, dy, ax, ay, bx, by, f);
-                if (d < best) {
+                if (closer(d, best, f[0], f[1], dx, dy, q)) {
                     best = put(q, f[0], f[1], dx, dy) + d;
                 }
             }
@@ -560,6 +587,20 @@ public final class Distances {
             return put(q, x, y, x, y);
         }
         return best;
+    }
+
+    /**
+     * Is the pair of points (x1, y1), (x2, y2), d apart, closer than the pair in q, best
+     * apart, or as close with its midpoint first (the least x, then the least y)? The one rule
+     * for equally close pairs (two parallel edges give many), so that the pair given is the
+     * same whichever shape comes first, and whichever kernel finds it.
+     */
+    static boolean closer(double d, double best, double x1, double y1, double x2, double y2, double[] q) {
+        if (d != best) {
+            return d < best;
+        }
+        double sx = x1 + x2, bx = q[0] + q[2];
+        return sx < bx || sx == bx && y1 + y2 < q[1] + q[3];
     }
 
     /** Do the closed boxes of segments AB and CD have a point in common? */
