@@ -93,22 +93,11 @@ final class ConvexOutlines {
             dy[count] = ay[i] - by[j];
             fa[count] = i;
             fb[count] = j;
-            int first;  // +1: A's edge comes first, -1: -B's, 0: one direction
-            if (i == na) {
-                first = -1;
-            } else if (j == nb) {
-                first = 1;
-            } else {
-                double ex = ax[i + 1] - ax[i], ey = ay[i + 1] - ay[i];
-                double fx = bx[j] - bx[j + 1], fy = by[j] - by[j + 1];  // -B's edge
-                first = firstDirection(ex, ey, fx, fy);
-            }
-            if (first >= 0) {
-                i++;
-            }
-            if (first <= 0) {
-                j++;
-            }
+            // +1: A's edge comes first, -1: -B's, 0: one direction (once a walk is round, the other's).
+            int first = i == na ? -1 : j == nb ? 1 : firstDirection(ax[i + 1] - ax[i], ay[i + 1] - ay[i],
+                    bx[j] - bx[j + 1], by[j] - by[j + 1]);  // -B's edge
+            i += first >= 0 ? 1 : 0;
+            j += first <= 0 ? 1 : 0;
         }
         dx[count] = dx[0];
         dy[count] = dy[0];
@@ -156,12 +145,10 @@ final class ConvexOutlines {
      * sign of the cross product.
      */
     private static int firstDirection(double ex, double ey, double fx, double fy) {
-        boolean upperE = ey > 0 || ey == 0 && ex > 0, upperF = fy > 0 || fy == 0 && fx > 0;
-        if (upperE != upperF) {
-            return upperE ? 1 : -1;
-        }
+        int halfE = ey > 0 || ey == 0 && ex > 0 ? 0 : 2, halfF = fy > 0 || fy == 0 && fx > 0 ? 0 : 2;
         double cross = ex * fy - ey * fx;
-        return cross > 0 ? 1 : cross < 0 ? -1 : 0;
+        int turn = cross > 0 ? 1 : cross < 0 ? -1 : 0;
+        return halfE == halfF ? turn : halfF - halfE >> 1;
     }
 
     /**
