@@ -150,6 +150,60 @@ class BroadPhaseContractTest {
         both.check("after clear and two new boxes");
     }
 
+    /**
+     * One box moved at a time, mostly a little (as a body moves from one frame to the next,
+     * within its cell of a grid, which then updates the box where it stands instead of
+     * rebuilding), and a question after every move: pairs, a box query around the moved box
+     * and a ray across it, each against the model. A structure that answered from the box as
+     * it stood before the move would fail here, where a whole frame of moves (above) would
+     * hide it behind a rebuild.
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("structures")
+    void oneSmallMoveAtATime_sameAsModelAfterEach(String name) {
+        Random random = new Random(name.hashCode() * 31L + 5);
+        Both both = new Both(name);
+        int n = 120;
+        float[] x = new float[n], y = new float[n], w = new float[n], h = new float[n];
+        for (int i = 0; i < n; i++) {
+            x[i] = random.nextFloat() * 200;
+            y[i] = random.nextFloat() * 200;
+            w[i] = 2 + random.nextFloat() * 10;
+            h[i] = 2 + random.nextFloat() * 10;
+            both.put(i, x[i], y[i], w[i], h[i]);
+        }
+        both.check("at the start");
+        for (int step = 0; step < 1500; step++) {
+            int i = random.nextInt(n);
+            boolean lowest = step % 25 == 0;
+            if (lowest) {
+                // The lowest box a little further down: past where every box lay before, so a
+                // ray along its new bottom edge, below all of them as they were, must find it.
+                for (int k = 0; k < n; k++) {
+                    i = y[k] + h[k] > y[i] + h[i] ? k : i;
+                }
+                y[i] += 0.7f;
+            } else {
+                float reach = step % 10 == 0 ? 30 : 1.5f;  // now and then a move far enough to change cell
+                x[i] += (random.nextFloat() - 0.5f) * reach;
+                y[i] += (random.nextFloat() - 0.5f) * reach;
+            }
+            if (step % 7 == 0) {
+                w[i] = 2 + random.nextFloat() * 10;  // a new size too
+            }
+            both.put(i, x[i], y[i], w[i], h[i]);
+            String when = "after move " + step + " of box " + i;
+            both.check(when);
+            float qx = x[i] - 5, qy = y[i] - 5, qw = w[i] + 10, qh = h[i] + 10;
+            assertEquals(both.model.query(qx, qy, qw, qh), BroadPhaseModel.queryOf(both.bp, qx, qy, qw, qh),
+                    both.bp + " query around the moved box, " + when);
+            float along = lowest ? y[i] + h[i] - 0.1f : y[i] + h[i] / 2;
+            for (Ray r : new Ray[] {new Ray(x[i] - 20, along, 1, 0, 40 + w[i]), new Ray(-50, along, 1, 0)}) {
+                assertEquals(both.model.ray(r), BroadPhaseModel.rayOf(both.bp, r), both.bp + " " + r + ", " + when);
+            }
+        }
+    }
+
     private static float origin(World world) {
         switch (world) {
             case FAR_1E6: return 1_000_000.5f;

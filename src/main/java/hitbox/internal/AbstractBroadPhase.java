@@ -131,6 +131,38 @@ public abstract class AbstractBroadPhase implements BroadPhase {
         }
     }
 
+    /**
+     * Puts a box already held, as {@link #put(int, float, float, float, float)} does, if the
+     * structure can take it with no work before its next question (for the grid: the box
+     * stays in its cell and level); else changes nothing. For a caller that batches the other
+     * changes (the world's waiting boxes): a box put here need not wait.
+     *
+     * @return whether the box was put
+     */
+    public final boolean putInPlace(int id, float x, float y, float w, float h) {
+        int slot = reading > 0 ? -1 : slotOf.get(id);
+        if (slot < 0 || !Float.isFinite(x) || !Float.isFinite(y) || !(w >= 0) || !(h >= 0)
+                || w == Float.POSITIVE_INFINITY || h == Float.POSITIVE_INFINITY
+                || !fitsInPlace(slot, x, (double) x + w, y, (double) y + h)) {
+            return false;
+        }
+        store(slot, x, y, w, h);
+        placedInPlace(slot);
+        return true;
+    }
+
+    /**
+     * Can slot s take a new box (its edges as in {@link #box}) with no work before the next
+     * question? False unless a structure says so.
+     */
+    public boolean fitsInPlace(int slot, double x, double right, double y, double bottom) {
+        return false;
+    }
+
+    /** Slot s took a new box that {@link #fitsInPlace} allowed (the arrays hold its numbers). */
+    public void placedInPlace(int slot) {
+    }
+
     @Override
     public final void put(int id, Shape shape) {
         checkId(id);

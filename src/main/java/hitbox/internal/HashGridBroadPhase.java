@@ -63,6 +63,8 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
     private long[] slotB = new long[0];
     private int[] slotLevel = new int[0];
     private int[] slotBucket = new int[0];
+    /** Each slot's entry, from the last rebuild: where a box that stays in its cell is updated. */
+    private int[] slotEntry = new int[0];
 
     /** Bucket k's entries are start[k] to start[k + 1] - 1. */
     private int[] start = new int[1];
@@ -114,7 +116,42 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
 
     @Override
     public void moved(int slot, float oldX, float oldY) {
-        stale = true;
+        int k = 4 * slot;
+        if (fitsInPlace(slot, box[k], box[k + 1], box[k + 2], box[k + 3])) {
+            placedInPlace(slot);
+        } else {
+            stale = true;
+        }
+    }
+
+    /**
+     * A box that goes to the same level and the same cell as the slot's entry from the last
+     * rebuild needs none: only the entry's copy of the box changes (and the bounds, widened).
+     * A box moved a little inside its cell, as most are from one frame to the next, keeps the
+     * grid as it is.
+     */
+    @Override
+    public boolean fitsInPlace(int slot, double x, double right, double y, double bottom) {
+        if (stale) {
+            return false;
+        }
+        long x0 = Lattice.cell(x, perCell), x1 = Lattice.cell(right, perCell);
+        long y0 = Lattice.cell(y, perCell), y1 = Lattice.cell(bottom, perCell);
+        int level = Math.max(Lattice.level(x0, x1), Lattice.level(y0, y1));
+        return level == slotLevel[slot] && x0 >> level == slotA[slot] && y0 >> level == slotB[slot];
+    }
+
+    @Override
+    public void placedInPlace(int slot) {
+        int k = 4 * slot, j = 4 * slotEntry[slot];
+        ebox[j] = box[k];
+        ebox[j + 1] = box[k + 1];
+        ebox[j + 2] = box[k + 2];
+        ebox[j + 3] = box[k + 3];
+        minX = Math.min(minX, box[k]);
+        maxRight = Math.max(maxRight, box[k + 1]);
+        minY = Math.min(minY, box[k + 2]);
+        maxBottom = Math.max(maxBottom, box[k + 3]);
     }
 
     @Override
@@ -137,6 +174,7 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
         slotB = Arrays.copyOf(slotB, capacity);
         slotLevel = Arrays.copyOf(slotLevel, capacity);
         slotBucket = Arrays.copyOf(slotBucket, capacity);
+        slotEntry = Arrays.copyOf(slotEntry, capacity);
         seen = Arrays.copyOf(seen, capacity);
         ebox = Arrays.copyOf(ebox, 4 * capacity);
         eid = Arrays.copyOf(eid, capacity);
@@ -221,6 +259,7 @@ public final class HashGridBroadPhase extends AbstractBroadPhase {
             ebox[j + 3] = bx[k + 3];
             eid[e] = ids[s];
             eslot[e] = s;
+            slotEntry[s] = e;
             ebucket[e] = slotBucket[s];
             if (!dense[slotLevel[s]]) {
                 ea[e] = slotA[s];
