@@ -274,8 +274,8 @@ final class BodyTable {
     private Body[] dirty = new Body[16];
     /**
      * The waiting bodies' fat boxes (x, y, w, h), side by side in the order of {@code dirty}:
-     * every query and every leg of a move scans them all, and reading them from the bodies
-     * themselves, wherever those lie in memory, was a fifth of the movers' frame.
+     * every query and every leg of a move scans them all (a fifth of the movers' frame when
+     * 136 waited on average), here without reading the bodies.
      */
     private float[] dirtyFat = new float[64];
     private int dirtyCount;

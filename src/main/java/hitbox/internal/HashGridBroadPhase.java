@@ -7,7 +7,8 @@ import java.util.function.IntConsumer;
 
 /**
  * {@link BroadPhase#grid()}: a grid per level over the {@link Lattice}, rebuilt from scratch by
- * the first question after a change.
+ * the first question after a change, except a box's move that keeps it in its level and cell,
+ * which changes only its entry's copy of the box (as most moves from one frame to the next do).
  *
  * <p>Each box goes to the finest level at which its edges are at most one cell apart (level L
  * has cells {@code 2^L} times the base cell), in the cell of its top-left corner. Each occupied
@@ -33,7 +34,7 @@ import java.util.function.IntConsumer;
  * cells of level L it covers, whichever looks up fewer; a level is scanned whole when that is
  * cheaper still.
  *
- * <p>This class is longer than most (about 590 lines) because it is one data structure: the
+ * <p>This class is longer than most (about 640 lines) because it is one data structure: the
  * rebuild, the choice of cell size, the dense and hashed levels and the lookups all share the
  * same bucket and entry arrays; the cell arithmetic they rest on is already apart, in
  * {@link Lattice}.
