@@ -219,25 +219,12 @@ final class BodyTable {
         if (b.dirtyIndex < 0) {
             if (dirtyCount == dirty.length) {
                 dirty = java.util.Arrays.copyOf(dirty, 2 * dirtyCount);
-                dirtyFat = java.util.Arrays.copyOf(dirtyFat, 4 * dirty.length);
             }
             b.dirtyIndex(dirtyCount);
             dirty[dirtyCount++] = b;
         }
-        fat(b, fx, fy, fw, fh);
+        b.fat(fx, fy, fw, fh);
         flushIfMany();
-    }
-
-    /** Sets a body's fat box, and its copy in the dirty list's boxes while it waits there. */
-    void fat(Body b, float x, float y, float w, float h) {
-        b.fat(x, y, w, h);
-        int k = 4 * b.dirtyIndex;
-        if (k >= 0) {
-            dirtyFat[k] = x;
-            dirtyFat[k + 1] = y;
-            dirtyFat[k + 2] = w;
-            dirtyFat[k + 3] = h;
-        }
     }
 
     /** Sets a body's tight box, and its copy here. */
@@ -272,12 +259,6 @@ final class BodyTable {
     }
 
     private Body[] dirty = new Body[16];
-    /**
-     * The waiting bodies' fat boxes (x, y, w, h), side by side in the order of {@code dirty}:
-     * every query and every leg of a move scans them all (a fifth of the movers' frame when
-     * 136 waited on average), here without reading the bodies.
-     */
-    private float[] dirtyFat = new float[64];
     private int dirtyCount;
     /** Set while a carrier moves: no flush then, so a refused carrier's move can put every box back. */
     boolean holdFlush;
@@ -312,7 +293,6 @@ final class BodyTable {
         Body last = dirty[--dirtyCount];
         dirty[i] = last;
         last.dirtyIndex(i);
-        System.arraycopy(dirtyFat, 4 * dirtyCount, dirtyFat, 4 * i, 4);
         dirty[dirtyCount] = null;
         b.dirtyIndex(-1);
     }
@@ -333,10 +313,10 @@ final class BodyTable {
             }
         }
         candCount = kept;
-        float[] f = dirtyFat;
-        for (int i = 0, k = 0; i < dirtyCount; i++, k += 4) {
-            if (f[k] <= x1 && x0 <= (double) f[k] + f[k + 2] && f[k + 1] <= y1 && y0 <= (double) f[k + 1] + f[k + 3]) {
-                collect.accept(dirty[i].id);
+        for (int i = 0; i < dirtyCount; i++) {
+            Body b = dirty[i];
+            if (b.fatX <= x1 && x0 <= (double) b.fatX + b.fatW && b.fatY <= y1 && y0 <= (double) b.fatY + b.fatH) {
+                collect.accept(b.id);
             }
         }
         sortCandidates();
@@ -395,13 +375,13 @@ final class BodyTable {
     void rayCandidates(Ray ray) {
         candCount = 0;
         broad.raycast(ray, rayCollect);
-        float[] f = dirtyFat;
-        for (int i = 0, k = 0; i < dirtyCount; i++, k += 4) {
+        for (int i = 0; i < dirtyCount; i++) {
+            Body b = dirty[i];
             // Only those whose fat box the ray goes into (the fat box holds the shape, with a
             // margin of a pixel at least): not every waiting body's shape cast each time.
             if (Ray.distanceToRect(ray.ox(), ray.oy(), ray.dx(), ray.dy(), ray.maxDistance(),
-                    f[k], f[k + 1], f[k + 2], f[k + 3]) != Float.POSITIVE_INFINITY) {
-                collect.accept(dirty[i].id);
+                    b.fatX, b.fatY, b.fatW, b.fatH) != Float.POSITIVE_INFINITY) {
+                collect.accept(b.id);
             }
         }
     }

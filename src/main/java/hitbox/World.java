@@ -425,10 +425,10 @@ public final class World {
         b.placed(saved.tx(), saved.ty(), saved.shape());
         float[] k = saved.box();
         table.box(b, k[0], k[1], k[2], k[3]);
+        b.fat(k[4], k[5], k[6], k[7]);
         if (!saved.dirty() && b.dirtyIndex >= 0) {
             table.undirty(b);
         }
-        table.fat(b, k[4], k[5], k[6], k[7]);
         tracker.changed(b);
     }
 
