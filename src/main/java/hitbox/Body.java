@@ -42,9 +42,10 @@ import hitbox.internal.*;
  * change it throw an {@link IllegalStateException}; reading it still works. A body may not be
  * changed from inside a filter or query callback of its world ({@link IllegalStateException}).
  *
- * <p>This class is longer than most (about 460 lines): the public face of a body (pose,
+ * <p>This class is longer than most (about 525 lines): the public face of a body (pose,
  * teleports, layers, sensor, one-way side, carrier, data) with full javadoc, and the few
- * package-private methods through which alone the world's parts change its state.
+ * package-private methods through which alone the world's parts change its state and read
+ * where it stands (its shape, or the numbers the pair tests read without making one).
  */
 public final class Body {
     // The world's bookkeeping: package-private, read by World, Mover and CharacterBody, and
@@ -66,6 +67,13 @@ public final class Body {
     final double[] extents = new double[4];
     /** The shape where it stands, or null until asked after a change. */
     Shape shape;
+    /**
+     * The shape where it stands as numbers, for the world's pair tests (no shape made each
+     * frame for a body that moves); valid while {@link #placementSet}.
+     */
+    private final Placement placement = new Placement();
+    /** Is {@link #placement} this pose's (set when first asked after a change)? */
+    private boolean placementSet;
     /**
      * The fat box: the box held for the body in the broad phase (or waiting to be put there
      * while the body is dirty), the tight box grown by a margin and ahead of its last move.
@@ -118,6 +126,7 @@ public final class Body {
             System.arraycopy(turnedExtents, 0, extents, 0, 4);
         }
         this.shape = null;
+        this.placementSet = false;
     }
 
     /** Moved (not turned) to where a move left it: the translation and the shape there, made by the move. */
@@ -125,6 +134,26 @@ public final class Body {
         this.tx = tx;
         this.ty = ty;
         this.shape = shape;
+        this.placementSet = false;
+    }
+
+    /**
+     * Where the body stands as numbers ({@link Placement}), made when first asked after a
+     * change, into storage the body keeps: from the shape if it was made, else from the pose.
+     *
+     * @return the numbers, or null where only {@link #shape()} can answer (a capsule, a
+     *         concave polygon, a quarter turn: see {@link Placement})
+     */
+    Placement placement() {
+        if (!placementSet) {
+            if (shape != null) {
+                placement.of(shape);
+            } else {
+                placement.place(home, homePivotX, homePivotY, tx, ty, angle, cos, sin);
+            }
+            placementSet = true;
+        }
+        return placement.kind() != null ? placement : null;
     }
 
     /** The tight box, at or a hair outside the shape. */

@@ -401,6 +401,11 @@ final class ContactTracker {
         if (b.grid != null) {
             return cells.meets(b.grid, a.shape());
         }
+        // Both as numbers where they can be (no shape made for a body that moved); else the shapes.
+        Placement pa = a.placement(), pb = pa == null ? null : b.placement();
+        if (pb != null) {
+            return PlacedOverlaps.test(pa, pb);
+        }
         return a.shape().overlaps(b.shape());
     }
 

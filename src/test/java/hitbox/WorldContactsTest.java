@@ -387,4 +387,78 @@ class WorldContactsTest {
         }
         assertEquals(0, least, "bytes a pair scan of standing bodies made");
     }
+
+    /**
+     * A frame of the stress scene's kind ({@code docs/world-benchmark.md}): every body of every
+     * kind the world keeps as numbers (circles, turned ellipses, turned boxes, turned segments,
+     * convex quads, boxes and ellipses at angle 0) moved and half of them turned by hand, then a
+     * pair scan. Once the world has grown it makes nothing: no shape is made for a moved body's
+     * pair tests. The pairs handed over are those of brute force over the bodies' shapes.
+     */
+    @Test
+    void aFrameOfMovingAndTurningBodies_allocatesNothing() {
+        World w = new World();
+        java.util.Random random = new java.util.Random(29);
+        int n = 2000;
+        Body[] bodies = new Body[n];
+        float[] vx = new float[n], vy = new float[n], spin = new float[n];
+        for (int i = 0; i < n; i++) {
+            float s = 4 + 3 * random.nextFloat(), t = 4 + 3 * random.nextFloat();
+            Shape home = switch (i % 7) {
+                case 0 -> new Circle(0, 0, s);
+                case 1 -> new Ellipse(0, 0, s, t, 0);
+                case 2 -> new Rect(-s / 2, -t / 2, s, t);
+                case 3 -> new Segment(-s, -t, s, t);
+                case 4 -> Polygon.of(-s, -t, s, -t / 2, s / 2, t, -s, t / 2);
+                case 5 -> new Rect(-s, -t, 2 * s, 2 * t);
+                default -> new Ellipse(0, 0, t, s, 0.4f);
+            };
+            float angle = i % 7 >= 5 ? 0 : (float) (2 * Math.PI * random.nextDouble());
+            bodies[i] = w.add(home, 400 * random.nextFloat(), 300 * random.nextFloat(), angle);
+            vx[i] = random.nextFloat() - 0.5f;
+            vy[i] = random.nextFloat() - 0.5f;
+            spin[i] = i % 7 < 5 && i % 2 == 0 ? 0.05f * (random.nextFloat() - 0.5f) : 0;
+        }
+        int[] count = new int[1];
+        java.util.function.BiConsumer<Body, Body> counter = (a, b) -> count[0]++;
+        int clean = 0;
+        long least = Long.MAX_VALUE;
+        for (int round = 0; round < 300; round++) {
+            long before = THREADS.getCurrentThreadAllocatedBytes();
+            for (int i = 0; i < n; i++) {
+                Body b = bodies[i];
+                float x = b.pivotX() + vx[i], y = b.pivotY() + vy[i];
+                if (x < 0 || x > 400) {
+                    vx[i] = -vx[i];
+                }
+                if (y < 0 || y > 300) {
+                    vy[i] = -vy[i];
+                }
+                if (spin[i] != 0) {
+                    b.moveTo(x, y, b.angle() + spin[i]);
+                } else {
+                    b.moveTo(x, y);
+                }
+            }
+            count[0] = 0;
+            w.pairs(counter);
+            long bytes = THREADS.getCurrentThreadAllocatedBytes() - before;
+            if (round >= 260) {
+                least = Math.min(least, bytes);
+                clean += bytes == 0 ? 1 : 0;
+            }
+        }
+        int brute = 0;
+        for (int i = 0; i < n; i++) {
+            for (int j = i + 1; j < n; j++) {
+                brute += bodies[i].shape().overlaps(bodies[j].shape()) ? 1 : 0;
+            }
+        }
+        count[0] = 0;
+        w.pairs(counter);
+        assertEquals(brute, count[0], "the pairs of the last frame, against brute force over the shapes");
+        assertTrue(brute > 1000, brute + " overlapping pairs");
+        assertEquals(0, least, "bytes a frame of moves and a pair scan made");
+        assertTrue(clean >= 36, clean + " of the last 40 frames made nothing");
+    }
 }

@@ -181,16 +181,22 @@ public final class Overlaps {
                 Segment s = (Segment) other;
                 yield RawTests.lineRect(s.x1(), s.y1(), s.x2(), s.y2(), x, y, w, h);
             }
-            case POLYGON -> {
-                float[] xy = HiddenParts.raw((Polygon) other);
-                if (w == 0 || h == 0) {
-                    yield RawTests.polygonRect(xy, x, y, w, h);  // a flat rectangle: a segment
-                }
-                int winding = HiddenParts.convexWinding((Polygon) other);  // kept if convex
-                yield winding != 0 ? Polygons.convexRectOverlap(xy, winding, x, y, w, h)
-                        : RawTests.polygonRectWound(xy, Polygons.winding(xy), x, y, w, h);
-            }
+            case POLYGON -> rectPolygon(x, y, w, h, HiddenParts.raw((Polygon) other),
+                    HiddenParts.convexWinding((Polygon) other));  // the winding kept if convex
         };
+    }
+
+    /**
+     * The rectangle (x, y, w, h), w and h at least 0, with the polygon of the vertices xy,
+     * given its convex winding (0 if it is not convex): the one home of this pair's routing,
+     * for shapes here and for a world's placed numbers ({@link PlacedOverlaps}).
+     */
+    public static boolean rectPolygon(float x, float y, float w, float h, float[] xy, int winding) {
+        if (w == 0 || h == 0) {
+            return RawTests.polygonRect(xy, x, y, w, h);  // a flat rectangle: a segment
+        }
+        return winding != 0 ? Polygons.convexRectOverlap(xy, winding, x, y, w, h)
+                : RawTests.polygonRectWound(xy, Polygons.winding(xy), x, y, w, h);
     }
 
     /** A segment with anything: every kind but a polygon comes earlier and takes the pair swapped. */

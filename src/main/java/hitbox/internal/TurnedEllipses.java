@@ -64,11 +64,11 @@ public final class TurnedEllipses {
         }
 
         public double u(double px, double py) {
-            return (px - x) * c + (py - y) * s;
+            return TurnedEllipses.u(x, y, c, s, px, py);
         }
 
         public double v(double px, double py) {
-            return -(px - x) * s + (py - y) * c;
+            return TurnedEllipses.v(x, y, c, s, px, py);
         }
     }
 
@@ -104,8 +104,7 @@ public final class TurnedEllipses {
         if (e.rx() == 0 || e.ry() == 0) {
             return flat(flatSegment(e), other);
         }
-        Frame fr = new Frame(e);
-        double a = e.rx(), b = e.ry();
+        float ex = e.x(), ey = e.y(), a = e.rx(), b = e.ry(), angle = e.angle();
         return switch (ShapeKind.of(other)) {
             case ELLIPSE -> {
                 Ellipse f = (Ellipse) other;
@@ -120,7 +119,8 @@ public final class TurnedEllipses {
             }
             case CAPSULE -> {
                 Capsule k = (Capsule) other;
-                if (segmentIn(fr, a, b, k.x1(), k.y1(), k.x2(), k.y2(), k.r() > 0)) {
+                Frame fr = new Frame(e);
+                if (segmentIn(fr.x(), fr.y(), fr.c(), fr.s(), a, b, k.x1(), k.y1(), k.x2(), k.y2(), k.r() > 0)) {
                     yield true;
                 }
                 yield k.r() > 0 && Ellipses.segmentDistance(a, b, fr.u(k.x1(), k.y1()), fr.v(k.x1(), k.y1()),
@@ -128,39 +128,83 @@ public final class TurnedEllipses {
             }
             case CIRCLE -> {
                 Circle c = (Circle) other;
-                double u = fr.u(c.x(), c.y()), v = fr.v(c.x(), c.y());
-                if (Ellipses.side(u, v, 0, 0, a, b) < 0) {
-                    yield true;
-                }
-                yield c.r() > 0 && (Ellipses.side(u, v, 0, 0, a, b) == 0 || Ellipses.distance(a, b, u, v, null) < c.r());
+                yield circle(ex, ey, a, b, angle, c.x(), c.y(), c.r());
             }
             case RECT -> {
                 Rect r = (Rect) other;
-                double right = (double) r.x() + r.w(), bottom = (double) r.y() + r.h();
-                if (r.w() == 0 || r.h() == 0) {
-                    yield segmentIn(fr, a, b, r.x(), r.y(), right, bottom, false);
-                }
-                // Its outline's edges in outlineIn's order (from the last corner round), no array made.
-                double x = r.x(), y = r.y();
-                yield segmentIn(fr, a, b, x, bottom, x, y, false) || segmentIn(fr, a, b, x, y, right, y, false)
-                        || segmentIn(fr, a, b, right, y, right, bottom, false) || segmentIn(fr, a, b, right, bottom, x, bottom, false)
-                        || RawTests.rectPoint(r.x(), r.y(), r.w(), r.h(), e.x(), e.y());
+                yield rect(ex, ey, a, b, angle, r.x(), r.y(), r.w(), r.h());
             }
             case SEGMENT -> {
                 Segment g = (Segment) other;
-                yield segmentIn(fr, a, b, g.x1(), g.y1(), g.x2(), g.y2(), false);
+                yield segment(ex, ey, a, b, angle, g.x1(), g.y1(), g.x2(), g.y2());
             }
-            case POLYGON -> {
-                float[] raw = HiddenParts.raw((Polygon) other);
-                yield outlineIn(fr, a, b, raw) || Polygons.contains(raw, e.x(), e.y());
-            }
+            case POLYGON -> polygon(ex, ey, a, b, angle, HiddenParts.raw((Polygon) other));
         };
     }
 
-    /** Does the segment (world coordinates) reach into the turned real ellipse (or its closed form)? */
-    private static boolean segmentIn(Frame f, double a, double b, double x1, double y1, double x2, double y2,
-                                     boolean closed) {
-        return Capsules.nearOrigin(f.u(x1, y1) * b, f.v(x1, y1) * a, f.u(x2, y2) * b, f.v(x2, y2) * a, a * b, closed);
+    // The turned real ellipse (x, y, rx, ry, angle: both radii above 0, not aligned) against
+    // one kind each, on plain numbers: turned's cases, and a world's pair tests on a body's
+    // placed numbers (Placement), which make no shape.
+
+    /** The turned real ellipse against the circle (cx, cy, r). */
+    public static boolean circle(float x, float y, float rx, float ry, float angle, float cx, float cy, float r) {
+        double c = StrictMath.cos(angle), s = StrictMath.sin(angle);
+        double u = u(x, y, c, s, cx, cy), v = v(x, y, c, s, cx, cy);
+        if (Ellipses.side(u, v, 0, 0, rx, ry) < 0) {
+            return true;
+        }
+        return r > 0 && (Ellipses.side(u, v, 0, 0, rx, ry) == 0 || Ellipses.distance(rx, ry, u, v, null) < r);
+    }
+
+    /** The turned real ellipse against the rectangle (rectX, rectY, w, h). */
+    public static boolean rect(float x, float y, float rx, float ry, float angle,
+                               float rectX, float rectY, float w, float h) {
+        double c = StrictMath.cos(angle), s = StrictMath.sin(angle);
+        double right = (double) rectX + w, bottom = (double) rectY + h;
+        if (w == 0 || h == 0) {
+            return segmentIn(x, y, c, s, rx, ry, rectX, rectY, right, bottom, false);
+        }
+        // Its outline's edges in outlineIn's order (from the last corner round), no array made.
+        double left = rectX, top = rectY;
+        return segmentIn(x, y, c, s, rx, ry, left, bottom, left, top, false)
+                || segmentIn(x, y, c, s, rx, ry, left, top, right, top, false)
+                || segmentIn(x, y, c, s, rx, ry, right, top, right, bottom, false)
+                || segmentIn(x, y, c, s, rx, ry, right, bottom, left, bottom, false)
+                || RawTests.rectPoint(rectX, rectY, w, h, x, y);
+    }
+
+    /** The turned real ellipse against the segment (x1, y1)-(x2, y2). */
+    public static boolean segment(float x, float y, float rx, float ry, float angle, float x1, float y1, float x2, float y2) {
+        return segmentIn(x, y, StrictMath.cos(angle), StrictMath.sin(angle), rx, ry, x1, y1, x2, y2, false);
+    }
+
+    /** The turned real ellipse against the polygon of the vertices xy. */
+    public static boolean polygon(float x, float y, float rx, float ry, float angle, float[] xy) {
+        return outlineIn(x, y, StrictMath.cos(angle), StrictMath.sin(angle), rx, ry, xy) || Polygons.contains(xy, x, y);
+    }
+
+    /**
+     * A point taken into the frame of a turned ellipse centred on (x, y), the turn's cosine c
+     * and sine s: {@link Frame}'s maths on plain numbers, for the tests that make no shape
+     * (nor rely on the compiler to take a frame object apart).
+     */
+    private static double u(double x, double y, double c, double s, double px, double py) {
+        return (px - x) * c + (py - y) * s;
+    }
+
+    /** {@link #u}'s v. */
+    private static double v(double x, double y, double c, double s, double px, double py) {
+        return -(px - x) * s + (py - y) * c;
+    }
+
+    /**
+     * Does the segment (world coordinates) reach into the turned real ellipse (or its closed
+     * form), centred on (x, y) and turned by (c, s)?
+     */
+    private static boolean segmentIn(double x, double y, double c, double s, double a, double b,
+                                     double x1, double y1, double x2, double y2, boolean closed) {
+        return Capsules.nearOrigin(u(x, y, c, s, x1, y1) * b, v(x, y, c, s, x1, y1) * a,
+                u(x, y, c, s, x2, y2) * b, v(x, y, c, s, x2, y2) * a, a * b, closed);
     }
 
     /**
@@ -168,10 +212,10 @@ public final class TurnedEllipses {
      * vertices widen to double exactly, so no double copy of them is needed (a turned body's
      * polygon is placed anew each frame, and this test was what asked it for one).
      */
-    private static boolean outlineIn(Frame f, double a, double b, float[] xy) {
+    private static boolean outlineIn(double x, double y, double c, double s, double a, double b, float[] xy) {
         int n = xy.length / 2;
         for (int i = 0, h = n - 1; i < n; h = i++) {
-            if (segmentIn(f, a, b, xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], false)) {
+            if (segmentIn(x, y, c, s, a, b, xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], false)) {
                 return true;
             }
         }
@@ -215,10 +259,29 @@ public final class TurnedEllipses {
 
     /** A fixed order on ellipses, the angle included, so a pair is always worked from the same side. */
     private static boolean before(Ellipse p, Ellipse q) {
-        if (p.x() != q.x() || p.y() != q.y() || p.rx() != q.rx() || p.ry() != q.ry()) {
-            return Ellipses.before(p.x(), p.y(), p.rx(), p.ry(), q.x(), q.y(), q.rx(), q.ry());
+        return before(p.x(), p.y(), p.rx(), p.ry(), p.angle(), q.x(), q.y(), q.rx(), q.ry(), q.angle());
+    }
+
+    private static boolean before(float px, float py, float prx, float pry, float pa,
+                                  float qx, float qy, float qrx, float qry, float qa) {
+        if (px != qx || py != qy || prx != qrx || pry != qry) {
+            return Ellipses.before(px, py, prx, pry, qx, qy, qrx, qry);
         }
-        return Float.compare(p.angle(), q.angle()) < 0;
+        return Float.compare(pa, qa) < 0;
+    }
+
+    /**
+     * Two real ellipses (both radii above 0), at least one turned, on plain numbers: worked
+     * from the side {@link #turned} works them from (an aligned one, or the earlier in a fixed
+     * order), so the answer does not depend on the order they come in.
+     */
+    public static boolean realPair(float px, float py, float prx, float pry, float pa,
+                                   float qx, float qy, float qrx, float qry, float qa) {
+        boolean pAligned = pa == 0 || prx == pry, qAligned = qa == 0 || qrx == qry;
+        if (!pAligned && (qAligned || before(qx, qy, qrx, qry, qa, px, py, prx, pry, pa))) {
+            return ellipses(qx, qy, qrx, qry, qa, px, py, prx, pry, pa);
+        }
+        return ellipses(px, py, prx, pry, pa, qx, qy, qrx, qry, qa);
     }
 
     /**
@@ -228,18 +291,23 @@ public final class TurnedEllipses {
      * compared with that radius, as for two aligned ellipses.
      */
     public static boolean ellipses(Ellipse p, Ellipse q) {
-        int sure = Ellipses.discs((double) q.x() - p.x(), (double) q.y() - p.y(), p.rx(), p.ry(), q.rx(), q.ry());
+        return ellipses(p.x(), p.y(), p.rx(), p.ry(), p.angle(), q.x(), q.y(), q.rx(), q.ry(), q.angle());
+    }
+
+    private static boolean ellipses(float px, float py, float prx, float pry, float pa,
+                                    float qx, float qy, float qrx, float qry, float qa) {
+        int sure = Ellipses.discs((double) qx - px, (double) qy - py, prx, pry, qrx, qry);
         if (sure != 0) {
             return sure > 0;
         }
-        Frame f = new Frame(p);
-        double a1 = p.rx(), b1 = p.ry();
-        double cu = f.u(q.x(), q.y()) * b1, cv = f.v(q.x(), q.y()) * a1;
-        double phi = (double) q.angle() - p.angle();
+        double fc = StrictMath.cos(pa), fs = StrictMath.sin(pa);
+        double a1 = prx, b1 = pry;
+        double cu = u(px, py, fc, fs, qx, qy) * b1, cv = v(px, py, fc, fs, qx, qy) * a1;
+        double phi = (double) qa - pa;
         double c = StrictMath.cos(phi), s = StrictMath.sin(phi);
         // M's columns: q's two half axes in the scaled frame.
-        double m00 = b1 * c * q.rx(), m10 = a1 * s * q.rx();
-        double m01 = -b1 * s * q.ry(), m11 = a1 * c * q.ry();
+        double m00 = b1 * c * qrx, m10 = a1 * s * qrx;
+        double m01 = -b1 * s * qry, m11 = a1 * c * qry;
         double pp = m00 * m00 + m01 * m01, ss = m10 * m10 + m11 * m11, qq = m00 * m10 + m01 * m11;
         double det = m00 * m11 - m01 * m10;
         double big = (pp + ss) / 2 + Math.hypot((pp - ss) / 2, qq);
