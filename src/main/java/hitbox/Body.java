@@ -71,7 +71,7 @@ public final class Body {
      * The shape where it stands as numbers, for the world's pair tests (no shape made each
      * frame for a body that moves); valid while {@link #placementSet}.
      */
-    private final Placement placement = new Placement();
+    private final Placement placement;
     /** Is {@link #placement} this pose's (set when first asked after a change)? */
     private boolean placementSet;
     /**
@@ -108,6 +108,7 @@ public final class Body {
         this.homePivotX = homePivotX;
         this.homePivotY = homePivotY;
         this.grid = grid;
+        this.placement = new Placement(home);
     }
 
     // ---------------------------------------------------------------- its state, changed by the world

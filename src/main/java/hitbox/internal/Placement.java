@@ -30,8 +30,24 @@ public final class Placement {
     float[] xy;
     /** The convex polygon's winding (never 0 when the kind is a polygon). */
     int winding;
-    /** The buffer a turned or moved polygon is placed into: made once, at the home's size. */
-    private float[] own;
+    /**
+     * The buffer a turned or moved polygon is placed into: made with the placement, at the
+     * home's size (a rectangle's four corners), so placing never allocates.
+     */
+    private final float[] own;
+
+    /**
+     * Storage for the body whose home shape this is.
+     *
+     * @param home the shape in the body's own frame
+     */
+    public Placement(Shape home) {
+        own = switch (ShapeKind.of(home)) {
+            case RECT -> new float[8];
+            case POLYGON -> new float[HiddenParts.raw((Polygon) home).length];
+            case ELLIPSE, CAPSULE, CIRCLE, SEGMENT -> null;
+        };
+    }
 
     /** @return the kind the numbers are, or null if the body's shape must answer */
     public ShapeKind kind() {
@@ -219,7 +235,7 @@ public final class Placement {
 
     private float[] buffer(int length) {
         if (own == null || own.length != length) {
-            own = new float[length];
+            throw new IllegalArgumentException("this placement is for a home shape of another kind or size");
         }
         return own;
     }

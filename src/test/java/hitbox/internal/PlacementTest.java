@@ -78,9 +78,9 @@ class PlacementTest {
     void placedNumbers_areThoseOfThePlacedShape_keptForEveryPromisedCase() {
         Random r = new Random(29);
         Map<ShapeKind, Integer> kept = new EnumMap<>(ShapeKind.class);
-        Placement placed = new Placement(), fromShape = new Placement();
         for (int i = 0; i < 60_000; i++) {
             Shape home = home(r, i % 10);
+            Placement placed = new Placement(home), fromShape = new Placement(home);
             double px = r.nextBoolean() ? 0 : r.nextInt(50) - 25, py = r.nextBoolean() ? 0 : r.nextInt(50) - 25;
             double tx = translation(r), ty = translation(r);
             float angle = angle(r);
@@ -154,12 +154,12 @@ class PlacementTest {
     @Test
     void thePlacedTable_answersAsShapesDo_onEveryPairOfKinds() {
         Random r = new Random(2029);
-        Placement p = new Placement(), q = new Placement();
         int[][] hits = new int[7][7];
         int[][] misses = new int[7][7];
         for (int i = 0; i < 200_000; i++) {
             int ka = r.nextInt(7), kb = r.nextInt(7);
             Shape a = near(r, ka), b = near(r, kb);
+            Placement p = new Placement(a), q = new Placement(b);
             assertTrue(p.of(a) && q.of(b), a + " and " + b + " as numbers");
             boolean expected = a.overlaps(b);
             assertEquals(expected, PlacedOverlaps.test(p, q), a + " with " + b);
