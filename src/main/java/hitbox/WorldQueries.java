@@ -1,6 +1,8 @@
 package hitbox;
 
 import hitbox.internal.Extents;
+import hitbox.internal.PlacedOverlaps;
+import hitbox.internal.Placement;
 
 import java.util.Comparator;
 import java.util.List;
@@ -21,6 +23,8 @@ final class WorldQueries {
 
     private final World world;
     private final GridCollider grids;
+    /** A shape query's shape as numbers (see {@link #meets}); read only during the query. */
+    private final Placement probe = new Placement();
 
     WorldQueries(World world, GridCollider grids) {
         this.world = world;
@@ -41,29 +45,54 @@ final class WorldQueries {
 
     /** The bodies the filter keeps (not {@code except}) whose shape overlaps a shape, added to out in the order added. */
     void shape(Shape shape, Body except, Predicate<Body> filter, List<Body> out) {
+        Placement q = probe.of(shape) ? probe : null;
         world.gather(Extents.minX(shape), Extents.minY(shape), Extents.maxX(shape), Extents.maxY(shape));
         for (int i = 0, n = world.candidateCount(); i < n; i++) {
             Body b = world.candidate(i);
             if (b == except) {
                 continue;
             }
-            boolean meets = b.grid != null ? grids.meets(b.grid, shape) : b.shape().overlaps(shape);
+            boolean meets = b.grid != null ? grids.meets(b.grid, shape) : meets(b, q, shape);
             if (meets && world.keep(filter, b)) {
                 out.add(b);
             }
         }
     }
 
+    /**
+     * Does a body (not a grid's) overlap a shape, given as numbers too where it can be (q, or
+     * null)? On the numbers where both have them, so a body that moved makes no shape for it,
+     * as in the world's pair tests.
+     */
+    private static boolean meets(Body b, Placement q, Shape shape) {
+        Placement p = q == null ? null : b.placement();
+        return p != null ? PlacedOverlaps.test(p, q) : b.shape().overlaps(shape);
+    }
+
     /** The bodies the filter keeps that a body overlaps now, added to out in the order added. */
     void overlapping(Body body, Predicate<Body> filter, List<Body> out) {
-        if (body.grid == null) {
-            shape(body.shape(), body, filter, out);
+        Placement q = body.grid == null ? body.placement() : null;
+        if (q == null && body.grid == null) {
+            shape(body.shape(), body, filter, out);  // a body its shape alone can answer for
             return;
         }
+        // The body's tight box (at or a hair outside its shape) gathers; the exact tests decide.
         world.gather(body.boxX, body.boxY, (double) body.boxX + body.boxW, (double) body.boxY + body.boxH);
         for (int i = 0, n = world.candidateCount(); i < n; i++) {
             Body b = world.candidate(i);
-            if (b != body && b.grid == null && grids.meets(body.grid, b.shape()) && world.keep(filter, b)) {
+            if (b == body) {
+                continue;
+            }
+            boolean meets;
+            if (body.grid != null) {
+                meets = b.grid == null && grids.meets(body.grid, b.shape());
+            } else if (b.grid != null) {
+                meets = grids.meets(b.grid, body.shape());
+            } else {
+                Placement p = b.placement();
+                meets = p != null ? PlacedOverlaps.test(p, q) : b.shape().overlaps(body.shape());
+            }
+            if (meets && world.keep(filter, b)) {
                 out.add(b);
             }
         }

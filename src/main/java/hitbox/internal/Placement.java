@@ -37,6 +37,14 @@ public final class Placement {
     private final float[] own;
 
     /**
+     * Storage for shapes taken as they are ({@link #of}) and never placed: a query's own
+     * shape, say.
+     */
+    public Placement() {
+        own = null;
+    }
+
+    /**
      * Storage for the body whose home shape this is.
      *
      * @param home the shape in the body's own frame
