@@ -142,8 +142,8 @@ public final class Body {
      * Where the body stands as numbers ({@link Placement}), made when first asked after a
      * change, into storage the body keeps: from the shape if it was made, else from the pose.
      *
-     * @return the numbers, or null where only {@link #shape()} can answer (a capsule, a
-     *         concave polygon, a quarter turn: see {@link Placement})
+     * @return the numbers, or null where only {@link #shape()} can answer (a concave
+     *         polygon, a flat ellipse, a quarter turn: see {@link Placement})
      */
     Placement placement() {
         if (!placementSet) {

@@ -9,15 +9,10 @@ package hitbox.internal;
  * handed over swapped. {@code PlacedOverlapsTest} holds this table to {@link Overlaps} on
  * every pair of kinds, in both orders.
  *
- * <p>A placement is never a capsule (see {@link Placement}): the switches name it, so a new
- * kind still does not compile until it has a case here.
+ * <p>Each switch names every kind, so a new kind does not compile until it has a case here.
  */
 public final class PlacedOverlaps {
     private PlacedOverlaps() {
-    }
-
-    private static IllegalArgumentException unplaced(ShapeKind k) {
-        return new IllegalArgumentException("no " + k + " is kept as numbers: its shape must answer");
     }
 
     /**
@@ -32,7 +27,7 @@ public final class PlacedOverlaps {
             case RECT -> rectWith(p, q);
             case SEGMENT -> segmentWith(p, q);
             case POLYGON -> polygonWith(p, q);
-            case CAPSULE -> throw unplaced(p.kind);
+            case CAPSULE -> capsuleWith(p, q);
         };
     }
 
@@ -51,43 +46,58 @@ public final class PlacedOverlaps {
         }
         if (!aligned(e)) {
             return switch (o.kind) {
+                case ELLIPSE -> TurnedEllipses.realPair(x, y, rx, ry, angle, o.a, o.b, o.c, o.d, o.e);  // answered above
+                case CAPSULE -> TurnedEllipses.capsule(x, y, rx, ry, angle, o.a, o.b, o.c, o.d, o.e);
                 case CIRCLE -> TurnedEllipses.circle(x, y, rx, ry, angle, o.a, o.b, o.c);
                 case RECT -> TurnedEllipses.rect(x, y, rx, ry, angle, o.a, o.b, o.c, o.d);
                 case SEGMENT -> TurnedEllipses.segment(x, y, rx, ry, angle, o.a, o.b, o.c, o.d);
                 case POLYGON -> TurnedEllipses.polygon(x, y, rx, ry, angle, o.xy);
-                case ELLIPSE, CAPSULE -> throw unplaced(o.kind);
             };
         }
         return switch (o.kind) {
+            case ELLIPSE -> RawTests.ellipseEllipse(x, y, rx, ry, o.a, o.b, o.c, o.d);  // answered above
+            case CAPSULE -> RawTests.ellipseCapsule(x, y, rx, ry, o.a, o.b, o.c, o.d, o.e);
             case CIRCLE -> RawTests.ellipseCircle(x, y, rx, ry, o.a, o.b, o.c);
             case RECT -> RawTests.ellipseRect(x, y, rx, ry, o.a, o.b, o.c, o.d);
             case SEGMENT -> RawTests.ellipseLine(x, y, rx, ry, o.a, o.b, o.c, o.d);
             case POLYGON -> RawTests.polygonEllipse(o.xy, x, y, rx, ry);
-            case ELLIPSE, CAPSULE -> throw unplaced(o.kind);
         };
     }
 
-    /** A circle (x a, y b, radius c) with anything: an ellipse takes the pair swapped. */
+    /** A capsule (ends (a, b) and (c, d), radius e) with anything: an ellipse takes the pair swapped. */
+    private static boolean capsuleWith(Placement k, Placement o) {
+        float x1 = k.a, y1 = k.b, x2 = k.c, y2 = k.d, r = k.e;
+        return switch (o.kind) {
+            case ELLIPSE -> ellipseWith(o, k);
+            case CAPSULE -> RawTests.capsuleCapsule(x1, y1, x2, y2, r, o.a, o.b, o.c, o.d, o.e);
+            case CIRCLE -> RawTests.capsuleCircle(x1, y1, x2, y2, r, o.a, o.b, o.c);
+            case RECT -> RawTests.capsuleRect(x1, y1, x2, y2, r, o.a, o.b, o.c, o.d);
+            case SEGMENT -> RawTests.capsuleLine(x1, y1, x2, y2, r, o.a, o.b, o.c, o.d);
+            case POLYGON -> RawTests.polygonCapsule(o.xy, x1, y1, x2, y2, r);
+        };
+    }
+
+    /** A circle (x a, y b, radius c) with anything: an ellipse or a capsule takes the pair swapped. */
     private static boolean circleWith(Placement c, Placement o) {
         return switch (o.kind) {
             case ELLIPSE -> ellipseWith(o, c);
+            case CAPSULE -> capsuleWith(o, c);
             case CIRCLE -> RawTests.circleCircle(c.a, c.b, c.c, o.a, o.b, o.c);
             case RECT -> RawTests.circleRect(c.a, c.b, c.c, o.a, o.b, o.c, o.d);
             case SEGMENT -> RawTests.lineCircle(o.a, o.b, o.c, o.d, c.a, c.b, c.c);
             case POLYGON -> RawTests.polygonCircle(o.xy, c.a, c.b, c.c);
-            case CAPSULE -> throw unplaced(o.kind);
         };
     }
 
-    /** A rectangle (x a, y b, w c, h d) with anything: an ellipse or a circle takes the pair swapped. */
+    /** A rectangle (x a, y b, w c, h d) with anything: an ellipse, a capsule or a circle takes the pair swapped. */
     private static boolean rectWith(Placement r, Placement o) {
         return switch (o.kind) {
             case ELLIPSE -> ellipseWith(o, r);
+            case CAPSULE -> capsuleWith(o, r);
             case CIRCLE -> circleWith(o, r);
             case RECT -> RawTests.rectRect(r.a, r.b, r.c, r.d, o.a, o.b, o.c, o.d);
             case SEGMENT -> RawTests.lineRect(o.a, o.b, o.c, o.d, r.a, r.b, r.c, r.d);
             case POLYGON -> Overlaps.rectPolygon(r.a, r.b, r.c, r.d, o.xy, o.winding);
-            case CAPSULE -> throw unplaced(o.kind);
         };
     }
 
@@ -95,11 +105,11 @@ public final class PlacedOverlaps {
     private static boolean segmentWith(Placement s, Placement o) {
         return switch (o.kind) {
             case ELLIPSE -> ellipseWith(o, s);
+            case CAPSULE -> capsuleWith(o, s);
             case CIRCLE -> circleWith(o, s);
             case RECT -> rectWith(o, s);
             case SEGMENT -> RawTests.lineLine(s.a, s.b, s.c, s.d, o.a, o.b, o.c, o.d);
             case POLYGON -> RawTests.polygonLine(o.xy, s.a, s.b, s.c, s.d);
-            case CAPSULE -> throw unplaced(o.kind);
         };
     }
 
@@ -107,11 +117,11 @@ public final class PlacedOverlaps {
     private static boolean polygonWith(Placement p, Placement o) {
         return switch (o.kind) {
             case ELLIPSE -> ellipseWith(o, p);
+            case CAPSULE -> capsuleWith(o, p);
             case CIRCLE -> circleWith(o, p);
             case RECT -> rectWith(o, p);
             case SEGMENT -> segmentWith(o, p);
             case POLYGON -> Polygons.convexOverlap(p.xy, p.winding, o.xy, o.winding);
-            case CAPSULE -> throw unplaced(o.kind);
         };
     }
 }

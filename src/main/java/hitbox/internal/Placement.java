@@ -9,9 +9,9 @@ import hitbox.*;
  * {@link Poses#place} would make for the same pose: the same double arithmetic, rounded to
  * float once. {@link PlacedOverlaps} answers a pair of them.
  *
- * <p>Only the common cases are kept as numbers: a circle, a rectangle, a segment, an ellipse
- * with both radii above 0, and a convex polygon (a turned rectangle is one), at angle 0 or at
- * an angle whose cosine and sine are both non-zero. Everything else (a capsule, a concave
+ * <p>Only the common cases are kept as numbers: a circle, a rectangle, a segment, a capsule,
+ * an ellipse with both radii above 0, and a convex polygon (a turned rectangle is one), at
+ * angle 0 or at an angle whose cosine and sine are both non-zero. Everything else (a concave
  * polygon, a quarter or half turn, a flat shape turned, a coordinate beyond the float range, an
  * outline that rounding bent) is left to the shape itself: {@link #place} answers false, and
  * the caller makes the shape, which also throws where the pose has no float shape.
@@ -22,8 +22,8 @@ public final class Placement {
     /** The kind the numbers are, or null when only the shape can answer. */
     ShapeKind kind;
     /**
-     * Circle: x, y, r. Rectangle: x, y, w, h. Segment: x1, y1, x2, y2. Ellipse: x, y, rx, ry,
-     * angle.
+     * Circle: x, y, r. Rectangle: x, y, w, h. Segment: x1, y1, x2, y2. Capsule: x1, y1, x2,
+     * y2, r. Ellipse: x, y, rx, ry, angle.
      */
     float a, b, c, d, e;
     /** A convex polygon's vertices: the body's own buffer, or a placed shape's own array. */
@@ -98,7 +98,8 @@ public final class Placement {
                 }
             }
             case CAPSULE -> {
-                // left to the shape
+                Capsule k = (Capsule) s;
+                set(ShapeKind.CAPSULE, k.x1(), k.y1(), k.x2(), k.y2(), k.r());
             }
         }
         return kind != null;
@@ -171,7 +172,11 @@ public final class Placement {
                 return convex(out);
             }
             case CAPSULE -> {
-                return false;
+                // Transforms.capsule's similarity: the ends turned, the radius scaled (0 stays 0)
+                Capsule k = (Capsule) home;
+                set(ShapeKind.CAPSULE, (float) (cos * k.x1() + -sin * k.y1() + m02), (float) (sin * k.x1() + cos * k.y1() + m12),
+                        (float) (cos * k.x2() + -sin * k.y2() + m02), (float) (sin * k.x2() + cos * k.y2() + m12),
+                        k.r() == 0 ? 0 : (float) (k.r() * Math.hypot(cos, sin)));
             }
         }
         return finite();
@@ -217,7 +222,8 @@ public final class Placement {
                 return convex(out);
             }
             case CAPSULE -> {
-                return false;
+                Capsule k = (Capsule) home;
+                set(ShapeKind.CAPSULE, (float) (k.x1() + tx), (float) (k.y1() + ty), (float) (k.x2() + tx), (float) (k.y2() + ty), k.r());
             }
         }
         return finite();

@@ -119,12 +119,7 @@ public final class TurnedEllipses {
             }
             case CAPSULE -> {
                 Capsule k = (Capsule) other;
-                Frame fr = new Frame(e);
-                if (segmentIn(fr.x(), fr.y(), fr.c(), fr.s(), a, b, k.x1(), k.y1(), k.x2(), k.y2(), k.r() > 0)) {
-                    yield true;
-                }
-                yield k.r() > 0 && Ellipses.segmentDistance(a, b, fr.u(k.x1(), k.y1()), fr.v(k.x1(), k.y1()),
-                        fr.u(k.x2(), k.y2()), fr.v(k.x2(), k.y2())) < k.r();
+                yield capsule(ex, ey, a, b, angle, k.x1(), k.y1(), k.x2(), k.y2(), k.r());
             }
             case CIRCLE -> {
                 Circle c = (Circle) other;
@@ -145,6 +140,17 @@ public final class TurnedEllipses {
     // The turned real ellipse (x, y, rx, ry, angle: both radii above 0, not aligned) against
     // one kind each, on plain numbers: turned's cases, and a world's pair tests on a body's
     // placed numbers (Placement), which make no shape.
+
+    /** The turned real ellipse against the capsule round (x1, y1)-(x2, y2) of radius r. */
+    public static boolean capsule(float x, float y, float rx, float ry, float angle,
+                                  float x1, float y1, float x2, float y2, float r) {
+        double c = StrictMath.cos(angle), s = StrictMath.sin(angle);
+        if (segmentIn(x, y, c, s, rx, ry, x1, y1, x2, y2, r > 0)) {
+            return true;
+        }
+        return r > 0 && Ellipses.segmentDistance(rx, ry, u(x, y, c, s, x1, y1), v(x, y, c, s, x1, y1),
+                u(x, y, c, s, x2, y2), v(x, y, c, s, x2, y2)) < r;
+    }
 
     /** The turned real ellipse against the circle (cx, cy, r). */
     public static boolean circle(float x, float y, float rx, float ry, float angle, float cx, float cy, float r) {
