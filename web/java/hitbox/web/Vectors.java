@@ -19,6 +19,7 @@ import hitbox.Shape;
 import hitbox.Sweep;
 import hitbox.World;
 import hitbox.internal.Extents;
+import hitbox.internal.Fdlibm;
 import hitbox.internal.RawTests;
 import java.util.List;
 

@@ -59,6 +59,9 @@ package hitbox.internal;
  *       {@code Distances.PROJECTION_ROUNDING} (1e-12, an edge's reach) and
  *       {@code ConvexPolygonSweep.PROJECTION_ROUNDING} (2^-48, a corner's projection);</li>
  *   <li>drawing: {@code Draw.SHORTEST_ARROW} (1e-3 pixels, an arrow too short for a head);</li>
+ *   <li>fdlibm's own constants, which are not tolerances but look like them:
+ *       {@code Fdlibm.TWON24} (2^-24, a scale of its 24-bit pieces) and {@code Fdlibm.TINY}
+ *       (1e-300, added to an inexact answer to raise "inexact", never changing it);</li>
  *   <li>the public ones above; and three proven error bounds of floating-point sums,
  *       {@code Lines.ORIENT_ERROR}, {@code Ellipses.SUM_ERROR} and
  *       {@code Containment.SUM_ROUNDING} (multiples of 2^-53 with their derivation beside

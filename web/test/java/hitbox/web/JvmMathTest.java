@@ -2,6 +2,7 @@ package hitbox.web;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import hitbox.internal.Fdlibm;
 import java.util.Random;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;

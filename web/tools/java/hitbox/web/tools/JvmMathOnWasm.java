@@ -54,11 +54,11 @@ public final class JvmMathOnWasm implements ClassHolderTransformer {
         STATIC.put(math("toRadians", D, D), jvm("toRadians", D, D));
         STATIC.put(math("scalb", D, I, D), jvm("scalb", D, I, D));
         STATIC.put(math("ulp", D, D), jvm("ulp", D, D));
-        STATIC.put(math("atan2", D, D, D), new MethodReference("hitbox.web.Fdlibm", "atan2", D, D, D));
+        STATIC.put(math("atan2", D, D, D), new MethodReference("hitbox.internal.Fdlibm", "atan2", D, D, D));
         // The library calls StrictMath.sin/cos (fdlibm on every JVM); TeaVM's would ask the
         // JavaScript engine's Math.sin/cos, which may differ from fdlibm in the last bit.
-        STATIC.put(new MethodReference("java.lang.StrictMath", "sin", D, D), new MethodReference("hitbox.web.Fdlibm", "sin", D, D));
-        STATIC.put(new MethodReference("java.lang.StrictMath", "cos", D, D), new MethodReference("hitbox.web.Fdlibm", "cos", D, D));
+        STATIC.put(new MethodReference("java.lang.StrictMath", "sin", D, D), new MethodReference("hitbox.internal.Fdlibm", "sin", D, D));
+        STATIC.put(new MethodReference("java.lang.StrictMath", "cos", D, D), new MethodReference("hitbox.internal.Fdlibm", "cos", D, D));
         VIRTUAL.put(new MethodReference("java.util.Random", "nextInt", I, I), jvm("nextInt", RANDOM, I, I));
     }
 
@@ -77,7 +77,7 @@ public final class JvmMathOnWasm implements ClassHolderTransformer {
     public void transformClass(ClassHolder cls, ClassHolderTransformerContext context) {
         // The stand-ins call the platform's methods themselves (JvmMath.hypot calls Math.sqrt).
         boolean standIn = cls.getName().equals("hitbox.web.ExactFma") || cls.getName().equals("hitbox.web.JvmMath")
-                || cls.getName().equals("hitbox.web.Fdlibm");
+                || cls.getName().equals("hitbox.internal.Fdlibm");
         for (MethodHolder method : cls.getMethods()) {
             if (method.getProgram() == null) {
                 continue;
