@@ -612,6 +612,11 @@ public final class World {
         return table.mayMeet(i, j);
     }
 
+    /** Do two bodies overlap now (a grid's body: one of its solid cells)? The tracker's pair test, for the queries. */
+    boolean overlap(Body a, Body b) {
+        return tracker.overlap(a, b);
+    }
+
     /** The body of an id, or null. */
     Body body(int id) {
         return table.body(id);

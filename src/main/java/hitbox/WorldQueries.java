@@ -71,28 +71,12 @@ final class WorldQueries {
 
     /** The bodies the filter keeps that a body overlaps now, added to out in the order added. */
     void overlapping(Body body, Predicate<Body> filter, List<Body> out) {
-        Placement q = body.grid == null ? body.placement() : null;
-        if (q == null && body.grid == null) {
-            shape(body.shape(), body, filter, out);  // a body its shape alone can answer for
-            return;
-        }
-        // The body's tight box (at or a hair outside its shape) gathers; the exact tests decide.
+        // The body's tight box (at or a hair outside its shape) gathers; the pair test a step
+        // makes decides (on the bodies' numbers where they have them: no shape made).
         world.gather(body.boxX, body.boxY, (double) body.boxX + body.boxW, (double) body.boxY + body.boxH);
         for (int i = 0, n = world.candidateCount(); i < n; i++) {
             Body b = world.candidate(i);
-            if (b == body) {
-                continue;
-            }
-            boolean meets;
-            if (body.grid != null) {
-                meets = b.grid == null && grids.meets(body.grid, b.shape());
-            } else if (b.grid != null) {
-                meets = grids.meets(b.grid, body.shape());
-            } else {
-                Placement p = b.placement();
-                meets = p != null ? PlacedOverlaps.test(p, q) : b.shape().overlaps(body.shape());
-            }
-            if (meets && world.keep(filter, b)) {
+            if (b != body && world.overlap(body, b) && world.keep(filter, b)) {
                 out.add(b);
             }
         }
