@@ -6,7 +6,7 @@ package hitbox.internal;
  * {@link TurnedEllipses}' plain-number cases) with the numbers a body keeps, so that a world's
  * pair test makes no shape. The pairs go by {@link ShapeKind}'s order, as in
  * {@link Overlaps}: each unordered pair is answered by its earlier kind's method, the other
- * handed over swapped. {@code PlacedOverlapsTest} holds this table to {@link Overlaps} on
+ * handed over swapped. {@code PlacementTest} holds this table to {@link Overlaps} on
  * every pair of kinds, in both orders.
  *
  * <p>Each switch names every kind, so a new kind does not compile until it has a case here.
@@ -38,15 +38,9 @@ public final class PlacedOverlaps {
     /** A real ellipse (x a, y b, radii c and d, angle e) with anything: the first kind. */
     private static boolean ellipseWith(Placement e, Placement o) {
         float x = e.a, y = e.b, rx = e.c, ry = e.d, angle = e.e;
-        if (o.kind == ShapeKind.ELLIPSE) {
-            if (aligned(e) && aligned(o)) {
-                return RawTests.ellipseEllipse(x, y, rx, ry, o.a, o.b, o.c, o.d);
-            }
-            return TurnedEllipses.realPair(x, y, rx, ry, angle, o.a, o.b, o.c, o.d, o.e);
-        }
         if (!aligned(e)) {
             return switch (o.kind) {
-                case ELLIPSE -> TurnedEllipses.realPair(x, y, rx, ry, angle, o.a, o.b, o.c, o.d, o.e);  // answered above
+                case ELLIPSE -> TurnedEllipses.realPair(x, y, rx, ry, angle, o.a, o.b, o.c, o.d, o.e);
                 case CAPSULE -> TurnedEllipses.capsule(x, y, rx, ry, angle, o.a, o.b, o.c, o.d, o.e);
                 case CIRCLE -> TurnedEllipses.circle(x, y, rx, ry, angle, o.a, o.b, o.c);
                 case RECT -> TurnedEllipses.rect(x, y, rx, ry, angle, o.a, o.b, o.c, o.d);
@@ -55,7 +49,8 @@ public final class PlacedOverlaps {
             };
         }
         return switch (o.kind) {
-            case ELLIPSE -> RawTests.ellipseEllipse(x, y, rx, ry, o.a, o.b, o.c, o.d);  // answered above
+            case ELLIPSE -> aligned(o) ? RawTests.ellipseEllipse(x, y, rx, ry, o.a, o.b, o.c, o.d)
+                    : TurnedEllipses.realPair(x, y, rx, ry, angle, o.a, o.b, o.c, o.d, o.e);
             case CAPSULE -> RawTests.ellipseCapsule(x, y, rx, ry, o.a, o.b, o.c, o.d, o.e);
             case CIRCLE -> RawTests.ellipseCircle(x, y, rx, ry, o.a, o.b, o.c);
             case RECT -> RawTests.ellipseRect(x, y, rx, ry, o.a, o.b, o.c, o.d);

@@ -109,7 +109,7 @@ public final class TurnedEllipses {
             case ELLIPSE -> {
                 Ellipse f = (Ellipse) other;
                 if (f.rx() > 0 && f.ry() > 0) {
-                    yield aligned(f) || before(f, e) ? ellipses(f, e) : ellipses(e, f);
+                    yield realPair(ex, ey, a, b, angle, f.x(), f.y(), f.rx(), f.ry(), f.angle());
                 }
                 if (!aligned(f) && (f.rx() > 0 || f.ry() > 0)) {
                     yield turned(e, flatSegment(f)); // a flat turned ellipse: its open segment
@@ -264,10 +264,6 @@ public final class TurnedEllipses {
     }
 
     /** A fixed order on ellipses, the angle included, so a pair is always worked from the same side. */
-    private static boolean before(Ellipse p, Ellipse q) {
-        return before(p.x(), p.y(), p.rx(), p.ry(), p.angle(), q.x(), q.y(), q.rx(), q.ry(), q.angle());
-    }
-
     private static boolean before(float px, float py, float prx, float pry, float pa,
                                   float qx, float qy, float qrx, float qry, float qa) {
         if (px != qx || py != qy || prx != qrx || pry != qry) {
@@ -278,8 +274,8 @@ public final class TurnedEllipses {
 
     /**
      * Two real ellipses (both radii above 0), at least one turned, on plain numbers: worked
-     * from the side {@link #turned} works them from (an aligned one, or the earlier in a fixed
-     * order), so the answer does not depend on the order they come in.
+     * from an aligned one's side, or the earlier one's in a fixed order, so the answer does not
+     * depend on the order they come in ({@link #turned}'s pair of ellipses, and a world's).
      */
     public static boolean realPair(float px, float py, float prx, float pry, float pa,
                                    float qx, float qy, float qrx, float qry, float qa) {
@@ -296,10 +292,6 @@ public final class TurnedEllipses {
      * matrix M M^T (M = scale x turn x radii); then q's distance from the circle's centre is
      * compared with that radius, as for two aligned ellipses.
      */
-    public static boolean ellipses(Ellipse p, Ellipse q) {
-        return ellipses(p.x(), p.y(), p.rx(), p.ry(), p.angle(), q.x(), q.y(), q.rx(), q.ry(), q.angle());
-    }
-
     private static boolean ellipses(float px, float py, float prx, float pry, float pa,
                                     float qx, float qy, float qrx, float qry, float qa) {
         int sure = Ellipses.discs((double) qx - px, (double) qy - py, prx, pry, qrx, qry);
