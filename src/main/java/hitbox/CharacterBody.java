@@ -129,40 +129,39 @@ public final class CharacterBody {
         if (metWall && wasGround && !rising && (upX != 0 || upY != 0)) {
             cur = step(mv, from, cur, dx, dy, filter, st);
         }
-        Hit below = groundBelow(mv, from, cur, filter, st, probeLength(cur));
-        if (below == null && snap > 0 && wasGround && !rising) {
+        boolean below = groundBelow(mv, from, cur, filter, st, probeLength(cur));
+        if (!below && snap > 0 && wasGround && !rising) {
             float sx = (float) (-upX * snap), sy = (float) (-upY * snap);
-            if (mv.probe(body, cur, sx, sy, filter, from, st) && isGround(mv.probeHit())) {
+            if (mv.probe(body, cur, sx, sy, filter, from, st) && isGround(mv)) {
                 cur = mv.probeStop(cur, sx, sy);
                 below = groundBelow(mv, from, cur, filter, st, probeLength(cur));
             }
         }
-        Body standsOn = below != null ? mv.probeBody() : null;  // the last probe found it
+        // The last probe found the ground, if any.
+        Body standsOn = below ? mv.probeBody() : null;
+        float groundX = below ? -mv.probeNx() : 0, groundY = below ? -mv.probeNy() : 0;
         Collisions out = mv.end(body, start, cur, finished);
         this.filter = filter;
-        onGround = below != null;
+        onGround = below;
         ground = standsOn;
         if (!onGround) {
             groundNormal = null;
-        } else if (groundNormal == null || Float.compare(groundNormal.x(), -below.nx()) != 0
-                || Float.compare(groundNormal.y(), -below.ny()) != 0) {
-            groundNormal = new Vec(-below.nx(), -below.ny());  // kept while the slope stays the same: a Vec is a value
+        } else if (groundNormal == null || Float.compare(groundNormal.x(), groundX) != 0
+                || Float.compare(groundNormal.y(), groundY) != 0) {
+            groundNormal = new Vec(groundX, groundY);  // kept while the slope stays the same: a Vec is a value
         }
         onWall = metWall;
         onCeiling = metCeiling;
         return out;
     }
 
-    /** The ground under a shape within a probe's length (a hit whose surface is ground), or null. */
-    private Hit groundBelow(Mover mv, Shape from, Shape cur, CollisionFilter filter, int st, double length) {
+    /** Is there ground under a shape within a probe's length (a surface that is ground)? Then the last probe met it. */
+    private boolean groundBelow(Mover mv, Shape from, Shape cur, CollisionFilter filter, int st, double length) {
         if (upX == 0 && upY == 0) {
-            return null;
+            return false;
         }
         float px = (float) (-upX * length), py = (float) (-upY * length);
-        if (mv.probe(body, cur, px, py, filter, from, st) && isGround(mv.probeHit())) {
-            return mv.probeHit();
-        }
-        return null;
+        return mv.probe(body, cur, px, py, filter, from, st) && isGround(mv);
     }
 
     /** Four skins: what a resting character may stand off a slanted ground, and then some. */
@@ -201,13 +200,13 @@ public final class CharacterBody {
             return cur;
         }
         float downX = (float) (-upX * (rose + probeLength(cur))), downY = (float) (-upY * (rose + probeLength(cur)));
-        if (!mv.probe(body, on, downX, downY, filter, from, st) || !isGround(mv.probeHit())) {
+        if (!mv.probe(body, on, downX, downY, filter, from, st) || !isGround(mv)) {
             return cur;
         }
-        Hit floor = mv.probeHit();
+        float floorX = mv.probeNx(), floorY = mv.probeNy();
         Shape landed = mv.probeStop(on, downX, downY);
         double gained = rise(cur, landed);
-        double cos = -(floor.nx() * upX + floor.ny() * upY) / Math.hypot(floor.nx(), floor.ny());
+        double cos = -(floorX * upX + floorY * upY) / Math.hypot(floorX, floorY);
         double tan = Math.sqrt(Math.max(0, 1 - cos * cos)) / cos;
         boolean stair = gained <= stepHeight + skin;
         boolean slope = gained <= went * tan + 2 * skin;
@@ -223,9 +222,9 @@ public final class CharacterBody {
         return (Poses.refX(to) - Poses.refX(from)) * upX + (Poses.refY(to) - Poses.refY(from)) * upY;
     }
 
-    /** Is a hit's surface ground: facing up within the tilt limit? */
-    private boolean isGround(Hit h) {
-        return -(h.nx() * upX + h.ny() * upY) >= cosMaxSlope - SLOPE_TIE && (upX != 0 || upY != 0);
+    /** Is the surface the last probe met ground: facing up within the tilt limit? */
+    private boolean isGround(Mover mv) {
+        return -(mv.probeNx() * upX + mv.probeNy() * upY) >= cosMaxSlope - SLOPE_TIE && (upX != 0 || upY != 0);
     }
 
     /** Is a hit's surface a ceiling: facing down within the tilt limit? */

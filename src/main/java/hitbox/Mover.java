@@ -58,7 +58,13 @@ final class Mover {
     private Shape[] obShape = new Shape[16];
     private Body[] obBody = new Body[16];
     private int[] obCell = new int[16];
-    private Hit[] obHit = new Hit[16];
+    // Each obstacle's hit in this leg, as numbers (no Hit made per sweep): the side met, null
+    // for none; its time and normal.
+    private Side[] obSide = new Side[16];
+    private float[] obT = new float[16];
+    private float[] obNx = new float[16];
+    private float[] obNy = new float[16];
+    private final float[] swept = new float[3];
     private int obCount;
     private final ArrayList<Rect> rects = new ArrayList<>();
 
@@ -95,9 +101,8 @@ final class Mover {
     // The latest time of the frame at which the walk under way met something.
     private double metTime;
 
-    // A single sweep's answer (probe): the obstacle met, or -1.
+    // A single sweep's answer (probe): the obstacle met (its hit in obT, obNx, obNy), or -1.
     private int probeIndex;
-    private Hit probeHit;
 
     Mover(World world) {
         this.world = world;
@@ -174,8 +179,7 @@ final class Mover {
                 break;
             }
             int best = nearest(m, cur, fvx, fvy, filter, from, st, true);
-            Hit bestHit = best >= 0 ? obHit[best] : null;
-            crossings(m, start, cur, fvx, fvy, best >= 0 ? bestHit.t() : 1, time);
+            crossings(m, start, cur, fvx, fvy, best >= 0 ? obT[best] : 1, time);
             if (best < 0) {
                 cur = clearAlong(cur, fvx, fvy, 1, cur.translated(fvx, fvy));
                 vx = 0;
@@ -185,11 +189,11 @@ final class Mover {
             Body o = obBody[best];
             Reaction reaction = seenReaction[o.id];
             // The normal in double, of length 1 there too (a float normal is only near it).
-            double len = Math.hypot(bestHit.nx(), bestHit.ny());
-            double nx = bestHit.nx() / len, ny = bestHit.ny() / len;
+            double len = Math.hypot(obNx[best], obNy[best]);
+            double nx = obNx[best] / len, ny = obNy[best] / len;
             // The collision is where and when they met; a slide or a bounce off a slanted
             // surface goes on from a skin short of it.
-            float t = bestHit.t();
+            float t = obT[best];
             Shape meet = clearAlong(cur, fvx, fvy, t, t == 0 ? cur : cur.translated(t * fvx, t * fvy));
             if (o.oneWay != Side.NONE) {
                 seenBlocked[o.id] = true;
@@ -197,7 +201,7 @@ final class Mover {
             // Times never run back, though a stop a skin short of a hit starts the next leg a
             // little before the hit's own time.
             report(m, start, meet, o, obCell[best], reaction,
-                    new Hit(timeMet(time + t * (1 - time)), bestHit.nx(), bestHit.ny(), bestHit.side()), meet != cur);
+                    new Hit(timeMet(time + t * (1 - time)), obNx[best], obNy[best], obSide[best]), meet != cur);
             double tStop = t;
             Shape at = meet;
             if (reaction != Reaction.TOUCH && slanted(nx, ny)) {
@@ -391,23 +395,28 @@ final class Mover {
     private int nearest(Body m, Shape cur, float fvx, float fvy, CollisionFilter filter, Shape start, int st, boolean all) {
         obstacles(m, cur, fvx, fvy, filter, start, st);
         int best = -1;
-        Hit bestHit = null;
         for (int i = 0; i < obCount; i++) {
             Body o = obBody[i];
             if (!all && seenReaction[o.id] == Reaction.CROSS) {
-                obHit[i] = null;
+                obSide[i] = null;
                 continue;
             }
-            Hit h = Sweep.timeOfImpact(cur, fvx, fvy, obShape[i]);
-            if (h != null && (h.alreadyOverlapping()
-                    || seenReaction[o.id] != Reaction.CROSS && o.oneWay != Side.NONE && h.side() != o.oneWay)) {
-                h = null;  // a one-way body met from a side that does not block
+            Side side = Sweep.timeOfImpact(cur, fvx, fvy, obShape[i], swept);
+            if (side != null && (side == Side.NONE
+                    || seenReaction[o.id] != Reaction.CROSS && o.oneWay != Side.NONE && side != o.oneWay)) {
+                side = null;  // overlapping at the start, or a one-way body met from a side that does not block
             }
-            obHit[i] = h;
-            if (h != null && seenReaction[o.id] != Reaction.CROSS
-                    && (best < 0 || h.t() < bestHit.t() || h.t() == bestHit.t() && o.serial < obBody[best].serial)) {
+            obSide[i] = side;
+            if (side == null) {
+                continue;
+            }
+            float t = swept[0];
+            obT[i] = t;
+            obNx[i] = swept[1];
+            obNy[i] = swept[2];
+            if (seenReaction[o.id] != Reaction.CROSS
+                    && (best < 0 || t < obT[best] || t == obT[best] && o.serial < obBody[best].serial)) {
                 best = i;
-                bestHit = h;
             }
         }
         return best;
@@ -415,7 +424,8 @@ final class Mover {
 
     /**
      * A character's single leg that reports nothing: the first blocking obstacle met moving
-     * by (vx, vy); then {@link #probeHit()}, {@link #probeBody()} and {@link #probeStop}.
+     * by (vx, vy); then {@link #probeNx()}, {@link #probeNy()}, {@link #probeBody()} and
+     * {@link #probeStop}.
      *
      * @return true if one is met within the motion
      */
@@ -425,12 +435,17 @@ final class Mover {
             return false;
         }
         probeIndex = nearest(m, cur, vx, vy, filter, start, st, false);
-        probeHit = probeIndex >= 0 ? obHit[probeIndex] : null;
         return probeIndex >= 0;
     }
 
-    Hit probeHit() {
-        return probeHit;
+    /** The normal of the surface the last probe met (from the mover into it), x part. */
+    float probeNx() {
+        return obNx[probeIndex];
+    }
+
+    /** The normal of the surface the last probe met, y part. */
+    float probeNy() {
+        return obNy[probeIndex];
     }
 
     Body probeBody() {
@@ -442,9 +457,10 @@ final class Mover {
         if (probeIndex < 0) {
             return clearAlong(cur, vx, vy, 1, cur.translated(vx, vy));
         }
-        double len = Math.hypot(probeHit.nx(), probeHit.ny());
-        double nx = probeHit.nx() / len, ny = probeHit.ny() / len;
-        double t = slanted(nx, ny) ? stopAt(cur, vx, vy, probeHit.t(), nx, ny) : probeHit.t();
+        float nx0 = obNx[probeIndex], ny0 = obNy[probeIndex], t0 = obT[probeIndex];
+        double len = Math.hypot(nx0, ny0);
+        double nx = nx0 / len, ny = ny0 / len;
+        double t = slanted(nx, ny) ? stopAt(cur, vx, vy, t0, nx, ny) : t0;
         return clearAlong(cur, vx, vy, t, t == 0 ? cur : cur.translated((float) (t * vx), (float) (t * vy)));
     }
 
@@ -454,9 +470,8 @@ final class Mover {
             int first = -1;
             for (int i = 0; i < obCount; i++) {
                 Body o = obBody[i];
-                Hit h = obHit[i];
-                if (h != null && seenReaction[o.id] == Reaction.CROSS && !seenCrossed[o.id] && h.t() <= tb
-                        && (first < 0 || h.t() < obHit[first].t())) {
+                if (obSide[i] != null && seenReaction[o.id] == Reaction.CROSS && !seenCrossed[o.id] && obT[i] <= tb
+                        && (first < 0 || obT[i] < obT[first])) {
                     first = i;
                 }
             }
@@ -465,9 +480,9 @@ final class Mover {
             }
             Body o = obBody[first];
             seenCrossed[o.id] = true;
-            Hit h = obHit[first];
-            found.add(new Collision(m, o, Reaction.CROSS, new Hit(timeMet(time + h.t() * (1 - time)), h.nx(), h.ny(), h.side()),
-                    poseX(m, start, cur) + h.t() * fvx, poseY(m, start, cur) + h.t() * fvy, obCell[first]));
+            float t = obT[first];
+            found.add(new Collision(m, o, Reaction.CROSS, new Hit(timeMet(time + t * (1 - time)), obNx[first], obNy[first], obSide[first]),
+                    poseX(m, start, cur) + t * fvx, poseY(m, start, cur) + t * fvy, obCell[first]));
         }
     }
 
@@ -574,7 +589,10 @@ final class Mover {
             obShape = java.util.Arrays.copyOf(obShape, n);
             obBody = java.util.Arrays.copyOf(obBody, n);
             obCell = java.util.Arrays.copyOf(obCell, n);
-            obHit = java.util.Arrays.copyOf(obHit, n);
+            obSide = java.util.Arrays.copyOf(obSide, n);
+            obT = java.util.Arrays.copyOf(obT, n);
+            obNx = java.util.Arrays.copyOf(obNx, n);
+            obNy = java.util.Arrays.copyOf(obNy, n);
         }
         obShape[obCount] = s;
         obBody[obCount] = o;

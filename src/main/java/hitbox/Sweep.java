@@ -530,6 +530,25 @@ public final class Sweep {
         };
     }
 
+    /**
+     * {@link #timeOfImpact(Shape, float, float, Shape)} as numbers, making no {@code Hit}: for
+     * the world's mover, which asks it of every candidate of every leg and keeps one.
+     *
+     * @param out given the hit's t, nx and ny (untouched for no hit)
+     * @return the side met ({@link Side#NONE} if the shapes overlap at the start), or null
+     *         for no hit within the motion
+     */
+    static Side timeOfImpact(Shape mover, float vx, float vy, Shape obstacle, float[] out) {
+        boolean recording = SweptPairs.recording(true);
+        Hit h;
+        try {
+            h = timeOfImpact(mover, vx, vy, obstacle);
+        } finally {
+            SweptPairs.recording(recording);  // a bad argument's exception leaves it as it was
+        }
+        return SweptPairs.recorded(h, out);
+    }
+
     /** {@link #timeOfImpact(Shape, float, float, Shape)} for a rectangle mover, valid values. */
     private static Hit rectInto(Rect mover, float vx, float vy, Shape obstacle) {
         return switch (ShapeKind.of(obstacle)) {

@@ -83,7 +83,13 @@ public final class ConvexSweep {
             return ConvexPolygonSweep.circleTimeOfImpact((Circle) mover, vx, vy, (Polygon) obstacle);
         }
         if (convexPolygon(mover) && convexPolygon(obstacle)) {
-            Hit h = ConvexPolygonSweep.timeOfImpact((Polygon) mover, vx, vy, (Polygon) obstacle);
+            Hit h;
+            boolean recording = SweptPairs.recording(false);  // the look back reads the hit
+            try {
+                h = ConvexPolygonSweep.timeOfImpact((Polygon) mover, vx, vy, (Polygon) obstacle);
+            } finally {
+                SweptPairs.recording(recording);
+            }
             if (h == null || !(h.t() > 0) || h.alreadyOverlapping()) {
                 return h;
             }

@@ -1,6 +1,9 @@
 package hitbox.internal;
 
 import hitbox.*;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.RandomAccess;
 
 /**
  * The walk behind {@link Sweep#move}: a box goes until it first hits an obstacle, stands
@@ -27,7 +30,14 @@ public final class MoveAndSlide {
     /** {@link #move(Rect, float, float, Iterable)}, telling {@code stops} (if not null) of each stop. */
     public static Sweep.Move move(Rect mover, float vx, float vy, Iterable<Rect> obstacles, Stops stops) {
         float[] end = new float[4];
-        int sides = walk(mover, vx, vy, obstacles, stops, end);
+        List<Rect> list;
+        if (obstacles instanceof List<Rect> l && l instanceof RandomAccess) {
+            list = l;
+        } else {
+            list = new ArrayList<>();
+            obstacles.forEach(list::add);
+        }
+        int sides = walk(mover, vx, vy, list, stops, end);
         return new Sweep.Move(end[0], end[1], end[2], end[3], SideSets.of(sides));
     }
 
@@ -37,7 +47,7 @@ public final class MoveAndSlide {
      * are written into {@code end} (x, y, vx, vy), and the sides hit returned as
      * {@link SideSets} bits.
      */
-    public static int walk(Rect mover, float vx, float vy, Iterable<Rect> obstacles, Stops stops, float[] end) {
+    public static int walk(Rect mover, float vx, float vy, List<Rect> obstacles, Stops stops, float[] end) {
         final float x0 = mover.x(), y0 = mover.y(), w = mover.w(), h = mover.h();
         float x = x0, y = y0;
         double mx = vx, my = vy;  // the motion still to do this frame
@@ -47,7 +57,8 @@ public final class MoveAndSlide {
             double first = Slabs.INF;
             Rect hitRect = null;
             int index = 0, hitIndex = -1;
-            for (Rect o : obstacles) {
+            for (int i = 0, n = obstacles.size(); i < n; i++) {  // by index: no iterator made per leg
+                Rect o = obstacles.get(i);
                 if (!RawTests.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
                     double t = SweptPairs.rectRectTime(x, y, w, h, mx, my, o.x(), o.y(), o.w(), o.h());
                     if (t < first) {
@@ -106,7 +117,7 @@ public final class MoveAndSlide {
      * into {@code at}[0] and [1].
      */
     private static void safeAlong(float x, float y, float w, float h, double mx, double my, double t,
-                                  float tx, float ty, float x0, float y0, Iterable<Rect> obstacles, float[] at) {
+                                  float tx, float ty, float x0, float y0, List<Rect> obstacles, float[] at) {
         if (clear(tx, ty, w, h, x0, y0, obstacles)) {
             at[0] = tx;
             at[1] = ty;
@@ -129,8 +140,9 @@ public final class MoveAndSlide {
         at[1] = bestY;
     }
 
-    private static boolean clear(float x, float y, float w, float h, float x0, float y0, Iterable<Rect> obstacles) {
-        for (Rect o : obstacles) {
+    private static boolean clear(float x, float y, float w, float h, float x0, float y0, List<Rect> obstacles) {
+        for (int i = 0, n = obstacles.size(); i < n; i++) {
+            Rect o = obstacles.get(i);
             if (RawTests.rectRect(x, y, w, h, o.x(), o.y(), o.w(), o.h())
                     && !RawTests.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
                 return false;

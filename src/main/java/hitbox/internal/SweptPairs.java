@@ -34,6 +34,10 @@ public final class SweptPairs {
         final Slabs.Clip clip = new Slabs.Clip();
         final Search search = new Search(Slabs.INF, false);
         final Moved moved = new Moved();
+        // The recorded answer (see recording).
+        boolean recording;
+        float t, nx, ny;
+        Side side;
     }
 
     private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
@@ -428,11 +432,72 @@ public final class SweptPairs {
         boolean at(float t);
     }
 
-    /** A hit at time t with the normal (nx, ny) made unit length, and the side it points into. */
+    /**
+     * A hit at time t with the normal (nx, ny) made unit length, and the side it points into;
+     * while the thread records ({@link #recording}), put in its scratch instead, and
+     * {@link #RECORDED} handed back.
+     */
     public static Hit hit(float t, double nx, double ny) {
         double len = Math.hypot(nx, ny);
         double ux = len > 0 ? nx / len : 0, uy = len > 0 ? ny / len : 0;
+        Scratch s = SCRATCH.get();
+        if (s.recording) {
+            s.t = t;
+            s.nx = (float) ux;
+            s.ny = (float) uy;
+            s.side = Side.ofNormal(ux, uy);
+            return RECORDED;
+        }
         return new Hit(t, (float) ux, (float) uy, Side.ofNormal(ux, uy));
+    }
+
+    // ---------------------------------------------------------------- answers kept as numbers
+    // A caller that asks many sweeps for one answer (the world's mover asks every candidate
+    // of every leg, and keeps the first) takes their answers as numbers: while the thread
+    // records, a sweep's hit within the motion goes into the thread's scratch and RECORDED
+    // is handed back in place of a new Hit (null and OVERLAPPING are handed back as ever).
+    // A hit is made only as a sweep's last step; the one place that reads a sweep's Hit on
+    // the way out (ConvexSweep's look back for two polygons) asks with recording off.
+
+    /** The stand-in for a hit put in the thread's scratch: never handed to a user. */
+    private static final Hit RECORDED = new Hit(1, 0, 0, Side.NONE);
+
+    /**
+     * Starts ({@code true}) or ends the thread's recording of sweep answers as numbers.
+     *
+     * @return whether it was recording before, to put back
+     */
+    public static boolean recording(boolean on) {
+        Scratch s = SCRATCH.get();
+        boolean was = s.recording;
+        s.recording = on;
+        return was;
+    }
+
+    /**
+     * A sweep's answer as numbers: the Hit it handed back, or, for {@link #RECORDED}, the
+     * one in the thread's scratch.
+     *
+     * @param h   the sweep's answer, null for no hit
+     * @param out given t, nx and ny of the hit (untouched for no hit)
+     * @return the side met ({@link Side#NONE} if the shapes overlapped at the start), or
+     *         null for no hit
+     */
+    public static Side recorded(Hit h, float[] out) {
+        if (h == null) {
+            return null;
+        }
+        if (h == RECORDED) {
+            Scratch s = SCRATCH.get();
+            out[0] = s.t;
+            out[1] = s.nx;
+            out[2] = s.ny;
+            return s.side;
+        }
+        out[0] = h.t();
+        out[1] = h.nx();
+        out[2] = h.ny();
+        return h.side();
     }
 
     // ---------------------------------------------------------------- the float positions, visited
