@@ -20,6 +20,9 @@ public final class Collisions extends AbstractList<Collision> implements RandomA
     /** No collision, and the move finished: the answer of every move that met nothing. */
     public static final Collisions NONE = new Collisions(new Collision[0], true);
 
+    /** The array toArray is handed to learn the type: shared, so a copy makes one array only. */
+    private static final Collision[] EMPTY = new Collision[0];
+
     private final Collision[] items;
     private final boolean finished;
 
@@ -33,7 +36,7 @@ public final class Collisions extends AbstractList<Collision> implements RandomA
         if (met.isEmpty() && finished) {
             return NONE;
         }
-        return new Collisions(met.toArray(new Collision[0]), finished);
+        return new Collisions(met.toArray(EMPTY), finished);
     }
 
     /**

@@ -66,7 +66,9 @@ final class Mover {
     private float[] obNy = new float[16];
     private final float[] swept = new float[3];
     private int obCount;
-    private final ArrayList<Rect> rects = new ArrayList<>();
+    // The rectangles' walk: the box it starts from, and its obstacles' boxes (x, y, w, h each).
+    private final float[] box = new float[4];
+    private float[] boxes = new float[64];
 
     // The planes of the move under way (normals from the mover into what it met).
     private final double[] planeX = new double[World.MAX_LEGS + 4];
@@ -119,17 +121,20 @@ final class Mover {
 
     // ---------------------------------------------------------------- a body's move
 
-    /** A body's move: the rectangles' exact walk where it applies, else the general walk. */
+    /**
+     * A body's move: the rectangles' exact walk where it applies (read from the body's
+     * numbers, no shape made), else the general walk.
+     */
     Collisions move(Body m, float dx, float dy, CollisionFilter filter) {
         int st = ++stamp;
-        Shape start = m.shape();
         found.clear();
-        if (start instanceof Rect r && !m.sensor) {
-            Rect end = rectWalk(m, r, dx, dy, filter, st);
-            if (end != null) {
-                return world.commit(m, start, end, found, true);
+        if (!m.sensor && startBox(m)) {
+            float x = box[0], y = box[1], w = box[2], h = box[3];
+            if (rectWalk(m, x, y, w, h, dx, dy, filter, st)) {
+                return world.commitBox(m, x, y, walked[0], walked[1], w, h, found);
             }
         }
+        Shape start = m.shape();
         walk(m, start, start, dx, dy, filter, st, null);
         return world.commit(m, start, walkEnd, found, walkFinished);
     }
@@ -600,7 +605,10 @@ final class Mover {
         obCount++;
     }
 
-    /** The reaction to another body, asked once a move: layers, then sensors, then the filter. */
+    /**
+     * The reaction to another body, asked once a move: layers, then sensors, then the filter.
+     * {@code start} is the shape the move starts from, null for the body as it stands.
+     */
     Reaction reaction(Body m, Body o, CollisionFilter filter, Shape start, int st) {
         if (o.id >= seenStamp.length) {
             int n = Math.max(2 * seenStamp.length, o.id + 1);
@@ -617,7 +625,7 @@ final class Mover {
             seenOverlap[o.id] = false;
             Reaction r = decide(m, o, filter);
             seenReaction[o.id] = r;
-            if (r != null && o.grid == null && start.overlaps(o.shape())) {
+            if (r != null && o.grid == null && (start == null ? world.overlap(m, o) : start.overlaps(o.shape()))) {
                 seenOverlap[o.id] = true;
                 seenCrossed[o.id] = true;
                 reportStartOverlap(m, o, r);
@@ -741,13 +749,44 @@ final class Mover {
 
     // ---------------------------------------------------------------- the rectangles' walk
 
+    /** The box a box body's move starts from, into {@link #box}: false if the body is no box. */
+    private boolean startBox(Body m) {
+        Placement p = m.placement();
+        if (p != null) {
+            if (p.kind() != ShapeKind.RECT) {
+                return false;
+            }
+            box[0] = p.a();
+            box[1] = p.b();
+            box[2] = p.c();
+            box[3] = p.d();
+            return true;
+        }
+        if (!(m.shape() instanceof Rect r)) {  // only the shape knows (a quarter turn)
+            return false;
+        }
+        box[0] = r.x();
+        box[1] = r.y();
+        box[2] = r.w();
+        box[3] = r.h();
+        return true;
+    }
+
+    /** Is a body's shape a rectangle? Read from its numbers where it has them (no shape made). */
+    private static boolean isBox(Body o) {
+        Placement p = o.placement();
+        return p != null ? p.kind() == ShapeKind.RECT : o.shape() instanceof Rect;
+    }
+
     /**
-     * A rectangle's slide among rectangles, by {@link Sweep#move}'s own walk: the end, or null
-     * when some body met is not a rectangle that slides (then the general walk runs).
+     * A box's slide among boxes, by {@link Sweep#move}'s own walk, all as numbers: the box at
+     * (x, y) of size w by h, the bodies as it stands; the end into {@link #walked}. False,
+     * and nothing found, when some body met is not a box that slides (then the general walk
+     * runs).
      */
-    private Rect rectWalk(Body m, Rect r, float dx, float dy, CollisionFilter filter, int st) {
-        double left = Math.min(Extents.minX(r), Extents.minX(r) + dx), right = Math.max(Extents.maxX(r), Extents.maxX(r) + dx);
-        double top = Math.min(Extents.minY(r), Extents.minY(r) + dy), bottom = Math.max(Extents.maxY(r), Extents.maxY(r) + dy);
+    private boolean rectWalk(Body m, float x, float y, float w, float h, float dx, float dy, CollisionFilter filter, int st) {
+        double left = Math.min(x, (double) x + dx), right = Math.max((double) x + w, (double) x + w + dx);
+        double top = Math.min(y, (double) y + dy), bottom = Math.max((double) y + h, (double) y + h + dy);
         world.gather(left, top, right, bottom);
         int n = world.candidateCount();
         for (int i = 0; i < n; i++) {
@@ -755,14 +794,12 @@ final class Mover {
             if (o == m) {
                 continue;
             }
-            Reaction re = reaction(m, o, filter, r, st);
-            if (re != null && (re != Reaction.SLIDE || o.oneWay != Side.NONE
-                    || o.grid == null && !(o.shape() instanceof Rect))) {
-                return null;
+            Reaction re = reaction(m, o, filter, null, st);
+            if (re != null && (re != Reaction.SLIDE || o.oneWay != Side.NONE || o.grid == null && !isBox(o))) {
+                return false;
             }
         }
         obCount = 0;
-        rects.clear();
         for (int i = 0; i < n; i++) {
             Body o = world.candidate(i);
             if (o == m || seenReaction[o.id] == null) {
@@ -771,14 +808,22 @@ final class Mover {
             if (o.grid != null) {
                 cells(o, left, top, right, bottom, null);
             } else {
-                addObstacle(o.shape(), o, -1);
+                addObstacle(null, o, -1);  // read as numbers below
             }
         }
+        if (boxes.length < 4 * obCount) {
+            boxes = new float[Math.max(4 * obCount, 2 * boxes.length)];
+        }
         for (int i = 0; i < obCount; i++) {
-            rects.add((Rect) obShape[i]);
+            Placement p = obShape[i] == null ? obBody[i].placement() : null;
+            Rect r = p == null ? (Rect) (obShape[i] != null ? obShape[i] : obBody[i].shape()) : null;
+            boxes[4 * i] = p != null ? p.a() : r.x();
+            boxes[4 * i + 1] = p != null ? p.b() : r.y();
+            boxes[4 * i + 2] = p != null ? p.c() : r.w();
+            boxes[4 * i + 3] = p != null ? p.d() : r.h();
         }
         stopCount = 0;
-        MoveAndSlide.walk(r, dx, dy, rects, stops, walked);
+        MoveAndSlide.walk(x, y, w, h, dx, dy, boxes, obCount, stops, walked);
         double time = 0;
         for (int k = 0; k < stopCount; k++) {
             double frame = time + stopT[k] * (1 - time);
@@ -787,10 +832,10 @@ final class Mover {
             float ny = side == Side.TOP ? 1 : side == Side.BOTTOM ? -1 : 0;
             int i = stopIndex[k];
             found.add(new Collision(m, obBody[i], Reaction.SLIDE, new Hit((float) Math.min(1, frame), nx, ny, side),
-                    (float) (m.homePivotX + m.tx + ((double) stopX[k] - r.x())),
-                    (float) (m.homePivotY + m.ty + ((double) stopY[k] - r.y())), obCell[i]));
+                    (float) (m.homePivotX + m.tx + ((double) stopX[k] - x)),
+                    (float) (m.homePivotY + m.ty + ((double) stopY[k] - y)), obCell[i]));
             time = frame;
         }
-        return new Rect(walked[0], walked[1], r.w(), r.h());
+        return true;
     }
 }

@@ -416,7 +416,7 @@ public final class World {
     }
 
     private static Saved save(Body b) {
-        return new Saved(b.tx, b.ty, b.shape, new float[] {b.boxX, b.boxY, b.boxW, b.boxH, b.fatX, b.fatY, b.fatW, b.fatH},
+        return new Saved(b.tx, b.ty, b.savedShape(), new float[] {b.boxX, b.boxY, b.boxW, b.boxH, b.fatX, b.fatY, b.fatW, b.fatH},
                 b.dirtyIndex >= 0);
     }
 
@@ -450,6 +450,17 @@ public final class World {
     /** The world changes: the mover's pose, shape and box; the collisions handed back. */
     Collisions commit(Body m, Shape start, Shape end, List<Collision> out, boolean finished) {
         table.moved(m, start, end);
+        return collisions(out, finished);
+    }
+
+    /** {@link #commit} for a box the rectangles' walk moved from (startX, startY) to (x, y): no shape made. */
+    Collisions commitBox(Body m, float startX, float startY, float x, float y, float w, float h, List<Collision> out) {
+        table.movedBox(m, startX, startY, x, y, w, h);
+        return collisions(out, true);
+    }
+
+    /** A move's collisions: kept for the next step's contacts, and handed back. */
+    private Collisions collisions(List<Collision> out, boolean finished) {
         if (stepped) {
             stepCollisions.clear();
             stepped = false;

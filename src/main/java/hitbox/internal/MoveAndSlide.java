@@ -3,7 +3,6 @@ package hitbox.internal;
 import hitbox.*;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.RandomAccess;
 
 /**
  * The walk behind {@link Sweep#move}: a box goes until it first hits an obstacle, stands
@@ -30,52 +29,54 @@ public final class MoveAndSlide {
     /** {@link #move(Rect, float, float, Iterable)}, telling {@code stops} (if not null) of each stop. */
     public static Sweep.Move move(Rect mover, float vx, float vy, Iterable<Rect> obstacles, Stops stops) {
         float[] end = new float[4];
-        List<Rect> list;
-        if (obstacles instanceof List<Rect> l && l instanceof RandomAccess) {
-            list = l;
-        } else {
-            list = new ArrayList<>();
-            obstacles.forEach(list::add);
+        List<Rect> list = new ArrayList<>();
+        obstacles.forEach(list::add);
+        float[] boxes = new float[4 * list.size()];
+        for (int i = 0; i < list.size(); i++) {
+            Rect o = list.get(i);
+            boxes[4 * i] = o.x();
+            boxes[4 * i + 1] = o.y();
+            boxes[4 * i + 2] = o.w();
+            boxes[4 * i + 3] = o.h();
         }
-        int sides = walk(mover, vx, vy, list, stops, end);
+        int sides = walk(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy, boxes, list.size(), stops, end);
         return new Sweep.Move(end[0], end[1], end[2], end[3], SideSets.of(sides));
     }
 
     /**
-     * The walk of {@link #move(Rect, float, float, Iterable, Stops)} with no result made, for
-     * the world's moves, which make their own: where the box ends and the velocity to keep
-     * are written into {@code end} (x, y, vx, vy), and the sides hit returned as
-     * {@link SideSets} bits.
+     * The walk of {@link #move(Rect, float, float, Iterable, Stops)} with no object made, for
+     * the world's moves, which make their own: the box at (x0, y0) of size w by h, the
+     * obstacles' boxes as numbers (x, y, w, h each, {@code count} of them); where the box
+     * ends and the velocity to keep are written into {@code end} (x, y, vx, vy), and the
+     * sides hit returned as {@link SideSets} bits.
      */
-    public static int walk(Rect mover, float vx, float vy, List<Rect> obstacles, Stops stops, float[] end) {
-        final float x0 = mover.x(), y0 = mover.y(), w = mover.w(), h = mover.h();
+    public static int walk(float x0, float y0, float w, float h, float vx, float vy, float[] boxes, int count,
+                           Stops stops, float[] end) {
         float x = x0, y = y0;
         double mx = vx, my = vy;  // the motion still to do this frame
         float keepVx = vx, keepVy = vy;
         int sides = 0;
         for (int stop = 0; stop < Sweep.MAX_SLIDES && (mx != 0 || my != 0); stop++) {
             double first = Slabs.INF;
-            Rect hitRect = null;
-            int index = 0, hitIndex = -1;
-            for (int i = 0, n = obstacles.size(); i < n; i++) {  // by index: no iterator made per leg
-                Rect o = obstacles.get(i);
-                if (!RawTests.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
-                    double t = SweptPairs.rectRectTime(x, y, w, h, mx, my, o.x(), o.y(), o.w(), o.h());
+            int hitIndex = -1;
+            for (int i = 0; i < count; i++) {
+                float ox = boxes[4 * i], oy = boxes[4 * i + 1], ow = boxes[4 * i + 2], oh = boxes[4 * i + 3];
+                if (!RawTests.rectRect(x0, y0, w, h, ox, oy, ow, oh)) {
+                    double t = SweptPairs.rectRectTime(x, y, w, h, mx, my, ox, oy, ow, oh);
                     if (t < first) {
                         first = t;
-                        hitRect = o;
-                        hitIndex = index;
+                        hitIndex = i;
                     }
                 }
-                index++;
             }
-            if (hitRect == null) {
-                safeAlong(x, y, w, h, mx, my, 1, (float) (x + mx), (float) (y + my), x0, y0, obstacles, end);
+            if (hitIndex < 0) {
+                safeAlong(x, y, w, h, mx, my, 1, (float) (x + mx), (float) (y + my), x0, y0, boxes, count, end);
                 x = end[0];
                 y = end[1];
                 break;
             }
-            Earliest e = SweptPairs.rectRectEntry(x, y, w, h, mx, my, hitRect.x(), hitRect.y(), hitRect.w(), hitRect.h());
+            float hx = boxes[4 * hitIndex], hy = boxes[4 * hitIndex + 1], hw = boxes[4 * hitIndex + 2], hh = boxes[4 * hitIndex + 3];
+            Earliest e = SweptPairs.rectRectEntry(x, y, w, h, mx, my, hx, hy, hw, hh);
             // The entry's normal is the face's outward one; the side is the face it points out of.
             Side side = e.inside ? Side.NONE : Side.ofNormal(-e.nx, -e.ny);
             if (side == Side.NONE) {
@@ -84,9 +85,9 @@ public final class MoveAndSlide {
             // Stand exactly against the face hit (rounding could leave it a hair inside),
             // the other coordinate where the motion had got to.
             float tx = (float) (x + first * mx), ty = (float) (y + first * my);
-            tx = RectPush.placedX(side, tx, w, hitRect.x(), hitRect.w());
-            ty = RectPush.placedY(side, ty, h, hitRect.y(), hitRect.h());
-            safeAlong(x, y, w, h, mx, my, first, tx, ty, x0, y0, obstacles, end);
+            tx = RectPush.placedX(side, tx, w, hx, hw);
+            ty = RectPush.placedY(side, ty, h, hy, hh);
+            safeAlong(x, y, w, h, mx, my, first, tx, ty, x0, y0, boxes, count, end);
             x = end[0];
             y = end[1];
             if (stops != null) {
@@ -117,8 +118,8 @@ public final class MoveAndSlide {
      * into {@code at}[0] and [1].
      */
     private static void safeAlong(float x, float y, float w, float h, double mx, double my, double t,
-                                  float tx, float ty, float x0, float y0, List<Rect> obstacles, float[] at) {
-        if (clear(tx, ty, w, h, x0, y0, obstacles)) {
+                                  float tx, float ty, float x0, float y0, float[] boxes, int count, float[] at) {
+        if (clear(tx, ty, w, h, x0, y0, boxes, count)) {
             at[0] = tx;
             at[1] = ty;
             return;
@@ -128,7 +129,7 @@ public final class MoveAndSlide {
         for (int i = 0; i < 64 && lo < hi; i++) {
             double mid = (lo + hi) / 2;
             float px = (float) (x + mid * mx), py = (float) (y + mid * my);
-            if (clear(px, py, w, h, x0, y0, obstacles)) {
+            if (clear(px, py, w, h, x0, y0, boxes, count)) {
                 lo = mid;
                 bestX = px;
                 bestY = py;
@@ -140,11 +141,11 @@ public final class MoveAndSlide {
         at[1] = bestY;
     }
 
-    private static boolean clear(float x, float y, float w, float h, float x0, float y0, List<Rect> obstacles) {
-        for (int i = 0, n = obstacles.size(); i < n; i++) {
-            Rect o = obstacles.get(i);
-            if (RawTests.rectRect(x, y, w, h, o.x(), o.y(), o.w(), o.h())
-                    && !RawTests.rectRect(x0, y0, w, h, o.x(), o.y(), o.w(), o.h())) {
+    private static boolean clear(float x, float y, float w, float h, float x0, float y0, float[] boxes, int count) {
+        for (int i = 0; i < count; i++) {
+            float ox = boxes[4 * i], oy = boxes[4 * i + 1], ow = boxes[4 * i + 2], oh = boxes[4 * i + 3];
+            if (RawTests.rectRect(x, y, w, h, ox, oy, ow, oh)
+                    && !RawTests.rectRect(x0, y0, w, h, ox, oy, ow, oh)) {
                 return false;
             }
         }

@@ -62,6 +62,53 @@ public final class Placement {
         return kind;
     }
 
+    /** @return the first number (x, or x1), as the kind reads it (see the fields) */
+    public float a() {
+        return a;
+    }
+
+    /** @return the second number (y, or y1) */
+    public float b() {
+        return b;
+    }
+
+    /** @return the third number (a circle's r, a rectangle's w, x2) */
+    public float c() {
+        return c;
+    }
+
+    /** @return the fourth number (a rectangle's h, y2) */
+    public float d() {
+        return d;
+    }
+
+    /**
+     * Sets a rectangle's numbers: where a rectangles' walk left a box, which then has no
+     * shape until one is asked for ({@link #shape()}).
+     */
+    public void rect(float x, float y, float w, float h) {
+        set(ShapeKind.RECT, x, y, w, h, 0);
+    }
+
+    /**
+     * A new shape of these numbers, equal to the one they were taken from or placed as.
+     *
+     * @throws IllegalStateException for a polygon (its shape is kept, not remade) or no kind
+     */
+    public Shape shape() {
+        if (kind == null) {
+            throw new IllegalStateException("no numbers to remake a shape from");
+        }
+        return switch (kind) {
+            case RECT -> new Rect(a, b, c, d);
+            case CIRCLE -> new Circle(a, b, c);
+            case SEGMENT -> new Segment(a, b, c, d);
+            case CAPSULE -> new Capsule(a, b, c, d, e);
+            case ELLIPSE -> new Ellipse(a, b, c, d, e);
+            case POLYGON -> throw new IllegalStateException("a placed polygon's shape is kept, not remade");
+        };
+    }
+
     /**
      * Takes a shape's numbers as they are (a polygon's array is read, not copied).
      *
