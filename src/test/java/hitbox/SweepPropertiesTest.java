@@ -111,18 +111,25 @@ class SweepPropertiesTest {
         double near = 2 * SketchT.plateau(vx, vy, x, y, ox, oy, r, or);
         SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, t,
                 s -> Collide.circleCircle(x + s * vx, y + s * vy, r, ox, oy, or), near, "mover, obstacle");
-        SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, Raw.sweepCircleCircle(ox, oy, or, -vx, -vy, x, y, r),
-                s -> Collide.circleCircle(ox + s * -vx, oy + s * -vy, or, x, y, r), near, "roles swapped");
-        float fx = x + dx, fy = y - dx, fox = ox + dx, foy = oy - dx;
-        // Far away a position rounds by up to a float step on each axis, and a circle meets
-        // the other along the line of centres, so the time moves by that step over the speed
-        // along that line, not along an axis: a glancing approach (slow along the line) has
-        // its time moved the most. The untranslated t gives the line.
+        // A position rounds by up to a float step on each axis, and a circle meets the other
+        // along the line of centres, so the time moves by that step over the speed along that
+        // line, not along an axis: a glancing approach (slow along the line) has its time
+        // moved the most. The untranslated t gives the line.
         double along = Double.POSITIVE_INFINITY;
         if (t > 0 && t <= 1) {
             double cx = x + (double) t * vx - ox, cy = y + (double) t * vy - oy, c = Math.hypot(cx, cy);
             along = c > 0 ? Math.abs(vx * cx + vy * cy) / c : 0;
         }
+        // With the roles swapped the other circle moves, and its own positions round: where it
+        // meets glancingly, the first float position that overlaps can come before the exact
+        // time by that rounding along the line (seed 7's third case: 15, -10, 13, -42, 16, -25,
+        // -29, 19, the float positions overlap 1.9e-6 before the exact time, along the line at
+        // 0.77 a frame).
+        double swappedRounding = t > 0 && t <= 1
+                ? SketchT.plateauAlong(along, ox, oy, x, y, (float) (ox - (double) t * vx), (float) (oy - (double) t * vy)) : 0;
+        SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, Raw.sweepCircleCircle(ox, oy, or, -vx, -vy, x, y, r),
+                s -> Collide.circleCircle(ox + s * -vx, oy + s * -vy, or, x, y, r), near + swappedRounding, "roles swapped");
+        float fx = x + dx, fy = y - dx, fox = ox + dx, foy = oy - dx;
         double rounding = Math.max(SketchT.plateau(vx, vy, fx, fy, fox, foy), SketchT.plateauAlong(along, fx, fy, fox, foy));
         SketchT.check(t == Float.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : t, Raw.sweepCircleCircle(fx, fy, r, vx, vy, fox, foy, or),
                 s -> Collide.circleCircle(fx + s * vx, fy + s * vy, r, fox, foy, or),
