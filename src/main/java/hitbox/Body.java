@@ -75,10 +75,11 @@ public final class Body {
     /** Is {@link #placement} this pose's (set when first asked after a change)? */
     private boolean placementSet;
     /**
-     * The placement holds where a rectangles' walk left the box: the shape, when asked, is
-     * made from those numbers, not from the pose (whose arithmetic can round otherwise).
+     * The placement holds where a walk left the body (a box or a circle): the shape, when
+     * asked, is made from those numbers, not from the pose (whose arithmetic can round
+     * otherwise).
      */
-    private boolean walkedBox;
+    private boolean walked;
     /**
      * The fat box: the box held for the body in the broad phase (or waiting to be put there
      * while the body is dirty), the tight box grown by a margin and ahead of its last move.
@@ -133,7 +134,7 @@ public final class Body {
         }
         this.shape = null;
         this.placementSet = false;
-        this.walkedBox = false;
+        this.walked = false;
     }
 
     /** Moved (not turned) to where a move left it: the translation and the shape there, made by the move. */
@@ -142,20 +143,30 @@ public final class Body {
         this.ty = ty;
         this.shape = shape;
         this.placementSet = false;
-        this.walkedBox = false;
+        this.walked = false;
     }
 
     /**
-     * Moved (not turned) to where the rectangles' walk left its box: the translation and the
-     * box's numbers, with no shape made ({@link #shape()} makes it from them when asked).
+     * Moved (not turned) to where a walk left its box: the translation and the box's numbers,
+     * with no shape made ({@link #shape()} makes it from them when asked).
      */
     void placedBox(double tx, double ty, float x, float y, float w, float h) {
+        placement.rect(x, y, w, h);
+        walkedTo(tx, ty);
+    }
+
+    /** Moved (not turned) to where a walk left its circle: {@link #placedBox} for a circle. */
+    void placedCircle(double tx, double ty, float x, float y, float r) {
+        placement.circle(x, y, r);
+        walkedTo(tx, ty);
+    }
+
+    private void walkedTo(double tx, double ty) {
         this.tx = tx;
         this.ty = ty;
         this.shape = null;
-        placement.rect(x, y, w, h);
         this.placementSet = true;
-        this.walkedBox = true;
+        this.walked = true;
     }
 
     /**
@@ -163,7 +174,7 @@ public final class Body {
      * saves to put back. A box the rectangles' walk left is made now, from its numbers.
      */
     Shape savedShape() {
-        return walkedBox ? shape() : shape;
+        return walked ? shape() : shape;
     }
 
     /**
@@ -256,7 +267,7 @@ public final class Body {
      */
     public Shape shape() {
         if (shape == null) {
-            shape = walkedBox ? placement.shape() : Poses.place(home, homePivotX, homePivotY, tx, ty, angle, cos, sin);
+            shape = walked ? placement.shape() : Poses.place(home, homePivotX, homePivotY, tx, ty, angle, cos, sin);
         }
         return shape;
     }

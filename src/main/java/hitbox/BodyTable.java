@@ -117,28 +117,13 @@ final class BodyTable {
     }
 
     /** Where a move left a body: its pose and shape, and its box (the pose's, grown to the shape's own extents). */
-    void moved(Body m, Shape start, Shape end) {
-        double ntx = m.tx + (Poses.refX(end) - Poses.refX(start)), nty = m.ty + (Poses.refY(end) - Poses.refY(start));
+    void moved(Body m, Spot start, Spot end) {
+        double ntx = m.tx + (end.refX() - start.refX()), nty = m.ty + (end.refY() - start.refY());
         float[] box = box(m.homePivotX + ntx, m.homePivotY + nty, m.extents, "dx and dy");
-        m.placed(ntx, nty, end);
-        setMovedBox(m, box, Extents.minX(end), Extents.minY(end), Extents.maxX(end), Extents.maxY(end));
-    }
-
-    /**
-     * A box body moved (not turned) from (startX, startY) to the box at (x, y) where the
-     * rectangles' walk left it: {@link #moved} with no shape made.
-     */
-    void movedBox(Body m, float startX, float startY, float x, float y, float w, float h) {
-        double ntx = m.tx + ((double) x - startX), nty = m.ty + ((double) y - startY);
-        float[] box = box(m.homePivotX + ntx, m.homePivotY + nty, m.extents, "dx and dy");
-        m.placedBox(ntx, nty, x, y, w, h);
-        setMovedBox(m, box, x, y, (double) x + w, (double) y + h);
-    }
-
-    /** A moved body's tight box: the pose's box, and the shape's own extents too (no Rect made for them). */
-    private void setMovedBox(Body m, float[] box, double minX, double minY, double maxX, double maxY) {
-        float x0 = Math.min(box[0], Math.nextDown((float) minX)), y0 = Math.min(box[1], Math.nextDown((float) minY));
-        float x1 = Math.max(box[0] + box[2], Math.nextUp((float) maxX)), y1 = Math.max(box[1] + box[3], Math.nextUp((float) maxY));
+        // The shape's own extents too (no Rect made for them).
+        float x0 = Math.min(box[0], Math.nextDown((float) end.minX())), y0 = Math.min(box[1], Math.nextDown((float) end.minY()));
+        float x1 = Math.max(box[0] + box[2], Math.nextUp((float) end.maxX())), y1 = Math.max(box[1] + box[3], Math.nextUp((float) end.maxY()));
+        end.placeInto(m, ntx, nty);
         setBox(m, x0, y0, Math.nextUp(x1 - x0), Math.nextUp(y1 - y0));
     }
 

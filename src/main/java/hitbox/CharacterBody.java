@@ -62,6 +62,11 @@ public final class CharacterBody {
     private boolean metWall;
     private boolean metCeiling;
     private final double[] redirected = new double[2];
+    // The places a move keeps (see Spot; a move's own, set by copying): where it starts, where
+    // its walk starts (pushed out of what it began in), where it is, a probe's stop, and a
+    // step's raised, moved-on and landed places.
+    private final Spot start = new Spot(), from = new Spot(), cur = new Spot(), stop = new Spot();
+    private final Spot raised = new Spot(), on = new Spot(), landed = new Spot();
 
     /**
      * How close to a surface's tilt limit still counts as within it: the rounding of a
@@ -114,26 +119,27 @@ public final class CharacterBody {
     Collisions walk(Mover mv, float dx, float dy, CollisionFilter filter) {
         boolean wasGround = onGround;
         int st = mv.begin();
-        Shape start = body.shape();
-        Shape from = start;
+        start.set(body);
+        from.set(start);
         if (mv.blockedAtStart(body, start, filter, st)) {
-            from = mv.pushOut(body, start, filter);
+            mv.pushOut(body, start, filter, from);
             st = mv.restamp();
         }
         metWall = false;
         metCeiling = false;
         mv.walk(body, start, from, dx, dy, filter, st, this);
-        Shape cur = mv.walkEnd();
+        cur.set(mv.walkEnd());
         boolean finished = mv.walkFinished();
         boolean rising = dx * upX + dy * upY > 0;
         if (metWall && wasGround && !rising && (upX != 0 || upY != 0)) {
-            cur = step(mv, from, cur, dx, dy, filter, st);
+            step(mv, dx, dy, filter, st);
         }
         boolean below = groundBelow(mv, from, cur, filter, st, probeLength(cur));
         if (!below && snap > 0 && wasGround && !rising) {
             float sx = (float) (-upX * snap), sy = (float) (-upY * snap);
             if (mv.probe(body, cur, sx, sy, filter, from, st) && isGround(mv)) {
-                cur = mv.probeStop(cur, sx, sy);
+                mv.probeStop(cur, sx, sy, stop);
+                cur.set(stop);
                 below = groundBelow(mv, from, cur, filter, st, probeLength(cur));
             }
         }
@@ -156,7 +162,7 @@ public final class CharacterBody {
     }
 
     /** Is there ground under a shape within a probe's length (a surface that is ground)? Then the last probe met it. */
-    private boolean groundBelow(Mover mv, Shape from, Shape cur, CollisionFilter filter, int st, double length) {
+    private boolean groundBelow(Mover mv, Spot from, Spot cur, CollisionFilter filter, int st, double length) {
         if (upX == 0 && upY == 0) {
             return false;
         }
@@ -165,7 +171,7 @@ public final class CharacterBody {
     }
 
     /** Four skins: what a resting character may stand off a slanted ground, and then some. */
-    private static double probeLength(Shape cur) {
+    private static double probeLength(Spot cur) {
         return 4 * Mover.skin(cur);
     }
 
@@ -174,52 +180,52 @@ public final class CharacterBody {
      * and then down onto ground. Higher up is {@link #stepHeight}, or the rise a slope up to
      * {@link #maxSlope} would give over that part (a wall met at the foot of a ramp, where the
      * character's corner meets the ramp's). The end if it lands on ground further on, either a
-     * stair no higher than the step height or a slope that rises no faster than its own tilt;
-     * else {@code cur} as it was.
+     * stair no higher than the step height or a slope that rises no faster than its own tilt:
+     * then {@link #cur} is moved there; else it stays as it was.
      */
-    private Shape step(Mover mv, Shape from, Shape cur, float dx, float dy, CollisionFilter filter, int st) {
+    private void step(Mover mv, float dx, float dy, CollisionFilter filter, int st) {
         double lx = -upY, ly = upX;
         double want = dx * lx + dy * ly;
-        double got = (Poses.refX(cur) - Poses.refX(from)) * lx + (Poses.refY(cur) - Poses.refY(from)) * ly;
+        double got = (cur.refX() - from.refX()) * lx + (cur.refY() - from.refY()) * ly;
         double left = want - got, skin = Mover.skin(cur);
         if (Math.abs(left) <= skin || Math.signum(left) != Math.signum(want)) {
-            return cur;
+            return;
         }
-        double height = (Extents.maxX(cur) - Extents.minX(cur)) * Math.abs(upX) + (Extents.maxY(cur) - Extents.minY(cur)) * Math.abs(upY);
+        double height = (cur.maxX() - cur.minX()) * Math.abs(upX) + (cur.maxY() - cur.minY()) * Math.abs(upY);
         double slopeRise = Math.min(height, Math.abs(left) * Math.tan(Math.toRadians(maxSlope)) + 2 * skin);
         double lift = Math.max(stepHeight, slopeRise);
         float ux = (float) (upX * lift), uy = (float) (upY * lift);
         mv.probe(body, cur, ux, uy, filter, from, st);
-        Shape raised = mv.probeStop(cur, ux, uy);
+        mv.probeStop(cur, ux, uy, raised);
         double rose = rise(cur, raised);
         float fx = (float) (lx * left), fy = (float) (ly * left);
         boolean blocked = mv.probe(body, raised, fx, fy, filter, from, st);
-        Shape on = mv.probeStop(raised, fx, fy);
-        double went = ((Poses.refX(on) - Poses.refX(raised)) * lx + (Poses.refY(on) - Poses.refY(raised)) * ly) * Math.signum(left);
+        mv.probeStop(raised, fx, fy, on);
+        double went = ((on.refX() - raised.refX()) * lx + (on.refY() - raised.refY()) * ly) * Math.signum(left);
         if (went <= skin) {
-            return cur;
+            return;
         }
         float downX = (float) (-upX * (rose + probeLength(cur))), downY = (float) (-upY * (rose + probeLength(cur)));
         if (!mv.probe(body, on, downX, downY, filter, from, st) || !isGround(mv)) {
-            return cur;
+            return;
         }
         float floorX = mv.probeNx(), floorY = mv.probeNy();
-        Shape landed = mv.probeStop(on, downX, downY);
+        mv.probeStop(on, downX, downY, landed);
         double gained = rise(cur, landed);
         double cos = -(floorX * upX + floorY * upY) / Math.hypot(floorX, floorY);
         double tan = Math.sqrt(Math.max(0, 1 - cos * cos)) / cos;
         boolean stair = gained <= stepHeight + skin;
         boolean slope = gained <= went * tan + 2 * skin;
         if (!stair && !slope) {
-            return cur;
+            return;
         }
         metWall = blocked;
-        return landed;
+        cur.set(landed);
     }
 
-    /** How much higher (along up) one shape stands than another. */
-    private double rise(Shape from, Shape to) {
-        return (Poses.refX(to) - Poses.refX(from)) * upX + (Poses.refY(to) - Poses.refY(from)) * upY;
+    /** How much higher (along up) one place stands than another. */
+    private double rise(Spot from, Spot to) {
+        return (to.refX() - from.refX()) * upX + (to.refY() - from.refY()) * upY;
     }
 
     /** Is the surface the last probe met ground: facing up within the tilt limit? */

@@ -97,8 +97,14 @@ final class Mover {
     private final ArrayList<Collision> found = new ArrayList<>();
 
     // What the walk leaves: where it ended, and whether it finished.
-    private Shape walkEnd;
+    private final Spot walkEnd = new Spot();
     private boolean walkFinished;
+
+    // The places a walk keeps (each set by copying: see Spot): where a move starts (a body's
+    // move), where the leg under way starts, where it meets its obstacle, where it stops, a
+    // step back, and a halving's try.
+    private final Spot moveStart = new Spot(), cur = new Spot(), meet = new Spot(), at = new Spot();
+    private final Spot back = new Spot(), tried = new Spot();
 
     // The latest time of the frame at which the walk under way met something.
     private double metTime;
@@ -114,8 +120,8 @@ final class Mover {
      * The gap a slanted surface keeps from a body near a shape: the skin, or four float steps
      * of the shape's largest coordinate where that is more.
      */
-    static double skin(Shape s) {
-        double m = Extents.reach(s);
+    static double skin(Spot s) {
+        double m = s.reach();
         return Math.max(SKIN, 4 * Math.ulp((float) Math.min(m, Float.MAX_VALUE / 8)));
     }
 
@@ -131,12 +137,12 @@ final class Mover {
         if (!m.sensor && startBox(m)) {
             float x = box[0], y = box[1], w = box[2], h = box[3];
             if (rectWalk(m, x, y, w, h, dx, dy, filter, st)) {
-                return world.commitBox(m, x, y, walked[0], walked[1], w, h, found);
+                return world.commit(m, moveStart.setBox(x, y, w, h), walkEnd.setBox(walked[0], walked[1], w, h), found, true);
             }
         }
-        Shape start = m.shape();
-        walk(m, start, start, dx, dy, filter, st, null);
-        return world.commit(m, start, walkEnd, found, walkFinished);
+        moveStart.set(m);
+        walk(m, moveStart, moveStart, dx, dy, filter, st, null);
+        return world.commit(m, moveStart, walkEnd, found, walkFinished);
     }
 
     /** Starts a character's move: a new stamp and no collisions yet. */
@@ -146,12 +152,12 @@ final class Mover {
     }
 
     /** Ends a character's move: the world changes. */
-    Collisions end(Body m, Shape start, Shape end, boolean finished) {
+    Collisions end(Body m, Spot start, Spot end, boolean finished) {
         return world.commit(m, start, end, found, finished);
     }
 
-    /** Where the last walk ended. */
-    Shape walkEnd() {
+    /** Where the last walk ended (the mover's own spot: copy it to keep it). */
+    Spot walkEnd() {
         return walkEnd;
     }
 
@@ -164,8 +170,8 @@ final class Mover {
      * Walks a body from {@code from} by (dx, dy), leg by leg; leaves the end in
      * {@link #walkEnd()}. The character, if any, decides how a slide redirects the motion.
      */
-    void walk(Body m, Shape start, Shape from, double dx, double dy, CollisionFilter filter, int st, CharacterBody ch) {
-        Shape cur = from;
+    void walk(Body m, Spot start, Spot from, double dx, double dy, CollisionFilter filter, int st, CharacterBody ch) {
+        cur.set(from);
         double vx = dx, vy = dy, time = 0;
         // What the move wants, for the rest of the frame: slides clip it against every plane
         // met (not the last leg's motion, which a crease would turn back up the other face).
@@ -186,7 +192,8 @@ final class Mover {
             int best = nearest(m, cur, fvx, fvy, filter, from, st, true);
             crossings(m, start, cur, fvx, fvy, best >= 0 ? obT[best] : 1, time);
             if (best < 0) {
-                cur = clearAlong(cur, fvx, fvy, 1, cur.translated(fvx, fvy));
+                clearAlong(cur, fvx, fvy, 1, fvx, fvy, at);
+                cur.set(at);
                 vx = 0;
                 vy = 0;
                 break;
@@ -199,26 +206,26 @@ final class Mover {
             // The collision is where and when they met; a slide or a bounce off a slanted
             // surface goes on from a skin short of it.
             float t = obT[best];
-            Shape meet = clearAlong(cur, fvx, fvy, t, t == 0 ? cur : cur.translated(t * fvx, t * fvy));
+            boolean metMoved = clearAlong(cur, fvx, fvy, t, t * fvx, t * fvy, meet);
             if (o.oneWay != Side.NONE) {
                 seenBlocked[o.id] = true;
             }
             // Times never run back, though a stop a skin short of a hit starts the next leg a
             // little before the hit's own time.
             report(m, start, meet, o, obCell[best], reaction,
-                    new Hit(timeMet(time + t * (1 - time)), obNx[best], obNy[best], obSide[best]), meet != cur);
+                    new Hit(timeMet(time + t * (1 - time)), obNx[best], obNy[best], obSide[best]), metMoved);
             double tStop = t;
-            Shape at = meet;
+            at.set(meet);
+            boolean moved = metMoved;
             if (reaction != Reaction.TOUCH && slanted(nx, ny)) {
                 tStop = stopAt(cur, fvx, fvy, t, nx, ny);
                 if (tStop != t) {
-                    at = clearAlong(cur, fvx, fvy, tStop, tStop == 0 ? cur : cur.translated((float) (tStop * fvx), (float) (tStop * fvy)));
+                    moved = clearAlong(cur, fvx, fvy, tStop, (float) (tStop * fvx), (float) (tStop * fvy), at);
                 }
-                at = keepSkin(at, fvx, fvy, t, tStop, nx, ny);
+                moved |= keepSkin(at, fvx, fvy, t, tStop, nx, ny);
             }
-            boolean moved = at != cur;
             double frame = time + tStop * (1 - time);
-            cur = at;
+            cur.set(at);
             double rx = (1 - tStop) * vx, ry = (1 - tStop) * vy;
             double into = rx * nx + ry * ny;
             double restX = (1 - frame) * wantX, restY = (1 - frame) * wantY;
@@ -251,18 +258,18 @@ final class Mover {
                 // Nothing changed: rounding holds the body against this surface. Step back from
                 // it by the skin (the surface's normal, out), if that is clear, and go on.
                 double k = skin(cur);
-                Shape back = cur.translated((float) (-nx * k), (float) (-ny * k));
+                back.set(cur).translate((float) (-nx * k), (float) (-ny * k));
                 if (!clear(back)) {
                     finished = false;
                     break;
                 }
-                cur = back;
+                cur.set(back);
             }
             vx = rx;
             vy = ry;
             time = frame;
         }
-        walkEnd = cur;
+        walkEnd.set(cur);
         walkFinished = finished;
     }
 
@@ -275,7 +282,7 @@ final class Mover {
     }
 
     /** Where a leg stops before a slanted surface it meets at t: a skin back along the motion, as far as the leg's start. */
-    private static double stopAt(Shape cur, float fvx, float fvy, double t, double nx, double ny) {
+    private static double stopAt(Spot cur, float fvx, float fvy, double t, double nx, double ny) {
         double into = fvx * nx + fvy * ny;
         return into > 0 && t > 0 ? Math.max(0, t - skin(cur) / into) : t;
     }
@@ -285,13 +292,17 @@ final class Mover {
      * steps back out along the surface's normal to the skin, where that is clear: otherwise the
      * float positions of the slide along it would round into it.
      */
-    private Shape keepSkin(Shape at, float fvx, float fvy, double t, double tStop, double nx, double ny) {
+    private boolean keepSkin(Spot at, float fvx, float fvy, double t, double tStop, double nx, double ny) {
         double gap = (t - tStop) * (fvx * nx + fvy * ny), k = skin(at);
         if (!(gap < k / 2)) {
-            return at;  // half a skin or more is gap enough; stepping by less would only jitter
+            return false;  // half a skin or more is gap enough; stepping by less would only jitter
         }
-        Shape back = at.translated((float) (-nx * (k - Math.max(0, gap))), (float) (-ny * (k - Math.max(0, gap))));
-        return clear(back) ? back : at;
+        back.set(at).translate((float) (-nx * (k - Math.max(0, gap))), (float) (-ny * (k - Math.max(0, gap))));
+        if (!clear(back)) {
+            return false;
+        }
+        at.set(back);
+        return true;
     }
 
     /** The time of the frame at which the walk met something: never before the last one met, never past 1. */
@@ -301,7 +312,7 @@ final class Mover {
     }
 
     /** Adds a collision, unless it repeats the last one of this move without having moved. */
-    private void report(Body m, Shape start, Shape at, Body o, int cell, Reaction reaction, Hit hit, boolean moved) {
+    private void report(Body m, Spot start, Spot at, Body o, int cell, Reaction reaction, Hit hit, boolean moved) {
         if (!moved && !found.isEmpty()) {
             Collision last = found.get(found.size() - 1);
             if (last.other() == o && last.cell() == cell && last.nx() == hit.nx() && last.ny() == hit.ny()
@@ -397,7 +408,7 @@ final class Mover {
      * its index (then {@link #hitOf}) or -1. With {@code all}, every obstacle's hit is kept
      * for the crossings too.
      */
-    private int nearest(Body m, Shape cur, float fvx, float fvy, CollisionFilter filter, Shape start, int st, boolean all) {
+    private int nearest(Body m, Spot cur, float fvx, float fvy, CollisionFilter filter, Spot start, int st, boolean all) {
         obstacles(m, cur, fvx, fvy, filter, start, st);
         int best = -1;
         for (int i = 0; i < obCount; i++) {
@@ -406,7 +417,7 @@ final class Mover {
                 obSide[i] = null;
                 continue;
             }
-            Side side = Sweep.timeOfImpact(cur, fvx, fvy, obShape[i], swept);
+            Side side = cur.sweep(fvx, fvy, obShape[i], swept);
             if (side != null && (side == Side.NONE
                     || seenReaction[o.id] != Reaction.CROSS && o.oneWay != Side.NONE && side != o.oneWay)) {
                 side = null;  // overlapping at the start, or a one-way body met from a side that does not block
@@ -434,7 +445,7 @@ final class Mover {
      *
      * @return true if one is met within the motion
      */
-    boolean probe(Body m, Shape cur, float vx, float vy, CollisionFilter filter, Shape start, int st) {
+    boolean probe(Body m, Spot cur, float vx, float vy, CollisionFilter filter, Spot start, int st) {
         if (vx == 0 && vy == 0) {
             probeIndex = -1;
             return false;
@@ -457,20 +468,24 @@ final class Mover {
         return obBody[probeIndex];
     }
 
-    /** Where the last probe stops (touching, or a skin short of a slanted surface), or its end if it met nothing. */
-    Shape probeStop(Shape cur, float vx, float vy) {
+    /**
+     * Where the last probe from {@code cur} stops (touching, or a skin short of a slanted
+     * surface), or its end if it met nothing: into {@code out}, another spot than cur.
+     */
+    void probeStop(Spot cur, float vx, float vy, Spot out) {
         if (probeIndex < 0) {
-            return clearAlong(cur, vx, vy, 1, cur.translated(vx, vy));
+            clearAlong(cur, vx, vy, 1, vx, vy, out);
+            return;
         }
         float nx0 = obNx[probeIndex], ny0 = obNy[probeIndex], t0 = obT[probeIndex];
         double len = Math.hypot(nx0, ny0);
         double nx = nx0 / len, ny = ny0 / len;
         double t = slanted(nx, ny) ? stopAt(cur, vx, vy, t0, nx, ny) : t0;
-        return clearAlong(cur, vx, vy, t, t == 0 ? cur : cur.translated((float) (t * vx), (float) (t * vy)));
+        clearAlong(cur, vx, vy, t, (float) (t * vx), (float) (t * vy), out);
     }
 
     /** The crossed bodies met before tb in this leg, each reported once a move, in the order met. */
-    private void crossings(Body m, Shape start, Shape cur, float fvx, float fvy, float tb, double time) {
+    private void crossings(Body m, Spot start, Spot cur, float fvx, float fvy, float tb, double time) {
         while (true) {
             int first = -1;
             for (int i = 0; i < obCount; i++) {
@@ -492,21 +507,32 @@ final class Mover {
     }
 
     /**
-     * The wanted stop if it overlaps no blocking obstacle of this leg; otherwise (only rounding
-     * can cause it) the farthest clear point before it along the leg, by halving.
+     * Where a leg from cur stops at t along (fvx, fvy), moved there by (dx, dy): that stop if
+     * it overlaps no blocking obstacle of this leg; otherwise (only rounding can cause it) the
+     * farthest clear point before it along the leg, by halving; else cur itself. Into
+     * {@code out}, another spot than cur.
+     *
+     * @return true if out is not cur itself (t above 0, and a clear point found)
      */
-    private Shape clearAlong(Shape cur, float fvx, float fvy, double t, Shape wanted) {
-        if (clear(wanted)) {
-            return wanted;
+    private boolean clearAlong(Spot cur, float fvx, float fvy, double t, float dx, float dy, Spot out) {
+        out.set(cur);
+        if (t == 0) {
+            return false;
         }
-        Shape best = cur;
+        out.translate(dx, dy);
+        if (clear(out)) {
+            return true;
+        }
+        out.set(cur);
+        boolean found = false;
         double lo = 0, hi = t;
         for (int i = 0; i < 64 && lo < hi; i++) {
             double mid = (lo + hi) / 2;
-            Shape s = cur.translated((float) (mid * fvx), (float) (mid * fvy));
-            if (clear(s)) {
+            tried.set(cur).translate((float) (mid * fvx), (float) (mid * fvy));
+            if (clear(tried)) {
                 lo = mid;
-                best = s;
+                out.set(tried);
+                found = true;
             } else {
                 hi = mid;
             }
@@ -514,11 +540,11 @@ final class Mover {
                 break;
             }
         }
-        return best;
+        return found;
     }
 
-    /** Does a shape overlap none of this leg's blocking obstacles? */
-    boolean clear(Shape s) {
+    /** Does a spot overlap none of this leg's blocking obstacles? */
+    boolean clear(Spot s) {
         for (int i = 0; i < obCount; i++) {
             Body o = obBody[i];
             boolean blocks = seenReaction[o.id] != Reaction.CROSS && (o.oneWay == Side.NONE || seenBlocked[o.id]);
@@ -529,12 +555,12 @@ final class Mover {
         return true;
     }
 
-    private static float poseX(Body m, Shape start, Shape at) {
-        return (float) (m.homePivotX + m.tx + (Poses.refX(at) - Poses.refX(start)));
+    private static float poseX(Body m, Spot start, Spot at) {
+        return (float) (m.homePivotX + m.tx + (at.refX() - start.refX()));
     }
 
-    private static float poseY(Body m, Shape start, Shape at) {
-        return (float) (m.homePivotY + m.ty + (Poses.refY(at) - Poses.refY(start)));
+    private static float poseY(Body m, Spot start, Spot at) {
+        return (float) (m.homePivotY + m.ty + (at.refY() - start.refY()));
     }
 
     /**
@@ -542,9 +568,9 @@ final class Mover {
      * box, that the filter does not ignore, that the mover did not overlap at the start, and
      * not crossed already. Bodies the mover overlaps at the start are reported once.
      */
-    private void obstacles(Body m, Shape cur, float fvx, float fvy, CollisionFilter filter, Shape start, int st) {
-        double left = Math.min(Extents.minX(cur), Extents.minX(cur) + fvx), right = Math.max(Extents.maxX(cur), Extents.maxX(cur) + fvx);
-        double top = Math.min(Extents.minY(cur), Extents.minY(cur) + fvy), bottom = Math.max(Extents.maxY(cur), Extents.maxY(cur) + fvy);
+    private void obstacles(Body m, Spot cur, float fvx, float fvy, CollisionFilter filter, Spot start, int st) {
+        double left = Math.min(cur.minX(), cur.minX() + fvx), right = Math.max(cur.maxX(), cur.maxX() + fvx);
+        double top = Math.min(cur.minY(), cur.minY() + fvy), bottom = Math.max(cur.maxY(), cur.maxY() + fvy);
         // A skin around the swept box: a stop may step back from a slanted surface by that much.
         double k = skin(cur);
         left -= k;
@@ -567,7 +593,7 @@ final class Mover {
     }
 
     /** The solid cells of a grid's body under a box, row by row, not those the start overlaps. */
-    private void cells(Body o, double left, double top, double right, double bottom, Shape start) {
+    private void cells(Body o, double left, double top, double right, double bottom, Spot start) {
         Grid g = o.grid;
         double pad = World.pad(left, top, right, bottom);
         int c0 = Math.max(0, g.colAt((float) (left - pad))), c1 = Math.min(g.cols() - 1, g.colAt((float) (right + pad)));
@@ -607,9 +633,9 @@ final class Mover {
 
     /**
      * The reaction to another body, asked once a move: layers, then sensors, then the filter.
-     * {@code start} is the shape the move starts from, null for the body as it stands.
+     * {@code start} is where the move starts from, null for the body as it stands.
      */
-    Reaction reaction(Body m, Body o, CollisionFilter filter, Shape start, int st) {
+    Reaction reaction(Body m, Body o, CollisionFilter filter, Spot start, int st) {
         if (o.id >= seenStamp.length) {
             int n = Math.max(2 * seenStamp.length, o.id + 1);
             seenStamp = java.util.Arrays.copyOf(seenStamp, n);
@@ -662,8 +688,8 @@ final class Mover {
      * body)? Asked through {@link #reaction}, so the walk that follows with the same stamp
      * reuses each answer and the filter is asked once.
      */
-    boolean blockedAtStart(Body m, Shape start, CollisionFilter filter, int st) {
-        world.gather(Extents.minX(start), Extents.minY(start), Extents.maxX(start), Extents.maxY(start));
+    boolean blockedAtStart(Body m, Spot start, CollisionFilter filter, int st) {
+        world.gather(start.minX(), start.minY(), start.maxX(), start.maxY());
         for (int i = 0, n = world.candidateCount(); i < n; i++) {
             Body o = world.candidate(i);
             if (o == m) {
@@ -680,9 +706,9 @@ final class Mover {
         return false;
     }
 
-    private boolean gridOverlaps(Body o, Shape s) {
+    private boolean gridOverlaps(Body o, Spot s) {
         obCount = 0;
-        cells(o, Extents.minX(s), Extents.minY(s), Extents.maxX(s), Extents.maxY(s), null);
+        cells(o, s.minX(), s.minY(), s.maxX(), s.maxY(), null);
         for (int c = 0; c < obCount; c++) {
             if (s.overlaps(obShape[c])) {
                 return true;
@@ -702,11 +728,11 @@ final class Mover {
      * way ({@link Shape#contact}) and a skin beyond, a few times; the shape itself when it
      * overlaps none.
      */
-    Shape pushOut(Body m, Shape start, CollisionFilter filter) {
-        Shape cur = start;
+    void pushOut(Body m, Spot start, CollisionFilter filter, Spot out) {
+        out.set(start);
         for (int round = 0; round < 4; round++) {
             boolean first = round == 0;
-            world.gather(Extents.minX(cur), Extents.minY(cur), Extents.maxX(cur), Extents.maxY(cur));
+            world.gather(out.minX(), out.minY(), out.maxX(), out.maxY());
             Contact deepest = null;
             for (int i = 0, n = world.candidateCount(); i < n; i++) {
                 Body o = world.candidate(i);
@@ -717,29 +743,30 @@ final class Mover {
                 if (r == null) {
                     continue;
                 }
-                if (first && o.grid == null && cur.overlaps(o.shape())) {
+                if (first && o.grid == null && out.overlaps(o.shape())) {
                     reportStartOverlap(m, o, r);
                 }
                 if (r == Reaction.CROSS) {
                     continue;
                 }
+                // A push out is rare (a character that starts inside something): its contacts
+                // are asked of the shape.
                 if (o.grid != null) {
                     obCount = 0;
-                    cells(o, Extents.minX(cur), Extents.minY(cur), Extents.maxX(cur), Extents.maxY(cur), null);
+                    cells(o, out.minX(), out.minY(), out.maxX(), out.maxY(), null);
                     for (int c = 0; c < obCount; c++) {
-                        deepest = deeper(deepest, cur, obShape[c]);
+                        deepest = deeper(deepest, out.shape(), obShape[c]);
                     }
                 } else {
-                    deepest = deeper(deepest, cur, o.shape());
+                    deepest = deeper(deepest, out.shape(), o.shape());
                 }
             }
             if (deepest == null) {
-                return cur;
+                return;
             }
-            double k = deepest.depth() + skin(cur);
-            cur = cur.translated((float) (-deepest.nx() * k), (float) (-deepest.ny() * k));
+            double k = deepest.depth() + skin(out);
+            out.translate((float) (-deepest.nx() * k), (float) (-deepest.ny() * k));
         }
-        return cur;
     }
 
     private static Contact deeper(Contact best, Shape cur, Shape other) {

@@ -331,98 +331,10 @@ public final class Sweep {
 
     // ---------------------------------------------------------------- on shapes
 
-    /**
-     * Where does a moving rectangle first run into a standing one? Same as
-     * {@link #rectRectHit}.
-     *
-     * @param mover    the moving rectangle, where it starts, not null
-     * @param vx       its motion this frame, x part
-     * @param vy       its motion this frame, y part
-     * @param obstacle the standing rectangle, not null
-     * @return the hit, or null if there is none within the motion
-     * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
-     */
-    private static Hit timeOfImpact(Rect mover, float vx, float vy, Rect obstacle) {
-        checkArgs(mover, vx, vy, obstacle);
-        return rectRectHit(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy,
-                obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
-    }
 
-    /**
-     * Where does a moving circle first run into a standing one? Same as
-     * {@link #circleCircleHit}.
-     *
-     * @param mover    the moving circle, where it starts, not null
-     * @param vx       its motion this frame, x part
-     * @param vy       its motion this frame, y part
-     * @param obstacle the standing circle, not null
-     * @return the hit, or null if there is none within the motion
-     * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
-     */
-    private static Hit timeOfImpact(Circle mover, float vx, float vy, Circle obstacle) {
-        checkArgs(mover, vx, vy, obstacle);
-        return circleCircleHit(mover.x(), mover.y(), mover.r(), vx, vy,
-                obstacle.x(), obstacle.y(), obstacle.r());
-    }
 
-    /**
-     * Where does a moving circle first run into a standing rectangle? Same as
-     * {@link #circleRectHit}.
-     *
-     * @param mover    the moving circle, where it starts, not null
-     * @param vx       its motion this frame, x part
-     * @param vy       its motion this frame, y part
-     * @param obstacle the standing rectangle, not null
-     * @return the hit, or null if there is none within the motion
-     * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
-     */
-    private static Hit timeOfImpact(Circle mover, float vx, float vy, Rect obstacle) {
-        checkArgs(mover, vx, vy, obstacle);
-        return circleRectHit(mover.x(), mover.y(), mover.r(), vx, vy,
-                obstacle.x(), obstacle.y(), obstacle.w(), obstacle.h());
-    }
 
-    /**
-     * Where does a moving rectangle first run into a standing circle? The same motion seen
-     * from the other shape: the circle moving by {@code (-vx, -vy)} into the rectangle; the
-     * normal still points from the mover (the rectangle) into the circle.
-     *
-     * @param mover    the moving rectangle, where it starts, not null
-     * @param vx       its motion this frame, x part
-     * @param vy       its motion this frame, y part
-     * @param obstacle the standing circle, not null
-     * @return the hit, or null if there is none within the motion
-     * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
-     */
-    private static Hit timeOfImpact(Rect mover, float vx, float vy, Circle obstacle) {
-        checkArgs(mover, vx, vy, obstacle);
-        float x = mover.x(), y = mover.y(), w = mover.w(), h = mover.h();
-        float cx = obstacle.x(), cy = obstacle.y(), r = obstacle.r();
-        Earliest e = SweptPairs.circleRectEntry(cx, cy, r, -vx, -vy, x, y, w, h);
-        Earliest grown = SweptPairs.decided(e) ? e
-                : SweptPairs.circleRectGrown(SweptPairs.grownEntry(), cx, cy, r, SweptPairs.slack(x, vx), SweptPairs.slack(y, vy),
-                -vx, -vy, x, y, w, h);
-        float t = SweptPairs.answer(e, grown, SweptPairs.rectCircleAt(x, y, w, h, vx, vy, cx, cy, r),
-                x, vx, y, vy);
-        return SweptPairs.hit(t, e, grown, true);
-    }
 
-    /**
-     * Where does a moving rectangle first run into a standing segment? Same as
-     * {@link #rectSegmentHit}.
-     *
-     * @param mover    the moving rectangle, where it starts, not null
-     * @param vx       its motion this frame, x part
-     * @param vy       its motion this frame, y part
-     * @param obstacle the standing segment, not null
-     * @return the hit, or null if there is none within the motion
-     * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
-     */
-    private static Hit timeOfImpact(Rect mover, float vx, float vy, Segment obstacle) {
-        checkArgs(mover, vx, vy, obstacle);
-        return rectSegmentHit(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy,
-                obstacle.x1(), obstacle.y1(), obstacle.x2(), obstacle.y2());
-    }
 
     /**
      * Where does a moving segment first run into a standing rectangle? The rectangle moving
@@ -450,22 +362,6 @@ public final class Sweep {
         return SweptPairs.hit(t, e, grown, true);
     }
 
-    /**
-     * Where does a moving circle first run into a standing segment? Same as
-     * {@link #circleSegmentHit}.
-     *
-     * @param mover    the moving circle, where it starts, not null
-     * @param vx       its motion this frame, x part
-     * @param vy       its motion this frame, y part
-     * @param obstacle the standing segment, not null
-     * @return the hit, or null if there is none within the motion
-     * @throws IllegalArgumentException if a shape is null or the velocity is NaN or infinite
-     */
-    private static Hit timeOfImpact(Circle mover, float vx, float vy, Segment obstacle) {
-        checkArgs(mover, vx, vy, obstacle);
-        return circleSegmentHit(mover.x(), mover.y(), mover.r(), vx, vy,
-                obstacle.x1(), obstacle.y1(), obstacle.x2(), obstacle.y2());
-    }
 
     /**
      * Where does a moving segment first run into a standing circle? The circle moving by
@@ -523,8 +419,14 @@ public final class Sweep {
         // two segments) by convex pieces. One small method per mover kind, so that this one
         // stays small enough for the JIT to inline into a caller's loop.
         return switch (ShapeKind.of(mover)) {
-            case RECT -> rectInto((Rect) mover, vx, vy, obstacle);
-            case CIRCLE -> circleInto((Circle) mover, vx, vy, obstacle);
+            case RECT -> {
+                Rect r = (Rect) mover;
+                yield rectInto(r, r.x(), r.y(), r.w(), r.h(), vx, vy, obstacle);
+            }
+            case CIRCLE -> {
+                Circle c = (Circle) mover;
+                yield circleInto(c, c.x(), c.y(), c.r(), vx, vy, obstacle);
+            }
             case SEGMENT -> segmentInto((Segment) mover, vx, vy, obstacle);
             case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
         };
@@ -549,24 +451,65 @@ public final class Sweep {
         return SweptPairs.recorded(h, out);
     }
 
-    /** {@link #timeOfImpact(Shape, float, float, Shape)} for a rectangle mover, valid values. */
-    private static Hit rectInto(Rect mover, float vx, float vy, Shape obstacle) {
+    /**
+     * {@link #timeOfImpact(Shape, float, float, Shape)} for a rectangle mover (x, y, w, h),
+     * valid values, as numbers: its {@code Rect} given if made, else null (a world's walk
+     * moves a box as numbers), made only for a pair answered on shapes.
+     */
+    static Hit rectInto(Rect made, float x, float y, float w, float h, float vx, float vy, Shape obstacle) {
         return switch (ShapeKind.of(obstacle)) {
-            case RECT -> timeOfImpact(mover, vx, vy, (Rect) obstacle);
-            case CIRCLE -> timeOfImpact(mover, vx, vy, (Circle) obstacle);
-            case SEGMENT -> timeOfImpact(mover, vx, vy, (Segment) obstacle);
-            case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+            case RECT -> {
+                Rect o = (Rect) obstacle;
+                yield rectRectHit(x, y, w, h, vx, vy, o.x(), o.y(), o.w(), o.h());
+            }
+            case CIRCLE -> {
+                Circle o = (Circle) obstacle;
+                yield rectCircle(x, y, w, h, vx, vy, o.x(), o.y(), o.r());
+            }
+            case SEGMENT -> {
+                Segment o = (Segment) obstacle;
+                yield rectSegmentHit(x, y, w, h, vx, vy, o.x1(), o.y1(), o.x2(), o.y2());
+            }
+            case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.rectTimeOfImpact(made, x, y, w, h, vx, vy, obstacle);
         };
     }
 
-    /** {@link #timeOfImpact(Shape, float, float, Shape)} for a circle mover, valid values. */
-    private static Hit circleInto(Circle mover, float vx, float vy, Shape obstacle) {
+    /**
+     * {@link #timeOfImpact(Shape, float, float, Shape)} for a circle mover at (x, y) of radius
+     * r, valid values, as numbers: its {@code Circle} given if made, else null, made only for
+     * a pair answered on shapes.
+     */
+    static Hit circleInto(Circle made, float x, float y, float r, float vx, float vy, Shape obstacle) {
         return switch (ShapeKind.of(obstacle)) {
-            case CIRCLE -> timeOfImpact(mover, vx, vy, (Circle) obstacle);
-            case RECT -> timeOfImpact(mover, vx, vy, (Rect) obstacle);
-            case SEGMENT -> timeOfImpact(mover, vx, vy, (Segment) obstacle);
-            case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.timeOfImpact(mover, vx, vy, obstacle);
+            case CIRCLE -> {
+                Circle o = (Circle) obstacle;
+                yield circleCircleHit(x, y, r, vx, vy, o.x(), o.y(), o.r());
+            }
+            case RECT -> {
+                Rect o = (Rect) obstacle;
+                yield circleRectHit(x, y, r, vx, vy, o.x(), o.y(), o.w(), o.h());
+            }
+            case SEGMENT -> {
+                Segment o = (Segment) obstacle;
+                yield circleSegmentHit(x, y, r, vx, vy, o.x1(), o.y1(), o.x2(), o.y2());
+            }
+            case ELLIPSE, CAPSULE, POLYGON -> ConvexSweep.circleTimeOfImpact(made, x, y, r, vx, vy, obstacle);
         };
+    }
+
+    /**
+     * A moving rectangle into a standing circle: the same motion seen from the other shape,
+     * the circle moving by {@code (-vx, -vy)} into the rectangle; the normal still points
+     * from the mover (the rectangle) into the circle.
+     */
+    private static Hit rectCircle(float x, float y, float w, float h, float vx, float vy, float cx, float cy, float r) {
+        Earliest e = SweptPairs.circleRectEntry(cx, cy, r, -vx, -vy, x, y, w, h);
+        Earliest grown = SweptPairs.decided(e) ? e
+                : SweptPairs.circleRectGrown(SweptPairs.grownEntry(), cx, cy, r, SweptPairs.slack(x, vx), SweptPairs.slack(y, vy),
+                -vx, -vy, x, y, w, h);
+        float t = SweptPairs.answer(e, grown, SweptPairs.rectCircleAt(x, y, w, h, vx, vy, cx, cy, r),
+                x, vx, y, vy);
+        return SweptPairs.hit(t, e, grown, true);
     }
 
     /** {@link #timeOfImpact(Shape, float, float, Shape)} for a segment mover, valid values. */

@@ -448,15 +448,9 @@ public final class World {
     }
 
     /** The world changes: the mover's pose, shape and box; the collisions handed back. */
-    Collisions commit(Body m, Shape start, Shape end, List<Collision> out, boolean finished) {
+    Collisions commit(Body m, Spot start, Spot end, List<Collision> out, boolean finished) {
         table.moved(m, start, end);
         return collisions(out, finished);
-    }
-
-    /** {@link #commit} for a box the rectangles' walk moved from (startX, startY) to (x, y): no shape made. */
-    Collisions commitBox(Body m, float startX, float startY, float x, float y, float w, float h, List<Collision> out) {
-        table.movedBox(m, startX, startY, x, y, w, h);
-        return collisions(out, true);
     }
 
     /** A move's collisions: kept for the next step's contacts, and handed back. */

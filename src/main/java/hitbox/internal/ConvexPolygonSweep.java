@@ -85,12 +85,20 @@ public final class ConvexPolygonSweep {
      * inside (the shapes touch), the general way ({@link ConvexSweep#byPieces}) answers.
      */
     public static Hit rectTimeOfImpact(Rect mover, float vx, float vy, Polygon obstacle) {
-        float x = mover.x(), y = mover.y(), w = mover.w(), h = mover.h();
+        return rectTimeOfImpact(mover, mover.x(), mover.y(), mover.w(), mover.h(), vx, vy, obstacle);
+    }
+
+    /**
+     * {@link #rectTimeOfImpact(Rect, float, float, Polygon)} for the box (x, y, w, h), its
+     * {@code Rect} given if made (else null: made only where the general way answers).
+     */
+    public static Hit rectTimeOfImpact(Rect made, float x, float y, float w, float h, float vx, float vy, Polygon obstacle) {
         double[] q = HiddenParts.corners(obstacle);
         int winding = HiddenParts.convexWinding(obstacle);
         Earliest e = rectEntry(SweptPairs.exactEntry(), x, y, w, h, vx, vy, q, winding, 0, 0);
         if (e.inside) {
-            return ConvexSweep.byPieces(mover, vx, vy, obstacle);  // touching, and rounding put the start inside
+            // Touching, and rounding put the start inside.
+            return ConvexSweep.byPieces(made != null ? made : new Rect(x, y, w, h), vx, vy, obstacle);
         }
         Earliest grown = SweptPairs.decided(e) ? e
                 : rectEntry(SweptPairs.grownEntry(), x, y, w, h, vx, vy, q, winding,
@@ -120,11 +128,20 @@ public final class ConvexPolygonSweep {
      * ({@link ConvexSweep#byPieces}) answers.
      */
     public static Hit circleTimeOfImpact(Circle mover, float vx, float vy, Polygon obstacle) {
-        float cx = mover.x(), cy = mover.y(), r = mover.r();
+        return circleTimeOfImpact(mover, mover.x(), mover.y(), mover.r(), vx, vy, obstacle);
+    }
+
+    /**
+     * {@link #circleTimeOfImpact(Circle, float, float, Polygon)} for the circle at (cx, cy)
+     * of radius r, its {@code Circle} given if made (else null: made only where the general
+     * way answers).
+     */
+    public static Hit circleTimeOfImpact(Circle made, float cx, float cy, float r, float vx, float vy, Polygon obstacle) {
         float[] xy = HiddenParts.raw(obstacle);
         Earliest e = SweptPairs.circlePolygonEntry(SweptPairs.exactEntry(), cx, cy, r, vx, vy, xy, 0, 0);
         if (e.inside) {
-            return ConvexSweep.byPieces(mover, vx, vy, obstacle);  // touching, and rounding put the start inside
+            // Touching, and rounding put the start inside.
+            return ConvexSweep.byPieces(made != null ? made : new Circle(cx, cy, r), vx, vy, obstacle);
         }
         Earliest grown = SweptPairs.decided(e) ? e
                 : SweptPairs.circlePolygonEntry(SweptPairs.grownEntry(), cx, cy, r, vx, vy, xy,

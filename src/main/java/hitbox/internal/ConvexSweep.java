@@ -65,6 +65,48 @@ public final class ConvexSweep {
      */
     private static final int PASS_STEPS = 90;
 
+    /**
+     * {@link #timeOfImpact} for a box mover (x, y, w, h) given as numbers, its {@code Rect}
+     * given if made (else null): against a convex polygon the same steps on the numbers, no
+     * {@code Rect} made; any other pair by the shape, made if need be.
+     */
+    public static Hit rectTimeOfImpact(Rect made, float x, float y, float w, float h, float vx, float vy, Shape obstacle) {
+        if (w > 0 && h > 0 && ShapeKind.of(obstacle) == ShapeKind.POLYGON && HiddenParts.convexWinding((Polygon) obstacle) != 0) {
+            if (apart(x, y, (double) x + w, (double) y + h, vx, vy, obstacle)) {
+                return null;
+            }
+            if (Overlaps.rectWith(x, y, w, h, obstacle)) {
+                return SweptPairs.OVERLAPPING;
+            }
+            if (vx == 0 && vy == 0) {
+                return null;
+            }
+            return ConvexPolygonSweep.rectTimeOfImpact(made, x, y, w, h, vx, vy, (Polygon) obstacle);
+        }
+        return timeOfImpact(made != null ? made : new Rect(x, y, w, h), vx, vy, obstacle);
+    }
+
+    /**
+     * {@link #timeOfImpact} for a circle mover at (x, y) of radius r given as numbers, its
+     * {@code Circle} given if made (else null): against a polygon the same steps on the
+     * numbers, no {@code Circle} made; any other pair by the shape, made if need be.
+     */
+    public static Hit circleTimeOfImpact(Circle made, float x, float y, float r, float vx, float vy, Shape obstacle) {
+        if (r > 0 && ShapeKind.of(obstacle) == ShapeKind.POLYGON) {
+            if (apart((double) x - r, (double) y - r, (double) x + r, (double) y + r, vx, vy, obstacle)) {
+                return null;
+            }
+            if (Overlaps.circleWith(x, y, r, obstacle)) {
+                return SweptPairs.OVERLAPPING;
+            }
+            if (vx == 0 && vy == 0) {
+                return null;
+            }
+            return ConvexPolygonSweep.circleTimeOfImpact(made, x, y, r, vx, vy, (Polygon) obstacle);
+        }
+        return timeOfImpact(made != null ? made : new Circle(x, y, r), vx, vy, obstacle);
+    }
+
     /** The hit of a mover moving by (vx, vy) into the obstacle (both valid), or null. */
     public static Hit timeOfImpact(Shape mover, float vx, float vy, Shape obstacle) {
         if (apart(mover, vx, vy, obstacle)) {
@@ -277,7 +319,11 @@ public final class ConvexSweep {
     public static boolean apart(Shape m, float vx, float vy, Shape o) {
         // The shapes' extents in double (Extents), not their bounds: a circle's bounds would be
         // a new Rect on every sweep.
-        double mx = Extents.minX(m), my = Extents.minY(m), mr = Extents.maxX(m), mb = Extents.maxY(m);
+        return apart(Extents.minX(m), Extents.minY(m), Extents.maxX(m), Extents.maxY(m), vx, vy, o);
+    }
+
+    /** {@link #apart(Shape, float, float, Shape)} for a mover of extents (mx, my) to (mr, mb). */
+    private static boolean apart(double mx, double my, double mr, double mb, float vx, float vy, Shape o) {
         double ox = Extents.minX(o), oy = Extents.minY(o), or = Extents.maxX(o), ob = Extents.maxY(o);
         double left = Math.min(mx, mx + vx), top = Math.min(my, my + vy);
         double right = Math.max(mr, mr + vx), bottom = Math.max(mb, mb + vy);

@@ -160,19 +160,30 @@ public final class Extents {
             }
             case CIRCLE -> {
                 Circle c = (Circle) s;
-                yield Math.max(Math.abs(c.x()), Math.abs(c.y())) + (double) c.r();
+                yield circleReach(c.x(), c.y(), c.r());
             }
-            case RECT -> box((Rect) s);
+            case RECT -> {
+                Rect r = (Rect) s;
+                yield boxReach(r.x(), r.y(), r.w(), r.h());
+            }
             case SEGMENT -> {
                 Segment g = (Segment) s;
                 yield Math.max(Math.max(Math.abs(g.x1()), Math.abs(g.x2())), Math.max(Math.abs(g.y1()), Math.abs(g.y2())));
             }
-            case POLYGON -> box(HiddenParts.bounds((Polygon) s));
+            case POLYGON -> {
+                Rect r = HiddenParts.bounds((Polygon) s);
+                yield boxReach(r.x(), r.y(), r.w(), r.h());
+            }
         };
     }
 
-    /** A box's reach: its four edges by size, the far ones added in double. */
-    private static double box(Rect r) {
-        return Math.max(Math.max(Math.abs(r.x()), Math.abs((double) r.x() + r.w())), Math.max(Math.abs(r.y()), Math.abs((double) r.y() + r.h())));
+    /** {@link #reach} of the box (x, y, w, h): its four edges by size, the far ones added in double. */
+    public static double boxReach(float x, float y, float w, float h) {
+        return Math.max(Math.max(Math.abs(x), Math.abs((double) x + w)), Math.max(Math.abs(y), Math.abs((double) y + h)));
+    }
+
+    /** {@link #reach} of the circle at (x, y) of radius r. */
+    public static double circleReach(float x, float y, float r) {
+        return Math.max(Math.abs(x), Math.abs(y)) + (double) r;
     }
 }

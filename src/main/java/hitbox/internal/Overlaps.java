@@ -134,13 +134,31 @@ public final class Overlaps {
         return switch (ShapeKind.of(other)) {
             case ELLIPSE -> ellipseWith((Ellipse) other, c);
             case CAPSULE -> capsuleWith((Capsule) other, c);
-            case CIRCLE -> circleCircle(c, (Circle) other);
-            case RECT -> circleRect(c, (Rect) other);
+            case CIRCLE, RECT, SEGMENT, POLYGON -> circleWith(c.x(), c.y(), c.r(), other);
+        };
+    }
+
+    /**
+     * {@link #circleWith(Circle, Shape)} for the circle at (x, y) of radius r: a
+     * {@code Circle} is made only for an ellipse or a capsule, which take the pair swapped. A
+     * world's walk tests a moved circle many times a move, and needs no circle made for each.
+     */
+    public static boolean circleWith(float x, float y, float r, Shape other) {
+        return switch (ShapeKind.of(other)) {
+            case ELLIPSE, CAPSULE -> circleWith(new Circle(x, y, r), other);
+            case CIRCLE -> {
+                Circle d = (Circle) other;
+                yield RawTests.circleCircle(x, y, r, d.x(), d.y(), d.r());
+            }
+            case RECT -> {
+                Rect q = (Rect) other;
+                yield RawTests.circleRect(x, y, r, q.x(), q.y(), q.w(), q.h());
+            }
             case SEGMENT -> {
                 Segment s = (Segment) other;
-                yield RawTests.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), c.x(), c.y(), c.r());
+                yield RawTests.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), x, y, r);
             }
-            case POLYGON -> RawTests.polygonCircle(HiddenParts.raw((Polygon) other), c.x(), c.y(), c.r());
+            case POLYGON -> RawTests.polygonCircle(HiddenParts.raw((Polygon) other), x, y, r);
         };
     }
 

@@ -83,11 +83,16 @@ public final class Placement {
     }
 
     /**
-     * Sets a rectangle's numbers: where a rectangles' walk left a box, which then has no
-     * shape until one is asked for ({@link #shape()}).
+     * Sets a rectangle's numbers: where a walk left a box, which then has no shape until one
+     * is asked for ({@link #shape()}).
      */
     public void rect(float x, float y, float w, float h) {
         set(ShapeKind.RECT, x, y, w, h, 0);
+    }
+
+    /** Sets a circle's numbers: where a walk left it, with no shape made. */
+    public void circle(float x, float y, float r) {
+        set(ShapeKind.CIRCLE, x, y, r, 0, 0);
     }
 
     /**
