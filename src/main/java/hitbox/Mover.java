@@ -55,7 +55,7 @@ final class Mover {
     private boolean[] seenBlocked = new boolean[16];
 
     // The obstacles of one leg: a body's shape, or one cell of a grid's.
-    private Shape[] obShape = new Shape[16];
+    private Spot[] obSpot = spots(new Spot[0], 16);
     private Body[] obBody = new Body[16];
     private int[] obCell = new int[16];
     // Each obstacle's hit in this leg, as numbers (no Hit made per sweep): the side met, null
@@ -65,6 +65,7 @@ final class Mover {
     private float[] obNx = new float[16];
     private float[] obNy = new float[16];
     private final float[] swept = new float[3];
+    private final float[] cellBox = new float[4];
     private int obCount;
     // The rectangles' walk: the box it starts from, and its obstacles' boxes (x, y, w, h each).
     private final float[] box = new float[4];
@@ -105,6 +106,8 @@ final class Mover {
     // step back, and a halving's try.
     private final Spot moveStart = new Spot(), cur = new Spot(), meet = new Spot(), at = new Spot();
     private final Spot back = new Spot(), tried = new Spot();
+    // Another body, for a test of the start against it (no shape made for a box or a circle).
+    private final Spot other = new Spot();
 
     // The latest time of the frame at which the walk under way met something.
     private double metTime;
@@ -417,7 +420,7 @@ final class Mover {
                 obSide[i] = null;
                 continue;
             }
-            Side side = cur.sweep(fvx, fvy, obShape[i], swept);
+            Side side = cur.sweep(fvx, fvy, obSpot[i], swept);
             if (side != null && (side == Side.NONE
                     || seenReaction[o.id] != Reaction.CROSS && o.oneWay != Side.NONE && side != o.oneWay)) {
                 side = null;  // overlapping at the start, or a one-way body met from a side that does not block
@@ -548,7 +551,7 @@ final class Mover {
         for (int i = 0; i < obCount; i++) {
             Body o = obBody[i];
             boolean blocks = seenReaction[o.id] != Reaction.CROSS && (o.oneWay == Side.NONE || seenBlocked[o.id]);
-            if (blocks && s.overlaps(obShape[i])) {
+            if (blocks && s.overlaps(obSpot[i])) {
                 return false;
             }
         }
@@ -587,7 +590,7 @@ final class Mover {
             if (o.grid != null) {
                 cells(o, left, top, right, bottom, start);
             } else {
-                addObstacle(o.shape(), o, -1);
+                addObstacle(o, -1).set(o);
             }
         }
     }
@@ -605,19 +608,21 @@ final class Mover {
         for (int row = r0; row <= r1; row++) {
             for (int col = c0; col <= c1; col++) {
                 if (g.isSolid(col, row)) {
-                    Rect cell = g.cellRect(col, row);
-                    if (start == null || !start.overlaps(cell)) {
-                        addObstacle(cell, o, row * g.cols() + col);
+                    g.cellBox(col, row, cellBox);
+                    Spot cell = addObstacle(o, row * g.cols() + col).setBox(cellBox[0], cellBox[1], cellBox[2], cellBox[3]);
+                    if (start != null && start.overlaps(cell)) {
+                        obCount--;  // the start overlaps it: not an obstacle
                     }
                 }
             }
         }
     }
 
-    private void addObstacle(Shape s, Body o, int cell) {
-        if (obCount == obShape.length) {
+    /** Adds an obstacle: a body, or one cell of a grid's; its place is set by the caller. */
+    private Spot addObstacle(Body o, int cell) {
+        if (obCount == obSpot.length) {
             int n = 2 * obCount;
-            obShape = java.util.Arrays.copyOf(obShape, n);
+            obSpot = spots(obSpot, n);
             obBody = java.util.Arrays.copyOf(obBody, n);
             obCell = java.util.Arrays.copyOf(obCell, n);
             obSide = java.util.Arrays.copyOf(obSide, n);
@@ -625,10 +630,18 @@ final class Mover {
             obNx = java.util.Arrays.copyOf(obNx, n);
             obNy = java.util.Arrays.copyOf(obNy, n);
         }
-        obShape[obCount] = s;
         obBody[obCount] = o;
         obCell[obCount] = cell;
-        obCount++;
+        return obSpot[obCount++];
+    }
+
+    /** The spots, grown to n, each its own. */
+    private static Spot[] spots(Spot[] old, int n) {
+        Spot[] grown = java.util.Arrays.copyOf(old, n);
+        for (int i = old.length; i < n; i++) {
+            grown[i] = new Spot();
+        }
+        return grown;
     }
 
     /**
@@ -651,7 +664,7 @@ final class Mover {
             seenOverlap[o.id] = false;
             Reaction r = decide(m, o, filter);
             seenReaction[o.id] = r;
-            if (r != null && o.grid == null && (start == null ? world.overlap(m, o) : start.overlaps(o.shape()))) {
+            if (r != null && o.grid == null && (start == null ? world.overlap(m, o) : start.overlaps(other.set(o)))) {
                 seenOverlap[o.id] = true;
                 seenCrossed[o.id] = true;
                 reportStartOverlap(m, o, r);
@@ -710,7 +723,7 @@ final class Mover {
         obCount = 0;
         cells(o, s.minX(), s.minY(), s.maxX(), s.maxY(), null);
         for (int c = 0; c < obCount; c++) {
-            if (s.overlaps(obShape[c])) {
+            if (s.overlaps(obSpot[c])) {
                 return true;
             }
         }
@@ -755,7 +768,7 @@ final class Mover {
                     obCount = 0;
                     cells(o, out.minX(), out.minY(), out.maxX(), out.maxY(), null);
                     for (int c = 0; c < obCount; c++) {
-                        deepest = deeper(deepest, out.shape(), obShape[c]);
+                        deepest = deeper(deepest, out.shape(), obSpot[c].shape());
                     }
                 } else {
                     deepest = deeper(deepest, out.shape(), o.shape());
@@ -835,19 +848,18 @@ final class Mover {
             if (o.grid != null) {
                 cells(o, left, top, right, bottom, null);
             } else {
-                addObstacle(null, o, -1);  // read as numbers below
+                addObstacle(o, -1).set(o);
             }
         }
         if (boxes.length < 4 * obCount) {
             boxes = new float[Math.max(4 * obCount, 2 * boxes.length)];
         }
         for (int i = 0; i < obCount; i++) {
-            Placement p = obShape[i] == null ? obBody[i].placement() : null;
-            Rect r = p == null ? (Rect) (obShape[i] != null ? obShape[i] : obBody[i].shape()) : null;
-            boxes[4 * i] = p != null ? p.a() : r.x();
-            boxes[4 * i + 1] = p != null ? p.b() : r.y();
-            boxes[4 * i + 2] = p != null ? p.c() : r.w();
-            boxes[4 * i + 3] = p != null ? p.d() : r.h();
+            Spot b = obSpot[i];  // a box: a grid's cell, or a body isBox found one
+            boxes[4 * i] = b.x();
+            boxes[4 * i + 1] = b.y();
+            boxes[4 * i + 2] = b.w();
+            boxes[4 * i + 3] = b.h();
         }
         stopCount = 0;
         MoveAndSlide.walk(x, y, w, h, dx, dy, boxes, obCount, stops, walked);

@@ -3,20 +3,20 @@ package hitbox;
 import hitbox.internal.*;
 
 /**
- * Where a moving body is at one point of its move's walk: a box or a circle kept as numbers,
- * so that a walk's legs, stops and probes make no shape (a game's movers are mostly boxes and
- * circles), any other shape as the shape itself. Each question the walk asks of it (its
- * extents, its overlap with an obstacle, its sweep into one) goes to the same kernel the
- * shape's own method goes to, on the numbers: {@code SpotTest} holds the two together.
+ * Where a body is at one point of a move's walk, the mover or an obstacle: a box or a circle
+ * kept as numbers, so that a walk's legs, stops and probes make no shape (a game's movers are
+ * mostly boxes and circles, and a grid's cells are boxes), any other shape as the shape
+ * itself. Each question the walk asks (extents, an overlap, a sweep) goes to the same kernel
+ * the shapes' own methods go to, on the numbers: {@code SpotTest} holds the two together.
  *
  * <p>Mutable, owned by the world's {@link Mover} and by a character's walk, and set by
  * copying ({@link #set(Spot)}), never shared: one spot per place the walk keeps.
  */
 final class Spot {
-    /** {@link ShapeKind#RECT} or {@link ShapeKind#CIRCLE}: the numbers are the shape; null: {@link #shape} is. */
-    private ShapeKind kind;
-    /** A box's x, y, w and h; a circle's x, y and its radius in w. */
-    private float x, y, w, h;
+    /** The numbers, a box's or a circle's ({@link Placement}'s), when {@link #numbers}. */
+    private final Placement at = new Placement();
+    /** Is it a box or a circle kept as numbers ({@link #at})? Else {@link #shape} is it. */
+    private boolean numbers;
     /** The shape: always for other kinds; for numbers, made when first asked (else null). */
     private Shape shape;
 
@@ -24,30 +24,21 @@ final class Spot {
     Spot set(Shape s) {
         shape = s;
         if (s instanceof Rect r) {
-            kind = ShapeKind.RECT;
-            x = r.x();
-            y = r.y();
-            w = r.w();
-            h = r.h();
+            numbers = true;
+            at.rect(r.x(), r.y(), r.w(), r.h());
         } else if (s instanceof Circle c) {
-            kind = ShapeKind.CIRCLE;
-            x = c.x();
-            y = c.y();
-            w = c.r();
-            h = 0;
+            numbers = true;
+            at.circle(c.x(), c.y(), c.r());
         } else {
-            kind = null;
+            numbers = false;
         }
         return this;
     }
 
     /** Takes a box's numbers, no shape made. */
     Spot setBox(float x, float y, float w, float h) {
-        kind = ShapeKind.RECT;
-        this.x = x;
-        this.y = y;
-        this.w = w;
-        this.h = h;
+        numbers = true;
+        at.rect(x, y, w, h);
         shape = null;
         return this;
     }
@@ -61,22 +52,26 @@ final class Spot {
         if (p == null || p.kind() != ShapeKind.RECT && p.kind() != ShapeKind.CIRCLE) {
             return set(b.shape());
         }
-        kind = p.kind();
-        x = p.a();
-        y = p.b();
-        w = p.c();
-        h = kind == ShapeKind.RECT ? p.d() : 0;
+        numbers = true;
+        if (p.kind() == ShapeKind.RECT) {
+            at.rect(p.a(), p.b(), p.c(), p.d());
+        } else {
+            at.circle(p.a(), p.b(), p.c());
+        }
         shape = b.shape;  // if made
         return this;
     }
 
     /** Takes another spot's place. */
     Spot set(Spot o) {
-        kind = o.kind;
-        x = o.x;
-        y = o.y;
-        w = o.w;
-        h = o.h;
+        numbers = o.numbers;
+        if (numbers) {
+            if (o.at.kind() == ShapeKind.RECT) {
+                at.rect(o.at.a(), o.at.b(), o.at.c(), o.at.d());
+            } else {
+                at.circle(o.at.a(), o.at.b(), o.at.c());
+            }
+        }
         shape = o.shape;
         return this;
     }
@@ -89,14 +84,18 @@ final class Spot {
      *                                  the float range
      */
     Spot translate(float dx, float dy) {
-        if (kind == null) {
+        if (!numbers) {
             shape = shape.translated(dx, dy);
             return this;
         }
         Check.finite("dx", dx);
         Check.finite("dy", dy);
-        x = Check.finite("x + dx", x + dx);
-        y = Check.finite("y + dy", y + dy);
+        float x = Check.finite("x + dx", at.a() + dx), y = Check.finite("y + dy", at.b() + dy);
+        if (box()) {
+            at.rect(x, y, at.c(), at.d());
+        } else {
+            at.circle(x, y, at.c());
+        }
         shape = null;
         return this;
     }
@@ -104,14 +103,34 @@ final class Spot {
     /** @return the shape, made from the numbers when first asked */
     Shape shape() {
         if (shape == null) {
-            shape = kind == ShapeKind.RECT ? new Rect(x, y, w, h) : new Circle(x, y, w);
+            shape = at.shape();
         }
         return shape;
     }
 
-    /** @return is it a box or a circle kept as numbers (then {@link #placeInto} makes no shape)? */
-    boolean numbers() {
-        return kind != null;
+    /** @return is it a box kept as numbers (then {@link #x()} to {@link #h()} are the box)? */
+    boolean box() {
+        return numbers && at.kind() == ShapeKind.RECT;
+    }
+
+    /** @return a box's x, or a circle's */
+    float x() {
+        return at.a();
+    }
+
+    /** @return a box's y, or a circle's */
+    float y() {
+        return at.b();
+    }
+
+    /** @return a box's width */
+    float w() {
+        return at.c();
+    }
+
+    /** @return a box's height */
+    float h() {
+        return at.d();
     }
 
     /**
@@ -119,76 +138,93 @@ final class Spot {
      * The spot's kind is the body's own, as a walk of that body leaves it.
      */
     void placeInto(Body b, double tx, double ty) {
-        if (kind == null || shape != null) {
+        if (!numbers || shape != null) {
             b.placed(tx, ty, shape());
-        } else if (kind == ShapeKind.RECT) {
-            b.placedBox(tx, ty, x, y, w, h);
+        } else if (box()) {
+            b.placedBox(tx, ty, at.a(), at.b(), at.c(), at.d());
         } else {
-            b.placedCircle(tx, ty, x, y, w);
+            b.placedCircle(tx, ty, at.a(), at.b(), at.c());
         }
     }
 
     /** @return {@link Poses#refX}: the x a pose's translation is measured by */
     double refX() {
-        return kind == null ? Poses.refX(shape) : x;
+        return numbers ? at.a() : Poses.refX(shape);
     }
 
     /** @return {@link Poses#refY} */
     double refY() {
-        return kind == null ? Poses.refY(shape) : y;
+        return numbers ? at.b() : Poses.refY(shape);
     }
 
     /** @return {@link Extents#minX} */
     double minX() {
-        return kind == null ? Extents.minX(shape) : kind == ShapeKind.RECT ? x : (double) x - w;
+        return !numbers ? Extents.minX(shape) : box() ? at.a() : (double) at.a() - at.c();
     }
 
     /** @return {@link Extents#minY} */
     double minY() {
-        return kind == null ? Extents.minY(shape) : kind == ShapeKind.RECT ? y : (double) y - w;
+        return !numbers ? Extents.minY(shape) : box() ? at.b() : (double) at.b() - at.c();
     }
 
     /** @return {@link Extents#maxX} */
     double maxX() {
-        return kind == null ? Extents.maxX(shape) : (double) x + w;
+        return !numbers ? Extents.maxX(shape) : (double) at.a() + at.c();
     }
 
     /** @return {@link Extents#maxY} */
     double maxY() {
-        return kind == null ? Extents.maxY(shape) : kind == ShapeKind.RECT ? (double) y + h : (double) y + w;
+        return !numbers ? Extents.maxY(shape) : box() ? (double) at.b() + at.d() : (double) at.b() + at.c();
     }
 
     /** @return {@link Extents#reach} */
     double reach() {
-        return kind == null ? Extents.reach(shape)
-                : kind == ShapeKind.RECT ? Extents.boxReach(x, y, w, h) : Extents.circleReach(x, y, w);
+        return !numbers ? Extents.reach(shape)
+                : box() ? Extents.boxReach(at.a(), at.b(), at.c(), at.d()) : Extents.circleReach(at.a(), at.b(), at.c());
     }
 
     /** @return {@link Shape#overlaps}: does it overlap the other shape? */
     boolean overlaps(Shape other) {
-        if (kind == null) {
+        if (!numbers) {
             return shape.overlaps(other);
         }
-        return kind == ShapeKind.RECT ? Overlaps.rectWith(x, y, w, h, other) : Overlaps.circleWith(x, y, w, other);
+        return box() ? Overlaps.rectWith(at.a(), at.b(), at.c(), at.d(), other) : Overlaps.circleWith(at.a(), at.b(), at.c(), other);
+    }
+
+    /** @return {@link Shape#overlaps}: do the two overlap? Two kept as numbers by their numbers' table. */
+    boolean overlaps(Spot other) {
+        if (numbers && other.numbers) {
+            return PlacedOverlaps.test(at, other.at);
+        }
+        return other.numbers ? overlaps(other.shape()) : overlaps(other.shape);
     }
 
     /**
-     * {@link Sweep#timeOfImpact(Shape, float, float, Shape)} as numbers, no {@code Hit} made
-     * (see {@code Sweep}'s package form).
+     * {@link Sweep#timeOfImpact(Shape, float, float, Shape)} into another spot, as numbers:
+     * no {@code Hit} made (see {@code Sweep}'s package form), and no shape made where both are
+     * kept as numbers.
      *
      * @param out given the hit's t, nx and ny (untouched for no hit)
      * @return the side met ({@link Side#NONE} if overlapping at the start), or null for no
      *         hit within the motion
      */
-    Side sweep(float vx, float vy, Shape obstacle, float[] out) {
-        if (kind == null || !Float.isFinite(vx) || !Float.isFinite(vy)) {
-            return Sweep.timeOfImpact(shape(), vx, vy, obstacle, out);  // which refuses a motion out of range
+    Side sweep(float vx, float vy, Spot obstacle, float[] out) {
+        if (!numbers || !Float.isFinite(vx) || !Float.isFinite(vy)) {
+            // Refused alike: the shape's sweep throws for a motion out of the float range.
+            return Sweep.timeOfImpact(shape(), vx, vy, obstacle.shape(), out);
         }
         boolean recording = SweptPairs.recording(true);
         Hit hit;
         try {
-            hit = kind == ShapeKind.RECT ? Sweep.rectInto((Rect) shape, x, y, w, h, vx, vy, obstacle)
-                    : Sweep.circleInto((Circle) shape, x, y, w, vx, vy, obstacle);
+            Placement o = obstacle.at;
+            if (!obstacle.numbers) {
+                hit = box() ? Sweep.rectInto((Rect) shape, at.a(), at.b(), at.c(), at.d(), vx, vy, obstacle.shape)
+                        : Sweep.circleInto((Circle) shape, at.a(), at.b(), at.c(), vx, vy, obstacle.shape);
+            } else if (box()) {
+                hit = Sweep.rectInto(at.a(), at.b(), at.c(), at.d(), vx, vy, o.kind(), o.a(), o.b(), o.c(), o.d());
+            } else {
+                hit = Sweep.circleInto(at.a(), at.b(), at.c(), vx, vy, o.kind(), o.a(), o.b(), o.c(), o.d());
+            }
         } finally {
             SweptPairs.recording(recording);
         }

@@ -498,6 +498,21 @@ public final class Sweep {
     }
 
     /**
+     * {@link #rectInto(Rect, float, float, float, float, float, float, Shape)} into a box or a
+     * circle given as numbers (a world's walk keeps both as numbers): the same kernels, kind
+     * {@link ShapeKind#RECT} with (ox, oy, ow, oh) or {@link ShapeKind#CIRCLE} with (ox, oy,
+     * ow as the radius).
+     */
+    static Hit rectInto(float x, float y, float w, float h, float vx, float vy, ShapeKind kind, float ox, float oy, float ow, float oh) {
+        return kind == ShapeKind.RECT ? rectRectHit(x, y, w, h, vx, vy, ox, oy, ow, oh) : rectCircle(x, y, w, h, vx, vy, ox, oy, ow);
+    }
+
+    /** {@link #rectInto(float, float, float, float, float, float, ShapeKind, float, float, float, float)} for a circle mover. */
+    static Hit circleInto(float x, float y, float r, float vx, float vy, ShapeKind kind, float ox, float oy, float ow, float oh) {
+        return kind == ShapeKind.RECT ? circleRectHit(x, y, r, vx, vy, ox, oy, ow, oh) : circleCircleHit(x, y, r, vx, vy, ox, oy, ow);
+    }
+
+    /**
      * A moving rectangle into a standing circle: the same motion seen from the other shape,
      * the circle moving by {@code (-vx, -vy)} into the rectangle; the normal still points
      * from the mover (the rectangle) into the circle.

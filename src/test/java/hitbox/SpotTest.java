@@ -30,13 +30,12 @@ class SpotTest {
             Shape other = Sampled.any(rnd);
             // As numbers (no shape kept), moved as the shape moves.
             float dx = (rnd.nextFloat() - 0.5f) * 40, dy = (rnd.nextFloat() - 0.5f) * 40;
-            Spot spot = s instanceof Rect r ? new Spot().setBox(r.x(), r.y(), r.w(), r.h()) : numbersOf((Circle) s);
-            spot.translate(dx, dy);
+            Spot spot = asNumbers(s).translate(dx, dy);
             Shape moved = s.translated(dx, dy);
             String what = moved + " with " + other;
             assertEquals(moved, spot.shape(), what);
-            spot = s instanceof Rect r ? new Spot().setBox(r.x(), r.y(), r.w(), r.h()) : numbersOf((Circle) s);
-            spot.translate(dx, dy);  // again, its shape not made
+            spot = asNumbers(s).translate(dx, dy);  // again, its shape not made
+            Spot otherSpot = asNumbers(other);  // a box or a circle as numbers too, anything else as itself
             assertEquals(Extents.minX(moved), spot.minX(), what);
             assertEquals(Extents.minY(moved), spot.minY(), what);
             assertEquals(Extents.maxX(moved), spot.maxX(), what);
@@ -46,20 +45,25 @@ class SpotTest {
             assertEquals(Poses.refY(moved), spot.refY(), what);
             boolean overlap = moved.overlaps(other);
             assertEquals(overlap, spot.overlaps(other), what);
+            assertEquals(overlap, spot.overlaps(otherSpot), what);
+            assertEquals(overlap, otherSpot.overlaps(spot), what);
             overlaps += overlap ? 1 : 0;
             float vx = (rnd.nextFloat() - 0.5f) * 160, vy = (rnd.nextFloat() - 0.5f) * 160;
             Hit h = Sweep.timeOfImpact(moved, vx, vy, other);
-            Side side = spot.sweep(vx, vy, other, out);
             what += " by (" + vx + ", " + vy + ")";
-            if (h == null) {
-                assertNull(side, what);
-                continue;
+            for (Spot obstacle : new Spot[] {otherSpot, new Spot().set(other)}) {  // as numbers, and with the shape made
+                out[0] = out[1] = out[2] = Float.NaN;
+                Side side = spot.sweep(vx, vy, obstacle, out);
+                if (h == null) {
+                    assertNull(side, what);
+                    continue;
+                }
+                assertEquals(h.side(), side, what);
+                assertEquals(h.t(), out[0], what);
+                assertEquals(h.nx(), out[1], what);
+                assertEquals(h.ny(), out[2], what);
             }
-            assertEquals(h.side(), side, what);
-            assertEquals(h.t(), out[0], what);
-            assertEquals(h.nx(), out[1], what);
-            assertEquals(h.ny(), out[2], what);
-            hits += h.alreadyOverlapping() ? 0 : 1;
+            hits += h != null && !h.alreadyOverlapping() ? 1 : 0;
         }
         assertTrue(hits > 3_000 && overlaps > 3_000, hits + " hits, " + overlaps + " overlaps");
     }
@@ -70,6 +74,14 @@ class SpotTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> box.translate(3e38f, 0));
         IllegalArgumentException f = assertThrows(IllegalArgumentException.class, () -> new Rect(3e38f, 0, 10, 10).translated(3e38f, 0));
         assertEquals(f.getMessage(), e.getMessage());
+    }
+
+    /** A box or a circle as numbers, no shape made; any other shape as itself. */
+    private static Spot asNumbers(Shape s) {
+        if (s instanceof Rect r) {
+            return new Spot().setBox(r.x(), r.y(), r.w(), r.h());
+        }
+        return s instanceof Circle c ? numbersOf(c) : new Spot().set(s);
     }
 
     /** A circle's spot as numbers: taken from a body that has not made its shape. */

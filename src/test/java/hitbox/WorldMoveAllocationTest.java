@@ -204,4 +204,71 @@ class WorldMoveAllocationTest {
             assertEquals(300 + 40, flying[i].shape().bounds().y(), "fell freely");
         }
     }
+
+    /**
+     * The same promise where the obstacles are a grid's cells (a maze's walls, met as numbers,
+     * no cell's rectangle made) and other movers (boxes a walk left as numbers, their shapes
+     * not made for the walk that meets them).
+     */
+    @Test
+    void aMoveAmongGridCellsAndOtherMovers_makesNothingButTheCollisionsItHandsBack() {
+        World w = new World();
+        Grid g = new Grid(400, 30, 20);
+        for (int col = 0; col < 400; col++) {
+            g.set(col, 25, 1);  // a floor of cells, top at 500
+        }
+        w.add(g);
+        int n = 50;
+        Body[] box = new Body[n], ball = new Body[n], carried = new Body[n];
+        for (int i = 0; i < n; i++) {
+            float x = 20 + i * 150;
+            box[i] = w.add(new Rect(x, 490, 10, 10));  // on the grid's floor
+            ball[i] = w.add(new Circle(x + 60, 495, 5));
+            carried[i] = w.add(new Circle(x + 5, 485, 5));  // resting on the box
+        }
+        List<Collision> copies = new ArrayList<>(64);
+        Collisions[] got = new Collisions[3 * n];
+        long moveBytes = 0, remadeBytes = 0;
+        int met = 0;
+        for (int round = 0; round < 40; round++) {
+            float dx = round % 2 == 0 ? 3 : -3;
+            long before = THREADS.getCurrentThreadAllocatedBytes();
+            for (int i = 0; i < n; i++) {
+                got[i] = w.move(box[i], dx, 1);
+                got[n + i] = w.move(ball[i], dx, 1);
+                got[2 * n + i] = w.move(carried[i], dx, 1);  // presses on the box, moved as numbers just before
+            }
+            long after = THREADS.getCurrentThreadAllocatedBytes();
+            long remadeBefore = THREADS.getCurrentThreadAllocatedBytes();
+            for (Collisions c : got) {
+                copies.clear();
+                for (int k0 = 0; k0 < c.size(); k0++) {  // by index: an iterator would count too
+                    Collision k = c.get(k0);
+                    Hit h = k.hit();
+                    copies.add(new Collision(k.mover(), k.other(), k.reaction(), new Hit(h.t(), h.nx(), h.ny(), h.side()),
+                            k.x(), k.y(), k.cell()));
+                }
+                Collisions.of(copies, c.finished());
+            }
+            long remadeAfter = THREADS.getCurrentThreadAllocatedBytes();
+            moveBytes = after - before;
+            remadeBytes = remadeAfter - remadeBefore;
+            met = 0;
+            for (int i = 0; i < 3 * n; i++) {
+                met += got[i].size();
+                if (got[i].size() > 0 && i >= 2 * n) {
+                    assertEquals(box[i - 2 * n], got[i].get(0).other(), "the carried circle pressed on its box");
+                }
+            }
+            w.step(new ArrayList<>());
+        }
+        assertEquals(true, met >= 3 * n, met + " collisions in the last round: each mover met the grid or its box");
+        assertEquals(remadeBytes, moveBytes, "bytes the moves made, against their collisions made again");
+        for (int i = 0; i < n; i++) {
+            float x = 20 + i * 150;
+            assertEquals(new Rect(x, 490, 10, 10), box[i].shape(), "a box slid back and forth along the grid's floor");
+            assertEquals(new Circle(x + 60, 495, 5), ball[i].shape(), "a circle slid back and forth along it");
+            assertEquals(new Circle(x + 5, 485, 5), carried[i].shape(), "a circle slid back and forth along its box");
+        }
+    }
 }
