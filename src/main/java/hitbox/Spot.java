@@ -23,14 +23,18 @@ final class Spot {
     /** Takes a shape: a box's or a circle's numbers, anything else as itself. */
     Spot set(Shape s) {
         shape = s;
-        if (s instanceof Rect r) {
-            numbers = true;
-            at.rect(r.x(), r.y(), r.w(), r.h());
-        } else if (s instanceof Circle c) {
-            numbers = true;
-            at.circle(c.x(), c.y(), c.r());
-        } else {
-            numbers = false;
+        switch (ShapeKind.of(s)) {
+            case RECT -> {
+                Rect r = (Rect) s;
+                at.rect(r.x(), r.y(), r.w(), r.h());
+                numbers = true;
+            }
+            case CIRCLE -> {
+                Circle c = (Circle) s;
+                at.circle(c.x(), c.y(), c.r());
+                numbers = true;
+            }
+            default -> numbers = false;
         }
         return this;
     }

@@ -36,10 +36,11 @@ import java.util.List;
  * <p>Two convex polygons, a rectangle moving into a convex polygon and a circle moving into
  * any polygon go the exact way instead, {@link ConvexPolygonSweep}.
  *
- * <p>This class is longer than most (about 480 lines) because the advancement, the line that
+ * <p>This class is longer than most (about 550 lines) because the advancement, the line that
  * decides whether a pair meets at all and the look-back over the float positions all read
  * the same pieces through the same separating-direction search; apart, each would carry a
- * copy of it.
+ * copy of it. A box's and a circle's sweeps given as numbers ({@link #rectTimeOfImpact},
+ * {@link #circleTimeOfImpact}: a world's walk keeps them so) take the same first steps here.
  *
  * <p>From each pair's entry, {@link SweptPairs#lastClear} finds the promised float t on the
  * real shapes, moved as a sketch moves them ({@code x + t * vx} in float) and tested by

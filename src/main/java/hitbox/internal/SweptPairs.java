@@ -8,12 +8,13 @@ import hitbox.*;
  * entry to the float {@code t} Sweep promises: the largest float at which the mover, moved
  * as a sketch moves it, does not overlap.
  *
- * <p>This class is longer than most (about 820 lines) because it holds both halves of every
+ * <p>This class is longer than most (about 930 lines) because it holds both halves of every
  * swept pair, the exact entries (each also grown by the rounding slack of the float
  * positions) and the two ways from an entry to the promised float: visiting the float
  * positions one by one ({@link #answer}) and the walk ({@link Search}), with the thread's
- * entries, walk and overlap tests they work in; split, each half would be a list of pairs
- * that only the other half reads.
+ * entries, walk and overlap tests they work in, and the hit each sweep ends with (made, or
+ * kept as numbers in the same scratch for a caller that asks many: {@link #recording});
+ * split, each half would be a list of pairs that only the other half reads.
  */
 public final class SweptPairs {
     private SweptPairs() {
