@@ -42,7 +42,7 @@ import hitbox.internal.*;
  * change it throw an {@link IllegalStateException}; reading it still works. A body may not be
  * changed from inside a filter or query callback of its world ({@link IllegalStateException}).
  *
- * <p>This class is longer than most (about 525 lines): the public face of a body (pose,
+ * <p>This class is longer than most (about 565 lines): the public face of a body (pose,
  * teleports, layers, sensor, one-way side, carrier, data) with full javadoc, and the few
  * package-private methods through which alone the world's parts change its state and read
  * where it stands (its shape, or the numbers the pair tests read without making one).

@@ -25,7 +25,15 @@ import java.util.ArrayList;
  * as {@link Sweep#move} does. The gap is at most the skin, {@value #SKIN} pixels near the
  * origin (four float steps of the largest coordinate far from it).
  *
- * <p>This class is longer than most (about 800 lines): the walk, its obstacles, its crossings,
+ * <h2>Nothing made but the collisions</h2>
+ * A walk keeps its places (the start, each leg's meeting point and stop, the obstacles) as
+ * {@link Spot}s: a box or a circle as numbers, so its legs, stops and probes make no shape;
+ * every sweep answers as numbers (no {@code Hit} per candidate); the body keeps where it
+ * ended as numbers, its shape made only when asked. A move of a box or a circle among any
+ * bodies and grids makes nothing but the collisions it hands back
+ * ({@code WorldMoveAllocationTest}); other kinds still make their shape at each stop.
+ *
+ * <p>This class is longer than most (about 880 lines): the walk, its obstacles, its crossings,
  * the rectangles' exact walk and the character's legs share the per-leg arrays here.
  */
 final class Mover {

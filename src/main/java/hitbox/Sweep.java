@@ -84,7 +84,7 @@ import hitbox.internal.*;
  * {@code double}: for whole-number coordinates and velocities every decision (hit or not,
  * which side) is exact.
  *
- * <p>This class is longer than most (about 750 lines) because it is the public face of every
+ * <p>This class is longer than most (about 735 lines) because it is the public face of every
  * swept pair and of the turning sweep, each with its full javadoc; the maths is in
  * package-private kernels ({@code SweptPairs}, {@code MoveAndSlide}, {@code TurningSweep}).
  *
