@@ -105,20 +105,8 @@ class WorldMoveAllocationTest {
                 got[3 * n + i] = climber[i].move(dx, 2);  // pressed enough to follow the ramp down (1.2 for 3)
             }
             long after = THREADS.getCurrentThreadAllocatedBytes();
-            long remadeBefore = THREADS.getCurrentThreadAllocatedBytes();
-            for (Collisions c : got) {
-                copies.clear();
-                for (int k0 = 0; k0 < c.size(); k0++) {  // by index: an iterator would count too
-                    Collision k = c.get(k0);
-                    Hit h = k.hit();
-                    copies.add(new Collision(k.mover(), k.other(), k.reaction(), new Hit(h.t(), h.nx(), h.ny(), h.side()),
-                            k.x(), k.y(), k.cell()));
-                }
-                Collisions.of(copies, c.finished());
-            }
-            long remadeAfter = THREADS.getCurrentThreadAllocatedBytes();
             moveBytes = after - before;
-            remadeBytes = remadeAfter - remadeBefore;
+            remadeBytes = bytesToMakeAgain(got, copies);
             met = 0;
             for (Collisions c : got) {
                 met += c.size();
@@ -140,68 +128,6 @@ class WorldMoveAllocationTest {
             assertEquals(new Rect(x + 100, 480, 10, 20), hero[i].body().shape(), "a character walked back and forth");
             assertEquals(climberStartX[i], climber[i].body().pivotX(), 0.01, "a climber walked up and down the ramp");
             assertEquals(climberStartY[i], climber[i].body().pivotY(), 0.05, "and stands on it where it began");
-        }
-    }
-
-    /**
-     * Issue 29's promise for a box (the rectangles' walk, read from the body's numbers): its
-     * move makes nothing but the collisions it hands back, met or not. The oracle is the
-     * handed-back objects made again (each collision and its hit, the list and its array),
-     * counted by the same counter; the boxes must also have slid the whole way.
-     */
-    @Test
-    void aBoxsMove_makesNothingButTheCollisionsItHandsBack() {
-        World w = new World();
-        for (int i = 0; i < 400; i++) {
-            w.add(new Rect(i * 40, 500, 40, 20));  // a floor of tiles
-        }
-        for (int i = 0; i < 2000; i++) {
-            w.add(new Rect((i % 50) * 40, (i / 50) * 10 - 1000, 10, 5));  // standing bodies far above, never met
-        }
-        Body[] sliding = new Body[200], flying = new Body[200];
-        for (int i = 0; i < 200; i++) {
-            sliding[i] = w.add(new Rect(20 + i * 70, 490, 10, 10));  // on the floor
-            flying[i] = w.add(new Rect(20 + i * 70, 300, 10, 10));  // in the air
-        }
-        List<Collision> copies = new ArrayList<>(64);
-        Collisions[] got = new Collisions[sliding.length + flying.length];
-        long moveBytes = 0, remadeBytes = 0, met = 0;
-        for (int round = 0; round < 40; round++) {
-            float dx = round % 2 == 0 ? 3 : -3;
-            long before = THREADS.getCurrentThreadAllocatedBytes();
-            for (int i = 0; i < sliding.length; i++) {
-                got[i] = w.move(sliding[i], dx, 1);  // pressed down onto the floor: it slides along it
-            }
-            for (int i = 0; i < flying.length; i++) {
-                got[sliding.length + i] = w.move(flying[i], dx, 1);
-            }
-            long after = THREADS.getCurrentThreadAllocatedBytes();
-            long remadeBefore = THREADS.getCurrentThreadAllocatedBytes();
-            for (Collisions c : got) {
-                copies.clear();
-                for (int k0 = 0; k0 < c.size(); k0++) {  // by index: an iterator would count too
-                    Collision k = c.get(k0);
-                    Hit h = k.hit();
-                    copies.add(new Collision(k.mover(), k.other(), k.reaction(), new Hit(h.t(), h.nx(), h.ny(), h.side()),
-                            k.x(), k.y(), k.cell()));
-                }
-                Collisions.of(copies, c.finished());
-            }
-            long remadeAfter = THREADS.getCurrentThreadAllocatedBytes();
-            moveBytes = after - before;
-            remadeBytes = remadeAfter - remadeBefore;
-            met = 0;
-            for (Collisions c : got) {
-                met += c.size();
-            }
-            w.step(new ArrayList<>());
-        }
-        assertEquals(sliding.length, met, "each sliding box met the floor once, the flying ones nothing");
-        assertEquals(remadeBytes, moveBytes, "bytes the moves made, against their collisions made again");
-        for (int i = 0; i < 200; i++) {
-            assertEquals(20 + i * 70, sliding[i].shape().bounds().x(), "slid back and forth along the floor");
-            assertEquals(490, sliding[i].shape().bounds().y(), "stands on the floor");
-            assertEquals(300 + 40, flying[i].shape().bounds().y(), "fell freely");
         }
     }
 
@@ -239,20 +165,8 @@ class WorldMoveAllocationTest {
                 got[2 * n + i] = w.move(carried[i], dx, 1);  // presses on the box, moved as numbers just before
             }
             long after = THREADS.getCurrentThreadAllocatedBytes();
-            long remadeBefore = THREADS.getCurrentThreadAllocatedBytes();
-            for (Collisions c : got) {
-                copies.clear();
-                for (int k0 = 0; k0 < c.size(); k0++) {  // by index: an iterator would count too
-                    Collision k = c.get(k0);
-                    Hit h = k.hit();
-                    copies.add(new Collision(k.mover(), k.other(), k.reaction(), new Hit(h.t(), h.nx(), h.ny(), h.side()),
-                            k.x(), k.y(), k.cell()));
-                }
-                Collisions.of(copies, c.finished());
-            }
-            long remadeAfter = THREADS.getCurrentThreadAllocatedBytes();
             moveBytes = after - before;
-            remadeBytes = remadeAfter - remadeBefore;
+            remadeBytes = bytesToMakeAgain(got, copies);
             met = 0;
             for (int i = 0; i < 3 * n; i++) {
                 met += got[i].size();
@@ -270,5 +184,25 @@ class WorldMoveAllocationTest {
             assertEquals(new Circle(x + 60, 495, 5), ball[i].shape(), "a circle slid back and forth along it");
             assertEquals(new Circle(x + 5, 485, 5), carried[i].shape(), "a circle slid back and forth along its box");
         }
+    }
+
+    /**
+     * The oracle of the bytes a round of moves may make: the bytes of making its collisions
+     * again, each collision and its hit, and each move's list with its array, by the same
+     * counter (by index: an iterator would count too).
+     */
+    private static long bytesToMakeAgain(Collisions[] got, List<Collision> copies) {
+        long before = THREADS.getCurrentThreadAllocatedBytes();
+        for (Collisions c : got) {
+            copies.clear();
+            for (int i = 0; i < c.size(); i++) {
+                Collision k = c.get(i);
+                Hit h = k.hit();
+                copies.add(new Collision(k.mover(), k.other(), k.reaction(), new Hit(h.t(), h.nx(), h.ny(), h.side()),
+                        k.x(), k.y(), k.cell()));
+            }
+            Collisions.of(copies, c.finished());
+        }
+        return THREADS.getCurrentThreadAllocatedBytes() - before;
     }
 }
