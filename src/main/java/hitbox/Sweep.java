@@ -331,11 +331,6 @@ public final class Sweep {
 
     // ---------------------------------------------------------------- on shapes
 
-
-
-
-
-
     /**
      * Where does a moving segment first run into a standing rectangle? The rectangle moving
      * by {@code (-vx, -vy)} into the segment; the normal points from the segment into the
@@ -361,7 +356,6 @@ public final class Sweep {
                 x1, vx, y1, vy, x2, vx, y2, vy);
         return SweptPairs.hit(t, e, grown, true);
     }
-
 
     /**
      * Where does a moving segment first run into a standing circle? The circle moving by
