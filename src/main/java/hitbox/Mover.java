@@ -223,8 +223,7 @@ final class Mover {
             }
             // Times never run back, though a stop a skin short of a hit starts the next leg a
             // little before the hit's own time.
-            report(m, start, meet, o, obCell[best], reaction,
-                    new Hit(timeMet(time + t * (1 - time)), obNx[best], obNy[best], obSide[best]), metMoved);
+            report(m, start, meet, o, obCell[best], reaction, timeMet(time + t * (1 - time)), best, metMoved);
             double tStop = t;
             at.set(meet);
             boolean moved = metMoved;
@@ -322,16 +321,19 @@ final class Mover {
         return (float) metTime;
     }
 
-    /** Adds a collision, unless it repeats the last one of this move without having moved. */
-    private void report(Body m, Spot start, Spot at, Body o, int cell, Reaction reaction, Hit hit, boolean moved) {
+    /**
+     * Adds a collision with obstacle i, met at the frame's time {@code when}, unless it repeats
+     * the last one of this move without having moved.
+     */
+    private void report(Body m, Spot start, Spot at, Body o, int cell, Reaction reaction, float when, int i, boolean moved) {
         if (!moved && !found.isEmpty()) {
             Collision last = found.get(found.size() - 1);
-            if (last.other() == o && last.cell() == cell && last.nx() == hit.nx() && last.ny() == hit.ny()
+            if (last.other() == o && last.cell() == cell && last.nx() == obNx[i] && last.ny() == obNy[i]
                     && last.reaction() == reaction) {
-                return;
+                return;  // before its Hit is made: a dropped repeat makes nothing
             }
         }
-        found.add(new Collision(m, o, reaction, hit, poseX(m, start, at), poseY(m, start, at), cell));
+        found.add(new Collision(m, o, reaction, new Hit(when, obNx[i], obNy[i], obSide[i]), poseX(m, start, at), poseY(m, start, at), cell));
     }
 
     // ---------------------------------------------------------------- planes
@@ -683,7 +685,8 @@ final class Mover {
 
     /** Reports a body the mover overlapped when its move began, once a move. */
     private void reportStartOverlap(Body m, Body o, Reaction r) {
-        for (Collision c : found) {
+        for (int i = 0, n = found.size(); i < n; i++) {  // by index: no iterator made
+            Collision c = found.get(i);
             if (c.other() == o && c.hit().alreadyOverlapping()) {
                 return;
             }
