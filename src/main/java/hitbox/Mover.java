@@ -75,8 +75,7 @@ final class Mover {
     private final float[] swept = new float[3];
     private final float[] cellBox = new float[4];
     private int obCount;
-    // The rectangles' walk: the box it starts from, and its obstacles' boxes (x, y, w, h each).
-    private final float[] box = new float[4];
+    // The rectangles' walk's obstacles' boxes (x, y, w, h each).
     private float[] boxes = new float[64];
 
     // The planes of the move under way (normals from the mover into what it met).
@@ -145,13 +144,13 @@ final class Mover {
     Collisions move(Body m, float dx, float dy, CollisionFilter filter) {
         int st = ++stamp;
         found.clear();
-        if (!m.sensor && startBox(m)) {
-            float x = box[0], y = box[1], w = box[2], h = box[3];
-            if (rectWalk(m, x, y, w, h, dx, dy, filter, st)) {
-                return world.commit(m, moveStart.setBox(x, y, w, h), walkEnd.setBox(walked[0], walked[1], w, h), found, true);
+        moveStart.set(m);
+        if (!m.sensor && moveStart.box()) {
+            float w = moveStart.w(), h = moveStart.h();
+            if (rectWalk(m, moveStart.x(), moveStart.y(), w, h, dx, dy, filter, st)) {
+                return world.commit(m, moveStart, walkEnd.setBox(walked[0], walked[1], w, h), found, true);
             }
         }
-        moveStart.set(m);
         walk(m, moveStart, moveStart, dx, dy, filter, st, null);
         return world.commit(m, moveStart, walkEnd, found, walkFinished);
     }
@@ -800,35 +799,6 @@ final class Mover {
 
     // ---------------------------------------------------------------- the rectangles' walk
 
-    /** The box a box body's move starts from, into {@link #box}: false if the body is no box. */
-    private boolean startBox(Body m) {
-        Placement p = m.placement();
-        if (p != null) {
-            if (p.kind() != ShapeKind.RECT) {
-                return false;
-            }
-            box[0] = p.a();
-            box[1] = p.b();
-            box[2] = p.c();
-            box[3] = p.d();
-            return true;
-        }
-        if (!(m.shape() instanceof Rect r)) {  // only the shape knows (a quarter turn)
-            return false;
-        }
-        box[0] = r.x();
-        box[1] = r.y();
-        box[2] = r.w();
-        box[3] = r.h();
-        return true;
-    }
-
-    /** Is a body's shape a rectangle? Read from its numbers where it has them (no shape made). */
-    private static boolean isBox(Body o) {
-        Placement p = o.placement();
-        return p != null ? p.kind() == ShapeKind.RECT : o.shape() instanceof Rect;
-    }
-
     /**
      * A box's slide among boxes, by {@link Sweep#move}'s own walk, all as numbers: the box at
      * (x, y) of size w by h, the bodies as it stands; the end into {@link #walked}. False,
@@ -846,7 +816,7 @@ final class Mover {
                 continue;
             }
             Reaction re = reaction(m, o, filter, null, st);
-            if (re != null && (re != Reaction.SLIDE || o.oneWay != Side.NONE || o.grid == null && !isBox(o))) {
+            if (re != null && (re != Reaction.SLIDE || o.oneWay != Side.NONE || o.grid == null && !other.set(o).box())) {
                 return false;
             }
         }
@@ -866,7 +836,7 @@ final class Mover {
             boxes = new float[Math.max(4 * obCount, 2 * boxes.length)];
         }
         for (int i = 0; i < obCount; i++) {
-            Spot b = obSpot[i];  // a box: a grid's cell, or a body isBox found one
+            Spot b = obSpot[i];  // a box: a grid's cell, or a body found a box above
             boxes[4 * i] = b.x();
             boxes[4 * i + 1] = b.y();
             boxes[4 * i + 2] = b.w();

@@ -60,8 +60,6 @@ class SourceRulesTest {
             "Overlaps.java", 2,
             // Polygon.equals(Object): equality, not a question of kind.
             "Polygon.java", 1,
-            // Mover: the exact rectangle walk applies to a rectangle among rectangles only.
-            "Mover.java", 2,
             // Poses: inside the dispatch's SEGMENT, CAPSULE case, which of the two it is.
             "Poses.java", 1);
 
