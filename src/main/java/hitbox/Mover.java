@@ -33,7 +33,7 @@ import java.util.ArrayList;
  * bodies and grids makes nothing but the collisions it hands back
  * ({@code WorldMoveAllocationTest}); other kinds still make their shape at each stop.
  *
- * <p>This class is longer than most (about 880 lines): the walk, its obstacles, its crossings,
+ * <p>This class is longer than most (about 860 lines): the walk, its obstacles, its crossings,
  * the rectangles' exact walk and the character's legs share the per-leg arrays here.
  */
 final class Mover {
