@@ -459,9 +459,14 @@ public final class Grid {
      * @return the rectangle the cell covers, never null
      */
     public Rect cellRect(int col, int row) {
+        // The same float boundaries every pixel test uses; the next index in long, so that the
+        // last column does not overflow. A cell beyond the float range is held at it.
         float x = edge(col, cellWidth), y = edge(row, cellHeight);
-        return cellFits(col, row) ? new Rect(x, y, edge(col + 1L, cellWidth) - x, edge(row + 1L, cellHeight) - y)
-                : Bounds.enclosing((double) col * cellWidth, (double) row * cellHeight,
+        float w = edge(col + 1L, cellWidth) - x, h = edge(row + 1L, cellHeight) - y;
+        if (Float.isFinite(x) && Float.isFinite(y) && Float.isFinite(w) && Float.isFinite(h)) {
+            return new Rect(x, y, w, h);
+        }
+        return Bounds.enclosing((double) col * cellWidth, (double) row * cellHeight,
                 (col + 1L) * (double) cellWidth, (row + 1L) * (double) cellHeight);
     }
 
@@ -470,29 +475,19 @@ public final class Grid {
      * cell is within the float range: for a world's walk, which meets cells every leg.
      */
     void cellBox(int col, int row, float[] out) {
-        if (!cellFits(col, row)) {
-            Rect r = cellRect(col, row);
-            out[0] = r.x();
-            out[1] = r.y();
-            out[2] = r.w();
-            out[3] = r.h();
-            return;
-        }
-        // The same float boundaries every pixel test uses; the next index in long, so that the
-        // last column does not overflow. A cell beyond the float range is held at it.
         float x = edge(col, cellWidth), y = edge(row, cellHeight);
+        float w = edge(col + 1L, cellWidth) - x, h = edge(row + 1L, cellHeight) - y;
+        if (!(Float.isFinite(x) && Float.isFinite(y) && Float.isFinite(w) && Float.isFinite(h))) {
+            Rect r = cellRect(col, row);  // held at the float range, as cellRect holds it
+            x = r.x();
+            y = r.y();
+            w = r.w();
+            h = r.h();
+        }
         out[0] = x;
         out[1] = y;
-        out[2] = edge(col + 1L, cellWidth) - x;
-        out[3] = edge(row + 1L, cellHeight) - y;
-    }
-
-    /** Are the cell's x, y, width and height all within the float range? */
-    private boolean cellFits(int col, int row) {
-        float x = edge(col, cellWidth), right = edge(col + 1L, cellWidth);
-        float y = edge(row, cellHeight), bottom = edge(row + 1L, cellHeight);
-        float w = right - x, h = bottom - y;
-        return Float.isFinite(x) && Float.isFinite(y) && Float.isFinite(w) && Float.isFinite(h);
+        out[2] = w;
+        out[3] = h;
     }
 
     /** Cell boundaries: the float nearest i * size. Every pixel test goes through this. */

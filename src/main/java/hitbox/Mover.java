@@ -222,7 +222,7 @@ final class Mover {
             }
             // Times never run back, though a stop a skin short of a hit starts the next leg a
             // little before the hit's own time.
-            report(m, start, meet, o, obCell[best], reaction, timeMet(time + t * (1 - time)), best, metMoved);
+            report(m, start, meet, reaction, timeMet(time + t * (1 - time)), best, metMoved);
             double tStop = t;
             at.set(meet);
             boolean moved = metMoved;
@@ -324,7 +324,9 @@ final class Mover {
      * Adds a collision with obstacle i, met at the frame's time {@code when}, unless it repeats
      * the last one of this move without having moved.
      */
-    private void report(Body m, Spot start, Spot at, Body o, int cell, Reaction reaction, float when, int i, boolean moved) {
+    private void report(Body m, Spot start, Spot at, Reaction reaction, float when, int i, boolean moved) {
+        Body o = obBody[i];
+        int cell = obCell[i];
         if (!moved && !found.isEmpty()) {
             Collision last = found.get(found.size() - 1);
             if (last.other() == o && last.cell() == cell && last.nx() == obNx[i] && last.ny() == obNy[i]
@@ -766,7 +768,7 @@ final class Mover {
                 if (r == null) {
                     continue;
                 }
-                if (first && o.grid == null && out.overlaps(o.shape())) {
+                if (first && o.grid == null && out.overlaps(other.set(o))) {
                     reportStartOverlap(m, o, r);
                 }
                 if (r == Reaction.CROSS) {
@@ -801,9 +803,9 @@ final class Mover {
 
     /**
      * A box's slide among boxes, by {@link Sweep#move}'s own walk, all as numbers: the box at
-     * (x, y) of size w by h, the bodies as it stands; the end into {@link #walked}. False,
-     * and nothing found, when some body met is not a box that slides (then the general walk
-     * runs).
+     * (x, y) of size w by h, the bodies as it stands; the end into {@link #walked}. False
+     * when some body met is not a box that slides (then the general walk runs, the start's
+     * overlaps already reported).
      */
     private boolean rectWalk(Body m, float x, float y, float w, float h, float dx, float dy, CollisionFilter filter, int st) {
         double left = Math.min(x, (double) x + dx), right = Math.max((double) x + w, (double) x + w + dx);

@@ -56,28 +56,30 @@ final class Spot {
         if (p == null || p.kind() != ShapeKind.RECT && p.kind() != ShapeKind.CIRCLE) {
             return set(b.shape());
         }
-        numbers = true;
-        if (p.kind() == ShapeKind.RECT) {
-            at.rect(p.a(), p.b(), p.c(), p.d());
-        } else {
-            at.circle(p.a(), p.b(), p.c());
-        }
+        take(p);
         shape = b.shape;  // if made
         return this;
     }
 
     /** Takes another spot's place. */
     Spot set(Spot o) {
-        numbers = o.numbers;
-        if (numbers) {
-            if (o.at.kind() == ShapeKind.RECT) {
-                at.rect(o.at.a(), o.at.b(), o.at.c(), o.at.d());
-            } else {
-                at.circle(o.at.a(), o.at.b(), o.at.c());
-            }
+        if (o.numbers) {
+            take(o.at);
+        } else {
+            numbers = false;
         }
         shape = o.shape;
         return this;
+    }
+
+    /** Takes a box's or a circle's numbers. */
+    private void take(Placement p) {
+        numbers = true;
+        if (p.kind() == ShapeKind.RECT) {
+            at.rect(p.a(), p.b(), p.c(), p.d());
+        } else {
+            at.circle(p.a(), p.b(), p.c());
+        }
     }
 
     /**

@@ -1,8 +1,7 @@
 package hitbox.internal;
 
 import hitbox.*;
-import java.util.ArrayList;
-import java.util.List;
+import java.util.Arrays;
 
 /**
  * The walk behind {@link Sweep#move}: a box goes until it first hits an obstacle, stands
@@ -29,17 +28,19 @@ public final class MoveAndSlide {
     /** {@link #move(Rect, float, float, Iterable)}, telling {@code stops} (if not null) of each stop. */
     public static Sweep.Move move(Rect mover, float vx, float vy, Iterable<Rect> obstacles, Stops stops) {
         float[] end = new float[4];
-        List<Rect> list = new ArrayList<>();
-        obstacles.forEach(list::add);
-        float[] boxes = new float[4 * list.size()];
-        for (int i = 0; i < list.size(); i++) {
-            Rect o = list.get(i);
-            boxes[4 * i] = o.x();
-            boxes[4 * i + 1] = o.y();
-            boxes[4 * i + 2] = o.w();
-            boxes[4 * i + 3] = o.h();
+        float[] boxes = new float[16];
+        int count = 0;
+        for (Rect o : obstacles) {
+            if (4 * count == boxes.length) {
+                boxes = Arrays.copyOf(boxes, 2 * boxes.length);
+            }
+            boxes[4 * count] = o.x();
+            boxes[4 * count + 1] = o.y();
+            boxes[4 * count + 2] = o.w();
+            boxes[4 * count + 3] = o.h();
+            count++;
         }
-        int sides = walk(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy, boxes, list.size(), stops, end);
+        int sides = walk(mover.x(), mover.y(), mover.w(), mover.h(), vx, vy, boxes, count, stops, end);
         return new Sweep.Move(end[0], end[1], end[2], end[3], SideSets.of(sides));
     }
 
