@@ -794,7 +794,15 @@ final class Mover {
         }
     }
 
+    /**
+     * The deeper of the best contact so far and the contact of {@code cur} with {@code other}.
+     * A segment has no inside to be pushed out of (a segment body across the mover, or a
+     * segment that moves): it is passed by, as the walk lets a start that overlaps it move off.
+     */
     private static Contact deeper(Contact best, Shape cur, Shape other) {
+        if (!ShapeKind.of(cur).hasArea() || !ShapeKind.of(other).hasArea()) {
+            return best;
+        }
         Contact c = cur.contact(other);
         return c != null && (best == null || c.depth() > best.depth()) ? c : best;
     }

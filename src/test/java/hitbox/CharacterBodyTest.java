@@ -201,6 +201,18 @@ class CharacterBodyTest {
     }
 
     @Test
+    void spawnedAcrossASegment_walksOffIt() {
+        World w = new World();
+        w.add(new Rect(0, 400, 800, 40));
+        Body line = w.add(new Segment(100, 350, 200, 390));  // across the character's head
+        CharacterBody hero = w.addCharacter(new Rect(140, 370, 20, 30));
+        Collisions got = hero.move(5, 1);  // a segment has no inside to push out of: it is walked off
+        assertTrue(got.stream().anyMatch(c -> c.other() == line && c.hit().alreadyOverlapping()), got.toString());
+        assertEquals(new Rect(145, 370, 20, 30), hero.body().shape());
+        assertTrue(hero.onGround());
+    }
+
+    @Test
     void spawnedInsideAGridsCell_isPushedOutAndStandsOnIt() {
         World w = new World();
         Grid grid = new Grid(10, 10, 20);
