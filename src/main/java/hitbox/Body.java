@@ -19,11 +19,12 @@ import hitbox.internal.*;
  * other kinds stay their kind. At angle 0 the shape is the shape added, each coordinate moved
  * by the same amount, so a rectangle keeps its exact size.
  *
- * <p><b>Moving by hand</b> ({@link #moveTo}, {@link #moveBy}, {@link #turnTo}, {@link #turnBy})
- * is a teleport: no sweep, nothing in the way is looked at. It re-validates nothing, takes time
- * independent of the number of bodies (a polygon's turn is linear in its vertices), and
- * allocates nothing once the world has grown. To move through the others, use
- * {@link World#move}.
+ * <p><b>Moving by hand</b> ({@link #moveTo}, {@link #turnTo}, {@link #turnBy}) is a teleport:
+ * no sweep, nothing in the way is looked at. It re-validates nothing, takes time independent
+ * of the number of bodies (a polygon's turn is linear in its vertices), and allocates nothing
+ * once the world has grown. To move through the others, use {@link World#move}; to teleport by
+ * an offset, {@code moveTo(pivotX() + dx, pivotY() + dy)} (one name, {@code move}, for the move
+ * that looks at what is in the way).
  *
  * <p><b>Layers</b>, Box2D's rule: each body has a category (the bits it is) and a mask (the
  * bits it meets). Two bodies meet only when each one's category is in the other's mask
@@ -346,27 +347,6 @@ public final class Body {
         Check.finite("angle", angle);
         World w = live("moveTo");
         w.teleport(this, (double) x - homePivotX, (double) y - homePivotY, angle, "x, y and angle");
-        return this;
-    }
-
-    /**
-     * Teleports the body by (dx, dy), its angle kept.
-     *
-     * <p>A NaN or infinite amount throws, naming it, and the body stays where it was.
-     *
-     * @param dx how far right
-     * @param dy how far down
-     * @return this body, for chaining, never null
-     * @throws IllegalArgumentException if dx or dy is NaN or infinite, or the shape would leave
-     *                                  the float range
-     * @throws IllegalStateException    if the body was removed, is a grid's, or this is called
-     *                                  from inside a callback of its world
-     */
-    public Body moveBy(float dx, float dy) {
-        Check.finite("dx", dx);
-        Check.finite("dy", dy);
-        World w = live("moveBy");
-        w.teleport(this, tx + dx, ty + dy, angle, "dx and dy");
         return this;
     }
 

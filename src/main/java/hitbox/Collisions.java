@@ -20,6 +20,9 @@ public final class Collisions extends AbstractList<Collision> implements RandomA
     /** No collision, and the move finished: the answer of every move that met nothing. */
     public static final Collisions NONE = new Collisions(new Collision[0], true);
 
+    /** No collision, and the move did not finish: what a move that fills the caller's list reports. */
+    static final Collisions UNFINISHED = new Collisions(new Collision[0], false);
+
     /** The array toArray is handed to learn the type: shared, so a copy makes one array only. */
     private static final Collision[] EMPTY = new Collision[0];
 

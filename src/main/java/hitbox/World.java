@@ -27,7 +27,9 @@ import java.util.function.Predicate;
  * surface met, at any angle (two surfaces at once, a crease or a V, stop it); a slanted
  * surface is kept a skin (1/64 pixel) away so that rounding never stalls the slide, an
  * axis-aligned one is met touching exactly. A move that gives up with motion left says so
- * ({@link Collisions#finished()}). {@link #addCharacter} makes a body that walks on ground,
+ * ({@link Collisions#finished()}); a game that moves many bodies every frame passes its own
+ * list ({@link #move(Body, float, float, CollisionFilter, List)}), and a move then makes
+ * nothing but what it met. {@link #addCharacter} makes a body that walks on ground,
  * climbs steps and snaps down ({@link CharacterBody}); the project's docs/character.md shows
  * how both work. It uses the exact swept tests of {@link Sweep}, so it
  * never tunnels, for every pair of shape kinds at any speed, and at the end the mover overlaps
@@ -68,7 +70,7 @@ import java.util.function.Predicate;
  * exactly as it was: every body's pose and shape and the broad phase's boxes. Not
  * thread-safe.
  *
- * <p>This class is the face of the world, longer than most (about 970 lines, most of them
+ * <p>This class is the face of the world, longer than most (about 1,050 lines, most of them
  * javadoc of the public methods), over parts with one job each: the bodies with their poses
  * and boxes and the broad phase's upkeep ({@code BodyTable}), the contacts kept from step to
  * step ({@code ContactTracker}), a grid's body's cells ({@code GridCollider}), the queries
@@ -95,6 +97,10 @@ public final class World {
 
     // Contacts and the collisions of the current step.
     private final ArrayList<Collision> stepCollisions = new ArrayList<>();
+
+    /** The caller's list of a move that fills one, and the body it is for (not its riders). */
+    private List<Collision> sink;
+    private Body sinkBody;
     private boolean stepped;
     /** The contacts, kept from step to step. */
     private final ContactTracker tracker;
@@ -306,6 +312,45 @@ public final class World {
         return body.carrier ? moveCarrier(body, dx, dy, filter) : moveOne(body, dx, dy, filter);
     }
 
+    /**
+     * Moves a body as {@link #move(Body, float, float, CollisionFilter)} does, putting what it
+     * met into the caller's list instead of a new {@link Collisions}: the form for a move every
+     * frame, which makes nothing but the collisions themselves once the list has grown. A
+     * character's body walks by its character's rules, as there.
+     *
+     * <p>A NaN or infinite move throws, naming it, and nothing moves; so does a list that
+     * cannot be added to, and then the list is as it was too.
+     *
+     * @param body   the body, of this world, not a grid's, not null
+     * @param dx     the move this frame, x part
+     * @param dy     the move this frame, y part
+     * @param filter the reaction to each other body, not null
+     * @param out    the caller's list: the collisions are added after what it holds, in the
+     *               order met; not null
+     * @return whether the move finished ({@link Collisions#finished()}); where it ended is
+     *         {@link Body#shape()}
+     * @throws IllegalArgumentException if an argument is null, dx or dy is NaN or infinite,
+     *                                  the body is another world's or a grid's, the move
+     *                                  leaves the float range, the filter threw, or
+     *                                  {@code out} cannot be added to (then the world is as it
+     *                                  was)
+     * @throws IllegalStateException    if the body was removed, this is called from inside a
+     *                                  callback of this world, or the filter tried to change
+     *                                  the world
+     */
+    public boolean move(Body body, float dx, float dy, CollisionFilter filter, List<Collision> out) {
+        checkMove(body, dx, dy, filter);
+        Check.notNull("out", out);
+        sink = out;
+        sinkBody = body;
+        try {
+            return (body.carrier ? moveCarrier(body, dx, dy, filter) : moveOne(body, dx, dy, filter)).finished();
+        } finally {
+            sink = null;
+            sinkBody = null;
+        }
+    }
+
     /** The checks of a move, before anything changes. */
     void checkMove(Body body, float dx, float dy, CollisionFilter filter) {
         own("body", body);
@@ -447,29 +492,49 @@ public final class World {
         }
     }
 
-    /** The world changes: the mover's pose, shape and box; the collisions handed back. */
-    Collisions commit(Body m, Spot start, Spot end, List<Collision> out, boolean finished) {
+    /**
+     * The world changes: the mover's pose, shape and box; the collisions handed back, into the
+     * caller's list if the move was asked for with one (first: a list that refuses them leaves
+     * the world as it was).
+     */
+    Collisions commit(Body m, Spot start, Spot end, List<Collision> found, boolean finished) {
+        Collisions result = m == sinkBody ? intoSink(found, finished) : Collisions.of(found, finished);
         table.moved(m, start, end);
-        return collisions(out, finished);
+        keepForStep(found);
+        found.clear();
+        return result;
     }
 
-    /** A move's collisions: kept for the next step's contacts, and handed back. */
-    private Collisions collisions(List<Collision> out, boolean finished) {
+    /** A move's collisions added to the caller's list; the answer says only whether it finished. */
+    private Collisions intoSink(List<Collision> found, boolean finished) {
+        int before = sink.size();
+        try {
+            for (int i = 0, n = found.size(); i < n; i++) {
+                sink.add(found.get(i));
+            }
+        } catch (UnsupportedOperationException e) {
+            if (sink.size() > before) {
+                sink.subList(before, sink.size()).clear();
+            }
+            throw refused("out", e);
+        }
+        return finished ? Collisions.NONE : Collisions.UNFINISHED;
+    }
+
+    /** A move's collisions, kept for the next step's contacts. */
+    private void keepForStep(List<Collision> found) {
         if (stepped) {
             stepCollisions.clear();
             stepped = false;
         }
-        for (int i = 0, n = out.size(); i < n; i++) {
-            stepCollisions.add(out.get(i));  // not addAll, which copies the list into a new array
+        for (int i = 0, n = found.size(); i < n; i++) {
+            stepCollisions.add(found.get(i));  // not addAll, which copies the list into a new array
         }
         int keep = Math.max(UNSTEPPED_COLLISIONS, 8 * table.size());
         if (stepCollisions.size() > 2 * keep) {
             // Half of them go at once, so the shift is paid once per keep collisions.
             stepCollisions.subList(0, stepCollisions.size() - keep).clear();
         }
-        Collisions result = Collisions.of(out, finished);
-        out.clear();
-        return result;
     }
 
     // ---------------------------------------------------------------- events
@@ -948,7 +1013,7 @@ public final class World {
         table.rayCandidates(ray);
     }
 
-    /** Teleports a body (Body's moveTo, moveBy, turnTo and turnBy); checked before anything changes. */
+    /** Teleports a body (Body's moveTo, turnTo and turnBy); checked before anything changes. */
     void teleport(Body b, double tx, double ty, float angle, String what) {
         table.teleport(b, tx, ty, angle, what);
     }

@@ -76,7 +76,7 @@ class BadInputCatalogTest {
             "BroadPhase.put", "BroadPhase.query", "BroadPhase.raycast",
             // The world (issue 20): its numbers are positions, angles and moves, all refused when NaN or infinite.
             "World.add", "World.move", "World.queryPoint",
-            "Body.moveTo", "Body.moveBy", "Body.turnTo", "Body.turnBy",
+            "Body.moveTo", "Body.turnTo", "Body.turnBy",
             // The character (issue 28): moves, positions and settings; settings are sizes (px, degrees).
             "World.addCharacter", "CharacterBody.move", "CharacterBody.maxSlope", "CharacterBody.stepHeight",
             "CharacterBody.snap", "CharacterBody.up");

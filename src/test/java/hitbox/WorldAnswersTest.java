@@ -19,7 +19,7 @@ class WorldAnswersTest {
         World w = new World();
         Body floor = w.add(new Rect(0, 400, 800, 20));
         assertEquals(new Rect(0, 400, 800, 20), floor.bounds(), "a floor's top reads 400");
-        floor.moveBy(0.1f, 0.3f);
+        floor.moveTo(floor.pivotX() + 0.1f, floor.pivotY() + 0.3f);
         assertEquals(floor.shape().bounds(), floor.bounds());
         SplittableRandom rnd = new SplittableRandom(5);
         for (int i = 0; i < 2000; i++) {

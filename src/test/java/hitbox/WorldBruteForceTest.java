@@ -71,7 +71,7 @@ class WorldBruteForceTest {
                 if (b.grid() == null) {
                     switch (rnd.nextInt(6)) {
                         case 0 -> w.remove(b);
-                        case 1 -> b.moveBy(rnd.nextInt(41) - 20, rnd.nextInt(41) - 20);
+                        case 1 -> b.moveTo(b.pivotX() + rnd.nextInt(41) - 20, b.pivotY() + rnd.nextInt(41) - 20);
                         case 2 -> b.turnBy((float) rnd.nextDouble());
                         default -> { }
                     }

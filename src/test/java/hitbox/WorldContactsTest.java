@@ -82,7 +82,7 @@ class WorldContactsTest {
                             }
                         }
                         case 1 -> b.turnBy(0.3f);
-                        case 2 -> b.moveBy(rnd.nextInt(9) - 4, rnd.nextInt(9) - 4);
+                        case 2 -> b.moveTo(b.pivotX() + rnd.nextInt(9) - 4, b.pivotY() + rnd.nextInt(9) - 4);
                         case 3 -> b.layers(1 << rnd.nextInt(3), rnd.nextInt(3) == 0 ? 1 << rnd.nextInt(3) : -1);
                         case 4 -> {
                             if (rnd.nextInt(6) == 0) {
@@ -187,7 +187,7 @@ class WorldContactsTest {
         w.step(changes);
         assertEquals(List.of(new BodyEvent(BodyEvent.Kind.ENTER, a, b)), changes);
         for (int i = 0; i < 3; i++) {
-            b.moveBy(0, 1);  // still in contact: nothing to report
+            b.moveTo(b.pivotX(), b.pivotY() + 1);  // still in contact: nothing to report
             w.step(changes);
             assertEquals(List.of(), changes);
             assertTrue(w.inContact(a, b));
@@ -243,13 +243,15 @@ class WorldContactsTest {
             for (int k = 0; k < moved.length; k++) {
                 // A few bodies nudge and come back: their contacts stand, yet must be tested again.
                 for (int i = 0; i < moved[k]; i++) {
-                    bodies[(i * 7919) % bodies.length].moveBy(0.25f, 0);
+                    Body b = bodies[(i * 7919) % bodies.length];
+                    b.moveTo(b.pivotX() + 0.25f, b.pivotY());
                 }
                 w.step(changes);
                 assertEquals(List.of(), changes, "nudged, still in contact with the same neighbours");
                 long start = w.tracker().pairTests();
                 for (int i = 0; i < moved[k]; i++) {
-                    bodies[(i * 7919) % bodies.length].moveBy(-0.25f, 0);
+                    Body b = bodies[(i * 7919) % bodies.length];
+                    b.moveTo(b.pivotX() - 0.25f, b.pivotY());
                 }
                 w.step(changes);
                 assertEquals(List.of(), changes);
@@ -352,9 +354,9 @@ class WorldContactsTest {
         assertTrue(least < 16L * contacts, least + " bytes for a step of " + contacts + " standing contacts");
         // A contact that ends and begins again is a new contact: a new STAY after its ENTER.
         BodyEvent old = first.stream().filter(e -> e.a() == bodies[0] || e.b() == bodies[0]).findFirst().orElseThrow();
-        bodies[0].moveBy(-100, 0);
+        bodies[0].moveTo(bodies[0].pivotX() - 100, bodies[0].pivotY());
         w.step();
-        bodies[0].moveBy(100, 0);
+        bodies[0].moveTo(bodies[0].pivotX() + 100, bodies[0].pivotY());
         w.step();
         BodyEvent again = w.step().stream().filter(e -> e.a() == old.a() && e.b() == old.b()).findFirst().orElseThrow();
         assertEquals(BodyEvent.Kind.STAY, again.kind());

@@ -187,6 +187,52 @@ class WorldMoveAllocationTest {
     }
 
     /**
+     * The form that fills the caller's list ({@link World#move(Body, float, float,
+     * CollisionFilter, List)}) makes nothing but each collision and its hit: no list, no array,
+     * once the caller's list has grown. Boxes, circles and characters' bodies on a floor.
+     */
+    @Test
+    void aMoveIntoTheCallersList_makesNothingButEachCollisionAndItsHit() {
+        World w = new World();
+        for (int i = 0; i < 400; i++) {
+            w.add(new Rect(i * 40, 500, 40, 20));  // a floor of tiles
+        }
+        int n = 50;
+        Body[] movers = new Body[3 * n];
+        for (int i = 0; i < n; i++) {
+            float x = 20 + i * 300;
+            movers[i] = w.add(new Rect(x, 490, 10, 10));
+            movers[n + i] = w.add(new Circle(x + 60, 495, 5));
+            movers[2 * n + i] = w.addCharacter(new Rect(x + 100, 480, 10, 20)).body();
+        }
+        CollisionFilter slide = (m, o) -> Reaction.SLIDE;
+        List<Collision> out = new ArrayList<>(8 * movers.length);
+        long moveBytes = 0, remadeBytes = 0;
+        for (int round = 0; round < 40; round++) {
+            float dx = round % 2 == 0 ? 3 : -3;
+            out.clear();
+            long before = THREADS.getCurrentThreadAllocatedBytes();
+            for (Body m : movers) {
+                assertEquals(true, w.move(m, dx, 1, slide, out), "the move finished");
+            }
+            long after = THREADS.getCurrentThreadAllocatedBytes();
+            moveBytes = after - before;
+            long remadeBefore = THREADS.getCurrentThreadAllocatedBytes();
+            for (int i = 0; i < out.size(); i++) {
+                Collision k = out.get(i);
+                Hit h = k.hit();
+                new Collision(k.mover(), k.other(), k.reaction(), new Hit(h.t(), h.nx(), h.ny(), h.side()), k.x(), k.y(), k.cell());
+            }
+            remadeBytes = THREADS.getCurrentThreadAllocatedBytes() - remadeBefore;
+            w.step(new ArrayList<>());
+        }
+        assertEquals(true, out.size() >= movers.length, out.size() + " collisions in the last round: each mover met the floor");
+        assertEquals(remadeBytes, moveBytes, "bytes the moves made, against their collisions made again (no list)");
+        assertEquals(new Rect(20, 490, 10, 10), movers[0].shape(), "a box slid back and forth along the floor");
+        assertEquals(new Rect(120, 480, 10, 20), movers[2 * n].shape(), "a character walked back and forth");
+    }
+
+    /**
      * The oracle of the bytes a round of moves may make: the bytes of making its collisions
      * again, each collision and its hit, and each move's list with its array, by the same
      * counter (by index: an iterator would count too).

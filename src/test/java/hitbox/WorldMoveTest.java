@@ -86,7 +86,8 @@ class WorldMoveTest {
     void teleportedRect_keepsItsSizeExactly() {
         World w = new World();
         Body b = w.add(new Rect(10.1f, 20.3f, 30.7f, 5.9f));
-        b.moveBy(0.37f, -1234.5f).moveBy(-0.37f, 1234.5f);
+        b.moveTo(b.pivotX() + 0.37f, b.pivotY() - 1234.5f);
+        b.moveTo(b.pivotX() - 0.37f, b.pivotY() + 1234.5f);
         Rect r = (Rect) b.shape();
         assertEquals(30.7f, r.w());
         assertEquals(5.9f, r.h());

@@ -108,7 +108,8 @@ public class WorldScaleBench {
         frame++;
         float d = (frame & 1) == 0 ? 0.25f : -0.25f;
         for (int i = 0; i < 100; i++) {
-            lattice[(i * 7919) % n].moveBy(d, 0);
+            Body b = lattice[(i * 7919) % n];
+            b.moveTo(b.pivotX() + d, b.pivotY());
         }
         world.step(changes);
         return changes.size();

@@ -58,7 +58,7 @@ class WorldDrawTest {
         world.add(new Rect(10, 10, 50, 30));
         Body turned = world.add(new Rect(-30, -10, 60, 20), 120, 50, 0.6f);   // translate(120, 50); rotate(0.6)
         Body ball = world.add(new Circle(40, 110, 22));
-        ball.moveBy(5, 3);
+        ball.moveTo(ball.pivotX() + 5, ball.pivotY() + 3);
         Grid grid = Grid.parse("""
                 ..........
                 ..........
