@@ -35,9 +35,11 @@ import hitbox.*;
  * whole number (a square root of an exact sum of squares is correctly rounded). Two convex
  * outlines round an area (rectangles, convex polygons) go by {@link ConvexOutlines}, which
  * walks their difference to find the pair of edges that holds the closest points, in time in
- * proportion to their corners, then measures that pair the same way. Where several pairs of
- * points are equally close, the one given has the first midpoint ({@code closer}), in every
- * kernel of straight cores.
+ * proportion to their corners, then measures that pair the same way. A circle and a convex
+ * outline round an area go by {@link #pointAndOutline}, which measures only the edges nearest
+ * the centre, as the loop over the pairs would, and settles most pairs apart without asking
+ * {@link Overlaps}. Where several pairs of points are equally close, the one given has the
+ * first midpoint ({@code closer}), in every kernel of straight cores.
  *
  * <p><b>Ellipses</b> ({@link #ellipseChain}, {@link #ellipses}): the distance from a point to
  * the ellipse is Eberly's ({@link Ellipses#distance}, to double precision). Along an edge the
@@ -50,8 +52,8 @@ import hitbox.*;
  * <p>A separation makes nothing but its answer: the cores, the closest points and what the
  * kernels work in are a thread's {@code Scratch}, fetched once per call.
  *
- * <p>This class is longer than most (about 810 lines): the three kernels, the pruning that
- * keeps two polygons fast (the facing marks of convex outlines, the sorted loops of many
+ * <p>This class is longer than most (about 925 lines): the three kernels, the pruning that
+ * keeps two polygons and a circle with a polygon fast (the facing marks of convex outlines, the sorted loops of many
  * sides), the scratch they work in, and their small helpers, kept in one place.
  */
 public final class Distances {
@@ -167,6 +169,11 @@ public final class Distances {
         public double r() {
             return r;
         }
+
+        /** @return is the core a single point (a circle's centre)? */
+        private boolean isPoint() {
+            return xy != null && xy.length == 2;
+        }
     }
 
     /**
@@ -189,6 +196,10 @@ public final class Distances {
         int[] oa = new int[0], ob = new int[0], merge = new int[0];
         /** Which vertices of the other shape each edge of a convex outline faces ({@link #facing}), grown to the largest seen. */
         long[] frontA = new long[8], frontB = new long[8];
+        /** An outline's edges' squared distances from a point ({@code pointAndOutline}), grown to the largest seen. */
+        double[] edgeD2 = new double[8];
+        /** Did the last {@code pointAndOutline} find its two shapes surely apart? */
+        boolean surelyApart;
         /** What {@link ConvexOutlines} works in. */
         final ConvexOutlines.Work convex = new ConvexOutlines.Work();
     }
@@ -250,13 +261,113 @@ public final class Distances {
      * @return the separation, points on a then b, or null when they overlap
      */
     public static Separation between(Shape a, Shape b) {
-        if (Overlaps.test(a, b)) {
-            return null;
-        }
         Scratch s = SCRATCH.get();
         double[] q = s.q;
-        double gap = apart(core(a, s.a), core(b, s.b), q, s);
+        Core ca = core(a, s.a), cb = core(b, s.b);
+        double gap;
+        if (ca.solid && cb.isPoint() || cb.solid && ca.isPoint()) {
+            double d = pointAndOutline(ca, cb, q, s);
+            if (!s.surelyApart) {
+                if (Overlaps.test(a, b)) {
+                    return null;
+                }
+                if (d == Double.POSITIVE_INFINITY) {
+                    d = cores(ca, cb, q, s);  // not reached: a point surely inside overlaps
+                }
+            }
+            gap = withRadii(d, ca.r, cb.r, q);
+        } else {
+            if (Overlaps.test(a, b)) {
+                return null;
+            }
+            gap = apart(ca, cb, q, s);
+        }
         return new Separation(Check.held(gap), Check.held(q[0]), Check.held(q[1]), Check.held(q[2]), Check.held(q[3]));
+    }
+
+    /**
+     * The distance between a point core (a circle's centre) and a convex outline round an
+     * area (a polygon's, a rectangle's), either first, without their radii, and the closest
+     * points in q, as {@link #cores} gives them when the two do not overlap; and into
+     * {@code s.surelyApart}, whether the shapes with their radii are surely apart. One pass
+     * over the outline's edges finds each one's squared distance from the point, leaving out
+     * those the point is surely behind; the edges within rounding of the nearest are then
+     * measured as {@link #chains} measures them (the same {@link #segments} and
+     * {@link #closer}: the edges left out cannot be closer). Surely apart: the point lies
+     * strictly outside one of the outline's edge lines (an exact sign: then it is outside
+     * the outline) and the distance beats the radii by more than its rounding. That settles
+     * most pairs without the overlap test, which would look at every edge again (a third of
+     * the call's time, issue 29's narrow table, "separation, circle vs convex 8-gon"); the
+     * rest are asked of it. Infinite when the point is surely inside.
+     */
+    private static double pointAndOutline(Core ca, Core cb, double[] q, Scratch s) {
+        boolean pointFirst = ca.isPoint();
+        Core outline = pointFirst ? cb : ca, point = pointFirst ? ca : cb;
+        double[] o = outline.xy, d2 = s.edgeD2.length >= o.length / 2 ? s.edgeD2 : (s.edgeD2 = new double[o.length / 2]);
+        double px = point.xy[0], py = point.xy[1];
+        int n = o.length / 2;
+        // Each edge's squared distance from the point, without its foot or a square root;
+        // an edge the point is surely behind cannot hold the closest point of a point outside
+        // (a corner it shares is its neighbour's too), and counts as infinitely far.
+        double least = Double.POSITIVE_INFINITY, size = Math.max(Math.abs(px), Math.abs(py));
+        int w = outline.winding;
+        for (int i = 0; i < n; i++) {
+            int i2 = i + 1 == n ? 0 : i + 1;
+            double x1 = o[2 * i], y1 = o[2 * i + 1];
+            size = Math.max(size, Math.max(Math.abs(x1), Math.abs(y1)));
+            double ex = o[2 * i2] - x1, ey = o[2 * i2 + 1] - y1, fx = px - x1, fy = py - y1;
+            double ta = fx * ey, tb = fy * ex, cross = ta - tb;
+            if (w * cross < -Tolerance.ORIENTATION_ROUNDING * (Math.abs(ta) + Math.abs(tb))) {
+                d2[i] = Double.POSITIVE_INFINITY;
+                continue;
+            }
+            double len2 = ex * ex + ey * ey, dot = fx * ex + fy * ey, e2;
+            if (dot <= 0) {
+                e2 = fx * fx + fy * fy;
+            } else if (dot >= len2) {
+                double gx = fx - ex, gy = fy - ey;
+                e2 = gx * gx + gy * gy;
+            } else {
+                e2 = cross * cross / len2;
+            }
+            d2[i] = e2;
+            least = Math.min(least, e2);
+        }
+        s.surelyApart = false;
+        if (least == Double.POSITIVE_INFINITY) {
+            return least;  // surely inside
+        }
+        // The edges within rounding of the nearest, measured as chains measures them.
+        double reach = point.r + outline.r, slack = PROJECTION_ROUNDING * (size + reach);
+        double within = Math.sqrt(least) + slack;
+        within *= within;
+        double best = Double.POSITIVE_INFINITY;
+        int bestEdge = -1;
+        double[] t = s.t, feet = s.feet;
+        for (int i = 0; i < n; i++) {
+            if (d2[i] > within) {
+                continue;
+            }
+            int i2 = i + 1 == n ? 0 : i + 1;
+            double x1 = o[2 * i], y1 = o[2 * i + 1], x2 = o[2 * i2], y2 = o[2 * i2 + 1];
+            double d = pointFirst ? segments(px, py, px, py, x1, y1, x2, y2, t, feet)
+                    : segments(x1, y1, x2, y2, px, py, px, py, t, feet);
+            if (closer(d, best, t[0], t[1], t[2], t[3], q)) {
+                best = d;
+                bestEdge = i;
+                System.arraycopy(t, 0, q, 0, 4);
+            }
+        }
+        if (best - reach > 2 * slack) {
+            // Outside the outline: strictly beyond the line of the edge that holds the
+            // closest point, or of one of its neighbours (where that point is a corner, the
+            // point lies beyond one of the corner's two edges).
+            for (int k = -1; k <= 1 && !s.surelyApart; k++) {
+                int i = (bestEdge + k + n) % n, i2 = i + 1 == n ? 0 : i + 1;
+                s.surelyApart = Lines.orient(o[2 * i], o[2 * i + 1], o[2 * i2], o[2 * i2 + 1], px, py) * w < 0;
+            }
+        }
+        return best;
     }
 
     /**
@@ -269,8 +380,14 @@ public final class Distances {
 
     /** {@link #apart(Core, Core, double[])} with the thread's scratch. */
     private static double apart(Core a, Core b, double[] q, Scratch s) {
-        double d = cores(a, b, q, s);
-        double ra = a.r(), rb = b.r();
+        return withRadii(cores(a, b, q, s), a.r(), b.r(), q);
+    }
+
+    /**
+     * The distance d between two cores less their radii ra and rb, held at 0, and their
+     * closest points in q moved out by the radii.
+     */
+    private static double withRadii(double d, double ra, double rb, double[] q) {
         if (ra == 0 && rb == 0) {
             return d;
         }

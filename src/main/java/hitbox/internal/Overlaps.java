@@ -158,7 +158,7 @@ public final class Overlaps {
                 Segment s = (Segment) other;
                 yield RawTests.lineCircle(s.x1(), s.y1(), s.x2(), s.y2(), x, y, r);
             }
-            case POLYGON -> RawTests.polygonCircle(HiddenParts.raw((Polygon) other), x, y, r);
+            case POLYGON -> RawTests.polygonCircleChecked(HiddenParts.raw((Polygon) other), x, y, r);
         };
     }
 

@@ -80,7 +80,7 @@ public final class PlacedOverlaps {
             case CIRCLE -> RawTests.circleCircle(c.a, c.b, c.c, o.a, o.b, o.c);
             case RECT -> RawTests.circleRect(c.a, c.b, c.c, o.a, o.b, o.c, o.d);
             case SEGMENT -> RawTests.lineCircle(o.a, o.b, o.c, o.d, c.a, c.b, c.c);
-            case POLYGON -> RawTests.polygonCircle(o.xy, c.a, c.b, c.c);
+            case POLYGON -> RawTests.polygonCircleChecked(o.xy, c.a, c.b, c.c);
         };
     }
 

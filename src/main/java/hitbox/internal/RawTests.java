@@ -7,7 +7,7 @@ package hitbox.internal;
  * calls back up into the API. Each method's contract is its {@code Collide} namesake's, where
  * it has one: for a float NaN or a negative size, false.
  *
- * <p>This class is longer than most (about 450 lines): it is every raw test's body, one
+ * <p>This class is longer than most (about 500 lines): it is every raw test's body, one
  * method per pair. The ones the API no longer names on floats (the ellipses' and capsules'
  * pairs, a rectangle first against a circle, a circle or a rectangle holding the other) are
  * the bodies of the shapes' answers ({@code Ellipse} and {@code Capsule} state how exactly
@@ -139,6 +139,15 @@ public final class RawTests {
         if (circlePoint(cx, cy, r, x1, y1) || circlePoint(cx, cy, r, x2, y2)) {
             return true;
         }
+        return betweenEndsInCircle(x1, y1, x2, y2, cx, cy, r);
+    }
+
+    /**
+     * Does the segment pass through the open disc between its ends: the closest point of its
+     * line to the centre strictly between the ends, nearer than r (exact)? With its ends
+     * tested on their own, this is {@link #lineCircle}; no check of its input.
+     */
+    private static boolean betweenEndsInCircle(float x1, float y1, float x2, float y2, float cx, float cy, float r) {
         double dx = (double) x2 - x1;
         double dy = (double) y2 - y1;
         double fx = (double) cx - x1;
@@ -189,6 +198,32 @@ public final class RawTests {
         for (int i = 0, h = n - 1; i < n; h = i++) {
             if (lineCircle(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], cx, cy, r)) {
                 return true;
+            }
+        }
+        return Polygons.contains(xy, cx, cy);
+    }
+
+    /**
+     * {@link #polygonCircle} for a {@code Polygon}'s outline (no NaN, three vertices or more)
+     * and a circle with no NaN: the same answer, without the checks the raw form makes on
+     * every call, and each vertex tested against the circle once (each edge's test through
+     * {@link #lineCircle} tests both its ends).
+     */
+    public static boolean polygonCircleChecked(float[] xy, float cx, float cy, float r) {
+        if (!(r >= 0)) {
+            return false;
+        }
+        if (r > 0) {
+            int n = xy.length / 2;
+            for (int i = 0; i < n; i++) {
+                if (circlePoint(cx, cy, r, xy[2 * i], xy[2 * i + 1])) {
+                    return true;
+                }
+            }
+            for (int i = 0, h = n - 1; i < n; h = i++) {
+                if (betweenEndsInCircle(xy[2 * h], xy[2 * h + 1], xy[2 * i], xy[2 * i + 1], cx, cy, r)) {
+                    return true;
+                }
             }
         }
         return Polygons.contains(xy, cx, cy);
