@@ -63,7 +63,7 @@ final class Mover {
     private boolean[] seenBlocked = new boolean[16];
 
     // The obstacles of one leg: a body's shape, or one cell of a grid's.
-    private Spot[] obSpot = spots(new Spot[0], 16);
+    private Spot[] obSpot = Spot.grown(new Spot[0], 16);
     private Body[] obBody = new Body[16];
     private int[] obCell = new int[16];
     // Each obstacle's hit in this leg, as numbers (no Hit made per sweep): the side met, null
@@ -633,7 +633,7 @@ final class Mover {
     private Spot addObstacle(Body o, int cell) {
         if (obCount == obSpot.length) {
             int n = 2 * obCount;
-            obSpot = spots(obSpot, n);
+            obSpot = Spot.grown(obSpot, n);
             obBody = java.util.Arrays.copyOf(obBody, n);
             obCell = java.util.Arrays.copyOf(obCell, n);
             obSide = java.util.Arrays.copyOf(obSide, n);
@@ -644,15 +644,6 @@ final class Mover {
         obBody[obCount] = o;
         obCell[obCount] = cell;
         return obSpot[obCount++];
-    }
-
-    /** The spots, grown to n, each its own. */
-    private static Spot[] spots(Spot[] old, int n) {
-        Spot[] grown = java.util.Arrays.copyOf(old, n);
-        for (int i = old.length; i < n; i++) {
-            grown[i] = new Spot();
-        }
-        return grown;
     }
 
     /**

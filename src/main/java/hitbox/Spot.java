@@ -237,6 +237,15 @@ final class Spot {
         return SweptPairs.recorded(hit, out);
     }
 
+    /** The spots, grown to n: the old ones kept, each new one its own. */
+    static Spot[] grown(Spot[] old, int n) {
+        Spot[] grown = java.util.Arrays.copyOf(old, n);
+        for (int i = old.length; i < n; i++) {
+            grown[i] = new Spot();
+        }
+        return grown;
+    }
+
     /** @return the shape, for printing */
     @Override
     public String toString() {

@@ -70,12 +70,13 @@ import java.util.function.Predicate;
  * exactly as it was: every body's pose and shape and the broad phase's boxes. Not
  * thread-safe.
  *
- * <p>This class is the face of the world, longer than most (about 1,050 lines, most of them
+ * <p>This class is the face of the world, longer than most (about 1,010 lines, most of them
  * javadoc of the public methods), over parts with one job each: the bodies with their poses
  * and boxes and the broad phase's upkeep ({@code BodyTable}), the contacts kept from step to
  * step ({@code ContactTracker}), a grid's body's cells ({@code GridCollider}), the queries
- * ({@code WorldQueries}) and the move's walk ({@code Mover}); it keeps the checks, the
- * carriers and the callbacks' rules. The character's rules are in {@link CharacterBody}, the
+ * ({@code WorldQueries}), the move's walk ({@code Mover}) and a carrier's move with its
+ * riders ({@code CarrierMove}); it keeps the checks, the collisions kept for the step and
+ * the callbacks' rules. The character's rules are in {@link CharacterBody}, the
  * shapes' placement in {@code Poses} and the rectangles' walk in {@code MoveAndSlide}.
  */
 public final class World {
@@ -101,6 +102,11 @@ public final class World {
     /** The caller's list of a move that fills one, and the body it is for (not its riders). */
     private List<Collision> sink;
     private Body sinkBody;
+    /** Is a carrier's rider moving (its collisions kept for the step, none handed back)? */
+    private boolean quiet;
+    /** Where the held collisions of a carrier's move begin, or -1; and {@link #stepped} then. */
+    private int heldFrom = -1;
+    private boolean heldStepped;
     private boolean stepped;
     /** The contacts, kept from step to step. */
     private final ContactTracker tracker;
@@ -113,6 +119,8 @@ public final class World {
     private final WorldQueries queries = new WorldQueries(this, grids);
     /** The move-and-slide solver: every move walks there. */
     private final Mover mover = new Mover(this);
+    /** A carrier's move with its riders. */
+    private final CarrierMove carriers;
 
     /** Makes an empty world with a {@link BroadPhase#grid()} inside. */
     public World() {
@@ -134,6 +142,7 @@ public final class World {
         this.broad = broadPhase;
         this.tracker = new ContactTracker(this, broadPhase, grids);
         this.table = new BodyTable(this, broadPhase, tracker);
+        this.carriers = new CarrierMove(this, table, tracker);
     }
 
     // ---------------------------------------------------------------- bodies
@@ -309,7 +318,7 @@ public final class World {
      */
     public Collisions move(Body body, float dx, float dy, CollisionFilter filter) {
         checkMove(body, dx, dy, filter);
-        return body.carrier ? moveCarrier(body, dx, dy, filter) : moveOne(body, dx, dy, filter);
+        return body.carrier ? carriers.move(body, dx, dy, filter) : moveOne(body, dx, dy, filter);
     }
 
     /**
@@ -344,7 +353,7 @@ public final class World {
         sink = out;
         sinkBody = body;
         try {
-            return (body.carrier ? moveCarrier(body, dx, dy, filter) : moveOne(body, dx, dy, filter)).finished();
+            return (body.carrier ? carriers.move(body, dx, dy, filter) : moveOne(body, dx, dy, filter)).finished();
         } finally {
             sink = null;
             sinkBody = null;
@@ -370,111 +379,21 @@ public final class World {
     }
 
     /** One body's move, a character's by its own rules. */
-    private Collisions moveOne(Body m, float dx, float dy, CollisionFilter filter) {
+    Collisions moveOne(Body m, float dx, float dy, CollisionFilter filter) {
         return m.character != null ? m.character.walk(mover, dx, dy, filter) : mover.move(m, dx, dy, filter);
     }
 
-    /** The filter a carrier moves a rider with: a character's own, else sliding. */
-    private static CollisionFilter riderFilter(Body rider) {
-        return rider.character != null ? rider.character.filter() : SLIDE;
-    }
-
-    /** A carrier's move: the riders go first when it goes up, after it otherwise. */
-    private Collisions moveCarrier(Body p, float dx, float dy, CollisionFilter filter) {
-        List<Body> riders = riders(p);
-        CollisionFilter platform = (m, o) -> riders.contains(o) ? null : filter.react(m, o);
-        List<Collision> collisionsBefore = new ArrayList<>(stepCollisions);
-        boolean steppedBefore = stepped;
-        Saved[] saved = new Saved[riders.size() + 1];
-        saved[0] = save(p);
-        for (int i = 0; i < riders.size(); i++) {
-            saved[i + 1] = save(riders.get(i));
-        }
-        table.holdFlush = true;
-        try {
-            Collisions out;
-            float px = p.pivotX(), py = p.pivotY();
-            if (dy < 0) {
-                for (Body r : riders) {
-                    mover.move(r, dx, dy, riderFilter(r));
-                }
-                out = moveOne(p, dx, dy, filter);  // a rider a ceiling stopped stops it too
-                // Stopped short (a ceiling): the riders come back down with it.
-                float cx = p.pivotX() - px - dx, cy = p.pivotY() - py - dy;
-                if (cx != 0 || cy != 0) {
-                    for (Body r : riders) {
-                        mover.move(r, cx, cy, riderFilter(r));
-                    }
-                }
-            } else {
-                out = moveOne(p, dx, dy, platform);
-                float ax = p.pivotX() - px, ay = p.pivotY() - py;
-                for (Body r : riders) {
-                    mover.move(r, ax, ay, riderFilter(r));
-                }
-            }
-            table.holdFlush = false;
-            table.flushIfMany();
-            return out;
-        } catch (RuntimeException e) {
-            restore(p, saved[0]);
-            for (int i = 0; i < riders.size(); i++) {
-                restore(riders.get(i), saved[i + 1]);
-            }
-            stepCollisions.clear();
-            stepCollisions.addAll(collisionsBefore);
-            stepped = steppedBefore;
-            throw e;
-        } finally {
-            table.holdFlush = false;
-        }
-    }
-
     /**
-     * The bodies standing on a carrier now: touching its top from above (a drop of a hundredth
-     * of a pixel would land them on it), layers accepting, not sensors, grids or carriers.
+     * A rider's part of a carrier's move ({@link CarrierMove}): by its character's filter if it
+     * is one, else sliding; its collisions kept for the step, none handed back.
      */
-    List<Body> riders(Body p) {
-        List<Body> out = new ArrayList<>();
-        Shape ps = p.shape();
-        float probe = 2 * Mover.SKIN;
-        gather(p.boxX, p.boxY - 2 * probe, (double) p.boxX + p.boxW, (double) p.boxY + p.boxH);
-        for (int i = 0, n = table.candidateCount(); i < n; i++) {
-            Body o = table.candidate(i);
-            if (o == p || o.grid != null || o.sensor || o.carrier || !p.accepts(o)) {
-                continue;
-            }
-            Shape os = o.shape();
-            if (os.overlaps(ps)) {
-                continue;
-            }
-            Hit h = Sweep.timeOfImpact(os, 0, probe, ps);
-            if (h != null && h.side() == Side.TOP) {
-                out.add(o);
-            }
+    void moveRider(Body rider, float dx, float dy) {
+        quiet = true;
+        try {
+            mover.move(rider, dx, dy, rider.character != null ? rider.character.filter() : SLIDE);
+        } finally {
+            quiet = false;
         }
-        return out;
-    }
-
-    /** A body's pose, shape and box, to put back when a carrier's move is refused. */
-    private record Saved(double tx, double ty, Shape shape, float[] box, boolean dirty) {
-    }
-
-    private static Saved save(Body b) {
-        return new Saved(b.tx, b.ty, b.savedShape(), new float[] {b.boxX, b.boxY, b.boxW, b.boxH, b.fatX, b.fatY, b.fatW, b.fatH},
-                b.dirtyIndex >= 0);
-    }
-
-    /** Puts a body back as saved; no flush happened meanwhile, so the broad phase is as it was. */
-    private void restore(Body b, Saved saved) {
-        b.placed(saved.tx(), saved.ty(), saved.shape());
-        float[] k = saved.box();
-        table.box(b, k[0], k[1], k[2], k[3]);
-        b.fat(k[4], k[5], k[6], k[7]);
-        if (!saved.dirty() && b.dirtyIndex >= 0) {
-            table.undirty(b);
-        }
-        tracker.changed(b);
     }
 
     /** Asks a filter for a pair's reaction, reporting what it throws as the world's rules say. */
@@ -498,7 +417,8 @@ public final class World {
      * the world as it was).
      */
     Collisions commit(Body m, Spot start, Spot end, List<Collision> found, boolean finished) {
-        Collisions result = m == sinkBody ? intoSink(found, finished) : Collisions.of(found, finished);
+        Collisions result = m == sinkBody ? intoSink(found, finished)
+                : quiet ? (finished ? Collisions.NONE : Collisions.UNFINISHED) : Collisions.of(found, finished);
         table.moved(m, start, end);
         keepForStep(found);
         found.clear();
@@ -523,18 +443,62 @@ public final class World {
 
     /** A move's collisions, kept for the next step's contacts. */
     private void keepForStep(List<Collision> found) {
-        if (stepped) {
+        if (stepped && heldFrom < 0) {
             stepCollisions.clear();
             stepped = false;
         }
         for (int i = 0, n = found.size(); i < n; i++) {
             stepCollisions.add(found.get(i));  // not addAll, which copies the list into a new array
         }
+        if (heldFrom < 0) {
+            trimStepCollisions();
+        }
+    }
+
+    /** Keeps the latest of the collisions of a world moved but not stepped (see {@link #collisions()}). */
+    private void trimStepCollisions() {
         int keep = Math.max(UNSTEPPED_COLLISIONS, 8 * table.size());
         if (stepCollisions.size() > 2 * keep) {
             // Half of them go at once, so the shift is paid once per keep collisions.
             stepCollisions.subList(0, stepCollisions.size() - keep).clear();
         }
+    }
+
+    /**
+     * Holds the collisions since the last step as they are, for a carrier's move that may be
+     * refused: its moves add after them, and none go until {@link #releaseCollisions()}
+     * (the move done) or {@link #dropHeldCollisions()} (refused: the list as it was).
+     */
+    void holdCollisions() {
+        heldFrom = stepCollisions.size();
+        heldStepped = stepped;
+    }
+
+    /** The held moves done: as if each had been kept as it came. */
+    void releaseCollisions() {
+        int from = heldFrom;
+        heldFrom = -1;
+        if (heldStepped) {
+            // Those of the frame the last step ended give way to the new frame's, shifted down by hand.
+            int n = stepCollisions.size() - from;
+            for (int i = 0; i < n; i++) {
+                stepCollisions.set(i, stepCollisions.get(from + i));
+            }
+            for (int i = stepCollisions.size() - 1; i >= n; i--) {
+                stepCollisions.remove(i);
+            }
+            stepped = false;
+        }
+        trimStepCollisions();
+    }
+
+    /** The held moves refused: the collisions as they were before them. */
+    void dropHeldCollisions() {
+        for (int i = stepCollisions.size() - 1; i >= heldFrom; i--) {
+            stepCollisions.remove(i);
+        }
+        stepped = heldStepped;
+        heldFrom = -1;
     }
 
     // ---------------------------------------------------------------- events

@@ -163,4 +163,27 @@ class WorldRefusedCallTest {
         w.move(platform, 0, -30);
         assertEquals(260, rider.pivotY(), 1e-4);
     }
+
+    @Test
+    void aCarrierRefusedRightAfterAStep_leavesTheFramesCollisionsAsTheyWere() {
+        // Right after a step, collisions() is the frame it ended (the player met the wall);
+        // a carrier's move that is refused must leave that, and one that goes on replaces it.
+        build();
+        w.move(player, 50, 0);
+        w.step();
+        List<Collision> lastFrame = w.collisions();
+        assertTrue(lastFrame.stream().anyMatch(c -> c.other() == wall), lastFrame.toString());
+        String before = snapshot();
+        assertThrows(IllegalArgumentException.class, () -> w.move(platform, 5, -130, (m, o) -> {
+            throw new IllegalArgumentException("no");
+        }));
+        assertEquals(before, snapshot());
+        assertEquals(lastFrame, w.collisions());
+        w.add(new Rect(0, 200, 100, 10));  // a ceiling the platform and its rider meet going up
+        w.move(platform, 0, -200);
+        List<Collision> now = w.collisions();
+        assertTrue(now.stream().noneMatch(c -> c.other() == wall), "the last frame's collisions gave way: " + now);
+        assertTrue(now.stream().anyMatch(c -> c.mover() == rider) && now.stream().anyMatch(c -> c.mover() == platform),
+                "the rider's and the platform's collisions are kept for the step: " + now);
+    }
 }
