@@ -19,10 +19,17 @@ final class Spot {
     private boolean numbers;
     /** The shape: always for other kinds; for numbers, made when first asked (else null). */
     private Shape shape;
+    /**
+     * The body whose place this is, untouched since, when kept as numbers: its shape, made
+     * when first asked, is kept by the body, so a standing obstacle's shape is made once, not
+     * at every leg that meets it. Null otherwise.
+     */
+    private Body source;
 
     /** Takes a shape: a box's or a circle's numbers, anything else as itself. */
     Spot set(Shape s) {
         shape = s;
+        source = null;
         switch (ShapeKind.of(s)) {
             case RECT -> {
                 Rect r = (Rect) s;
@@ -44,6 +51,7 @@ final class Spot {
         numbers = true;
         at.rect(x, y, w, h);
         shape = null;
+        source = null;
         return this;
     }
 
@@ -58,6 +66,7 @@ final class Spot {
         }
         take(p);
         shape = b.shape;  // if made
+        source = b;
         return this;
     }
 
@@ -69,6 +78,7 @@ final class Spot {
             numbers = false;
         }
         shape = o.shape;
+        source = o.source;
         return this;
     }
 
@@ -103,13 +113,14 @@ final class Spot {
             at.circle(x, y, at.c());
         }
         shape = null;
+        source = null;
         return this;
     }
 
     /** @return the shape, made from the numbers when first asked */
     Shape shape() {
         if (shape == null) {
-            shape = at.shape();
+            shape = source != null ? source.shape() : at.shape();
         }
         return shape;
     }
@@ -202,7 +213,8 @@ final class Spot {
         if (numbers && other.numbers) {
             return PlacedOverlaps.test(at, other.at);
         }
-        return other.numbers ? overlaps(other.shape()) : overlaps(other.shape);
+        // Overlapping is symmetric: a box or a circle kept as numbers is asked by its numbers.
+        return other.numbers ? other.overlaps(shape) : overlaps(other.shape);
     }
 
     /**
