@@ -171,14 +171,6 @@ public final class Body {
     }
 
     /**
-     * The shape if made, or null (then the pose alone makes it again): what a refused move
-     * saves to put back. A box the rectangles' walk left is made now, from its numbers.
-     */
-    Shape savedShape() {
-        return walked ? shape() : shape;
-    }
-
-    /**
      * Where the body stands as numbers ({@link Placement}), made when first asked after a
      * change, into storage the body keeps: from the shape if it was made, else from the pose.
      *
