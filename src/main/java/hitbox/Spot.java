@@ -213,8 +213,11 @@ final class Spot {
         if (numbers && other.numbers) {
             return PlacedOverlaps.test(at, other.at);
         }
+        if (!other.numbers || other.shape != null || other.source != null) {
+            return overlaps(other.shape());  // made already, or kept by its body
+        }
         // Overlapping is symmetric: a box or a circle kept as numbers is asked by its numbers.
-        return other.numbers ? other.overlaps(shape) : overlaps(other.shape);
+        return other.overlaps(shape);
     }
 
     /**

@@ -36,11 +36,13 @@ import java.util.List;
  * <p>Two convex polygons, a rectangle moving into a convex polygon and a circle moving into
  * any polygon go the exact way instead, {@link ConvexPolygonSweep}.
  *
- * <p>This class is longer than most (about 550 lines) because the advancement, the line that
+ * <p>This class is longer than most (about 710 lines) because the advancement, the line that
  * decides whether a pair meets at all and the look-back over the float positions all read
  * the same pieces through the same separating-direction search; apart, each would carry a
- * copy of it. A box's and a circle's sweeps given as numbers ({@link #rectTimeOfImpact},
- * {@link #circleTimeOfImpact}: a world's walk keeps them so) take the same first steps here.
+ * copy of it. The thread's scratch they work in ({@code Work}: the pieces, the directions,
+ * the searched functions) is here too, so that a search makes nothing. A box's and a
+ * circle's sweeps given as numbers ({@link #rectTimeOfImpact}, {@link #circleTimeOfImpact}:
+ * a world's walk keeps them so) take the same first steps here.
  *
  * <p>From each pair's entry, {@link SweptPairs#lastClear} finds the promised float t on the
  * real shapes, moved as a sketch moves them ({@code x + t * vx} in float) and tested by
@@ -65,6 +67,125 @@ public final class ConvexSweep {
      * gives falls off as the motion times the angle missed.
      */
     private static final int PASS_STEPS = 90;
+
+    /**
+     * The ring of directions {@link #separation} starts from, worked out once as it worked
+     * them out at every call ({@code StrictMath}'s bits, the same every time): 64 cosines and
+     * sines a call were most of a curved piece's sweep.
+     */
+    private static final double[] RING_X = new double[DIRECTIONS], RING_Y = new double[DIRECTIONS];
+
+    static {
+        for (int i = 0; i < DIRECTIONS; i++) {
+            RING_X[i] = StrictMath.cos(2 * Math.PI * i / DIRECTIONS);
+            RING_Y[i] = StrictMath.sin(2 * Math.PI * i / DIRECTIONS);
+        }
+    }
+
+    /**
+     * What a sweep by pieces works in, a thread's own, so that its searches make nothing: the
+     * directions the advancement and its look-back find, an edge to take normals from, the
+     * golden search's answer, the gap it searches over and the float overlap test, each set
+     * for the call. No method here calls another that is using the same array.
+     */
+    private static final class Work {
+        final double[] piecesNormal = new double[2], entryNormal = new double[2], lookNormal = new double[2];
+        final double[] edge = new double[4], golden = new double[2];
+        /** The gap along the angle t, negated, for the golden search: {@link #gap} with cos t and sin t. */
+        final GapAlong gapAlong = new GapAlong();
+        /** Does the mover overlap the obstacle at time t ({@link #movedOverlaps})? */
+        final MovedOverlap movedOverlap = new MovedOverlap();
+        /** The mover's pieces and the obstacle's. */
+        final PieceSlot moverPieces = new PieceSlot(), obstaclePieces = new PieceSlot();
+        /** The sweep's side as an edge from (0, 0) to (ex, ey). */
+        private final double[] sideEdge = new double[4];
+        /** A shape's coordinates that a move moves: one point's, or two ({@link #coordinates}). */
+        private final float[] two = new float[2], four = new float[4];
+
+        double[] side(double ex, double ey) {
+            sideEdge[2] = ex;
+            sideEdge[3] = ey;
+            return sideEdge;
+        }
+
+        float[] two(float x, float y) {
+            two[0] = x;
+            two[1] = y;
+            return two;
+        }
+
+        float[] four(float x1, float y1, float x2, float y2) {
+            four[0] = x1;
+            four[1] = y1;
+            four[2] = x2;
+            four[3] = y2;
+            return four;
+        }
+    }
+
+    private static final ThreadLocal<Work> WORK = ThreadLocal.withInitial(Work::new);
+
+    /**
+     * One side's pieces of a sweep by pieces, in storage kept from call to call: a curved
+     * shape, a rectangle's corners or a segment's ends written into this slot's own round,
+     * corners or ends; a polygon's corners, or a concave one's pieces, its own (only read).
+     */
+    private static final class PieceSlot {
+        private final ArrayList<Object> list = new ArrayList<>();
+        private final Round round = new Round();
+        private final double[] corners = new double[8], ends = new double[4];
+
+        /** The shape's pieces, as {@link #pieces} says, in this slot: valid until it is asked again. */
+        List<Object> of(Shape s) {
+            list.clear();
+            switch (ShapeKind.of(s)) {
+                case ELLIPSE, CAPSULE, CIRCLE -> list.add(round.set(s));
+                case RECT -> list.add(Polygons.corners((Rect) s, corners));
+                case SEGMENT -> {
+                    Segment g = (Segment) s;
+                    ends[0] = g.x1();
+                    ends[1] = g.y1();
+                    ends[2] = g.x2();
+                    ends[3] = g.y2();
+                    list.add(ends);
+                }
+                case POLYGON -> {
+                    Polygon p = (Polygon) s;
+                    if (p.isConvex()) {
+                        list.add(HiddenParts.corners(p));  // the polygon's own, only read
+                    } else {
+                        List<double[]> parts = Clearance.Parts.of(p).pieces();
+                        for (int i = 0, n = parts.size(); i < n; i++) {
+                            list.add(parts.get(i));
+                        }
+                    }
+                }
+            }
+            return list;
+        }
+    }
+
+    /** The golden search's function over the angle, set for each search. */
+    private static final class GapAlong implements java.util.function.DoubleUnaryOperator {
+        Object a, b;
+        double dx, dy, ex, ey;
+
+        @Override
+        public double applyAsDouble(double t) {
+            return -gap(a, b, dx, dy, ex, ey, StrictMath.cos(t), StrictMath.sin(t));
+        }
+    }
+
+    /** The float overlap test of a sweep, set for each sweep. */
+    private static final class MovedOverlap implements SweptPairs.OverlapAt {
+        Shape mover, obstacle;
+        float vx, vy;
+
+        @Override
+        public boolean at(float t) {
+            return movedOverlaps(mover, t * vx, t * vy, obstacle);
+        }
+    }
 
     /**
      * {@link #timeOfImpact} for a box mover (x, y, w, h) given as numbers, its {@code Rect}
@@ -159,11 +280,25 @@ public final class ConvexSweep {
      * conservative advancement over the convex pieces (see the class comment).
      */
     public static Hit byPieces(Shape mover, float vx, float vy, Shape obstacle) {
-        SweptPairs.OverlapAt overlapAt = t -> movedOverlaps(mover, t * vx, t * vy, obstacle);
+        Work w = WORK.get();
+        MovedOverlap overlapAt = w.movedOverlap;
+        overlapAt.mover = mover;
+        overlapAt.obstacle = obstacle;
+        overlapAt.vx = vx;
+        overlapAt.vy = vy;
+        try {
+            return byPieces(mover, vx, vy, obstacle, overlapAt, w.piecesNormal, w.moverPieces.of(mover),
+                    w.obstaclePieces.of(obstacle));
+        } finally {
+            overlapAt.mover = null;  // no shape kept alive by the thread's scratch
+            overlapAt.obstacle = null;
+        }
+    }
+
+    private static Hit byPieces(Shape mover, float vx, float vy, Shape obstacle, SweptPairs.OverlapAt overlapAt,
+                                double[] normal, List<Object> movers, List<Object> obstacles) {
         float best = Float.POSITIVE_INFINITY;
         double bx = 0, by = 0;
-        double[] normal = new double[2];
-        List<Object> movers = pieces(mover), obstacles = pieces(obstacle);
         // A line that keeps one pair of pieces apart rules the pair out (see passes), touching
         // included where one shape has area (its inside is open). Not so between two shapes
         // without (two segments that touch collide: they are closed), nor for a shape without
@@ -174,8 +309,10 @@ public final class ConvexSweep {
                 && (movers.size() == 1 || obstacleArea);
         double size = size(mover, vx, vy) + size(obstacle, 0, 0);
         double clearance = (open ? -Tolerance.SWEEP_PASSES : Tolerance.SWEEP_PASSES) * size;
-        for (Object a : movers) {
-            for (Object b : obstacles) {
+        for (int i = 0, na = movers.size(); i < na; i++) {  // by index: no iterator made
+            Object a = movers.get(i);
+            for (int j = 0, nb = obstacles.size(); j < nb; j++) {
+                Object b = obstacles.get(j);
                 double te = entry(a, b, vx, vy, normal);
                 if (te > 1 || passes(a, b, te, vx, vy, clearance, normal)) {
                     continue;  // never within TOUCH, or within it but the path goes on clear
@@ -248,14 +385,15 @@ public final class ConvexSweep {
      */
     private static float notWalkedOver(Shape mover, Object a, Object b, float vx, float vy, float t,
                                        SweptPairs.OverlapAt overlapAt) {
-        float[] xy = coordinates(mover);
+        Work w = WORK.get();
+        float[] xy = coordinates(mover, w);
         boolean round = a instanceof Round || b instanceof Round;
         double g = 0;
         for (int i = 0; i < xy.length; i += 2) {
             g = Math.max(g, round ? SweptPairs.searchedSlack(xy[i], vx) + SweptPairs.searchedSlack(xy[i + 1], vy)
                     : SweptPairs.slack(xy[i], vx) + SweptPairs.slack(xy[i + 1], vy));
         }
-        return lookBack(entryWithin(a, b, vx, vy, new double[2], g + TOUCH), t, xy, vx, vy, overlapAt);
+        return lookBack(entryWithin(a, b, vx, vy, w.lookNormal, g + TOUCH), t, xy, vx, vy, overlapAt);
     }
 
     /**
@@ -270,14 +408,17 @@ public final class ConvexSweep {
         return f > 0 && f <= t ? Math.nextDown(f) : t;
     }
 
-    /** The coordinates that {@link Shape#translated} moves, in x, y pairs. */
-    private static float[] coordinates(Shape s) {
+    /**
+     * The coordinates that {@link Shape#translated} moves, in x, y pairs: a polygon's own
+     * array (only read), else the thread's {@code two} or {@code four}, written.
+     */
+    private static float[] coordinates(Shape s, Work w) {
         return switch (ShapeKind.of(s)) {
-            case ELLIPSE -> new float[] {((Ellipse) s).x(), ((Ellipse) s).y()};
-            case CIRCLE -> new float[] {((Circle) s).x(), ((Circle) s).y()};
-            case RECT -> new float[] {((Rect) s).x(), ((Rect) s).y()};
-            case CAPSULE -> new float[] {((Capsule) s).x1(), ((Capsule) s).y1(), ((Capsule) s).x2(), ((Capsule) s).y2()};
-            case SEGMENT -> new float[] {((Segment) s).x1(), ((Segment) s).y1(), ((Segment) s).x2(), ((Segment) s).y2()};
+            case ELLIPSE -> w.two(((Ellipse) s).x(), ((Ellipse) s).y());
+            case CIRCLE -> w.two(((Circle) s).x(), ((Circle) s).y());
+            case RECT -> w.two(((Rect) s).x(), ((Rect) s).y());
+            case CAPSULE -> w.four(((Capsule) s).x1(), ((Capsule) s).y1(), ((Capsule) s).x2(), ((Capsule) s).y2());
+            case SEGMENT -> w.four(((Segment) s).x1(), ((Segment) s).y1(), ((Segment) s).x2(), ((Segment) s).y2());
             case POLYGON -> HiddenParts.raw((Polygon) s);
         };
     }
@@ -341,21 +482,10 @@ public final class ConvexSweep {
     /**
      * The shape's convex pieces: vertex lists (double[]: a rectangle's or convex polygon's
      * corners, a segment's two ends, a concave polygon's convex pieces), or the curved shape
-     * itself as a {@link Round}.
+     * itself as a {@link Round}; only read (a polygon's corners are its own).
      */
     public static List<Object> pieces(Shape s) {
-        return switch (ShapeKind.of(s)) {
-            case ELLIPSE, CAPSULE, CIRCLE -> List.of(Round.of(s));
-            case RECT -> List.of(Polygons.corners(s));
-            case SEGMENT -> {
-                Segment g = (Segment) s;
-                yield List.of(new double[] {g.x1(), g.y1(), g.x2(), g.y2()});
-            }
-            case POLYGON -> {
-                Polygon p = (Polygon) s;
-                yield p.isConvex() ? List.of(Polygons.corners(p)) : new ArrayList<>(Clearance.Parts.of(p).pieces());
-            }
-        };
+        return new PieceSlot().of(s);  // a slot of its own: the caller keeps the pieces
     }
 
     /**
@@ -364,13 +494,44 @@ public final class ConvexSweep {
      * ellipse with equal radii, a capsule as its segment and radius.
      */
     public static final class Round {
-        public final Shape shape;
-        public final double x, y, a, b, c, s, x2, y2;
-        public final boolean capsule;
+        /**
+         * Its centre (a capsule's first end), a capsule's second end, the radii (a, b) and the
+         * turn's cosine and sine; read only (set when made, or when a sweep's own piece is
+         * set again for the next sweep).
+         */
+        public double x, y, a, b, c, s, x2, y2;
+        /** Is it a capsule (its segment and radius a), else an ellipse (a circle's radii equal)? */
+        public boolean capsule;
 
-        private Round(Shape shape, boolean capsule, double x, double y, double x2, double y2,
-                      double a, double b, double c, double s) {
-            this.shape = shape;
+        private Round() {
+        }
+
+        /** The curved shape as a round piece. */
+        public static Round of(Shape shape) {
+            return new Round().set(shape);
+        }
+
+        /** This piece made the curved shape's, for a sweep's own piece used again. */
+        private Round set(Shape shape) {
+            switch (ShapeKind.of(shape)) {
+                case ELLIPSE -> {
+                    Ellipse e = (Ellipse) shape;
+                    double c = e.angle() == 0 ? 1 : StrictMath.cos(e.angle()), s = e.angle() == 0 ? 0 : StrictMath.sin(e.angle());
+                    return set(false, e.x(), e.y(), 0, 0, e.rx(), e.ry(), c, s);
+                }
+                case CAPSULE -> {
+                    Capsule k = (Capsule) shape;
+                    return set(true, k.x1(), k.y1(), k.x2(), k.y2(), k.r(), k.r(), 1, 0);
+                }
+                case CIRCLE -> {
+                    Circle o = (Circle) shape;
+                    return set(false, o.x(), o.y(), 0, 0, o.r(), o.r(), 1, 0);
+                }
+                default -> throw new IllegalArgumentException("not a curved shape: " + shape);
+            }
+        }
+
+        private Round set(boolean capsule, double x, double y, double x2, double y2, double a, double b, double c, double s) {
             this.capsule = capsule;
             this.x = x;
             this.y = y;
@@ -380,26 +541,7 @@ public final class ConvexSweep {
             this.b = b;
             this.c = c;
             this.s = s;
-        }
-
-        /** The curved shape as a round piece. */
-        public static Round of(Shape shape) {
-            return switch (ShapeKind.of(shape)) {
-                case ELLIPSE -> {
-                    Ellipse e = (Ellipse) shape;
-                    double c = e.angle() == 0 ? 1 : StrictMath.cos(e.angle()), s = e.angle() == 0 ? 0 : StrictMath.sin(e.angle());
-                    yield new Round(shape, false, e.x(), e.y(), 0, 0, e.rx(), e.ry(), c, s);
-                }
-                case CAPSULE -> {
-                    Capsule k = (Capsule) shape;
-                    yield new Round(shape, true, k.x1(), k.y1(), k.x2(), k.y2(), k.r(), k.r(), 1, 0);
-                }
-                case CIRCLE -> {
-                    Circle o = (Circle) shape;
-                    yield new Round(shape, false, o.x(), o.y(), 0, 0, o.r(), o.r(), 1, 0);
-                }
-                case RECT, SEGMENT, POLYGON -> throw new IllegalArgumentException("not a curved shape: " + shape);
-            };
+            return this;
         }
 
         /** How far it reaches along (nx, ny), as {@link Supports#support}. */
@@ -433,7 +575,7 @@ public final class ConvexSweep {
     private static double entryWithin(Object a, Object b, double sx, double sy, double vx, double vy, double[] normal,
                                       double within) {
         double t = 0;
-        double[] n = new double[2];
+        double[] n = WORK.get().entryNormal;
         for (int step = 0; step < MAX_STEPS; step++) {
             double gap = separation(a, b, sx + t * vx, sy + t * vy, 0, 0, n, STEPS);
             normal[0] = n[0];
@@ -469,7 +611,7 @@ public final class ConvexSweep {
         double best = Double.NEGATIVE_INFINITY, bx = 1, by = 0;
         boolean ring = true;
         for (int i = 0; i < DIRECTIONS; i++) {
-            double nx = StrictMath.cos(2 * Math.PI * i / DIRECTIONS), ny = StrictMath.sin(2 * Math.PI * i / DIRECTIONS);
+            double nx = RING_X[i], ny = RING_Y[i];
             double g = gap(a, b, dx, dy, ex, ey, nx, ny);
             if (g > best) {
                 best = g;
@@ -479,9 +621,9 @@ public final class ConvexSweep {
         }
         // The pieces' edge normals, and a swept hull's sides (the motion, as an edge): the line
         // of a path that slides along a face or past a corner.
-        Object[] outlines = ex == 0 && ey == 0 ? new Object[] {a, b} : new Object[] {a, b, new double[] {0, 0, ex, ey}};
-        for (Object piece : outlines) {
-            double[] xy = edges(piece);
+        Work w = WORK.get();
+        for (int k = 0, count = ex == 0 && ey == 0 ? 2 : 3; k < count; k++) {
+            double[] xy = k == 0 ? edges(a, w.edge) : k == 1 ? edges(b, w.edge) : w.side(ex, ey);
             int m = xy.length / 2;
             for (int i = 0; i < m && m > 1; i++) {
                 int j = (i + 1) % m;
@@ -505,8 +647,16 @@ public final class ConvexSweep {
             // seldom an edge normal): still a lower bound, since every direction's gap is one.
             double lo = Math.atan2(by, bx) - 2 * Math.PI / DIRECTIONS, hi = lo + 4 * Math.PI / DIRECTIONS;
             // The largest gap is the least of its negative.
-            double[] r = Golden.least(t -> -gap(a, b, dx, dy, ex, ey, StrictMath.cos(t), StrictMath.sin(t)), lo, hi, steps,
-                    Tolerance.SWEEP_ANGLE);
+            GapAlong f = w.gapAlong;
+            f.a = a;
+            f.b = b;
+            f.dx = dx;
+            f.dy = dy;
+            f.ex = ex;
+            f.ey = ey;
+            double[] r = Golden.least(f, lo, hi, steps, Tolerance.SWEEP_ANGLE, w.golden);
+            f.a = null;
+            f.b = null;
             double m = r[0], g = -r[1];
             if (g > best) {
                 best = g;
@@ -519,16 +669,25 @@ public final class ConvexSweep {
         return best;
     }
 
-    /** The piece's outline for edge normals: its vertices, a capsule's segment, nothing for a round shape. */
-    private static double[] edges(Object piece) {
+    /**
+     * The piece's outline for edge normals: its vertices, a capsule's segment (written into
+     * {@code four}), nothing for a round shape.
+     */
+    private static double[] edges(Object piece, double[] four) {
         if (piece instanceof double[] xy) {
             return xy;
         }
         if (piece instanceof Round r && r.capsule) {
-            return new double[] {r.x, r.y, r.x2, r.y2};
+            four[0] = r.x;
+            four[1] = r.y;
+            four[2] = r.x2;
+            four[3] = r.y2;
+            return four;
         }
-        return new double[0];
+        return NO_EDGES;
     }
+
+    private static final double[] NO_EDGES = new double[0];
 
     /**
      * How far apart along unit n: b's least reach minus a's greatest, a moved by (dx, dy) and
