@@ -506,12 +506,7 @@ public final class ConvexSweep {
         private Round() {
         }
 
-        /** The curved shape as a round piece. */
-        public static Round of(Shape shape) {
-            return new Round().set(shape);
-        }
-
-        /** This piece made the curved shape's, for a sweep's own piece used again. */
+        /** This piece made the curved shape's (a slot's own piece, set for each sweep). */
         private Round set(Shape shape) {
             switch (ShapeKind.of(shape)) {
                 case ELLIPSE -> {
